@@ -1,0 +1,20 @@
+# Project-wide warnings and sanitizers, applied through one interface target.
+add_library(socsim_options INTERFACE)
+target_compile_options(socsim_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
+                                                -Wold-style-cast -Wcast-align -Wnull-dereference)
+if(SOCSIM_WERROR)
+  target_compile_options(socsim_options INTERFACE -Werror)
+endif()
+if(SOCSIM_SANITIZE)
+  target_compile_options(socsim_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                                  -fno-sanitize-recover=undefined)
+  target_link_options(socsim_options INTERFACE -fsanitize=address,undefined)
+endif()
+
+# socsim_module(name SOURCES ... LIBS ...): a core library target with the project options.
+function(socsim_module name)
+  cmake_parse_arguments(M "" "" "SOURCES;LIBS" ${ARGN})
+  add_library(${name} STATIC ${M_SOURCES})
+  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(${name} PUBLIC socsim_options ${M_LIBS})
+endfunction()

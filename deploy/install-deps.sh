@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs everything socsim needs to build, run and test, from Debian 12 packages only.
+# Usage: bash deploy/install-deps.sh [--with-browser]   (root, or sudo available)
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+packages=(
+  build-essential cmake ninja-build pkg-config git curl python3
+  libcpp-httplib-dev nlohmann-json3-dev libcurl4-openssl-dev libeigen3-dev
+  libsqlite3-dev sqlite3 libyaml-cpp-dev libgtest-dev libgmock-dev libgeos-dev
+  libboost-dev libexpected-dev libssl-dev zlib1g-dev clang-format
+)
+if [ "${1:-}" = "--with-browser" ]; then
+  packages+=(chromium nodejs npm)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "socsim: installing ${missing[*]}" >&2
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

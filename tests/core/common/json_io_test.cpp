@@ -1,0 +1,62 @@
+// Untrusted JSON: positions in syntax errors, the depth limit, and canonical bytes.
+#include "core/common/json_io.hpp"
+#include "core/common/json_check.hpp"
+
+#include <gtest/gtest.h>
+
+namespace socsim {
+
+TEST(JsonIo, SyntaxErrorNamesLineAndColumn) {
+  auto r = parse_json_untrusted("{\n  \"a\": 1,\n  \"b\": ]\n}");
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::kBadRequest);
+  ASSERT_EQ(r.error().errors.size(), 1u);
+  EXPECT_EQ(r.error().errors[0].line, 3);
+  EXPECT_EQ(r.error().errors[0].column, 8);
+  EXPECT_NE(r.error().detail.find("line 3"), std::string::npos);
+}
+
+TEST(JsonIo, DeepNestingIsRejectedNotCrashing) {
+  std::string deep(200000, '[');
+  deep += std::string(200000, ']');
+  auto r = parse_json_untrusted(deep);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_NE(r.error().detail.find("nesting"), std::string::npos);
+  std::string ok(64, '[');
+  ok += std::string(64, ']');
+  EXPECT_TRUE(parse_json_untrusted(ok).has_value());
+  std::string over(65, '[');
+  over += std::string(65, ']');
+  EXPECT_FALSE(parse_json_untrusted(over).has_value());
+}
+
+TEST(JsonIo, CanonicalFormSortsKeysAndRoundTrips) {
+  auto a = parse_json_untrusted(R"({"b": [1, 2.5, 0.1], "a": {"y": "é", "x": null}})");
+  auto b = parse_json_untrusted(R"({"a":{"x":null,"y":"é"},"b":[1,2.5,0.1]})");
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(canonical_json(*a), canonical_json(*b));
+  EXPECT_EQ(canonical_json(*a), R"({"a":{"x":null,"y":"é"},"b":[1,2.5,0.1]})");
+  auto again = parse_json_untrusted(canonical_json(*a));
+  EXPECT_EQ(canonical_json(*again), canonical_json(*a));
+}
+
+TEST(JsonIo, InvalidUtf8IsASyntaxError) {
+  EXPECT_FALSE(parse_json_untrusted("{\"a\": \"\xff\"}").has_value());
+}
+
+TEST(JsonChecker, CollectsEveryBadFieldWithPointer) {
+  auto j = parse_json_untrusted(R"({"title": 5, "tags": "x", "seed": -1, "extra/key": true})");
+  ASSERT_TRUE(j);
+  JsonChecker c;
+  c.only_keys(*j, "", {"title", "tags", "seed", "prompt"});
+  c.string(*j, "", "title", true);
+  c.array(*j, "", "tags", false);
+  c.integer(*j, "", "seed", true, 0);
+  c.string(*j, "", "prompt", true);
+  ASSERT_EQ(c.errors().size(), 5u);
+  std::vector<std::string> ptrs;
+  for (const auto& e : c.errors()) ptrs.push_back(e.pointer);
+  EXPECT_EQ(ptrs, (std::vector<std::string>{"/extra~1key", "/title", "/tags", "/seed", "/prompt"}));
+}
+
+}  // namespace socsim
