@@ -8,7 +8,7 @@ std::string type_name(const Json& j) { return j.type_name(); }
 }  // namespace
 
 void JsonChecker::only_keys(const Json& obj, const std::string& ptr,
-                            std::initializer_list<std::string_view> allowed) {
+                            std::span<const std::string_view> allowed) {
   if (!obj.is_object()) return;
   for (const auto& [k, v] : obj.items()) {
     bool known = false;

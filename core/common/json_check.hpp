@@ -3,6 +3,7 @@
 // so a client sees all bad fields at once (422 with errors[]).
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,10 @@ class JsonChecker {
   [[nodiscard]] Error error(std::string detail) const { return Error(ErrorCode::kValidation, std::move(detail), errors_); }
 
   // Checks that `obj` has only the listed keys; each other key is reported.
-  void only_keys(const Json& obj, const std::string& ptr, std::initializer_list<std::string_view> allowed);
+  void only_keys(const Json& obj, const std::string& ptr, std::span<const std::string_view> allowed);
+  void only_keys(const Json& obj, const std::string& ptr, std::initializer_list<std::string_view> allowed) {
+    only_keys(obj, ptr, std::span<const std::string_view>(allowed.begin(), allowed.size()));
+  }
 
   // Each reader returns the value when present and well-typed; records an error and returns
   // nullopt otherwise. `required` decides whether absence is an error.

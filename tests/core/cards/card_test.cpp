@@ -1,0 +1,104 @@
+// Card validation (a pointer per bad field), the content hash, and the export document.
+#include "core/cards/card.hpp"
+
+#include <gtest/gtest.h>
+
+namespace socsim::cards {
+namespace {
+
+Json sample() {
+  return Json::parse(R"({
+    "title": "Reception rush", "description": "Patients queue at reception.",
+    "tags": ["queue", "hospital"], "prompt": "patients queue at the reception desk",
+    "seed": 7, "generator": {"name": "offline"}, "domain": "hospital",
+    "world": {"zones": []}, "metrics": {"agents": 12}})");
+}
+
+std::vector<std::string> pointers(const Error& e) {
+  std::vector<std::string> p;
+  for (const auto& f : e.errors) p.push_back(f.pointer);
+  return p;
+}
+
+TEST(Card, ValidContentParsesAndTagsAreSortedAndUnique) {
+  Json j = sample();
+  j["tags"] = {"queue", "hospital", "queue"};
+  auto c = parse_card_content(j, {});
+  ASSERT_TRUE(c) << c.error().message();
+  EXPECT_EQ(c->tags, (std::vector<std::string>{"hospital", "queue"}));
+  EXPECT_EQ(c->seed, 7u);
+  EXPECT_EQ(c->domain.value(), "hospital");
+}
+
+TEST(Card, EveryBadFieldIsReportedWithItsPointer) {
+  Json j = sample();
+  j["title"] = "";
+  j["seed"] = -3;
+  j["tags"] = {"ok", "Not Valid!"};
+  j["generator"] = {{"name", "gpt"}};
+  j["world"] = "a string";
+  j["colour"] = "blue";
+  auto c = parse_card_content(j, {});
+  ASSERT_FALSE(c);
+  EXPECT_EQ(c.error().code, ErrorCode::kValidation);
+  EXPECT_EQ(pointers(c.error()),
+            (std::vector<std::string>{"/colour", "/title", "/tags/1", "/seed", "/generator/name", "/world"}));
+}
+
+TEST(Card, PromptLengthIsLimited) {
+  Json j = sample();
+  j["prompt"] = std::string(5000, 'a');
+  CardLimits limits;
+  limits.max_prompt_bytes = 4000;
+  auto c = parse_card_content(j, limits);
+  ASSERT_FALSE(c);
+  EXPECT_EQ(pointers(c.error()), std::vector<std::string>{"/prompt"});
+}
+
+TEST(Card, HashDependsOnContentAndLineageOnly) {
+  auto a = parse_card_content(sample(), {}).value();
+  auto b = a;
+  EXPECT_EQ(content_hash(a, 1, std::nullopt), content_hash(b, 1, std::nullopt));
+  b.metrics["agents"] = 13;
+  EXPECT_NE(content_hash(a, 1, std::nullopt), content_hash(b, 1, std::nullopt));
+  EXPECT_NE(content_hash(a, 1, std::nullopt), content_hash(a, 2, std::string("crd_0000000000000000000a")));
+  EXPECT_EQ(content_hash(a, 1, std::nullopt).size(), 64u);
+}
+
+TEST(Card, ExportParsesBackToTheSameBytes) {
+  Card card;
+  card.id = new_card_id();
+  card.content = parse_card_content(sample(), {}).value();
+  card.author = "alice";
+  card.created_at = utc_now_rfc3339();
+  card.content_hash = content_hash(card.content, card.version, card.parent_id);
+  const std::string doc = export_document(card);
+  auto back = parse_export_document(doc, {});
+  ASSERT_TRUE(back) << back.error().message();
+  EXPECT_EQ(export_document(*back), doc);
+}
+
+TEST(Card, TamperedExportIsRejectedByItsHash) {
+  Card card;
+  card.id = new_card_id();
+  card.content = parse_card_content(sample(), {}).value();
+  card.author = "alice";
+  card.created_at = utc_now_rfc3339();
+  card.content_hash = content_hash(card.content, card.version, card.parent_id);
+  std::string doc = export_document(card);
+  doc.replace(doc.find("Reception rush"), 14, "Reception RUSH");
+  auto back = parse_export_document(doc, {});
+  ASSERT_FALSE(back);
+  EXPECT_EQ(pointers(back.error()), std::vector<std::string>{"/card/content_hash"});
+}
+
+TEST(Card, IdsAreWellFormedAndDistinct) {
+  const auto a = new_card_id(), b = new_card_id();
+  EXPECT_TRUE(is_card_id(a));
+  EXPECT_NE(a, b);
+  EXPECT_FALSE(is_card_id("crd_short"));
+  EXPECT_FALSE(is_card_id("crd_ILOU0000000000000000"));
+}
+
+}  // namespace
+}  // namespace socsim::cards
