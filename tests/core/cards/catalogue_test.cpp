@@ -97,7 +97,9 @@ TEST_F(CatalogueTest, SearchAndFiltersFindTheRightCards) {
   q.text = "evacuate";  // porter stemming matches "evacuates"
   EXPECT_EQ(ids(q), std::vector<std::string>{evac.id});
   q = {};
-  q.text = "queue\" OR *";  // FTS syntax in user text is neutralised, not an error
+  q.text = "queue\" NEAR(*";  // FTS syntax in user text is neutralised, not an error
+  EXPECT_TRUE(ids(q).empty()) << "all words must match, NEAR included";
+  q.text = "counter: visitors*";  // every word must match, in any order
   EXPECT_EQ(ids(q), std::vector<std::string>{queue.id});
   q = {};
   q.tag = "queue";
