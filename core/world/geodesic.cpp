@@ -1,0 +1,177 @@
+#include "core/world/geodesic.hpp"
+
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "core/geometry/planar.hpp"
+
+namespace socsim::world {
+
+namespace {
+constexpr float kInf = std::numeric_limits<float>::infinity();
+}
+
+GeodesicField GeodesicField::from_points(const OccupancyGrid& grid, std::span<const Point> sources) {
+  std::vector<std::pair<Cell, float>> seeds;
+  for (const Point& p : sources) {
+    const auto c = grid.cell_of(p);
+    if (!c || grid.blocked(*c)) continue;
+    seeds.emplace_back(*c, static_cast<float>(geometry::distance(p, grid.center(*c))));
+  }
+  GeodesicField f;
+  f.march(grid, std::move(seeds));
+  return f;
+}
+
+GeodesicField GeodesicField::from_region(const OccupancyGrid& grid, const Polygon& region) {
+  std::vector<std::pair<Cell, float>> seeds;
+  const geometry::Box box = geometry::bounds(region.outer);
+  const auto lo = grid.cell_of(box.min).value_or(Cell{0, 0});
+  const auto hi = grid.cell_of(box.max).value_or(Cell{grid.width() - 1, grid.height() - 1});
+  for (int y = std::max(0, lo.y); y <= std::min(grid.height() - 1, hi.y); ++y) {
+    for (int x = std::max(0, lo.x); x <= std::min(grid.width() - 1, hi.x); ++x) {
+      const Cell c{x, y};
+      if (!grid.blocked(c) && geometry::contains(region, grid.center(c))) seeds.emplace_back(c, 0.0f);
+    }
+  }
+  GeodesicField f;
+  f.march(grid, std::move(seeds));
+  return f;
+}
+
+GeodesicField GeodesicField::from_cells(const OccupancyGrid& grid, std::span<const Cell> cells) {
+  std::vector<std::pair<Cell, float>> seeds;
+  for (const Cell& c : cells) {
+    if (!grid.blocked(c)) seeds.emplace_back(c, 0.0f);
+  }
+  GeodesicField f;
+  f.march(grid, std::move(seeds));
+  return f;
+}
+
+void GeodesicField::march(const OccupancyGrid& grid, std::vector<std::pair<Cell, float>> seeds) {
+  width_ = grid.width();
+  height_ = grid.height();
+  resolution_ = grid.resolution();
+  origin_ = grid.origin();
+  const std::size_t n = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+  values_.assign(n, kInf);
+  std::vector<std::uint8_t> done(n, 0);
+  const auto blocked = grid.blocked_cells();
+  const double h = resolution_;
+  const int w = width_;
+
+  using Item = std::pair<float, std::uint32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> heap;
+  for (const auto& [c, d] : seeds) {
+    const std::size_t i = grid.index(c);
+    if (d < values_[i]) {
+      values_[i] = d;
+      heap.emplace(d, static_cast<std::uint32_t>(i));
+    }
+  }
+  has_source_ = !heap.empty();
+
+  auto solve = [&](std::size_t i) -> float {
+    const int x = static_cast<int>(i % static_cast<std::size_t>(w));
+    const int y = static_cast<int>(i / static_cast<std::size_t>(w));
+    // Only accepted neighbours take part in the upwind update.
+    auto val = [&](int xx, int yy) -> double {
+      if (xx < 0 || yy < 0 || xx >= w || yy >= height_) return kInf;
+      const std::size_t j = static_cast<std::size_t>(yy) * static_cast<std::size_t>(w) + static_cast<std::size_t>(xx);
+      return done[j] ? static_cast<double>(values_[j]) : static_cast<double>(kInf);
+    };
+    const double a = std::min(val(x - 1, y), val(x + 1, y));
+    const double b = std::min(val(x, y - 1), val(x, y + 1));
+    const double lo = std::min(a, b);
+    const double hi = std::max(a, b);
+    if (!std::isfinite(lo)) return kInf;
+    if (!std::isfinite(hi) || hi - lo >= h) return static_cast<float>(lo + h);
+    const double diff = hi - lo;
+    return static_cast<float>(0.5 * (lo + hi + std::sqrt(2.0 * h * h - diff * diff)));
+  };
+
+  while (!heap.empty()) {
+    const auto [d, i] = heap.top();
+    heap.pop();
+    if (done[i] || d > values_[i]) continue;
+    done[i] = 1;
+    const int x = static_cast<int>(i % static_cast<std::uint32_t>(w));
+    const int y = static_cast<int>(i / static_cast<std::uint32_t>(w));
+    const int nx[4] = {x - 1, x + 1, x, x};
+    const int ny[4] = {y, y, y - 1, y + 1};
+    for (int k = 0; k < 4; ++k) {
+      if (nx[k] < 0 || ny[k] < 0 || nx[k] >= w || ny[k] >= height_) continue;
+      const std::size_t j = static_cast<std::size_t>(ny[k]) * static_cast<std::size_t>(w) + static_cast<std::size_t>(nx[k]);
+      if (done[j] || blocked[j]) continue;
+      const float t = solve(j);
+      if (t < values_[j]) {
+        values_[j] = t;
+        heap.emplace(t, static_cast<std::uint32_t>(j));
+      }
+    }
+  }
+}
+
+float GeodesicField::at(Cell c) const {
+  if (c.x < 0 || c.y < 0 || c.x >= width_ || c.y >= height_) return kInf;
+  return values_[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c.x)];
+}
+
+std::optional<double> GeodesicField::distance(Point p) const {
+  // Bilinear interpolation between the four cell centres around p, renormalised over the
+  // finite ones (so points next to a wall still get a value).
+  const double gx = (p.x - origin_.x) / resolution_ - 0.5;
+  const double gy = (p.y - origin_.y) / resolution_ - 0.5;
+  if (!(gx >= -0.5 && gy >= -0.5 && gx <= width_ - 0.5 && gy <= height_ - 0.5)) return std::nullopt;
+  const int x0 = static_cast<int>(std::floor(gx));
+  const int y0 = static_cast<int>(std::floor(gy));
+  const double fx = gx - x0;
+  const double fy = gy - y0;
+  double sum = 0.0;
+  double weight = 0.0;
+  for (int dy = 0; dy <= 1; ++dy) {
+    for (int dx = 0; dx <= 1; ++dx) {
+      const float v = at({x0 + dx, y0 + dy});
+      if (!std::isfinite(v)) continue;
+      const double wgt = (dx ? fx : 1.0 - fx) * (dy ? fy : 1.0 - fy);
+      sum += wgt * v;
+      weight += wgt;
+    }
+  }
+  if (weight <= 1e-12) {
+    // p sits on a cell centre whose own value decides.
+    const float v = at({static_cast<int>(std::floor(gx + 0.5)), static_cast<int>(std::floor(gy + 0.5))});
+    if (!std::isfinite(v)) return std::nullopt;
+    return static_cast<double>(v);
+  }
+  return sum / weight;
+}
+
+std::optional<Point> GeodesicField::descent(Point p) const {
+  const double gx = (p.x - origin_.x) / resolution_;
+  const double gy = (p.y - origin_.y) / resolution_;
+  if (!(gx >= 0 && gy >= 0 && gx < width_ && gy < height_)) return std::nullopt;
+  const Cell c{static_cast<int>(gx), static_cast<int>(gy)};
+  const float here = at(c);
+  if (!std::isfinite(here)) return std::nullopt;
+  // One-sided differences towards the lower finite neighbour on each axis (central where both are finite).
+  auto axis = [&](Cell lo, Cell hi) -> double {
+    const float a = at(lo);
+    const float b = at(hi);
+    const bool fa = std::isfinite(a);
+    const bool fb = std::isfinite(b);
+    if (fa && fb) return (static_cast<double>(b) - a) / (2.0 * resolution_);
+    if (fa) return std::max(0.0, static_cast<double>(here) - a) / resolution_;
+    if (fb) return std::min(0.0, static_cast<double>(b) - here) / resolution_;
+    return 0.0;
+  };
+  const double dx = axis({c.x - 1, c.y}, {c.x + 1, c.y});
+  const double dy = axis({c.x, c.y - 1}, {c.x, c.y + 1});
+  const double len = std::hypot(dx, dy);
+  if (len < 1e-9) return std::nullopt;
+  return Point{-dx / len, -dy / len};
+}
+
+}  // namespace socsim::world

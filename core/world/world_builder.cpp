@@ -1,0 +1,554 @@
+#include "core/world/world_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include "core/geometry/geos.hpp"
+#include "core/geometry/planar.hpp"
+#include "core/world/occupancy_grid.hpp"
+
+namespace socsim::world {
+
+namespace {
+
+using geometry::Geos;
+using geometry::MultiPolygon;
+
+constexpr std::size_t kMaxNameLength = 128;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  std::string s = buf;
+  while (!s.empty() && s.back() == '0') s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  if (s == "-0") s = "0";
+  return s;
+}
+
+std::string pt(Point p) { return "(" + num(p.x) + ", " + num(p.y) + ")"; }
+
+bool finite(Point p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+bool finite(const Pose2& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.yaw); }
+
+// Names are referenced from behaviour trees, XML and SVG ids: keep them to a safe alphabet.
+std::optional<std::string> name_problem(const std::string& name) {
+  if (name.empty()) return "must not be empty";
+  if (name.size() > kMaxNameLength) return "must be at most " + std::to_string(kMaxNameLength) + " characters";
+  for (const char ch : name) {
+    const bool ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' ||
+                    ch == '-' || ch == '.';
+    if (!ok) return "'" + name + "' may only contain letters, digits, '_', '-' and '.'";
+  }
+  return std::nullopt;
+}
+
+// Free-text labels (types, materials, styles, affordances): printable, bounded.
+std::optional<std::string> label_problem(const std::string& s, bool allow_empty) {
+  if (s.empty()) return allow_empty ? std::nullopt : std::optional<std::string>("must not be empty");
+  if (s.size() > kMaxNameLength) return "must be at most " + std::to_string(kMaxNameLength) + " characters";
+  for (const char ch : s) {
+    if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) return "must not contain control characters";
+  }
+  return std::nullopt;
+}
+
+double distance_to_boundary(const Polygon& poly, Point p) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const auto& e : geometry::edges(poly.outer)) d = std::min(d, geometry::distance(e, p));
+  for (const auto& h : poly.holes) {
+    for (const auto& e : geometry::edges(h)) d = std::min(d, geometry::distance(e, p));
+  }
+  return d;
+}
+
+struct Nearest {
+  std::size_t index = 0;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+Nearest nearest_segment(const std::vector<Segment>& segs, Point p) {
+  Nearest best;
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    const double d = geometry::distance(segs[i], p);
+    if (d < best.distance) best = {i, d};
+  }
+  return best;
+}
+
+class Validator {
+ public:
+  void add(std::string pointer, std::string message) {
+    errors_.push_back(FieldError{std::move(pointer), std::move(message), {}, 0, 0});
+  }
+  [[nodiscard]] bool ok() const { return errors_.empty(); }
+  [[nodiscard]] tl::unexpected<Error> failure() const {
+    return fail(ErrorCode::kValidation,
+                "the world is not valid (" + std::to_string(errors_.size()) + " problem" +
+                    (errors_.size() == 1 ? "" : "s") + ")",
+                errors_);
+  }
+
+  void name(const std::string& ptr, const std::string& value, std::map<std::string, std::string>& seen) {
+    if (auto p = name_problem(value)) {
+      add(ptr, *p);
+      return;
+    }
+    auto [it, inserted] = seen.emplace(value, ptr);
+    if (!inserted) add(ptr, "duplicate name '" + value + "' (already used at " + it->second + ")");
+  }
+  void label(const std::string& ptr, const std::string& value, bool allow_empty) {
+    if (auto p = label_problem(value, allow_empty)) add(ptr, *p);
+  }
+  bool polygon(const Geos& geos, const std::string& ptr, const Polygon& poly, const std::string& owner) {
+    const auto v = geos.validity(poly);
+    if (!v.valid) {
+      std::string msg = owner + " has an invalid polygon: " + v.reason;
+      if (v.location) msg += " at " + pt(*v.location);
+      add(ptr, msg);
+      return false;
+    }
+    if (geometry::area(poly) <= 1e-9) {
+      add(ptr, owner + " has a polygon of zero area");
+      return false;
+    }
+    return true;
+  }
+
+ private:
+  std::vector<FieldError> errors_;
+};
+
+std::string zone_ptr(std::size_t i) { return "/zones/" + std::to_string(i); }
+std::string door_ptr(std::size_t i) { return "/doors/" + std::to_string(i); }
+
+}  // namespace
+
+WorldBuilder& WorldBuilder::set_name(std::string name) {
+  name_ = std::move(name);
+  return *this;
+}
+WorldBuilder& WorldBuilder::set_origin(Pose2 origin) {
+  origin_ = origin;
+  return *this;
+}
+WorldBuilder& WorldBuilder::set_floor(Floor floor) {
+  floor_ = std::move(floor);
+  return *this;
+}
+ZoneId WorldBuilder::add_zone(Zone zone) {
+  zones_.push_back(std::move(zone));
+  return ZoneId(static_cast<std::uint32_t>(zones_.size() - 1));
+}
+WorldBuilder& WorldBuilder::add_wall(Wall wall) {
+  walls_.push_back(std::move(wall));
+  return *this;
+}
+WorldBuilder& WorldBuilder::add_door(DoorSpec door) {
+  doors_.push_back(std::move(door));
+  return *this;
+}
+WorldBuilder& WorldBuilder::add_roi(Roi roi) {
+  rois_.push_back(std::move(roi));
+  return *this;
+}
+WorldBuilder& WorldBuilder::add_entity(EntitySpec entity) {
+  entities_.push_back(std::move(entity));
+  return *this;
+}
+
+std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector<Door>& doors,
+                               const BuildOptions& options) {
+  Geos geos;
+  MultiPolygon polys;
+  for (const auto& z : zones) polys.push_back(z.polygon);
+  const double tol = options.boundary_tolerance;
+  std::vector<Wall> walls;
+  for (const Segment& s : geos.boundary_segments(polys)) {
+    const double len = geometry::length(s);
+    if (len <= tol) continue;
+    const Point u{(s.b.x - s.a.x) / len, (s.b.y - s.a.y) / len};
+    // Door openings collinear with this boundary piece, as intervals along it.
+    std::vector<std::pair<double, double>> cuts;
+    for (const auto& d : doors) {
+      auto along = [&](Point p) { return (p.x - s.a.x) * u.x + (p.y - s.a.y) * u.y; };
+      auto off = [&](Point p) { return std::abs((p.x - s.a.x) * u.y - (p.y - s.a.y) * u.x); };
+      if (off(d.opening.a) > tol || off(d.opening.b) > tol) continue;
+      double t0 = along(d.opening.a);
+      double t1 = along(d.opening.b);
+      if (t0 > t1) std::swap(t0, t1);
+      t0 = std::max(t0, 0.0);
+      t1 = std::min(t1, len);
+      if (t1 - t0 > tol) cuts.emplace_back(t0, t1);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    std::vector<std::pair<double, double>> pieces;
+    double from = 0.0;
+    for (const auto& [c0, c1] : cuts) {
+      if (c0 > from) pieces.emplace_back(from, c0);
+      from = std::max(from, c1);
+    }
+    if (from < len) pieces.emplace_back(from, len);
+    for (const auto& [t0, t1] : pieces) {
+      if (t1 - t0 <= tol) continue;
+      const Point a{s.a.x + u.x * t0, s.a.y + u.y * t0};
+      const Point b{s.a.x + u.x * t1, s.a.y + u.y * t1};
+      const Point mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
+      std::string style = options.default_wall_style;
+      for (const auto& z : zones) {
+        if (distance_to_boundary(z.polygon, mid) <= tol) {
+          if (!z.material.empty()) style = z.material;
+          break;
+        }
+      }
+      // Snap the ends that did not move to the exact boundary vertices (no rounding drift).
+      walls.push_back(Wall{{t0 == 0.0 ? s.a : a, t1 == len ? s.b : b}, options.default_wall_height, style});
+    }
+  }
+  return walls;
+}
+
+Result<World> WorldBuilder::build(const BuildOptions& opt) const {
+  Validator v;
+  if (!(opt.agent_radius >= 0 && std::isfinite(opt.agent_radius)) || !(opt.boundary_tolerance > 0) ||
+      !(opt.door_snap_distance >= 0) || !(opt.overlap_tolerance >= 0) || !(opt.grid_resolution > 0) ||
+      !(opt.default_wall_height > 0)) {
+    return fail(ErrorCode::kValidation, "world build options out of range",
+                {FieldError{"", "agent_radius, tolerances, grid_resolution and default_wall_height must be positive", {}, 0, 0}});
+  }
+  Geos geos;
+  std::map<std::string, std::string> names;
+
+  // 1. Each element on its own: names, labels, numbers, polygon validity.
+  if (auto p = label_problem(name_, true)) v.add("/name", *p);
+  if (!finite(origin_)) v.add("/origin", "must be finite");
+  v.label("/floor/material", floor_.material, true);
+  std::vector<bool> zone_ok(zones_.size(), false);
+  for (std::size_t i = 0; i < zones_.size(); ++i) {
+    const auto& z = zones_[i];
+    const std::string ptr = zone_ptr(i);
+    v.name(ptr + "/name", z.name, names);
+    v.label(ptr + "/type", z.type, false);
+    v.label(ptr + "/material", z.material, true);
+    zone_ok[i] = v.polygon(geos, ptr + "/polygon", z.polygon, "zone '" + z.name + "'");
+  }
+  if (zones_.empty()) v.add("/zones", "a world needs at least one zone");
+  for (std::size_t i = 0; i < walls_.size(); ++i) {
+    const auto& w = walls_[i];
+    const std::string ptr = "/walls/" + std::to_string(i);
+    if (!finite(w.segment.a)) v.add(ptr + "/start", "must be finite");
+    if (!finite(w.segment.b)) v.add(ptr + "/end", "must be finite");
+    if (finite(w.segment.a) && finite(w.segment.b) && geometry::length(w.segment) <= opt.boundary_tolerance) {
+      v.add(ptr + "/end", "wall from " + pt(w.segment.a) + " to " + pt(w.segment.b) + " has no length");
+    }
+    if (!(w.height > 0 && std::isfinite(w.height))) v.add(ptr + "/height", "must be a positive number of metres");
+    v.label(ptr + "/style", w.style, true);
+  }
+  for (std::size_t i = 0; i < doors_.size(); ++i) {
+    const auto& d = doors_[i];
+    const std::string ptr = door_ptr(i);
+    v.name(ptr + "/name", d.name, names);
+    if (!finite(d.pose)) v.add(ptr + "/pose", "must be finite");
+    if (!(d.width > 0 && std::isfinite(d.width))) {
+      v.add(ptr + "/width", "must be a positive number of metres");
+    } else if (d.width < 2 * opt.agent_radius) {
+      v.add(ptr + "/width", "door '" + d.name + "' is " + num(d.width) + " m wide, narrower than an agent of radius " +
+                                num(opt.agent_radius) + " m");
+    }
+    if (d.connects.size() > 2) {
+      v.add(ptr + "/connects", "lists " + std::to_string(d.connects.size()) +
+                                   " zones; a door connects two zones, or one zone and the outside");
+    }
+  }
+  std::vector<bool> roi_ok(rois_.size(), false);
+  for (std::size_t i = 0; i < rois_.size(); ++i) {
+    const auto& r = rois_[i];
+    const std::string ptr = "/segmentation/" + std::to_string(i);
+    v.name(ptr + "/name", r.name, names);
+    if (!is_roi_kind(r.kind)) {
+      std::string known;
+      for (auto k : roi_kinds()) known += (known.empty() ? "" : ", ") + std::string(k);
+      v.add(ptr + "/kind", "unknown ROI kind '" + r.kind + "' (known: " + known + ")");
+    }
+    roi_ok[i] = v.polygon(geos, ptr + "/polygon", r.polygon, "ROI '" + r.name + "'");
+  }
+  for (std::size_t i = 0; i < entities_.size(); ++i) {
+    const auto& e = entities_[i];
+    const std::string ptr = "/entities/" + std::to_string(i);
+    v.name(ptr + "/name", e.name, names);
+    v.label(ptr + "/type", e.type, false);
+    if (!finite(e.pose)) v.add(ptr + "/pose", "must be finite");
+    std::set<std::string> seen;
+    for (std::size_t k = 0; k < e.affordances.size(); ++k) {
+      const std::string aptr = ptr + "/affordances/" + std::to_string(k);
+      v.label(aptr, e.affordances[k], false);
+      if (!seen.insert(e.affordances[k]).second) v.add(aptr, "duplicate affordance '" + e.affordances[k] + "'");
+    }
+  }
+  if (std::find(zone_ok.begin(), zone_ok.end(), false) != zone_ok.end() || zones_.empty()) return v.failure();
+
+  try {
+    // 2. Zones against each other.
+    const double tol = opt.boundary_tolerance;
+    std::vector<geometry::Box> boxes;
+    for (const auto& z : zones_) boxes.push_back(geometry::bounds(z.polygon.outer));
+    for (std::size_t j = 0; j < zones_.size(); ++j) {
+      for (std::size_t i = 0; i < j; ++i) {
+        const auto& a = boxes[i];
+        const auto& b = boxes[j];
+        if (a.max.x <= b.min.x || b.max.x <= a.min.x || a.max.y <= b.min.y || b.max.y <= a.min.y) continue;
+        const double overlap = geos.area(geos.intersection(MultiPolygon{zones_[i].polygon}, MultiPolygon{zones_[j].polygon}));
+        if (overlap > opt.overlap_tolerance) {
+          v.add(zone_ptr(j) + "/polygon", "zone '" + zones_[j].name + "' overlaps zone '" + zones_[i].name + "' (" +
+                                              zone_ptr(i) + ") by " + num(overlap) + " m²");
+        }
+      }
+    }
+    MultiPolygon all;
+    for (const auto& z : zones_) all.push_back(z.polygon);
+    const MultiPolygon plan = geos.unite(all);
+    std::vector<Segment> outline = geos.boundary_segments(plan);
+
+    // 3. Doors: find their zones and their opening on the shared (or outside) boundary.
+    std::vector<Door> doors;
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<Segment>> shared_cache;
+    auto shared = [&](std::size_t a, std::size_t b) -> const std::vector<Segment>& {
+      const auto key = std::minmax(a, b);
+      auto it = shared_cache.find(key);
+      if (it == shared_cache.end()) {
+        it = shared_cache.emplace(key, geos.shared_boundary(zones_[key.first].polygon, zones_[key.second].polygon, tol)).first;
+      }
+      return it->second;
+    };
+    for (std::size_t i = 0; i < doors_.size(); ++i) {
+      const auto& spec = doors_[i];
+      const std::string ptr = door_ptr(i);
+      if (!finite(spec.pose) || !(spec.width > 0) || spec.connects.size() > 2) continue;
+      const Point c = spec.pose.position();
+      std::vector<std::size_t> ends;
+      bool resolved = true;
+      for (std::size_t k = 0; k < spec.connects.size(); ++k) {
+        std::optional<std::size_t> found;
+        for (std::size_t z = 0; z < zones_.size(); ++z) {
+          if (zones_[z].name == spec.connects[k]) found = z;
+        }
+        if (!found) {
+          v.add(ptr + "/connects/" + std::to_string(k), "unknown zone '" + spec.connects[k] + "'");
+          resolved = false;
+        } else {
+          ends.push_back(*found);
+        }
+      }
+      if (!resolved) continue;
+      if (ends.size() == 2 && ends[0] == ends[1]) {
+        v.add(ptr + "/connects", "door '" + spec.name + "' connects zone '" + zones_[ends[0]].name + "' with itself");
+        continue;
+      }
+      if (ends.empty()) {
+        // Infer: the zones whose boundary passes by the door.
+        std::vector<std::pair<double, std::size_t>> near;
+        for (std::size_t z = 0; z < zones_.size(); ++z) {
+          const double d = distance_to_boundary(zones_[z].polygon, c);
+          if (d <= opt.door_snap_distance) near.emplace_back(d, z);
+        }
+        std::sort(near.begin(), near.end());
+        if (near.empty()) {
+          double best = std::numeric_limits<double>::infinity();
+          std::size_t bz = 0;
+          for (std::size_t z = 0; z < zones_.size(); ++z) {
+            const double d = distance_to_boundary(zones_[z].polygon, c);
+            if (d < best) best = d, bz = z;
+          }
+          v.add(ptr + "/pose", "door '" + spec.name + "' at " + pt(c) +
+                                   " is on no zone boundary (nearest is zone '" + zones_[bz].name + "', " + num(best) +
+                                   " m away; at most " + num(opt.door_snap_distance) + " m allowed)");
+          continue;
+        }
+        for (std::size_t x = 0; x < near.size() && ends.empty(); ++x) {
+          for (std::size_t y = x + 1; y < near.size() && ends.empty(); ++y) {
+            const auto& sh = shared(near[x].second, near[y].second);
+            if (!sh.empty() && nearest_segment(sh, c).distance <= opt.door_snap_distance) {
+              ends = {std::min(near[x].second, near[y].second), std::max(near[x].second, near[y].second)};
+            }
+          }
+        }
+        if (ends.empty()) ends = {near[0].second};
+      }
+      const Zone& za = zones_[ends[0]];
+      std::vector<Segment> host;
+      if (ends.size() == 2) {
+        host = shared(ends[0], ends[1]);
+        if (host.empty()) {
+          v.add(ptr + "/connects", "zones '" + za.name + "' and '" + zones_[ends[1]].name +
+                                       "' share no boundary, so door '" + spec.name + "' cannot connect them");
+          continue;
+        }
+      } else {
+        // The parts of the zone's boundary that are also the plan's outline.
+        for (const auto& part : plan) {
+          const auto pieces = geos.shared_boundary(za.polygon, part, tol);
+          host.insert(host.end(), pieces.begin(), pieces.end());
+        }
+      }
+      const Nearest nh = nearest_segment(host, c);
+      if (host.empty() || nh.distance > opt.door_snap_distance) {
+        const std::string where = ends.size() == 2 ? "the boundary shared by zones '" + za.name + "' and '" +
+                                                         zones_[ends[1]].name + "'"
+                                                   : "the outside boundary of zone '" + za.name + "'";
+        std::string msg = "door '" + spec.name + "' at " + pt(c) + " is not on " + where;
+        if (!host.empty()) msg += " (" + num(nh.distance) + " m away; at most " + num(opt.door_snap_distance) + " m allowed)";
+        v.add(ptr + "/pose", msg);
+        continue;
+      }
+      const Segment& s = host[nh.index];
+      const double len = geometry::length(s);
+      const Point u{(s.b.x - s.a.x) / len, (s.b.y - s.a.y) / len};
+      const double t = (c.x - s.a.x) * u.x + (c.y - s.a.y) * u.y;
+      const double half = spec.width / 2;
+      if (t - half < -tol || t + half > len + tol) {
+        const double over = std::max(-(t - half), t + half - len);
+        v.add(ptr + "/width", "door '" + spec.name + "' (" + num(spec.width) + " m) does not fit on its boundary from " +
+                                  pt(s.a) + " to " + pt(s.b) + "; the opening runs " + num(over) + " m past its end");
+        continue;
+      }
+      Door d;
+      d.name = spec.name;
+      d.pose = spec.pose;
+      d.width = spec.width;
+      d.zone = ZoneId(static_cast<std::uint32_t>(ends[0]));
+      if (ends.size() == 2) d.other = ZoneId(static_cast<std::uint32_t>(ends[1]));
+      d.opening = {{s.a.x + u.x * (t - half), s.a.y + u.y * (t - half)}, {s.a.x + u.x * (t + half), s.a.y + u.y * (t + half)}};
+      // Two doors in one opening would double-count it.
+      for (const auto& other : doors) {
+        const Segment& o = other.opening;
+        auto off = [&](Point p) { return std::abs((p.x - d.opening.a.x) * u.y - (p.y - d.opening.a.y) * u.x); };
+        if (off(o.a) > tol || off(o.b) > tol) continue;
+        auto along = [&](Point p) { return (p.x - d.opening.a.x) * u.x + (p.y - d.opening.a.y) * u.y; };
+        const double lo = std::max(0.0, std::min(along(o.a), along(o.b)));
+        const double hi = std::min(spec.width, std::max(along(o.a), along(o.b)));
+        if (hi - lo > tol) v.add(ptr + "/pose", "door '" + spec.name + "' overlaps door '" + other.name + "'");
+      }
+      doors.push_back(std::move(d));
+    }
+
+    // 4. Walls: as written, or derived from the zone boundaries minus the door openings.
+    std::vector<Wall> walls = walls_;
+    if (walls.empty()) {
+      walls = derive_walls(zones_, doors, opt);
+    } else {
+      for (std::size_t k = 0; k < walls.size(); ++k) {
+        for (const auto& d : doors) {
+          const double len = geometry::length(d.opening);
+          const double cut = std::min(2 * tol, len / 4);
+          const Point u{(d.opening.b.x - d.opening.a.x) / len, (d.opening.b.y - d.opening.a.y) / len};
+          const Segment inner{{d.opening.a.x + u.x * cut, d.opening.a.y + u.y * cut},
+                              {d.opening.b.x - u.x * cut, d.opening.b.y - u.y * cut}};
+          if (geometry::distance(walls[k].segment, inner) < tol) {
+            v.add("/walls/" + std::to_string(k), "wall from " + pt(walls[k].segment.a) + " to " + pt(walls[k].segment.b) +
+                                                     " blocks door '" + d.name + "'");
+          }
+        }
+      }
+    }
+
+    // 5. ROIs inside the zones; entities standing in a zone.
+    for (std::size_t i = 0; i < rois_.size(); ++i) {
+      if (!roi_ok[i]) continue;
+      const MultiPolygon roi{rois_[i].polygon};
+      const double outside = geos.area(geos.difference(roi, plan));
+      if (outside > opt.overlap_tolerance) {
+        const double total = geometry::area(rois_[i].polygon);
+        const std::string ptr = "/segmentation/" + std::to_string(i) + "/polygon";
+        if (outside >= total - opt.overlap_tolerance) {
+          v.add(ptr, "ROI '" + rois_[i].name + "' lies outside every zone");
+        } else {
+          v.add(ptr, "ROI '" + rois_[i].name + "' extends " + num(outside) + " m² (of " + num(total) +
+                         " m²) outside the zones");
+        }
+      }
+    }
+    std::vector<Entity> entities;
+    for (std::size_t i = 0; i < entities_.size(); ++i) {
+      const auto& e = entities_[i];
+      if (!finite(e.pose)) continue;
+      std::optional<std::size_t> in;
+      for (std::size_t z = 0; z < zones_.size() && !in; ++z) {
+        if (geometry::contains(zones_[z].polygon, e.pose.position(), tol)) in = z;
+      }
+      if (!in) {
+        v.add("/entities/" + std::to_string(i) + "/pose",
+              "entity '" + e.name + "' at " + pt(e.pose.position()) + " is outside every zone");
+        continue;
+      }
+      entities.push_back(Entity{e.type, e.name, e.pose, e.affordances, ZoneId(static_cast<std::uint32_t>(*in))});
+    }
+    if (!v.ok()) return v.failure();
+
+    World w;
+    w.name_ = name_;
+    w.origin_ = origin_;
+    w.floor_ = floor_;
+    w.zones_ = zones_;
+    w.walls_ = std::move(walls);
+    w.doors_ = std::move(doors);
+    w.rois_ = rois_;
+    w.entities_ = std::move(entities);
+    w.outline_ = std::move(outline);
+
+    // 6. Every zone reachable from every other for an agent of the given radius.
+    if (opt.check_reachability && zones_.size() > 1) {
+      const auto grid = OccupancyGrid::rasterise(w, GridOptions{opt.grid_resolution, opt.agent_radius, 4'000'000});
+      const auto label = grid.components();
+      std::vector<std::map<int, std::size_t>> counts(zones_.size());
+      for (int y = 0; y < grid.height(); ++y) {
+        for (int x = 0; x < grid.width(); ++x) {
+          const Cell c{x, y};
+          const int l = label[grid.index(c)];
+          if (l < 0) continue;
+          if (auto z = grid.zone_of(c)) ++counts[z->index()][l];
+        }
+      }
+      std::vector<int> main(zones_.size(), -1);
+      std::map<int, std::size_t> votes;
+      for (std::size_t z = 0; z < zones_.size(); ++z) {
+        if (counts[z].empty()) {
+          v.add(zone_ptr(z) + "/polygon", "zone '" + zones_[z].name + "' has no free space for an agent of radius " +
+                                              num(opt.agent_radius) + " m");
+          continue;
+        }
+        main[z] = std::max_element(counts[z].begin(), counts[z].end(), [](const auto& a, const auto& b) {
+                    return a.second < b.second || (a.second == b.second && a.first > b.first);
+                  })->first;
+        ++votes[main[z]];
+      }
+      if (!votes.empty()) {
+        const int ref = std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) {
+                          return a.second < b.second;
+                        })->first;
+        std::size_t ref_zone = 0;
+        while (main[ref_zone] != ref) ++ref_zone;
+        for (std::size_t z = 0; z < zones_.size(); ++z) {
+          if (main[z] < 0 || main[z] == ref) continue;
+          std::string doors_of;
+          for (const auto& d : w.doors_) {
+            if (d.zone.index() == z || (d.other && d.other->index() == z)) {
+              doors_of += (doors_of.empty() ? "" : ", ") + d.name + " (" + num(d.width) + " m)";
+            }
+          }
+          v.add(zone_ptr(z), "zone '" + zones_[z].name + "' cannot be reached from zone '" + zones_[ref_zone].name +
+                                 "' by an agent of radius " + num(opt.agent_radius) + " m; " +
+                                 (doors_of.empty() ? "it has no door" : "its doors: " + doors_of));
+        }
+      }
+      if (!v.ok()) return v.failure();
+    }
+    return w;
+  } catch (const geometry::GeosError& e) {
+    return fail(ErrorCode::kValidation, std::string("geometry check failed: ") + e.what());
+  }
+}
+
+}  // namespace socsim::world

@@ -1,0 +1,75 @@
+#pragma once
+// Collects zones, walls, doors, ROIs and entities (from a file, an import or a floor-plan
+// generator), validates them once and produces an immutable World. Errors carry JSON
+// pointers into the world document (/zones/3/polygon), so a parser can add line numbers.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/error.hpp"
+#include "core/world/world.hpp"
+
+namespace socsim::world {
+
+struct BuildOptions {
+  double agent_radius = 0.25;         // m; every zone must be reachable for an agent this wide
+  double boundary_tolerance = 0.01;   // m; points this close to a boundary lie on it
+  double door_snap_distance = 0.25;   // m; a door centre may sit this far off the boundary (within the wall)
+  double overlap_tolerance = 1e-3;    // m²; zones may overlap by this much (rounding), ROIs leave zones by this much
+  double default_wall_height = 3.0;   // m; for derived walls
+  std::string default_wall_style = "plain";  // for derived walls of zones without a material
+  double grid_resolution = 0.05;      // m; reachability grid (coarsened for very large worlds)
+  bool check_reachability = true;
+};
+
+struct DoorSpec {
+  std::string name;
+  Pose2 pose;
+  double width = 0.0;
+  // Zone names: two for a door between zones, one for a door to the outside, none to let
+  // the builder find the zones whose boundary the door lies on.
+  std::vector<std::string> connects;
+};
+
+struct EntitySpec {
+  std::string type;
+  std::string name;
+  Pose2 pose;
+  std::vector<std::string> affordances;
+};
+
+class WorldBuilder {
+ public:
+  WorldBuilder& set_name(std::string name);
+  WorldBuilder& set_origin(Pose2 origin);
+  WorldBuilder& set_floor(Floor floor);
+  // Elements are reported by their position in these lists (/zones/<i>, /doors/<i> …).
+  ZoneId add_zone(Zone zone);
+  WorldBuilder& add_wall(Wall wall);  // none added → walls are derived from zones and doors
+  WorldBuilder& add_door(DoorSpec door);
+  WorldBuilder& add_roi(Roi roi);
+  WorldBuilder& add_entity(EntitySpec entity);
+
+  [[nodiscard]] std::size_t zone_count() const { return zones_.size(); }
+
+  // Validates everything and returns the World, or a kValidation error listing every
+  // problem found (each with a JSON pointer and a message naming the elements involved).
+  [[nodiscard]] Result<World> build(const BuildOptions& options = {}) const;
+
+ private:
+  std::string name_;
+  Pose2 origin_;
+  Floor floor_;
+  std::vector<Zone> zones_;
+  std::vector<Wall> walls_;
+  std::vector<DoorSpec> doors_;
+  std::vector<Roi> rois_;
+  std::vector<EntitySpec> entities_;
+};
+
+// Walls derived as the paper does: the dissolved zone boundaries minus the door openings.
+// Each wall takes its style from the material of the first zone it bounds.
+std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector<Door>& doors,
+                               const BuildOptions& options);
+
+}  // namespace socsim::world
