@@ -171,32 +171,34 @@ std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector
     const double len = geometry::length(s);
     if (len <= tol) continue;
     const Point u{(s.b.x - s.a.x) / len, (s.b.y - s.a.y) / len};
-    // Door openings collinear with this boundary piece, as intervals along it.
-    std::vector<std::pair<double, double>> cuts;
+    // Door openings collinear with this boundary piece, as intervals along it; the cut
+    // points are the openings' own end points (no rounding drift from re-projection).
+    struct Cut {
+      double t0, t1;
+      Point p0, p1;
+    };
+    std::vector<Cut> cuts;
+    auto along = [&](Point p) { return (p.x - s.a.x) * u.x + (p.y - s.a.y) * u.y; };
+    auto off = [&](Point p) { return std::abs((p.x - s.a.x) * u.y - (p.y - s.a.y) * u.x); };
     for (const auto& d : doors) {
-      auto along = [&](Point p) { return (p.x - s.a.x) * u.x + (p.y - s.a.y) * u.y; };
-      auto off = [&](Point p) { return std::abs((p.x - s.a.x) * u.y - (p.y - s.a.y) * u.x); };
       if (off(d.opening.a) > tol || off(d.opening.b) > tol) continue;
-      double t0 = along(d.opening.a);
-      double t1 = along(d.opening.b);
-      if (t0 > t1) std::swap(t0, t1);
-      t0 = std::max(t0, 0.0);
-      t1 = std::min(t1, len);
-      if (t1 - t0 > tol) cuts.emplace_back(t0, t1);
+      Cut c{along(d.opening.a), along(d.opening.b), d.opening.a, d.opening.b};
+      if (c.t0 > c.t1) std::swap(c.t0, c.t1), std::swap(c.p0, c.p1);
+      if (c.t0 <= 0.0) c.t0 = 0.0, c.p0 = s.a;
+      if (c.t1 >= len) c.t1 = len, c.p1 = s.b;
+      if (c.t1 - c.t0 > tol) cuts.push_back(c);
     }
-    std::sort(cuts.begin(), cuts.end());
-    std::vector<std::pair<double, double>> pieces;
-    double from = 0.0;
-    for (const auto& [c0, c1] : cuts) {
-      if (c0 > from) pieces.emplace_back(from, c0);
-      from = std::max(from, c1);
+    std::sort(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) { return x.t0 < y.t0; });
+    std::vector<Cut> pieces;  // the parts that stay wall
+    Cut from{0.0, 0.0, s.a, s.a};
+    for (const auto& c : cuts) {
+      if (c.t0 > from.t1) pieces.push_back(Cut{from.t1, c.t0, from.p1, c.p0});
+      if (c.t1 > from.t1) from = Cut{0.0, c.t1, s.a, c.p1};
     }
-    if (from < len) pieces.emplace_back(from, len);
-    for (const auto& [t0, t1] : pieces) {
-      if (t1 - t0 <= tol) continue;
-      const Point a{s.a.x + u.x * t0, s.a.y + u.y * t0};
-      const Point b{s.a.x + u.x * t1, s.a.y + u.y * t1};
-      const Point mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
+    if (from.t1 < len) pieces.push_back(Cut{from.t1, len, from.p1, s.b});
+    for (const auto& piece : pieces) {
+      if (piece.t1 - piece.t0 <= tol) continue;
+      const Point mid{(piece.p0.x + piece.p1.x) / 2, (piece.p0.y + piece.p1.y) / 2};
       std::string style = options.default_wall_style;
       for (const auto& z : zones) {
         if (distance_to_boundary(z.polygon, mid) <= tol) {
@@ -204,8 +206,7 @@ std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector
           break;
         }
       }
-      // Snap the ends that did not move to the exact boundary vertices (no rounding drift).
-      walls.push_back(Wall{{t0 == 0.0 ? s.a : a, t1 == len ? s.b : b}, options.default_wall_height, style});
+      walls.push_back(Wall{{piece.p0, piece.p1}, options.default_wall_height, style});
     }
   }
   return walls;
@@ -420,7 +421,9 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
       d.width = spec.width;
       d.zone = ZoneId(static_cast<std::uint32_t>(ends[0]));
       if (ends.size() == 2) d.other = ZoneId(static_cast<std::uint32_t>(ends[1]));
-      d.opening = {{s.a.x + u.x * (t - half), s.a.y + u.y * (t - half)}, {s.a.x + u.x * (t + half), s.a.y + u.y * (t + half)}};
+      // From the projected centre, so that round numbers stay round (2 ± 0.6, not 10 − 7.4).
+      const Point mid{s.a.x + u.x * t, s.a.y + u.y * t};
+      d.opening = {{mid.x - u.x * half, mid.y - u.y * half}, {mid.x + u.x * half, mid.y + u.y * half}};
       // Two doors in one opening would double-count it.
       for (const auto& other : doors) {
         const Segment& o = other.opening;

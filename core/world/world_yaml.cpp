@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 #include "core/world/world_document.hpp"
 
@@ -42,7 +44,7 @@ class FlowWriter {
     }
     return out + "\"";
   }
-  static std::string flow(const Json& v) {
+  static std::string flow(const Json& v, const std::vector<std::string_view>& order = {}) {
     if (v.is_string()) return quoted(v.get<std::string>());
     if (v.is_number()) return number(v.get<double>());
     if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
@@ -56,9 +58,8 @@ class FlowWriter {
     out = "{";
     bool first = true;
     // Keys in the order the format documents them, not alphabetical.
-    for (const char* key : {"type", "name", "kind", "material", "pose", "width", "connects", "start", "end", "height",
-                            "style", "length", "angle", "polygon", "affordances"}) {
-      auto it = v.find(key);
+    for (std::string_view key : order) {
+      auto it = v.find(std::string(key));
       if (it == v.end()) continue;
       out += (first ? "" : ", ") + std::string(key) + ": " + flow(*it);
       first = false;
@@ -67,6 +68,15 @@ class FlowWriter {
   }
 };
 
+// Keys in the order the format documents them (Fig. 3), not alphabetical.
+std::vector<std::string_view> key_order(std::string_view list) {
+  if (list == "zones") return {"name", "type", "material", "polygon"};
+  if (list == "walls") return {"start", "end", "height", "style"};
+  if (list == "doors") return {"name", "pose", "width", "connects"};
+  if (list == "segmentation") return {"name", "kind", "polygon"};
+  return {"type", "name", "pose", "affordances"};
+}
+
 }  // namespace
 
 std::string world_to_yaml(const World& world) {
@@ -74,7 +84,8 @@ std::string world_to_yaml(const World& world) {
   std::ostringstream out;
   out << "# socsim world (world.yaml): lengths in metres, angles in radians\n";
   if (doc.contains("name")) out << "name: " << FlowWriter::quoted(doc["name"].get<std::string>()) << "\n";
-  out << "units: " << FlowWriter::flow(doc["units"]) << "\n";
+  out << "units: {length: " << doc["units"]["length"].get<std::string>() << ", angle: "
+      << doc["units"]["angle"].get<std::string>() << "}\n";
   out << "origin: " << FlowWriter::flow(doc["origin"]) << "\n";
   if (doc.contains("floor")) out << "floor: {material: " << FlowWriter::quoted(doc["floor"]["material"].get<std::string>()) << "}\n";
   for (const char* list : {"zones", "walls", "doors", "segmentation", "entities"}) {
@@ -84,7 +95,7 @@ std::string world_to_yaml(const World& world) {
       continue;
     }
     out << list << ":\n";
-    for (const auto& item : items) out << "  - " << FlowWriter::flow(item) << "\n";
+    for (const auto& item : items) out << "  - " << FlowWriter::flow(item, key_order(list)) << "\n";
   }
   return out.str();
 }
