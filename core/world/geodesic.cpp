@@ -14,10 +14,27 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 GeodesicField GeodesicField::from_points(const OccupancyGrid& grid, std::span<const Point> sources) {
   std::vector<std::pair<Cell, float>> seeds;
+  // First-order marching from a single cell overestimates off-axis distances (≈3 % at 22°);
+  // seeding exact distances on a small disk around the source removes most of that, when
+  // the whole disk is free (so no straight line crosses a wall).
+  constexpr int kSeedRadius = 4;
   for (const Point& p : sources) {
     const auto c = grid.cell_of(p);
     if (!c || grid.blocked(*c)) continue;
-    seeds.emplace_back(*c, static_cast<float>(geometry::distance(p, grid.center(*c))));
+    bool disk_free = true;
+    for (int dy = -kSeedRadius; dy <= kSeedRadius && disk_free; ++dy) {
+      for (int dx = -kSeedRadius; dx <= kSeedRadius && disk_free; ++dx) {
+        if (dx * dx + dy * dy <= kSeedRadius * kSeedRadius) disk_free = !grid.blocked({c->x + dx, c->y + dy});
+      }
+    }
+    const int r = disk_free ? kSeedRadius : 0;
+    for (int dy = -r; dy <= r; ++dy) {
+      for (int dx = -r; dx <= r; ++dx) {
+        if (dx * dx + dy * dy > r * r) continue;
+        const Cell n{c->x + dx, c->y + dy};
+        seeds.emplace_back(n, static_cast<float>(geometry::distance(p, grid.center(n))));
+      }
+    }
   }
   GeodesicField f;
   f.march(grid, std::move(seeds));
