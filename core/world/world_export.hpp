@@ -1,0 +1,45 @@
+#pragma once
+// Simulator and map formats produced from one World: SVG drawing, Gazebo SDF world, ROS
+// map_server occupancy map (PGM + YAML) and pedsim_ros scenario XML. Every export except
+// SVG places the world at its origin pose (world.origin()).
+#include <string>
+
+#include "core/world/world.hpp"
+
+namespace socsim::world {
+
+struct SvgOptions {
+  double pixels_per_metre = 40.0;
+  bool labels = true;
+};
+// Zones filled by type, walls, doors, ROIs (dashed) and entities, labelled; y up.
+std::string export_svg(const World& world, const SvgOptions& options = {});
+
+struct SdfOptions {
+  double wall_thickness = 0.15;  // m; box depth of each wall
+  std::string world_name;        // default: the world's name, else "socsim_world"
+};
+// SDF 1.7: a ground plane and one static model with one link per wall (box of the wall's
+// length × thickness × height, pose at its centre). Walls that meet are extended by half
+// the thickness so corners close; door jambs are not.
+std::string export_sdf(const World& world, const SdfOptions& options = {});
+
+struct RosMapOptions {
+  double resolution = 0.05;  // m per pixel
+  std::string image_file = "map.pgm";
+  double occupied_thresh = 0.65;
+  double free_thresh = 0.196;
+};
+struct RosMap {
+  std::string pgm;   // binary P5, 254 = free, 0 = occupied (walls, outside the zones)
+  std::string yaml;  // map_server metadata naming image_file
+};
+RosMap export_ros_map(const World& world, const RosMapOptions& options = {});
+
+// pedsim_ros scenario: <obstacle> per wall, <waypoint> per ROI (centroid, radius of the
+// equal-area circle) and per entity (r = 1), <queue> per queue_lane ROI (head at the end
+// nearest a counter entity, direction along the lane), <attraction> per seating_area or
+// waiting_zone ROI (bounding box, strength 1). No agents: those belong to the scenario.
+std::string export_pedsim(const World& world);
+
+}  // namespace socsim::world
