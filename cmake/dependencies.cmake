@@ -9,7 +9,13 @@ find_package(SQLite3 REQUIRED)
 find_package(Eigen3 REQUIRED NO_MODULE)
 find_package(Boost 1.74 REQUIRED)
 find_package(ZLIB REQUIRED)
-find_path(HTTPLIB_INCLUDE_DIR httplib.h REQUIRED)
+find_path(HTTPLIB_INCLUDE_DIR httplib.h REQUIRED)  # header; link httplib::httplib (below)
 if(SOCSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()
+
+# Debian builds cpp-httplib as a shared library with OpenSSL/zlib/brotli support; the same
+# compile definitions must be used here or the class layouts differ (pkg-config carries them).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
+add_library(httplib::httplib ALIAS PkgConfig::HTTPLIB)

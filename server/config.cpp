@@ -1,0 +1,146 @@
+#include "server/config.hpp"
+
+#include <charconv>
+#include <set>
+
+extern char** environ;
+
+namespace socsim::server {
+namespace {
+
+template <class T>
+bool parse_number(const std::string& s, T& out) {
+  const char* end = s.data() + s.size();
+  auto [p, ec] = std::from_chars(s.data(), end, out);
+  return ec == std::errc() && p == end;
+}
+
+Status apply(ServerConfig& c, const std::string& flag, const std::string& value, const std::string& origin) {
+  auto bad = [&](const std::string& why) {
+    return fail(ErrorCode::kBadRequest, origin + ": " + why, {{"", why, flag, 0, 0}});
+  };
+  auto port = [&](int& out) -> Status {
+    int v = 0;
+    if (!parse_number(value, v) || v < 0 || v > 65535) return bad("must be a port number 0–65535");
+    out = v;
+    return {};
+  };
+  auto size = [&](std::size_t& out, std::size_t lo) -> Status {
+    std::size_t v = 0;
+    if (!parse_number(value, v) || v < lo) return bad("must be an integer ≥ " + std::to_string(lo));
+    out = v;
+    return {};
+  };
+  auto real = [&](double& out) -> Status {
+    try {
+      std::size_t used = 0;
+      const double v = std::stod(value, &used);
+      if (used != value.size() || v < 0) return bad("must be a non-negative number");
+      out = v;
+    } catch (const std::exception&) {
+      return bad("must be a non-negative number");
+    }
+    return {};
+  };
+  if (flag == "--host") c.host = value;
+  else if (flag == "--port") return port(c.port);
+  else if (flag == "--ws-port") return port(c.ws_port);
+  else if (flag == "--public-host") c.public_host = value;
+  else if (flag == "--db") c.db = value;
+  else if (flag == "--web-root") c.web_root = value;
+  else if (flag == "--threads") {
+    std::size_t t = 0;
+    if (auto s = size(t, 1); !s) return s;
+    c.threads = static_cast<int>(std::min<std::size_t>(t, 256));
+  } else if (flag == "--max-body") return size(c.max_body_bytes, 1024);
+  else if (flag == "--max-prompt") return size(c.max_prompt_bytes, 1);
+  else if (flag == "--max-page-size") return size(c.max_page_size, 1);
+  else if (flag == "--rate-limit") return real(c.rate_limit_rps);
+  else if (flag == "--rate-burst") return real(c.rate_limit_burst);
+  else if (flag == "--api-keys") {
+    auto keys = parse_api_keys(value);
+    if (!keys) return bad(keys.error().detail);
+    c.api_keys = std::move(*keys);
+  } else if (flag == "--llm-url") c.llm_url = value;
+  else if (flag == "--llm-model") c.llm_model = value;
+  else return fail(ErrorCode::kBadRequest, "unknown option " + flag + " (see socsim serve --help)");
+  return {};
+}
+
+}  // namespace
+
+const std::vector<FlagSpec>& serve_flags() {
+  static const std::vector<FlagSpec> flags = {
+      {"--host", "SOCSIM_HOST", "address to listen on (default 127.0.0.1; 0.0.0.0 for all)"},
+      {"--port", "SOCSIM_PORT", "HTTP port (default 8080)"},
+      {"--ws-port", "SOCSIM_WS_PORT", "WebSocket port (default 8081)"},
+      {"--public-host", "SOCSIM_PUBLIC_HOST", "host name clients use to reach this server (for URLs in /info)"},
+      {"--db", "SOCSIM_DB", "SQLite file (default ./var/socsim.db)"},
+      {"--web-root", "SOCSIM_WEB_ROOT", "static viewer files served at / (default ./web)"},
+      {"--threads", "SOCSIM_THREADS", "HTTP worker threads (default 8)"},
+      {"--max-body", "SOCSIM_MAX_BODY", "largest request body in bytes (default 2097152)"},
+      {"--max-prompt", "SOCSIM_MAX_PROMPT", "longest prompt in bytes (default 4000)"},
+      {"--max-page-size", "SOCSIM_MAX_PAGE_SIZE", "largest page_size for lists (default 100)"},
+      {"--rate-limit", "SOCSIM_RATE_LIMIT", "requests per second per client, 0 = off (default 50)"},
+      {"--rate-burst", "SOCSIM_RATE_BURST", "burst size of the per-client rate limit (default 100)"},
+      {"--api-keys", "SOCSIM_API_KEYS", "name:secret[,name:secret…]; when set, writes need a Bearer key"},
+      {"--llm-url", "SOCSIM_LLM_URL", "OpenAI-compatible endpoint base URL (optional)"},
+      {"--llm-model", "SOCSIM_LLM_MODEL", "model name for the LLM generator"},
+  };
+  return flags;
+}
+
+Result<std::vector<ApiKey>> parse_api_keys(const std::string& spec) {
+  std::vector<ApiKey> keys;
+  std::set<std::string> names;
+  std::size_t start = 0;
+  while (start <= spec.size()) {
+    const std::size_t comma = spec.find(',', start);
+    const std::string item = spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    start = comma == std::string::npos ? spec.size() + 1 : comma + 1;
+    if (item.empty()) continue;
+    const std::size_t colon = item.find(':');
+    if (colon == std::string::npos || colon == 0)
+      return fail(ErrorCode::kBadRequest, "each API key must be written name:secret");
+    ApiKey k{item.substr(0, colon), item.substr(colon + 1)};
+    if (k.secret.size() < 16)
+      return fail(ErrorCode::kBadRequest, "the secret of key '" + k.name + "' is shorter than 16 characters");
+    if (!names.insert(k.name).second) return fail(ErrorCode::kBadRequest, "key name '" + k.name + "' is used twice");
+    keys.push_back(std::move(k));
+  }
+  return keys;
+}
+
+std::map<std::string, std::string> current_environment() {
+  std::map<std::string, std::string> env;
+  for (char** e = environ; e && *e; ++e) {
+    std::string kv = *e;
+    if (auto eq = kv.find('='); eq != std::string::npos && kv.rfind("SOCSIM_", 0) == 0)
+      env[kv.substr(0, eq)] = kv.substr(eq + 1);
+  }
+  return env;
+}
+
+Result<ServerConfig> load_config(const std::vector<std::string>& args, const std::map<std::string, std::string>& env) {
+  ServerConfig c;
+  for (const FlagSpec& f : serve_flags()) {
+    if (auto it = env.find(f.env); it != env.end() && !it->second.empty())
+      if (auto s = apply(c, f.flag, it->second, f.env); !s) return tl::unexpected(s.error());
+  }
+  if (auto it = env.find("SOCSIM_LLM_API_KEY"); it != env.end() && !it->second.empty()) c.llm_key_set = true;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string flag = args[i], value;
+    if (auto eq = flag.find('='); eq != std::string::npos) {
+      value = flag.substr(eq + 1);
+      flag = flag.substr(0, eq);
+    } else {
+      if (i + 1 >= args.size()) return fail(ErrorCode::kBadRequest, flag + " needs a value");
+      value = args[++i];
+    }
+    if (auto s = apply(c, flag, value, flag); !s) return tl::unexpected(s.error());
+  }
+  if (c.default_page_size > c.max_page_size) c.default_page_size = c.max_page_size;
+  return c;
+}
+
+}  // namespace socsim::server

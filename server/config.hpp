@@ -1,0 +1,57 @@
+#pragma once
+// Daemon configuration: built-in defaults, overridden by SOCSIM_* environment variables,
+// overridden by command-line flags. Every flag has an environment variable.
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/common/error.hpp"
+
+namespace socsim::server {
+
+struct ApiKey {
+  std::string name;    // becomes the author of cards written with this key
+  std::string secret;  // never logged
+};
+
+struct ServerConfig {
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  int ws_port = 8081;
+  std::string public_host;  // host name put in URLs given to clients (default: host, or localhost)
+  std::string db = "./var/socsim.db";
+  std::string web_root = "./web";
+  int threads = 8;
+  std::size_t max_body_bytes = 2u << 20;
+  std::size_t max_prompt_bytes = 4000;
+  std::size_t max_page_size = 100;
+  std::size_t default_page_size = 20;
+  double rate_limit_rps = 50.0;  // per client; 0 disables
+  double rate_limit_burst = 100.0;
+  int read_timeout_s = 10;
+  int write_timeout_s = 10;
+  std::vector<ApiKey> api_keys;  // empty: writes are open (local use)
+  std::string llm_url;
+  std::string llm_model;
+  bool llm_key_set = false;
+};
+
+struct FlagSpec {
+  std::string flag;  // "--port"
+  std::string env;   // "SOCSIM_PORT"
+  std::string help;
+};
+
+// The flags `socsim serve` understands, for --help and docs.
+const std::vector<FlagSpec>& serve_flags();
+
+// Reads environment then argv (argv[0] is the first flag, not the program name).
+Result<ServerConfig> load_config(const std::vector<std::string>& args, const std::map<std::string, std::string>& env);
+
+// "alice:s3cret,bob:hunter2" → keys; names must be unique, secrets at least 16 characters.
+Result<std::vector<ApiKey>> parse_api_keys(const std::string& spec);
+
+std::map<std::string, std::string> current_environment();
+
+}  // namespace socsim::server

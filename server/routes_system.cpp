@@ -1,0 +1,86 @@
+// GET /api/v1/health, /api/v1/info, /api/v1/openapi.yaml, /api/v1/schemas/{name}.
+#include "server/http_util.hpp"
+#include "server/routes.hpp"
+#include "socsim/buildinfo.hpp"
+
+namespace socsim::server {
+
+std::string RouteContext::author(const httplib::Request& req) const {
+  if (!keys.enabled()) return "anonymous";
+  return keys.authenticate(req.get_header_value("Authorization")).value_or("anonymous");
+}
+
+std::string RouteContext::public_host(const httplib::Request& req) const {
+  if (!config.public_host.empty()) return config.public_host;
+  std::string host = req.get_header_value("Host");
+  if (!host.empty() && host.front() == '[') {  // [::1]:8080
+    return host.substr(0, host.find(']') + 1);
+  }
+  if (auto colon = host.find(':'); colon != std::string::npos) host = host.substr(0, colon);
+  if (host.empty()) host = config.host == "0.0.0.0" ? "localhost" : config.host;
+  return host;
+}
+
+void register_system_routes(httplib::Server& http, RouteContext& ctx) {
+  http.Get("/api/v1/health", [&ctx](const httplib::Request& req, httplib::Response& res) {
+    auto count = ctx.catalogue.count();
+    const double uptime = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.started).count();
+    if (!count) {
+      reply_problem(res, Error(ErrorCode::kStore, "the database is not answering: " + count.error().detail), req.path);
+      return;
+    }
+    reply_json(res, 200,
+               {{"status", "ok"},
+                {"database", {{"status", "ok"}, {"schema_version", ctx.store.schema_version()}, {"cards", *count}}},
+                {"uptime_s", std::round(uptime * 10.0) / 10.0}});
+  });
+
+  http.Get("/api/v1/info", [&ctx](const httplib::Request& req, httplib::Response& res) {
+    const auto& c = ctx.config;
+    Json generators = Json::array();
+    generators.push_back({{"name", "offline"}, {"available", true}, {"default", true}});
+    generators.push_back({{"name", "llm"},
+                          {"available", !c.llm_url.empty()},
+                          {"default", false},
+                          {"model", c.llm_model.empty() ? Json(nullptr) : Json(c.llm_model)}});
+    reply_json(res, 200,
+               {{"name", "socsim"},
+                {"version", build::kVersion},
+                {"build", {{"git_sha", build::kGitSha}, {"flavor", build::kFlavor}, {"compiler", build::kCompiler}}},
+                {"api", "/api/v1"},
+                {"openapi", "/api/v1/openapi.yaml"},
+                {"generators", generators},
+                {"websocket_url", "ws://" + ctx.public_host(req) + ":" + std::to_string(c.ws_port) + "/ws"},
+                {"auth", {{"writes_require_key", ctx.keys.enabled()}, {"scheme", "Bearer"}}},
+                {"limits",
+                 {{"max_body_bytes", c.max_body_bytes},
+                  {"max_prompt_bytes", c.max_prompt_bytes},
+                  {"max_page_size", c.max_page_size},
+                  {"rate_limit_rps", c.rate_limit_rps},
+                  {"rate_limit_burst", c.rate_limit_burst}}},
+                {"schema_version", ctx.store.schema_version()}});
+  });
+
+  http.Get("/api/v1/openapi.yaml", [](const httplib::Request& req, httplib::Response& res) {
+    const auto& files = embedded_schemas();
+    auto it = files.find("openapi.yaml");
+    if (it == files.end()) {
+      reply_problem(res, Error(ErrorCode::kNotFound, "this build carries no openapi.yaml"), req.path);
+      return;
+    }
+    res.set_content(it->second, "application/yaml");
+  });
+
+  http.Get(R"(/api/v1/schemas/([A-Za-z0-9_.\-/]+))", [](const httplib::Request& req, httplib::Response& res) {
+    const auto& files = embedded_schemas();
+    auto it = files.find(req.matches[1].str());
+    if (it == files.end() || it->first.find("..") != std::string::npos) {
+      reply_problem(res, Error(ErrorCode::kNotFound, "no schema named '" + req.matches[1].str() + "'"), req.path);
+      return;
+    }
+    const bool yaml = it->first.size() > 5 && it->first.substr(it->first.size() - 5) == ".yaml";
+    res.set_content(it->second, yaml ? "application/yaml" : "application/schema+json");
+  });
+}
+
+}  // namespace socsim::server

@@ -1,0 +1,37 @@
+#pragma once
+// The WebSocket endpoint (Boost.Beast, its own port). /ws/catalogue streams catalogue events
+// (card.created, card.deleted) as JSON text frames. A slow client loses its oldest queued
+// frames; it never slows the publisher.
+#include <memory>
+#include <string>
+
+#include "core/common/error.hpp"
+#include "server/event_hub.hpp"
+
+namespace socsim::server {
+
+struct WsOptions {
+  std::string host = "127.0.0.1";
+  int port = 8081;
+  std::size_t max_clients = 256;
+  std::size_t max_queued_frames = 64;
+};
+
+class WsServer {
+ public:
+  WsServer(WsOptions options, EventHub& events);
+  ~WsServer();
+  WsServer(const WsServer&) = delete;
+  WsServer& operator=(const WsServer&) = delete;
+  Result<int> bind();  // port 0 picks a free one
+  void start();        // serves on a background I/O thread
+  void stop();         // closes every connection and joins the thread
+  [[nodiscard]] int port() const { return port_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int port_ = 0;
+};
+
+}  // namespace socsim::server

@@ -1,0 +1,59 @@
+#pragma once
+// A real socsim API server on a free 127.0.0.1 port with its own SQLite file, for tests that
+// speak HTTP to it.
+#include <httplib.h>
+
+#include <fstream>
+#include <memory>
+#include <thread>
+
+#include "server/api_server.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace socsim::testing {
+
+class TestServer {
+ public:
+  explicit TestServer(server::ServerConfig config = {}) {
+    config.host = "127.0.0.1";
+    config.port = 0;
+    config.db = dir_.file("socsim.db");
+    config.web_root = dir_.file("web");
+    std::filesystem::create_directories(config.web_root);
+    std::ofstream(config.web_root + "/index.html") << "<!doctype html><title>socsim</title>";
+    store_ = std::move(store::Store::open(config.db).value());
+    api_ = std::make_unique<server::ApiServer>(config, *store_, events_);
+    port_ = api_->bind().value();
+    thread_ = std::thread([this] { api_->run(); });
+    // Wait until the listener accepts.
+    for (int i = 0; i < 200; ++i) {
+      if (client().Get("/api/v1/health")) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }
+  ~TestServer() {
+    api_->stop();
+    thread_.join();
+  }
+  TestServer(const TestServer&) = delete;
+  TestServer& operator=(const TestServer&) = delete;
+
+  [[nodiscard]] httplib::Client client() const {
+    httplib::Client c("127.0.0.1", port_);
+    c.set_read_timeout(10, 0);
+    return c;
+  }
+  [[nodiscard]] int port() const { return port_; }
+  server::EventHub& events() { return events_; }
+  store::Store& store() { return *store_; }
+
+ private:
+  TempDir dir_;
+  server::EventHub events_;
+  std::unique_ptr<store::Store> store_;
+  std::unique_ptr<server::ApiServer> api_;
+  std::thread thread_;
+  int port_ = 0;
+};
+
+}  // namespace socsim::testing
