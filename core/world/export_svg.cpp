@@ -22,7 +22,12 @@ std::string zone_colour(const std::string& type) {
 
 std::string points(const std::vector<Point>& ring) {
   std::string out;
-  for (const Point& p : ring) out += (out.empty() ? "" : " ") + micro(p.x) + "," + micro(-p.y);
+  for (const Point& p : ring) {
+    if (!out.empty()) out += ' ';
+    out += micro(p.x);
+    out += ',';
+    out += micro(-p.y);
+  }
   return out;
 }
 

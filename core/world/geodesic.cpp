@@ -74,59 +74,67 @@ void GeodesicField::march(const OccupancyGrid& grid, std::vector<std::pair<Cell,
   origin_ = grid.origin();
   const std::size_t n = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
   values_.assign(n, kInf);
-  std::vector<std::uint8_t> done(n, 0);
-  const auto blocked = grid.blocked_cells();
-  const double h = resolution_;
-  const int w = width_;
 
-  using Item = std::pair<float, std::uint32_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> heap;
+  // Work on a copy padded by one blocked cell on every side: no bounds checks in the loop.
+  // `known` holds accepted distances (+inf until accepted), so the upwind update reads four
+  // neighbours without branching on their state.
+  const int pw = width_ + 2;
+  const std::size_t pn = static_cast<std::size_t>(pw) * static_cast<std::size_t>(height_ + 2);
+  std::vector<std::uint8_t> open(pn, 0);  // free and not yet accepted
+  std::vector<double> known(pn, static_cast<double>(kInf));
+  std::vector<double> trial(pn, static_cast<double>(kInf));
+  const auto blocked = grid.blocked_cells();
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+      open[static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(pw) + static_cast<std::size_t>(x + 1)] = blocked[i] ? 0 : 1;
+    }
+  }
+  const double h = resolution_;
+  const double two_h2 = 2.0 * h * h;
+
+  using Item = std::pair<double, std::uint32_t>;
+  std::vector<Item> heap_store;
+  heap_store.reserve(n / 4 + seeds.size());
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> heap(std::greater<>{}, std::move(heap_store));
+  auto padded = [pw](Cell c) {
+    return static_cast<std::size_t>(c.y + 1) * static_cast<std::size_t>(pw) + static_cast<std::size_t>(c.x + 1);
+  };
   for (const auto& [c, d] : seeds) {
-    const std::size_t i = grid.index(c);
-    if (d < values_[i]) {
-      values_[i] = d;
+    const std::size_t i = padded(c);
+    if (d < trial[i]) {
+      trial[i] = d;
       heap.emplace(d, static_cast<std::uint32_t>(i));
     }
   }
   has_source_ = !heap.empty();
-
-  auto solve = [&](std::size_t i) -> float {
-    const int x = static_cast<int>(i % static_cast<std::size_t>(w));
-    const int y = static_cast<int>(i / static_cast<std::size_t>(w));
-    // Only accepted neighbours take part in the upwind update.
-    auto val = [&](int xx, int yy) -> double {
-      if (xx < 0 || yy < 0 || xx >= w || yy >= height_) return kInf;
-      const std::size_t j = static_cast<std::size_t>(yy) * static_cast<std::size_t>(w) + static_cast<std::size_t>(xx);
-      return done[j] ? static_cast<double>(values_[j]) : static_cast<double>(kInf);
-    };
-    const double a = std::min(val(x - 1, y), val(x + 1, y));
-    const double b = std::min(val(x, y - 1), val(x, y + 1));
-    const double lo = std::min(a, b);
-    const double hi = std::max(a, b);
-    if (!std::isfinite(lo)) return kInf;
-    if (!std::isfinite(hi) || hi - lo >= h) return static_cast<float>(lo + h);
-    const double diff = hi - lo;
-    return static_cast<float>(0.5 * (lo + hi + std::sqrt(2.0 * h * h - diff * diff)));
-  };
+  const std::size_t stride = static_cast<std::size_t>(pw);
 
   while (!heap.empty()) {
     const auto [d, i] = heap.top();
     heap.pop();
-    if (done[i] || d > values_[i]) continue;
-    done[i] = 1;
-    const int x = static_cast<int>(i % static_cast<std::uint32_t>(w));
-    const int y = static_cast<int>(i / static_cast<std::uint32_t>(w));
-    const int nx[4] = {x - 1, x + 1, x, x};
-    const int ny[4] = {y, y, y - 1, y + 1};
-    for (int k = 0; k < 4; ++k) {
-      if (nx[k] < 0 || ny[k] < 0 || nx[k] >= w || ny[k] >= height_) continue;
-      const std::size_t j = static_cast<std::size_t>(ny[k]) * static_cast<std::size_t>(w) + static_cast<std::size_t>(nx[k]);
-      if (done[j] || blocked[j]) continue;
-      const float t = solve(j);
-      if (t < values_[j]) {
-        values_[j] = t;
+    if (!open[i] || d > trial[i]) continue;
+    open[i] = 0;
+    known[i] = d;
+    const std::size_t nbrs[4] = {i - 1, i + 1, i - stride, i + stride};
+    for (const std::size_t j : nbrs) {
+      if (!open[j]) continue;
+      const double a = std::min(known[j - 1], known[j + 1]);
+      const double b = std::min(known[j - stride], known[j + stride]);
+      const double lo = std::min(a, b);
+      const double hi = std::max(a, b);
+      const double diff = hi - lo;
+      const double t = diff >= h ? lo + h : 0.5 * (lo + hi + std::sqrt(two_h2 - diff * diff));
+      if (t < trial[j]) {
+        trial[j] = t;
         heap.emplace(t, static_cast<std::uint32_t>(j));
       }
+    }
+  }
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      values_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)] =
+          static_cast<float>(known[padded({x, y})]);
     }
   }
 }

@@ -271,7 +271,10 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     v.name(ptr + "/name", r.name, names);
     if (!is_roi_kind(r.kind)) {
       std::string known;
-      for (auto k : roi_kinds()) known += (known.empty() ? "" : ", ") + std::string(k);
+      for (auto k : roi_kinds()) {
+        if (!known.empty()) known += ", ";
+        known += k;
+      }
       v.add(ptr + "/kind", "unknown ROI kind '" + r.kind + "' (known: " + known + ")");
     }
     roi_ok[i] = v.polygon(geos, ptr + "/polygon", r.polygon, "ROI '" + r.name + "'");
@@ -538,7 +541,9 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
           std::string doors_of;
           for (const auto& d : w.doors_) {
             if (d.zone.index() == z || (d.other && d.other->index() == z)) {
-              doors_of += (doors_of.empty() ? "" : ", ") + d.name + " (" + num(d.width) + " m)";
+              if (!doors_of.empty()) doors_of += ", ";
+              doors_of += d.name;
+              doors_of += " (" + num(d.width) + " m)";
             }
           }
           v.add(zone_ptr(z), "zone '" + zones_[z].name + "' cannot be reached from zone '" + zones_[ref_zone].name +

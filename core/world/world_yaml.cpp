@@ -52,7 +52,10 @@ class FlowWriter {
     std::string out;
     if (v.is_array()) {
       out = "[";
-      for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + flow(v[i]);
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        if (i) out += ", ";
+        out += flow(v[i]);
+      }
       return out + "]";
     }
     out = "{";
@@ -61,7 +64,10 @@ class FlowWriter {
     for (std::string_view key : order) {
       auto it = v.find(std::string(key));
       if (it == v.end()) continue;
-      out += (first ? "" : ", ") + std::string(key) + ": " + flow(*it);
+      if (!first) out += ", ";
+      out += key;
+      out += ": ";
+      out += flow(*it);
       first = false;
     }
     return out + "}";

@@ -1,0 +1,112 @@
+// socsim-bench world: build + validate a 10-room plan (GEOS checks, derived walls, reachability
+// grid), a 256 x 256 geodesic field, and a world.yaml read/write round trip; p50/p95 in ms.
+#include <chrono>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include "core/world/geodesic.hpp"
+#include "core/world/occupancy_grid.hpp"
+#include "core/world/world_builder.hpp"
+#include "core/world/world_yaml.hpp"
+#include "tests/bench/bench.hpp"
+
+namespace {
+
+using namespace socsim::world;
+
+// Ten 4 x 5 m rooms, five on each side of a 2 m corridor, each with a door into it, an
+// entrance at the corridor's west end, a queue lane and a waiting zone — a generator's output.
+WorldBuilder ten_room_plan() {
+  WorldBuilder b;
+  b.set_name("ten_rooms");
+  b.add_zone(Zone{"corridor", "corridor", "washable_paint", {{{0, 5}, {20, 5}, {20, 7}, {0, 7}}, {}}});
+  for (int side = 0; side < 2; ++side) {
+    for (int i = 0; i < 5; ++i) {
+      const std::string name = "room_" + std::to_string(side * 5 + i);
+      const double x0 = 4.0 * i;
+      const double y0 = side == 0 ? 0.0 : 7.0;
+      b.add_zone(Zone{name, "office", "painted_plaster", {{{x0, y0}, {x0 + 4, y0}, {x0 + 4, y0 + 5}, {x0, y0 + 5}}, {}}});
+      b.add_door(DoorSpec{name + "_door", {x0 + 2, side == 0 ? 5.0 : 7.0, 0}, 0.9, {"corridor", name}});
+      b.add_entity(EntitySpec{"desk", name + "_desk", {x0 + 2, y0 + 2.5, 0}, {"work"}});
+    }
+  }
+  b.add_door(DoorSpec{"entrance", {0, 6, 0}, 1.2, {"corridor"}});
+  b.add_roi(Roi{"queue_lane", "queue_lane", {{{1, 5.3}, {4, 5.3}, {4, 6}, {1, 6}}, {}}});
+  b.add_roi(Roi{"waiting_zone", "waiting_zone", {{{14, 5.2}, {19, 5.2}, {19, 6.8}, {14, 6.8}}, {}}});
+  return b;
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) { return socsim::bench::seconds_since(t0) * 1e3; }
+
+// CPU time of this thread: on a loaded machine wall time mostly measures the other processes.
+double thread_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+
+int run(const socsim::bench::Args& a) {
+  const int runs = static_cast<int>(a.integer("runs", 50));
+  const WorldBuilder plan = ten_room_plan();
+  std::vector<double> build_ms;
+  std::vector<double> build_cpu;
+  std::size_t walls = 0;
+  for (int i = 0; i < runs; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_ms();
+    auto w = plan.build();
+    build_cpu.push_back(thread_cpu_ms() - c0);
+    build_ms.push_back(ms_since(t0));
+    if (!w) {
+      std::cerr << w.error().message() << "\n";
+      return 1;
+    }
+    walls = w->walls().size();
+  }
+  socsim::bench::emit({{"bench", "world_build_10_rooms"}, {"runs", runs}, {"zones", 11}, {"walls", walls},
+                       {"p50_ms", socsim::bench::percentile(build_ms, 50)}, {"p95_ms", socsim::bench::percentile(build_ms, 95)},
+                       {"cpu_p50_ms", socsim::bench::percentile(build_cpu, 50)}, {"cpu_p95_ms", socsim::bench::percentile(build_cpu, 95)}});
+
+  // 25.4 m square at 0.1 m plus a one-cell margin: a 256 x 256 grid.
+  WorldBuilder square;
+  square.add_zone(Zone{"hall", "hall", "", {{{0, 0}, {25.4, 0}, {25.4, 25.4}, {0, 25.4}}, {}}});
+  square.add_wall(Wall{{{5, 0}, {5, 20}}, 3.0, ""});
+  square.add_wall(Wall{{{12, 25.4}, {12, 5}}, 3.0, ""});
+  square.add_wall(Wall{{{19, 0}, {19, 20}}, 3.0, ""});
+  const World hall = square.build().value();
+  const auto grid = OccupancyGrid::rasterise(hall, GridOptions{0.1, 0.25});
+  std::vector<double> field_ms;
+  std::vector<double> field_cpu;
+  double far = 0;
+  const Point source{1, 1};
+  for (int i = 0; i < runs; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_ms();
+    const auto f = GeodesicField::from_points(grid, std::span<const Point>(&source, 1));
+    field_cpu.push_back(thread_cpu_ms() - c0);
+    field_ms.push_back(ms_since(t0));
+    far = f.distance({24, 1}).value_or(-1);
+  }
+  socsim::bench::emit({{"bench", "geodesic_field"}, {"runs", runs}, {"width", grid.width()}, {"height", grid.height()},
+                       {"serpentine_distance_m", far}, {"p50_ms", socsim::bench::percentile(field_ms, 50)},
+                       {"p95_ms", socsim::bench::percentile(field_ms, 95)},
+                       {"cpu_p50_ms", socsim::bench::percentile(field_cpu, 50)}, {"cpu_p95_ms", socsim::bench::percentile(field_cpu, 95)}});
+
+  const std::string yaml = world_to_yaml(plan.build().value());
+  std::vector<double> yaml_ms;
+  for (int i = 0; i < runs; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto w = world_from_yaml(yaml);
+    const std::string again = world_to_yaml(*w);
+    yaml_ms.push_back(ms_since(t0));
+    if (again != yaml) return 1;
+  }
+  socsim::bench::emit({{"bench", "world_yaml_read_build_write"}, {"runs", runs}, {"bytes", yaml.size()},
+                       {"p50_ms", socsim::bench::percentile(yaml_ms, 50)}, {"p95_ms", socsim::bench::percentile(yaml_ms, 95)}});
+  return 0;
+}
+
+}  // namespace
+
+SOCSIM_BENCH("world", "world build+validate (10 rooms), 256x256 geodesic field, world.yaml round trip", run);
