@@ -11,7 +11,10 @@ packages=(
   libboost-dev libexpected-dev libssl-dev zlib1g-dev clang-format
 )
 if [ "${1:-}" = "--with-browser" ]; then
-  packages+=(chromium nodejs npm)
+  packages+=(chromium)
+  # Node.js for the browser tests; a machine that already has node (e.g. from NodeSource) keeps it.
+  command -v node >/dev/null 2>&1 || packages+=(nodejs)
+  command -v npm >/dev/null 2>&1 || packages+=(npm)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,67 @@
+// The catalogue viewer in headless Debian Chromium, served by the daemon itself: cards listed,
+// searched, opened; a card POSTed while the page is open appears live over the WebSocket.
+// A screenshot per test lands in tests/e2e/artifacts/.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { existsSync, mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { startServer, repoRoot } from './server.mjs';
+
+const chromiumPath = '/usr/bin/chromium';
+const artifacts = join(repoRoot, 'tests', 'e2e', 'artifacts');
+let server, browser, chromium;
+
+const card = (title, prompt, tags, domain) => ({
+  title, prompt, tags, domain, description: `${title}: ${prompt}.`, seed: 1, generator: { name: 'offline' },
+});
+
+before(async () => {
+  if (!existsSync(chromiumPath)) return;
+  ({ chromium } = await import('playwright-core'));
+  mkdirSync(artifacts, { recursive: true });
+  server = await startServer();
+  await server.post('/api/v1/cards', card('Morning check-in', 'patients queue at the reception desk', ['queue'], 'hospital'));
+  await server.post('/api/v1/cards', card('Fire drill', 'everyone evacuates through the two exits', ['emergency'], 'office'));
+  browser = await chromium.launch({
+    executablePath: chromiumPath,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
+      '--disable-sync', '--no-first-run', '--disable-quic'],
+  });
+});
+
+after(async () => {
+  await browser?.close();
+  await server?.stop();
+});
+
+test('catalogue lists, searches and opens cards', { skip: !existsSync(chromiumPath) && 'Debian chromium is not installed (bash deploy/install-deps.sh --with-browser)' }, async () => {
+  const page = await browser.newPage();
+  await page.goto(server.base + '/');
+  await page.waitForSelector('#cards li');
+  assert.equal(await page.locator('#cards li').count(), 2);
+  await page.fill('#q', 'evacuate');
+  await page.click('#search button');
+  await page.waitForFunction(() => document.querySelectorAll('#cards li').length === 1);
+  await page.click('#cards li');
+  await page.waitForSelector('#detail h2');
+  assert.equal(await page.textContent('#detail h2'), 'Fire drill');
+  assert.match(page.url(), /#card=crd_/);
+  await page.screenshot({ path: join(artifacts, 'catalogue.png'), fullPage: true });
+  await page.close();
+});
+
+test('a card created elsewhere appears live, and share links open it', { skip: !existsSync(chromiumPath) && 'Debian chromium is not installed' }, async () => {
+  const page = await browser.newPage();
+  await page.goto(server.base + '/');
+  await page.waitForSelector('#live.on');
+  const created = await server.post('/api/v1/cards', card('Coffee break', 'staff gather at the coffee machine', ['social'], 'office'));
+  assert.equal(created.status, 201);
+  await page.waitForSelector(`#cards li[data-id="${created.body.id}"]`);
+  await page.screenshot({ path: join(artifacts, 'live.png'), fullPage: true });
+  const shared = await browser.newPage();
+  await shared.goto(`${server.base}/#card=${created.body.id}`);
+  await shared.waitForSelector('#detail h2');
+  assert.equal(await shared.textContent('#detail h2'), 'Coffee break');
+  await shared.close();
+  await page.close();
+});
