@@ -18,7 +18,9 @@ struct Lane {
   Point tail;
 };
 
-// The lane's long axis (principal axis of its vertices); the head is the end nearest an entity.
+// The lane's long axis (principal axis of its vertices). The head is the end nearest an
+// entity within one lane length of it (the counter being queued for); without one, the end
+// nearest the polygon's first vertex.
 Lane lane_axis(const World& world, const Polygon& poly) {
   const Point c = geometry::centroid(poly.outer);
   Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
@@ -37,11 +39,16 @@ Lane lane_axis(const World& world, const Polygon& poly) {
   }
   const Point a{c.x + axis.x() * lo, c.y + axis.y() * lo};
   const Point b{c.x + axis.x() * hi, c.y + axis.y() * hi};
+  const double reach = hi - lo;
   double da = INFINITY;
   double db = INFINITY;
   for (const auto& e : world.entities()) {
     da = std::min(da, geometry::distance(a, e.pose.position()));
     db = std::min(db, geometry::distance(b, e.pose.position()));
+  }
+  if (std::min(da, db) > reach) {
+    da = geometry::distance(a, poly.outer.front());
+    db = geometry::distance(b, poly.outer.front());
   }
   return db < da ? Lane{b, a} : Lane{a, b};
 }
