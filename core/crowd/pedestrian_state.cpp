@@ -114,7 +114,15 @@ Result<PedestrianState> pedestrian_state_from_json(const Json& j, const std::str
   if (const Json* meta = check.object(j, pointer, "metadata", false)) {
     const std::string p = JsonChecker::child(pointer, "metadata");
     check.only_keys(*meta, p, {"seed", "bt_node", "tags"});
-    if (auto seed = check.integer(*meta, p, "seed", false, 0)) s.metadata.seed = static_cast<std::uint64_t>(*seed);
+    if (auto it = meta->find("seed"); it != meta->end()) {  // full 64-bit range
+      if (it->is_number_unsigned()) {
+        s.metadata.seed = it->get<std::uint64_t>();
+      } else if (it->is_number_integer() && it->get<std::int64_t>() >= 0) {
+        s.metadata.seed = static_cast<std::uint64_t>(it->get<std::int64_t>());
+      } else {
+        check.add(JsonChecker::child(p, "seed"), "must be an integer in [0, 2^64)");
+      }
+    }
     if (auto node = check.string(*meta, p, "bt_node", false, 0, 256)) s.metadata.bt_node = *node;
     if (const Json* tags = check.array(*meta, p, "tags", false, 256)) {
       const std::string tp = JsonChecker::child(p, "tags");

@@ -1,0 +1,904 @@
+#include "core/crowd/crowd_simulation.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "core/common/rng.hpp"
+#include "core/crowd/fast_math.hpp"
+#include "core/crowd/social_kernel.hpp"
+
+namespace socsim::crowd {
+
+// Agents sorted by grid cell (counting sort, stable), with their frozen state copied into
+// contiguous arrays so a neighbour scan reads memory in order.
+struct CrowdSimulation::CellIndex {
+  double origin_x = 0.0;
+  double origin_y = 0.0;
+  double cell = 1.0;
+  double inv_cell = 1.0;
+  std::int64_t nx = 0;
+  std::int64_t ny = 0;
+  std::vector<std::uint32_t> start;    // nx*ny + 1 offsets into the sorted arrays
+  std::vector<std::uint32_t> order;    // sorted position -> agent index
+  std::vector<std::uint32_t> cell_of;  // agent index -> cell (kNoCell when inactive)
+  std::vector<double> x, y, vx, vy, r;
+  std::vector<std::int32_t> group;
+  std::vector<std::uint32_t> id;
+};
+
+struct CrowdSimulation::AgentMeta {
+  Activity activity = Activity::kWalking;
+  Intent intent;
+  std::vector<std::string> tags;
+  std::string bt_node;
+  std::uint64_t seed = 0;
+  std::int64_t group_id = -1;
+  std::vector<Goal> goals;
+  std::size_t goal_index = 0;
+  bool cyclic = false;
+};
+
+namespace {
+
+constexpr std::uint32_t kNoCell = UINT32_MAX;
+constexpr double kMaxCoordinate = 1.0e6;  // m; keeps every product far from overflow
+constexpr double kTiny2 = 1e-18;          // squared lengths below this count as zero
+
+bool finite_in_range(double v, double limit) { return std::isfinite(v) && std::abs(v) <= limit; }
+
+FieldError field(std::string pointer, std::string message) {
+  return FieldError{std::move(pointer), std::move(message), {}, 0, 0};
+}
+
+double wrap_angle(double a) {
+  while (a > std::numbers::pi) a -= 2.0 * std::numbers::pi;
+  while (a <= -std::numbers::pi) a += 2.0 * std::numbers::pi;
+  return a;
+}
+
+// Separation direction for two agents at the same point: fixed per pair and antisymmetric
+// (agent i gets u, agent j gets -u), so coincident agents part deterministically.
+Vec2 tie_break_direction(std::uint32_t i, std::uint32_t j) {
+  static constexpr std::array<Vec2, 8> kDirs = {{{1.0, 0.0},
+                                                 {0.70710678118654752, 0.70710678118654752},
+                                                 {0.0, 1.0},
+                                                 {-0.70710678118654752, 0.70710678118654752},
+                                                 {-1.0, 0.0},
+                                                 {-0.70710678118654752, -0.70710678118654752},
+                                                 {0.0, -1.0},
+                                                 {0.70710678118654752, -0.70710678118654752}}};
+  const std::uint32_t lo = std::min(i, j);
+  const std::uint32_t hi = std::max(i, j);
+  const Vec2 u = kDirs[((lo * 2654435761u) ^ (hi * 40503u)) >> 29u];
+  return i < j ? u : Vec2{-u.x, -u.y};
+}
+
+double orient(Vec2 a, Vec2 b, Vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+
+// Where along from→to the move meets the wall's line (0..1).
+double hit_parameter(Vec2 from, Vec2 to, const WallSegment& w) {
+  const double o1 = orient(w.a, w.b, from);
+  const double o2 = orient(w.a, w.b, to);
+  if (o1 == o2) return 0.0;
+  return std::clamp(o1 / (o1 - o2), 0.0, 1.0);
+}
+
+int first_blocking_wall(Vec2 from, Vec2 to, std::span<const std::uint32_t> near,
+                        const std::vector<WallSegment>& walls, double* t_hit) {
+  int best = -1;
+  double best_t = 2.0;
+  for (std::uint32_t w : near) {
+    const WallSegment& s = walls[w];
+    if (!move_blocked(from, to, s.a, s.b)) continue;
+    const double t = hit_parameter(from, to, s);
+    if (t < best_t) {
+      best_t = t;
+      best = static_cast<int>(w);
+    }
+  }
+  *t_hit = best_t;
+  return best;
+}
+
+// The wall guard: returns where an agent moving p→q may end so that the straight move from p
+// crosses no wall. Blocked moves stop just before the first wall hit and slide along it; up to
+// three walls (corners) are handled, otherwise the agent keeps the last legal stop.
+Vec2 guard_move(Vec2 p, Vec2 q, std::span<const std::uint32_t> near, const std::vector<WallSegment>& walls) {
+  constexpr double kGap = 1e-6;  // m kept between the stop point and the wall along the move
+  Vec2 target = q;
+  Vec2 safe = p;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    double t = 0.0;
+    const int w = first_blocking_wall(p, target, near, walls, &t);
+    if (w < 0) return target;
+    const double dx = target.x - p.x;
+    const double dy = target.y - p.y;
+    const double len = std::sqrt(dx * dx + dy * dy);
+    const double t_stop = len > 0.0 ? std::max(0.0, t - kGap / len) : 0.0;
+    Vec2 stop{p.x + dx * t_stop, p.y + dy * t_stop};
+    double unused = 0.0;
+    if (first_blocking_wall(p, stop, near, walls, &unused) >= 0) stop = p;
+    safe = stop;
+    const WallSegment& s = walls[static_cast<std::size_t>(w)];
+    const double ux = s.b.x - s.a.x;
+    const double uy = s.b.y - s.a.y;
+    const double ulen2 = ux * ux + uy * uy;
+    const double along = ((target.x - stop.x) * ux + (target.y - stop.y) * uy) / ulen2;
+    target = {stop.x + ux * along, stop.y + uy * along};
+  }
+  double unused = 0.0;
+  return first_blocking_wall(p, target, near, walls, &unused) < 0 ? target : safe;
+}
+
+// Frozen state of the candidate neighbours, in the order a scan visits them.
+struct NeighbourArrays {
+  const double *x, *y, *vx, *vy, *r;
+  const std::int32_t* group;
+  const std::uint32_t* id;      // agent index of each entry (nullptr: the entry index is the id)
+  const std::uint8_t* active;   // nullptr: all entries are active
+};
+
+// Collects the neighbours of one agent within the cut-off (in the order the scan visits them),
+// runs the kernel batch by batch and sums in that order. The collection is branch-free: every
+// candidate is written, and the batch only grows when it is within the cut-off. Group repulsion
+// and the body force act only between touching agents and are added in double precision.
+class NeighbourSums {
+ public:
+  NeighbourSums(std::uint32_t id, double x, double y, double vx, double vy, double r, std::int32_t group,
+                double cutoff, const ForceParameters& fp, double body_stiffness)
+      : id_(id),
+        x_(x),
+        y_(y),
+        vx_(vx),
+        vy_(vy),
+        r_(r),
+        group_(group),
+        cutoff2_(cutoff * cutoff),
+        repulsion_factor_(fp.group_repulsion_factor),
+        body_stiffness_(body_stiffness),
+        params_{static_cast<float>(fp.lambda),  static_cast<float>(fp.gamma),
+                static_cast<float>(1.0 / fp.gamma), static_cast<float>(fp.n),
+                static_cast<float>(fp.n_prime), static_cast<float>(fp.social_factor)} {}
+
+  [[nodiscard]] std::uint32_t id() const { return id_; }
+
+  // Visits entries [k0, k1) of `a`.
+  void scan(const NeighbourArrays& a, std::uint32_t k0, std::uint32_t k1) {
+    arrays_ = &a;
+    if (a.id != nullptr && a.active == nullptr) {
+      gather<true>(a, k0, k1);
+    } else {
+      gather<false>(a, k0, k1);
+    }
+  }
+
+  void flush() {
+    if (count_ == 0) return;
+    const NeighbourArrays& a = *arrays_;
+    for (int m = 0; m < count_; ++m) {
+      const double d2 = d2_[m];
+      batch_.tie_x[m] = 0.0f;
+      batch_.tie_y[m] = 0.0f;
+      const std::uint32_t k = slot_[m];
+      const double reach = r_ + a.r[k];
+      if (d2 >= reach * reach) continue;
+      const std::uint32_t who = a.id != nullptr ? a.id[k] : k;
+      if (d2 <= kTiny2) {  // coincident: part along a fixed per-pair direction
+        const Vec2 u = tie_break_direction(id_, who);
+        batch_.dx[m] = 0.0f;
+        batch_.dy[m] = 0.0f;
+        batch_.tie_x[m] = static_cast<float>(u.x);
+        batch_.tie_y[m] = static_cast<float>(u.y);
+      }
+      touching(a.x[k] - x_, a.y[k] - y_, d2, reach, a.group[k], who);
+    }
+    // Pad to whole vectors with inert entries (all zero: the kernel returns 0 for them).
+    const int padded = (count_ + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
+    for (int m = count_; m < padded; ++m) {
+      batch_.dx[m] = batch_.dy[m] = batch_.dvx[m] = batch_.dvy[m] = 0.0f;
+      batch_.tie_x[m] = batch_.tie_y[m] = 0.0f;
+    }
+    social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, batch_.tie_x, batch_.tie_y,
+                  batch_.fx, batch_.fy);
+    for (int m = 0; m < count_; ++m) {
+      social_x += batch_.fx[m];
+      social_y += batch_.fy[m];
+    }
+    count_ = 0;
+  }
+
+  double social_x = 0.0, social_y = 0.0;
+  double repulsion_x = 0.0, repulsion_y = 0.0;
+  double body_x = 0.0, body_y = 0.0;
+
+ private:
+  // The hot loop: locals with __restrict so the compiler keeps the array pointers in registers
+  // instead of reloading them after every store into the batch.
+  template <bool kSorted>
+  void gather(const NeighbourArrays& a, std::uint32_t k0, std::uint32_t k1) {
+    const double* __restrict xs = a.x;
+    const double* __restrict ys = a.y;
+    const double* __restrict vxs = a.vx;
+    const double* __restrict vys = a.vy;
+    const std::uint32_t* __restrict ids = a.id;
+    const std::uint8_t* __restrict act = a.active;
+    float* __restrict bdx = batch_.dx;
+    float* __restrict bdy = batch_.dy;
+    float* __restrict bdvx = batch_.dvx;
+    float* __restrict bdvy = batch_.dvy;
+    double* __restrict bd2 = d2_;
+    std::uint32_t* __restrict bslot = slot_;
+    const double x = x_, y = y_, vx = vx_, vy = vy_, cut2 = cutoff2_;
+    const std::uint32_t self = id_;
+    int m = count_;
+    for (std::uint32_t k = k0; k < k1; ++k) {
+      const double dx = xs[k] - x;
+      const double dy = ys[k] - y;
+      const double d2 = dx * dx + dy * dy;
+      bool take = (d2 <= cut2);
+      if constexpr (kSorted) {
+        take = take & (ids[k] != self);
+      } else {
+        take = take & (k != self) & (act[k] != 0);
+      }
+      bd2[m] = d2;
+      bdx[m] = static_cast<float>(dx);
+      bdy[m] = static_cast<float>(dy);
+      bdvx[m] = static_cast<float>(vx - vxs[k]);
+      bdvy[m] = static_cast<float>(vy - vys[k]);
+      bslot[m] = k;
+      m += take ? 1 : 0;
+      if (m == kBatch) {
+        count_ = m;
+        flush();
+        m = 0;
+      }
+    }
+    count_ = m;
+  }
+
+  void touching(double dx, double dy, double d2, double reach, std::int32_t gj, std::uint32_t idj) {
+    if (group_ >= 0 && gj == group_) {  // LightSFM: Σ (p_i − p_j) over touching group members
+      repulsion_x -= repulsion_factor_ * dx;
+      repulsion_y -= repulsion_factor_ * dy;
+    }
+    if (body_stiffness_ > 0.0) {
+      double ex = 0.0;
+      double ey = 0.0;
+      double d = 0.0;
+      if (d2 > kTiny2) {
+        d = std::sqrt(d2);
+        ex = dx / d;
+        ey = dy / d;
+      } else {
+        const Vec2 u = tie_break_direction(id_, idj);
+        ex = u.x;
+        ey = u.y;
+      }
+      body_x -= body_stiffness_ * (reach - d) * ex;
+      body_y -= body_stiffness_ * (reach - d) * ey;
+    }
+  }
+
+  std::uint32_t id_;
+  double x_, y_, vx_, vy_, r_;
+  std::int32_t group_;
+  double cutoff2_, repulsion_factor_, body_stiffness_;
+  SocialParams params_;
+  const NeighbourArrays* arrays_ = nullptr;
+  int count_ = 0;
+  std::uint32_t slot_[kBatch];
+  double d2_[kBatch];
+  PairBatch batch_;
+};
+
+}  // namespace
+
+Status validate(const SimulationConfig& c) {
+  std::vector<FieldError> errors;
+  if (!(std::isfinite(c.dt) && c.dt > 0.0 && c.dt <= 0.2))
+    errors.push_back(field("/dt", "must be in (0, 0.2] s: larger steps make the force integration unstable"));
+  if (!(std::isfinite(c.neighbor_cutoff) && c.neighbor_cutoff >= 0.5 && c.neighbor_cutoff <= 20.0))
+    errors.push_back(field("/neighbor_cutoff", "must be in [0.5, 20] m"));
+  if (!(std::isfinite(c.wall_cutoff) && c.wall_cutoff >= 0.5 && c.wall_cutoff <= 20.0))
+    errors.push_back(field("/wall_cutoff", "must be in [0.5, 20] m"));
+  if (c.threads < 1 || c.threads > 256) errors.push_back(field("/threads", "must be in [1, 256]"));
+  if (!(std::isfinite(c.body_stiffness) && c.body_stiffness >= 0.0 && c.body_stiffness <= 1000.0))
+    errors.push_back(field("/body_stiffness", "must be in [0, 1000] 1/s² (stiffer contact is unstable at this dt)"));
+  if (errors.empty() && kMaxAgentSpeed * c.dt >= c.wall_cutoff)
+    errors.push_back(field("/dt", "the fastest agent must move less than wall_cutoff in one step"));
+  if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid simulation configuration", std::move(errors));
+  return {};
+}
+
+CrowdSimulation::CrowdSimulation(const SimulationConfig& config, RoleTable roles)
+    : config_(config),
+      roles_(std::move(roles)),
+      pool_(std::make_unique<WorkerPool>(config.threads)),
+      cells_(std::make_unique<CellIndex>()) {}
+
+CrowdSimulation::CrowdSimulation(CrowdSimulation&&) noexcept = default;
+CrowdSimulation& CrowdSimulation::operator=(CrowdSimulation&&) noexcept = default;
+CrowdSimulation::~CrowdSimulation() = default;
+
+Result<CrowdSimulation> CrowdSimulation::create(const SimulationConfig& config, RoleTable roles) {
+  if (auto ok = validate(config); !ok) return tl::unexpected(ok.error());
+  if (!roles.index_of("adult"))
+    return fail(ErrorCode::kValidation, "role table has no 'adult' role", {field("/roles", "needs an 'adult' role")});
+  return CrowdSimulation(config, std::move(roles));
+}
+
+Status CrowdSimulation::check_id(AgentId id, const char* what) const {
+  if (id.value() >= size())
+    return fail(ErrorCode::kNotFound, std::string(what) + ": no agent with id " + std::to_string(id.value()),
+                {field("/agent_id", "unknown agent " + std::to_string(id.value()))});
+  return {};
+}
+
+Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
+  std::vector<FieldError> errors;
+  const auto role_index = roles_.index_of(spec.role);
+  if (!role_index) {
+    std::string known;
+    for (const std::string& n : roles_.names()) known += (known.empty() ? "" : ", ") + n;
+    errors.push_back(field("/role", "unknown role '" + spec.role + "' (known: " + known + ")"));
+  }
+  if (!finite_in_range(spec.position.x, kMaxCoordinate) || !finite_in_range(spec.position.y, kMaxCoordinate))
+    errors.push_back(field("/position", "must be finite and within ±1e6 m"));
+  if (!finite_in_range(spec.velocity.x, kMaxAgentSpeed) || !finite_in_range(spec.velocity.y, kMaxAgentSpeed))
+    errors.push_back(field("/velocity", "components must be finite and within ±8 m/s"));
+  if (spec.yaw && !std::isfinite(*spec.yaw)) errors.push_back(field("/yaw", "must be finite"));
+  if (spec.desired_speed && !(std::isfinite(*spec.desired_speed) && *spec.desired_speed >= 0.0 &&
+                              *spec.desired_speed <= kMaxAgentSpeed))
+    errors.push_back(field("/desired_speed", "must be in [0, 8] m/s"));
+  if (spec.radius && !(std::isfinite(*spec.radius) && *spec.radius >= 0.05 && *spec.radius <= 1.5))
+    errors.push_back(field("/radius", "must be in [0.05, 1.5] m"));
+  if (spec.group_id < -1) errors.push_back(field("/group_id", "must be -1 (no group) or a non-negative id"));
+  if (size() >= UINT32_MAX - 1) errors.push_back(field("", "too many agents"));
+  if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid agent", std::move(errors));
+
+  const RoleParameters& role = roles_.at(*role_index);
+  const auto index = static_cast<std::uint32_t>(size());
+  AgentMeta meta;
+  meta.seed = config_.seed ^ fnv1a64("agent:" + std::to_string(index));
+  Rng rng(meta.seed);
+  double v0 = spec.desired_speed ? *spec.desired_speed
+                                 : std::clamp(rng.normal(role.speed.mean, role.speed.sd), role.speed.min, role.speed.max);
+  const double vmax = v0 * role.max_speed_factor;
+  if (vmax * config_.dt >= config_.wall_cutoff)
+    return fail(ErrorCode::kValidation, "invalid agent", {field("/desired_speed", "too fast for dt and wall_cutoff")});
+
+  std::int32_t group = -1;
+  if (spec.group_id >= 0) {
+    auto [it, inserted] = group_index_.try_emplace(spec.group_id, static_cast<std::int32_t>(group_ids_.size()));
+    if (inserted) {
+      group_ids_.push_back(spec.group_id);
+      group_cx_.push_back(0.0);
+      group_cy_.push_back(0.0);
+      group_size_.push_back(0);
+    }
+    group = it->second;
+  }
+  meta.activity = spec.activity;
+  meta.intent = spec.intent;
+  meta.tags = spec.tags;
+  meta.group_id = spec.group_id;
+
+  px_.push_back(spec.position.x);
+  py_.push_back(spec.position.y);
+  // Start no faster than the agent may go.
+  double vx = spec.velocity.x;
+  double vy = spec.velocity.y;
+  const double s = std::sqrt(vx * vx + vy * vy);
+  if (s > vmax) {
+    vx = s > 0.0 ? vx * vmax / s : 0.0;
+    vy = s > 0.0 ? vy * vmax / s : 0.0;
+  }
+  vx_.push_back(vx);
+  vy_.push_back(vy);
+  yaw_.push_back(spec.yaw ? wrap_angle(*spec.yaw) : (vx * vx + vy * vy > kTiny2 ? std::atan2(vy, vx) : 0.0));
+  omega_.push_back(0.0);
+  npx_.push_back(0.0);
+  npy_.push_back(0.0);
+  nvx_.push_back(0.0);
+  nvy_.push_back(0.0);
+  radius_.push_back(spec.radius ? *spec.radius : role.radius);
+  v0_.push_back(v0);
+  vmax_.push_back(vmax);
+  role_.push_back(static_cast<std::uint16_t>(*role_index));
+  group_.push_back(group);
+  active_.push_back(spec.activity == Activity::kExited ? 0 : 1);
+  has_goal_.push_back(0);
+  gx_.push_back(0.0);
+  gy_.push_back(0.0);
+  gr_.push_back(0.0);
+  meta_.push_back(std::move(meta));
+  return AgentId(index);
+}
+
+Status CrowdSimulation::add_wall(Vec2 a, Vec2 b) {
+  std::vector<FieldError> errors;
+  if (!finite_in_range(a.x, kMaxCoordinate) || !finite_in_range(a.y, kMaxCoordinate))
+    errors.push_back(field("/a", "must be finite and within ±1e6 m"));
+  if (!finite_in_range(b.x, kMaxCoordinate) || !finite_in_range(b.y, kMaxCoordinate))
+    errors.push_back(field("/b", "must be finite and within ±1e6 m"));
+  if (walls_.size() >= UINT32_MAX / 2) errors.push_back(field("", "too many walls"));
+  if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid wall", std::move(errors));
+  walls_.push_back({a, b});
+  walls_dirty_ = true;
+  return {};
+}
+
+Status CrowdSimulation::add_polyline(std::span<const Vec2> points, bool closed) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec2& p = points[i];
+    if (!finite_in_range(p.x, kMaxCoordinate) || !finite_in_range(p.y, kMaxCoordinate))
+      return fail(ErrorCode::kValidation, "invalid polyline",
+                  {field("/points/" + std::to_string(i), "must be finite and within ±1e6 m")});
+  }
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) (void)add_wall(points[i], points[i + 1]);
+  if (closed && points.size() > 2) (void)add_wall(points.back(), points.front());
+  if (points.size() == 1) (void)add_wall(points[0], points[0]);
+  return {};
+}
+
+Status CrowdSimulation::set_goals(AgentId id, std::vector<Goal> goals, bool cyclic) {
+  if (auto ok = check_id(id, "set_goals"); !ok) return ok;
+  std::vector<FieldError> errors;
+  for (std::size_t k = 0; k < goals.size(); ++k) {
+    const Goal& g = goals[k];
+    if (!finite_in_range(g.position.x, kMaxCoordinate) || !finite_in_range(g.position.y, kMaxCoordinate))
+      errors.push_back(field("/goals/" + std::to_string(k) + "/position", "must be finite and within ±1e6 m"));
+    if (!(std::isfinite(g.radius) && g.radius >= 0.0 && g.radius <= 1000.0))
+      errors.push_back(field("/goals/" + std::to_string(k) + "/radius", "must be in [0, 1000] m"));
+  }
+  if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid goals", std::move(errors));
+  const std::uint32_t i = id.value();
+  AgentMeta& m = meta_[i];
+  m.goals = std::move(goals);
+  m.goal_index = 0;
+  m.cyclic = cyclic;
+  has_goal_[i] = m.goals.empty() ? 0 : 1;
+  if (has_goal_[i]) {
+    gx_[i] = m.goals[0].position.x;
+    gy_[i] = m.goals[0].position.y;
+    gr_[i] = m.goals[0].radius;
+  }
+  m.intent.goal_id = has_goal_[i] ? 0 : -1;
+  return {};
+}
+
+Status CrowdSimulation::set_desired_speed(AgentId id, double speed) {
+  if (auto ok = check_id(id, "set_desired_speed"); !ok) return ok;
+  const double factor = roles_.at(role_[id.value()]).max_speed_factor;
+  if (!(std::isfinite(speed) && speed >= 0.0 && speed <= kMaxAgentSpeed) ||
+      speed * factor * config_.dt >= config_.wall_cutoff)
+    return fail(ErrorCode::kValidation, "invalid desired speed", {field("/desired_speed", "must be in [0, 8] m/s")});
+  v0_[id.value()] = speed;
+  vmax_[id.value()] = speed * factor;
+  return {};
+}
+
+Status CrowdSimulation::set_activity(AgentId id, Activity activity) {
+  if (auto ok = check_id(id, "set_activity"); !ok) return ok;
+  meta_[id.value()].activity = activity;
+  if (activity == Activity::kExited) active_[id.value()] = 0;
+  return {};
+}
+
+Status CrowdSimulation::set_intent(AgentId id, Intent intent) {
+  if (auto ok = check_id(id, "set_intent"); !ok) return ok;
+  meta_[id.value()].intent = std::move(intent);
+  return {};
+}
+
+Status CrowdSimulation::set_bt_node(AgentId id, std::string node) {
+  if (auto ok = check_id(id, "set_bt_node"); !ok) return ok;
+  meta_[id.value()].bt_node = std::move(node);
+  return {};
+}
+
+Status CrowdSimulation::set_active(AgentId id, bool active) {
+  if (auto ok = check_id(id, "set_active"); !ok) return ok;
+  active_[id.value()] = active ? 1 : 0;
+  if (!active) {
+    vx_[id.value()] = 0.0;
+    vy_[id.value()] = 0.0;
+  }
+  return {};
+}
+
+std::optional<Goal> CrowdSimulation::current_goal(AgentId id) const {
+  const std::uint32_t i = id.value();
+  if (i >= size() || !has_goal_[i]) return std::nullopt;
+  return Goal{{gx_[i], gy_[i]}, gr_[i]};
+}
+
+PedestrianState CrowdSimulation::state(AgentId id) const {
+  const std::uint32_t i = id.value();
+  const AgentMeta& m = meta_.at(i);
+  PedestrianState s;
+  s.id = id;
+  s.pose = {px_[i], py_[i], yaw_[i]};
+  s.twist = {vx_[i], vy_[i], omega_[i]};
+  s.activity = m.activity;
+  s.role = roles_.at(role_[i]).name;
+  s.intent = m.intent;
+  s.group_id = m.group_id;
+  s.proxemics = roles_.at(role_[i]).proxemics;
+  s.metadata.seed = m.seed;
+  s.metadata.bt_node = m.bt_node;
+  s.metadata.tags = m.tags;
+  return s;
+}
+
+void CrowdSimulation::prepare_step() {
+  if (walls_dirty_) {
+    wall_grid_ = WallGrid(walls_, config_.wall_cutoff);
+    walls_dirty_ = false;
+  }
+  std::fill(group_cx_.begin(), group_cx_.end(), 0.0);
+  std::fill(group_cy_.begin(), group_cy_.end(), 0.0);
+  std::fill(group_size_.begin(), group_size_.end(), 0u);
+  for (std::size_t i = 0; i < size(); ++i) {
+    const std::int32_t g = group_[i];
+    if (g < 0 || !active_[i]) continue;
+    group_cx_[static_cast<std::size_t>(g)] += px_[i];
+    group_cy_[static_cast<std::size_t>(g)] += py_[i];
+    ++group_size_[static_cast<std::size_t>(g)];
+  }
+  for (std::size_t g = 0; g < group_size_.size(); ++g) {
+    if (group_size_[g] == 0) continue;
+    group_cx_[g] /= static_cast<double>(group_size_[g]);
+    group_cy_[g] /= static_cast<double>(group_size_[g]);
+  }
+}
+
+void CrowdSimulation::build_cells() {
+  CellIndex& c = *cells_;
+  const std::size_t n = size();
+  c.cell_of.assign(n, kNoCell);
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  std::size_t active = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!active_[i]) continue;
+    ++active;
+    x0 = std::min(x0, px_[i]);
+    y0 = std::min(y0, py_[i]);
+    x1 = std::max(x1, px_[i]);
+    y1 = std::max(y1, py_[i]);
+  }
+  c.order.clear();
+  if (active == 0) {
+    c.nx = c.ny = 0;
+    c.start.assign(1, 0);
+    return;
+  }
+  // Cells a third of the cut-off wide, so the scanned cells hug the cut-off disc; in sparse or
+  // spread-out crowds the cells grow to keep at most ~2 cells per agent.
+  const double max_cells = std::max(1024.0, 2.0 * static_cast<double>(active));
+  auto cells_for = [&](double size) {
+    return (std::floor((x1 - x0) / size) + 1.0) * (std::floor((y1 - y0) / size) + 1.0);
+  };
+  double cell = config_.neighbor_cutoff / 3.0;
+  while (cells_for(cell) > max_cells) cell *= 1.25;
+  c.cell = cell;
+  c.origin_x = x0;
+  c.origin_y = y0;
+  c.inv_cell = 1.0 / cell;
+  c.nx = static_cast<std::int64_t>((x1 - x0) * c.inv_cell) + 1;
+  c.ny = static_cast<std::int64_t>((y1 - y0) * c.inv_cell) + 1;
+  const auto cells = static_cast<std::size_t>(c.nx * c.ny);
+  c.start.assign(cells + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!active_[i]) continue;
+    const auto cx = std::min(static_cast<std::int64_t>((px_[i] - x0) * c.inv_cell), c.nx - 1);
+    const auto cy = std::min(static_cast<std::int64_t>((py_[i] - y0) * c.inv_cell), c.ny - 1);
+    const auto cell_index = static_cast<std::uint32_t>(cy * c.nx + cx);
+    c.cell_of[i] = cell_index;
+    ++c.start[cell_index + 1];
+  }
+  for (std::size_t k = 0; k < cells; ++k) c.start[k + 1] += c.start[k];
+  c.order.resize(active);
+  std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    if (c.cell_of[i] != kNoCell) c.order[fill[c.cell_of[i]]++] = static_cast<std::uint32_t>(i);
+  c.x.resize(active);
+  c.y.resize(active);
+  c.vx.resize(active);
+  c.vy.resize(active);
+  c.r.resize(active);
+  c.group.resize(active);
+  c.id.resize(active);
+  for (std::size_t k = 0; k < active; ++k) {
+    const std::uint32_t i = c.order[k];
+    c.x[k] = px_[i];
+    c.y[k] = py_[i];
+    c.vx[k] = vx_[i];
+    c.vy[k] = vy_[i];
+    c.r[k] = radius_[i];
+    c.group[k] = group_[i];
+    c.id[k] = i;
+  }
+}
+
+namespace {
+
+// Neighbour scans: both visit candidate agents in a fixed order; NeighbourSums applies the cut-off.
+// The grid scan visits, row by row, only the cells that can hold an agent within the cut-off
+// (each row's x-range shrinks with its distance from the agent), widened by 1e-9 m so rounding
+// can never hide a neighbour.
+struct GridScan {
+  const std::vector<std::uint32_t>& start;
+  double origin_x, origin_y, cell, inv_cell, cutoff;
+  std::int64_t nx, ny;
+  NeighbourArrays arrays;
+
+  void operator()(NeighbourSums& s, double x, double y) const {
+    const double c = cutoff + 1e-9;
+    const auto floor_clamp = [](double v, std::int64_t hi) {
+      if (!(v > 0.0)) return std::int64_t{0};  // also catches NaN
+      if (v >= static_cast<double>(hi)) return hi;
+      return static_cast<std::int64_t>(v);  // truncation = floor for positive values
+    };
+    const auto clamp_x = [&](double v) { return floor_clamp(v, nx - 1); };
+    const auto clamp_y = [&](double v) { return floor_clamp(v, ny - 1); };
+    const std::int64_t y_lo = clamp_y((y - c - origin_y) * inv_cell);
+    const std::int64_t y_hi = clamp_y((y + c - origin_y) * inv_cell);
+    for (std::int64_t row = y_lo; row <= y_hi; ++row) {
+      const double band_lo = origin_y + static_cast<double>(row) * cell;
+      const double gap = std::max({0.0, band_lo - y, y - (band_lo + cell)}) - 1e-9;
+      const double half = gap > 0.0 ? std::sqrt(std::max(0.0, c * c - gap * gap)) + 1e-9 : c;
+      const std::int64_t x_lo = clamp_x((x - half - origin_x) * inv_cell);
+      const std::int64_t x_hi = clamp_x((x + half - origin_x) * inv_cell);
+      const std::uint32_t k0 = start[static_cast<std::size_t>(row * nx + x_lo)];
+      const std::uint32_t k1 = start[static_cast<std::size_t>(row * nx + x_hi + 1)];
+      s.scan(arrays, k0, k1);
+    }
+  }
+};
+
+struct FullScan {
+  std::uint32_t n;
+  NeighbourArrays arrays;
+  void operator()(NeighbourSums& s, double /*x*/, double /*y*/) const { s.scan(arrays, 0, n); }
+};
+
+}  // namespace
+
+template <class Neighbours>
+void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbours, ForceBreakdown* breakdown) {
+  const RoleParameters& role = roles_.at(role_[i]);
+  const ForceParameters& fp = role.forces;
+  const double x = px_[i];
+  const double y = py_[i];
+  const double vx = vx_[i];
+  const double vy = vy_[i];
+  const double r = radius_[i];
+  const double dt = config_.dt;
+  ForceBreakdown f;
+
+  // Desired force: relax towards the desired speed along the goal direction (LightSFM
+  // computeDesiredForce); brake with −v/τ when there is no goal or it is reached.
+  double ex = 0.0;
+  double ey = 0.0;
+  bool heading = false;
+  if (has_goal_[i]) {
+    const double dx = gx_[i] - x;
+    const double dy = gy_[i] - y;
+    const double dist2 = dx * dx + dy * dy;
+    if (dist2 > gr_[i] * gr_[i] && dist2 > kTiny2) {
+      const double dist = std::sqrt(dist2);
+      ex = dx / dist;
+      ey = dy / dist;
+      heading = true;
+    }
+  }
+  if (heading) {
+    f.desired = {fp.desired_factor * (ex * v0_[i] - vx) / fp.relaxation_time,
+                 fp.desired_factor * (ey * v0_[i] - vy) / fp.relaxation_time};
+  } else {
+    f.desired = {-vx / fp.relaxation_time, -vy / fp.relaxation_time};
+  }
+
+  // Obstacle force: the nearest point of every wall within the cut-off pushes with
+  // A·exp(−(d − r)/σ). A vertex shared by two walls counts once.
+  const std::span<const std::uint32_t> near_walls = wall_grid_.near(x, y);
+  {
+    const double wc2 = config_.wall_cutoff * config_.wall_cutoff;
+    std::array<Vec2, 8> vertices{};
+    std::size_t vertex_count = 0;
+    for (std::uint32_t w : near_walls) {
+      const WallSegment& s = walls_[w];
+      const double ux = s.b.x - s.a.x;
+      const double uy = s.b.y - s.a.y;
+      const double len2 = ux * ux + uy * uy;
+      double t = 0.0;
+      if (len2 > 0.0) t = std::clamp(((x - s.a.x) * ux + (y - s.a.y) * uy) / len2, 0.0, 1.0);
+      const Vec2 q{s.a.x + t * ux, s.a.y + t * uy};
+      const double dx = x - q.x;
+      const double dy = y - q.y;
+      const double d2 = dx * dx + dy * dy;
+      if (d2 > wc2) continue;
+      if (t == 0.0 || t == 1.0) {
+        const Vec2 v = t == 0.0 ? s.a : s.b;
+        bool seen = false;
+        for (std::size_t k = 0; k < vertex_count; ++k) seen = seen || vertices[k] == v;
+        if (seen) continue;
+        if (vertex_count < vertices.size()) vertices[vertex_count++] = v;
+      }
+      double nx = 0.0;
+      double ny = 0.0;
+      double d = 0.0;
+      if (d2 > kTiny2) {
+        d = std::sqrt(d2);
+        nx = dx / d;
+        ny = dy / d;
+      } else if (len2 > 0.0) {
+        // Standing on the wall: push along the wall normal, against the current velocity.
+        const double len = std::sqrt(len2);
+        nx = -uy / len;
+        ny = ux / len;
+        if (nx * vx + ny * vy > 0.0) {
+          nx = -nx;
+          ny = -ny;
+        }
+      }
+      const double magnitude = fp.obstacle_factor * fast_exp(-(d - r) / fp.obstacle_sigma);
+      f.obstacle.x += magnitude * nx;
+      f.obstacle.y += magnitude * ny;
+    }
+  }
+
+  // Social, group-repulsion and body forces from neighbours within the cut-off.
+  const std::int32_t g = group_[i];
+  {
+    NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, fp, config_.body_stiffness);
+    neighbours(sums, x, y);
+    sums.flush();
+    f.social = {sums.social_x, sums.social_y};
+    f.group = {sums.repulsion_x, sums.repulsion_y};
+    f.body = {sums.body_x, sums.body_y};
+  }
+
+  // Group gaze and coherence (LightSFM computeGroupForce, non-paper variant).
+  if (g >= 0 && group_size_[static_cast<std::size_t>(g)] >= 2) {
+    const double members = group_size_[static_cast<std::size_t>(g)];
+    const double cx = group_cx_[static_cast<std::size_t>(g)];
+    const double cy = group_cy_[static_cast<std::size_t>(g)];
+    if (heading) {
+      // Centre of the other members; when it is more than 90° off the walking direction, slow
+      // down along that direction so the agent does not leave the others behind its back.
+      const double ox = (members * cx - x) / (members - 1.0) - x;
+      const double oy = (members * cy - y) / (members - 1.0) - y;
+      const double dot = ex * ox + ey * oy;
+      if (ox * ox + oy * oy > kTiny2 && dot < 0.0) {
+        f.group.x += fp.group_gaze_factor * dot * ex;
+        f.group.y += fp.group_gaze_factor * dot * ey;
+      }
+    }
+    // Coherence: pull towards the centre, softened by (tanh(d − (n−1)/2) + 1)/2.
+    const double rx = cx - x;
+    const double ry = cy - y;
+    const double dist = std::sqrt(rx * rx + ry * ry);
+    const double soft = fp.group_coherence_factor / (1.0 + fast_exp(-2.0 * (dist - (members - 1.0) / 2.0)));
+    f.group.x += soft * rx;
+    f.group.y += soft * ry;
+  }
+
+  if (breakdown != nullptr) {
+    *breakdown = f;
+    return;
+  }
+
+  // Semi-implicit Euler with LightSFM's speed clamp, then the wall guard.
+  const Vec2 total = f.total();
+  double nvx = vx + total.x * dt;
+  double nvy = vy + total.y * dt;
+  const double s2 = nvx * nvx + nvy * nvy;
+  const double vmax = vmax_[i];
+  if (s2 > vmax * vmax) {
+    const double k = s2 > 0.0 ? vmax / std::sqrt(s2) : 0.0;
+    nvx *= k;
+    nvy *= k;
+  }
+  const Vec2 target{x + nvx * dt, y + nvy * dt};
+  Vec2 next = guard_move({x, y}, target, near_walls, walls_);
+  if (!(next == target)) {
+    nvx = (next.x - x) / dt;
+    nvy = (next.y - y) / dt;
+  }
+  if (!(std::isfinite(next.x) && std::isfinite(next.y) && std::isfinite(nvx) && std::isfinite(nvy))) {
+    next = {x, y};  // cannot happen with validated input; kept as the last line of defence
+    nvx = 0.0;
+    nvy = 0.0;
+  }
+  npx_[i] = next.x;
+  npy_[i] = next.y;
+  nvx_[i] = nvx;
+  nvy_[i] = nvy;
+}
+
+void CrowdSimulation::finish_step() {
+  const double dt = config_.dt;
+  for (std::size_t i = 0; i < size(); ++i) {
+    if (!active_[i]) continue;
+    px_[i] = npx_[i];
+    py_[i] = npy_[i];
+    vx_[i] = nvx_[i];
+    vy_[i] = nvy_[i];
+    if (vx_[i] * vx_[i] + vy_[i] * vy_[i] > 1e-12) {
+      const double yaw = std::atan2(vy_[i], vx_[i]);
+      omega_[i] = wrap_angle(yaw - yaw_[i]) / dt;
+      yaw_[i] = yaw;
+    } else {
+      omega_[i] = 0.0;
+    }
+    if (has_goal_[i]) {
+      const double dx = gx_[i] - px_[i];
+      const double dy = gy_[i] - py_[i];
+      if (dx * dx + dy * dy <= gr_[i] * gr_[i]) {
+        AgentMeta& m = meta_[i];
+        ++m.goal_index;
+        if (m.goal_index >= m.goals.size() && m.cyclic) m.goal_index = 0;
+        if (m.goal_index < m.goals.size()) {
+          gx_[i] = m.goals[m.goal_index].position.x;
+          gy_[i] = m.goals[m.goal_index].position.y;
+          gr_[i] = m.goals[m.goal_index].radius;
+          m.intent.goal_id = static_cast<std::int64_t>(m.goal_index);
+        } else {
+          has_goal_[i] = 0;
+          m.intent.goal_id = -1;
+        }
+      }
+    }
+  }
+  ++steps_;
+}
+
+void CrowdSimulation::step() {
+  prepare_step();
+  build_cells();
+  const CellIndex& c = *cells_;
+  const GridScan scan{c.start,
+                      c.origin_x,
+                      c.origin_y,
+                      c.cell,
+                      c.inv_cell,
+                      config_.neighbor_cutoff,
+                      c.nx,
+                      c.ny,
+                      {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.group.data(), c.id.data(),
+                       nullptr}};
+  pool_->parallel_for(c.order.size(), 128, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) advance_agent(c.order[k], scan, nullptr);
+  });
+  finish_step();
+}
+
+void CrowdSimulation::step_reference() {
+  prepare_step();
+  const FullScan scan{static_cast<std::uint32_t>(size()),
+                      {px_.data(), py_.data(), vx_.data(), vy_.data(), radius_.data(), group_.data(), nullptr,
+                       active_.data()}};
+  pool_->parallel_for(size(), 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (active_[i]) advance_agent(static_cast<std::uint32_t>(i), scan, nullptr);
+  });
+  finish_step();
+}
+
+ForceBreakdown CrowdSimulation::forces(AgentId id) {
+  ForceBreakdown out;
+  if (id.value() >= size() || !active_[id.value()]) return out;
+  prepare_step();  // group centres and wall grid of the current state; the O(N) scan gives the same forces
+  const FullScan scan{static_cast<std::uint32_t>(size()),
+                      {px_.data(), py_.data(), vx_.data(), vy_.data(), radius_.data(), group_.data(), nullptr,
+                       active_.data()}};
+  advance_agent(id.value(), scan, &out);
+  return out;
+}
+
+}  // namespace socsim::crowd

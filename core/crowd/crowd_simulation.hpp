@@ -1,0 +1,157 @@
+#pragma once
+// The crowd simulation facade (RVO2-style): add agents and walls, give goals, step(), read back.
+// LightSFM's social force model on structure-of-arrays state; each step computes
+// next = f(frozen current) in parallel, so results do not depend on the number of threads.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/common/error.hpp"
+#include "core/crowd/pedestrian_state.hpp"
+#include "core/crowd/role_parameters.hpp"
+#include "core/crowd/wall_grid.hpp"
+#include "core/crowd/worker_pool.hpp"
+
+namespace socsim::crowd {
+
+struct SimulationConfig {
+  double dt = 0.05;               // s, fixed step
+  double neighbor_cutoff = 3.0;   // m, agents farther apart do not interact
+  double wall_cutoff = 2.0;       // m, walls farther away exert no force
+  unsigned threads = 1;           // compute threads, including the caller
+  std::uint64_t seed = 0;         // drives the sampled desired speeds
+  // Optional body contact force k·overlap (1/s², Helbing, Farkas & Vicsek 2000); 0 = pure LightSFM.
+  double body_stiffness = 0.0;
+};
+Status validate(const SimulationConfig& config);
+
+struct Goal {
+  Vec2 position;
+  double radius = 0.3;  // m, reached when the agent's centre is this close
+};
+
+struct AgentSpec {
+  Vec2 position;
+  Vec2 velocity;
+  std::optional<double> yaw;            // default: direction of velocity, else 0
+  std::string role = "adult";
+  std::optional<double> desired_speed;  // default: sampled from the role's distribution
+  std::optional<double> radius;         // default: the role's radius
+  std::int64_t group_id = -1;           // agents with the same id >= 0 walk as a group
+  Activity activity = Activity::kWalking;
+  Intent intent;
+  std::vector<std::string> tags;
+};
+
+// The force terms acting on one agent in the current state (m/s²), for inspection and tests.
+struct ForceBreakdown {
+  Vec2 desired;
+  Vec2 obstacle;
+  Vec2 social;
+  Vec2 group;  // gaze + coherence + repulsion
+  Vec2 body;
+  [[nodiscard]] Vec2 total() const {
+    return {desired.x + obstacle.x + social.x + group.x + body.x, desired.y + obstacle.y + social.y + group.y + body.y};
+  }
+};
+
+class CrowdSimulation {
+ public:
+  static Result<CrowdSimulation> create(const SimulationConfig& config, RoleTable roles = RoleTable::defaults());
+
+  CrowdSimulation(CrowdSimulation&&) noexcept;
+  CrowdSimulation& operator=(CrowdSimulation&&) noexcept;
+  CrowdSimulation(const CrowdSimulation&) = delete;
+  CrowdSimulation& operator=(const CrowdSimulation&) = delete;
+  ~CrowdSimulation();
+
+  // --- building -------------------------------------------------------------------------
+  Result<AgentId> add_agent(const AgentSpec& spec);
+  // A wall segment; a == b is a point obstacle (pushes, cannot be crossed).
+  Status add_wall(Vec2 a, Vec2 b);
+  // Consecutive points joined by walls; `closed` joins the last to the first.
+  Status add_polyline(std::span<const Vec2> points, bool closed);
+
+  // --- steering ---------------------------------------------------------------------------
+  // Goals are visited in order; the next becomes current when the agent is within its radius.
+  Status set_goals(AgentId id, std::vector<Goal> goals, bool cyclic = false);
+  Status set_goal(AgentId id, Goal goal) { return set_goals(id, {goal}); }
+  Status clear_goals(AgentId id) { return set_goals(id, {}); }
+  Status set_desired_speed(AgentId id, double speed);
+  Status set_activity(AgentId id, Activity activity);
+  Status set_intent(AgentId id, Intent intent);
+  Status set_bt_node(AgentId id, std::string node);
+  // An inactive agent is frozen and invisible to the others (e.g. after leaving by an exit).
+  Status set_active(AgentId id, bool active);
+
+  // --- running ------------------------------------------------------------------------------
+  void step();
+  // The same step with an O(N²) neighbour scan (same forces, same cut-off): the reference the
+  // cell-list step is checked against.
+  void step_reference();
+
+  // --- reading ------------------------------------------------------------------------------
+  [[nodiscard]] std::size_t size() const { return px_.size(); }
+  [[nodiscard]] double time() const { return static_cast<double>(steps_) * config_.dt; }
+  [[nodiscard]] std::uint64_t steps() const { return steps_; }
+  [[nodiscard]] const SimulationConfig& config() const { return config_; }
+  [[nodiscard]] const RoleTable& roles() const { return roles_; }
+  [[nodiscard]] const std::vector<WallSegment>& walls() const { return walls_; }
+
+  [[nodiscard]] Vec2 position(AgentId id) const { return {px_.at(id.value()), py_.at(id.value())}; }
+  [[nodiscard]] Vec2 velocity(AgentId id) const { return {vx_.at(id.value()), vy_.at(id.value())}; }
+  [[nodiscard]] double yaw(AgentId id) const { return yaw_.at(id.value()); }
+  [[nodiscard]] double desired_speed(AgentId id) const { return v0_.at(id.value()); }
+  [[nodiscard]] double radius(AgentId id) const { return radius_.at(id.value()); }
+  [[nodiscard]] bool active(AgentId id) const { return active_.at(id.value()) != 0; }
+  // The current goal, or nothing when all goals were reached (or none was given).
+  [[nodiscard]] std::optional<Goal> current_goal(AgentId id) const;
+  [[nodiscard]] PedestrianState state(AgentId id) const;
+  // The forces on an agent in the current state (refreshes the cached group centres and walls).
+  [[nodiscard]] ForceBreakdown forces(AgentId id);
+
+ private:
+  CrowdSimulation(const SimulationConfig& config, RoleTable roles);
+  struct CellIndex;
+  struct AgentMeta;
+  Status check_id(AgentId id, const char* what) const;
+  void prepare_step();
+  void finish_step();
+  void build_cells();
+  template <class Neighbours>
+  void advance_agent(std::uint32_t i, const Neighbours& neighbours, ForceBreakdown* breakdown);
+
+  SimulationConfig config_;
+  RoleTable roles_;
+  std::unique_ptr<WorkerPool> pool_;
+  std::uint64_t steps_ = 0;
+
+  std::vector<WallSegment> walls_;
+  WallGrid wall_grid_;
+  bool walls_dirty_ = false;
+
+  // Frozen state (read during a step) and the next state (written by it).
+  std::vector<double> px_, py_, vx_, vy_, yaw_, omega_;
+  std::vector<double> npx_, npy_, nvx_, nvy_;
+  // Per-agent parameters.
+  std::vector<double> radius_, v0_, vmax_;
+  std::vector<std::uint16_t> role_;
+  std::vector<std::int32_t> group_;  // dense group index, -1 = alone
+  std::vector<std::uint8_t> active_;
+  std::vector<std::uint8_t> has_goal_;
+  std::vector<double> gx_, gy_, gr_;
+  std::vector<AgentMeta> meta_;
+
+  std::map<std::int64_t, std::int32_t> group_index_;
+  std::vector<std::int64_t> group_ids_;
+  std::vector<double> group_cx_, group_cy_;
+  std::vector<std::uint32_t> group_size_;
+
+  std::unique_ptr<CellIndex> cells_;
+};
+
+}  // namespace socsim::crowd

@@ -1,0 +1,36 @@
+#pragma once
+// The vectorised inner loop of the social force model: LightSFM's agent–agent force for a batch
+// of neighbours of one agent, in single precision.
+
+namespace socsim::crowd {
+
+// LightSFM's social force (the Moussaïd et al. 2009 form) on a batch of neighbours, in single
+// precision and without branches so that the loop vectorises. Per pair: e = unit vector to the
+// neighbour, t = λ(v_i − v_j) + e, B = γ|t|, θ = angle from t to e, and
+//   f = A·(−exp(−d/B − (n′Bθ)²)·t̂ − sign(θ)·exp(−d/B − (nBθ)²)·t̂⊥).
+// Inputs are relative: d = (x_j − x_i), dv = v_i − v_j; tie = separation direction used when d = 0.
+struct SocialParams {
+  float lambda, gamma, inv_gamma, n, n_prime, factor;
+};
+
+inline constexpr int kBatch = 64;
+// Batches passed to social_kernel are padded to a multiple of this (the widest vector).
+inline constexpr int kBatchLanes = 8;
+
+struct PairBatch {
+  alignas(16) float dx[kBatch];
+  alignas(16) float dy[kBatch];
+  alignas(16) float dvx[kBatch];
+  alignas(16) float dvy[kBatch];
+  alignas(16) float tie_x[kBatch];
+  alignas(16) float tie_y[kBatch];
+  alignas(16) float fx[kBatch];
+  alignas(16) float fy[kBatch];
+};
+
+// Writes the force on the agent from each of `count` neighbours into fx, fy (m/s²).
+void social_kernel(const SocialParams& p, int count, const float* __restrict dx, const float* __restrict dy,
+                   const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,
+                   const float* __restrict tie_y, float* __restrict fx, float* __restrict fy);
+
+}  // namespace socsim::crowd

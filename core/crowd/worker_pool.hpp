@@ -1,0 +1,51 @@
+#pragma once
+// A small persistent pool of compute threads for stepping the crowd: parallel_for hands out
+// index chunks to the calling thread plus (threads - 1) workers and returns when all are done.
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace socsim::crowd {
+
+class WorkerPool {
+ public:
+  using RangeFn = std::function<void(std::size_t begin, std::size_t end)>;
+
+  // `threads` counts the caller: 1 means no extra thread is started.
+  explicit WorkerPool(unsigned threads);
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  [[nodiscard]] unsigned threads() const { return static_cast<unsigned>(workers_.size()) + 1; }
+
+  // Calls fn on disjoint ranges covering [0, count), each at most `chunk` long. Which thread
+  // runs which range varies; callers must make each index's work independent of the others.
+  // An exception thrown by fn is rethrown here after all ranges finished.
+  void parallel_for(std::size_t count, std::size_t chunk, const RangeFn& fn);
+
+ private:
+  void worker_loop();
+  void drain();
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable start_cv_;
+  std::condition_variable done_cv_;
+  std::size_t generation_ = 0;
+  unsigned busy_ = 0;
+  bool stop_ = false;
+
+  const RangeFn* fn_ = nullptr;
+  std::size_t count_ = 0;
+  std::size_t chunk_ = 1;
+  std::atomic<std::size_t> next_{0};
+  std::exception_ptr error_;
+};
+
+}  // namespace socsim::crowd

@@ -1,0 +1,133 @@
+// socsim-bench crowd: steps a walking crowd at 1 person/m² in a walled square (optionally with
+// pillars and groups) and reports throughput; then checks the cell-list step against the O(N²)
+// reference of the same forces at --reference-agents (default 2000) for 100 steps.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/common/rng.hpp"
+#include "core/crowd/crowd_simulation.hpp"
+#include "tests/bench/bench.hpp"
+
+namespace {
+
+using socsim::crowd::AgentSpec;
+using socsim::crowd::CrowdSimulation;
+using socsim::crowd::Goal;
+using socsim::crowd::SimulationConfig;
+using socsim::crowd::Vec2;
+
+// N agents on a jittered 1 m lattice in a square of side ~sqrt(N); each walks back and forth
+// between two random goals. --walls adds the boundary and a pillar every 8 m; --groups puts
+// about a third of the agents into groups of 2–4 sharing their goals.
+CrowdSimulation make_crowd(std::size_t n, unsigned threads, bool walls, bool groups, std::uint64_t seed) {
+  SimulationConfig config;
+  config.threads = threads;
+  config.seed = seed;
+  auto sim = CrowdSimulation::create(config);
+  if (!sim) throw std::runtime_error(sim.error().message());
+  const auto side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const double size = static_cast<double>(side);
+  socsim::Rng rng(seed);
+  if (walls) {
+    const std::vector<Vec2> box = {{-0.5, -0.5}, {size + 0.5, -0.5}, {size + 0.5, size + 0.5}, {-0.5, size + 0.5}};
+    (void)sim->add_polyline(box, true);
+    for (double px = 4.0; px < size - 2.0; px += 8.0) {
+      for (double py = 4.0; py < size - 2.0; py += 8.0) {
+        const std::vector<Vec2> pillar = {{px - 0.25, py - 0.25}, {px + 0.25, py - 0.25}, {px + 0.25, py + 0.25},
+                                          {px - 0.25, py + 0.25}};
+        (void)sim->add_polyline(pillar, true);
+      }
+    }
+  }
+  std::int64_t group = -1;
+  int left_in_group = 0;
+  std::vector<Goal> goals;
+  for (std::size_t k = 0; k < n; ++k) {
+    AgentSpec spec;
+    const double gx = static_cast<double>(k % side);
+    const double gy = static_cast<double>(k / side);
+    spec.position = {gx + 0.5 + rng.uniform(-0.2, 0.2), gy + 0.5 + rng.uniform(-0.2, 0.2)};
+    if (walls && std::fmod(spec.position.x, 8.0) > 3.0 && std::fmod(spec.position.x, 8.0) < 5.0 &&
+        std::fmod(spec.position.y, 8.0) > 3.0 && std::fmod(spec.position.y, 8.0) < 5.0)
+      spec.position.x += 1.5;  // keep clear of the pillars
+    spec.position.x = std::min(spec.position.x, size - 0.1);
+    const bool new_goals = !groups || left_in_group == 0;
+    if (groups) {
+      if (left_in_group == 0) {
+        if (rng.chance(0.33)) {
+          ++group;
+          left_in_group = static_cast<int>(rng.between(2, 4));
+        }
+      }
+      if (left_in_group > 0) {
+        spec.group_id = group;
+        --left_in_group;
+      }
+    }
+    if (new_goals || goals.empty())
+      goals = {Goal{{rng.uniform(1.0, size - 1.0), rng.uniform(1.0, size - 1.0)}, 0.5},
+               Goal{{rng.uniform(1.0, size - 1.0), rng.uniform(1.0, size - 1.0)}, 0.5}};
+    auto id = sim->add_agent(spec);
+    if (!id) throw std::runtime_error(id.error().message());
+    (void)sim->set_goals(*id, goals, true);
+  }
+  return std::move(*sim);
+}
+
+SOCSIM_BENCH("crowd", "--agents N --steps S --threads T [--walls] [--groups] [--reference-agents M]",
+             [](const socsim::bench::Args& a) {
+               const auto n = static_cast<std::size_t>(a.integer("agents", 10000));
+               const auto steps = a.integer("steps", 200);
+               const auto threads = static_cast<unsigned>(a.integer("threads", 2));
+               const bool walls = a.has("walls");
+               const bool groups = a.has("groups");
+               CrowdSimulation sim = make_crowd(n, threads, walls, groups, 42);
+               for (int k = 0; k < 10; ++k) sim.step();  // leave the lattice start behind
+               const auto t0 = std::chrono::steady_clock::now();
+               for (std::int64_t k = 0; k < steps; ++k) sim.step();
+               const double seconds = socsim::bench::seconds_since(t0);
+               socsim::bench::emit({{"bench", "crowd"},
+                                    {"agents", n},
+                                    {"threads", threads},
+                                    {"steps", steps},
+                                    {"walls", walls},
+                                    {"groups", groups},
+                                    {"agent_steps_per_s", static_cast<double>(n) * static_cast<double>(steps) / seconds},
+                                    {"ms_per_step", 1000.0 * seconds / static_cast<double>(steps)}});
+
+               const auto m = static_cast<std::size_t>(a.integer("reference-agents", 2000));
+               if (m == 0) return 0;
+               CrowdSimulation grid = make_crowd(m, threads, walls, groups, 7);
+               CrowdSimulation brute = make_crowd(m, threads, walls, groups, 7);
+               double grid_s = 0.0;
+               double brute_s = 0.0;
+               for (int k = 0; k < 100; ++k) {
+                 auto t1 = std::chrono::steady_clock::now();
+                 grid.step();
+                 grid_s += socsim::bench::seconds_since(t1);
+                 t1 = std::chrono::steady_clock::now();
+                 brute.step_reference();
+                 brute_s += socsim::bench::seconds_since(t1);
+               }
+               double max_diff = 0.0;
+               for (std::uint32_t i = 0; i < m; ++i) {
+                 const Vec2 p = grid.position(socsim::crowd::AgentId(i));
+                 const Vec2 q = brute.position(socsim::crowd::AgentId(i));
+                 max_diff = std::max(max_diff, std::hypot(p.x - q.x, p.y - q.y));
+               }
+               socsim::bench::emit({{"bench", "crowd_reference"},
+                                    {"agents", m},
+                                    {"threads", threads},
+                                    {"steps", 100},
+                                    {"walls", walls},
+                                    {"groups", groups},
+                                    {"grid_ms_per_step", 1000.0 * grid_s / 100.0},
+                                    {"brute_force_ms_per_step", 1000.0 * brute_s / 100.0},
+                                    {"speedup", brute_s / grid_s},
+                                    {"max_position_difference_m", max_diff},
+                                    {"agree_1e-4_m", max_diff <= 1e-4}});
+               return 0;
+             });
+
+}  // namespace

@@ -1,0 +1,394 @@
+// CrowdSimulation: validation of inputs, LightSFM's force terms, determinism (seed and thread
+// count), agreement with the O(N²) reference, and the hard guarantees: no wall crossing, no NaN.
+#include "core/crowd/crowd_simulation.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/common/rng.hpp"
+
+namespace socsim::crowd {
+namespace {
+
+using ::testing::Contains;
+using ::testing::Field;
+
+CrowdSimulation make(SimulationConfig config = {}) {
+  auto sim = CrowdSimulation::create(config);
+  EXPECT_TRUE(sim) << sim.error().message();
+  return std::move(*sim);
+}
+
+AgentId add(CrowdSimulation& sim, Vec2 p, Vec2 v = {}, double speed = 1.3, std::int64_t group = -1) {
+  AgentSpec spec;
+  spec.position = p;
+  spec.velocity = v;
+  spec.desired_speed = speed;
+  spec.group_id = group;
+  auto id = sim.add_agent(spec);
+  EXPECT_TRUE(id) << id.error().message();
+  return *id;
+}
+
+double norm(Vec2 v) { return std::hypot(v.x, v.y); }
+
+// A crowd for determinism and reference checks: random positions in a walled 20×20 m room with
+// two inner walls, groups of 3, goals across the room.
+CrowdSimulation busy_room(std::size_t n, unsigned threads, std::uint64_t seed) {
+  SimulationConfig config;
+  config.threads = threads;
+  config.seed = seed;
+  CrowdSimulation sim = make(config);
+  const std::vector<Vec2> box = {{0, 0}, {20, 0}, {20, 20}, {0, 20}};
+  EXPECT_TRUE(sim.add_polyline(box, true));
+  EXPECT_TRUE(sim.add_wall({7, 4}, {7, 12}));
+  EXPECT_TRUE(sim.add_wall({12, 16}, {16, 10}));
+  Rng rng(seed);
+  for (std::size_t k = 0; k < n; ++k) {
+    AgentSpec spec;
+    spec.position = {rng.uniform(0.5, 19.5), rng.uniform(0.5, 19.5)};
+    spec.group_id = k % 4 == 0 ? -1 : static_cast<std::int64_t>(k / 3);
+    auto id = sim.add_agent(spec);
+    EXPECT_TRUE(id);
+    EXPECT_TRUE(sim.set_goals(*id, {Goal{{rng.uniform(1, 19), rng.uniform(1, 19)}, 0.5},
+                                    Goal{{rng.uniform(1, 19), rng.uniform(1, 19)}, 0.5}},
+                              true));
+  }
+  return sim;
+}
+
+std::vector<double> snapshot(const CrowdSimulation& sim) {
+  std::vector<double> out;
+  for (std::uint32_t i = 0; i < sim.size(); ++i) {
+    const Vec2 p = sim.position(AgentId(i));
+    const Vec2 v = sim.velocity(AgentId(i));
+    out.insert(out.end(), {p.x, p.y, v.x, v.y, sim.yaw(AgentId(i))});
+  }
+  return out;
+}
+
+bool bit_identical(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+// ---- validation ---------------------------------------------------------------------------
+
+TEST(CrowdSimulation, RejectsBadConfiguration) {
+  SimulationConfig c;
+  c.dt = 1.0;  // huge steps are rejected, not integrated
+  c.neighbor_cutoff = 0.0;
+  c.threads = 0;
+  c.body_stiffness = -1;
+  auto sim = CrowdSimulation::create(c);
+  ASSERT_FALSE(sim);
+  const auto& e = sim.error().errors;
+  EXPECT_THAT(e, Contains(Field(&FieldError::pointer, "/dt")));
+  EXPECT_THAT(e, Contains(Field(&FieldError::pointer, "/neighbor_cutoff")));
+  EXPECT_THAT(e, Contains(Field(&FieldError::pointer, "/threads")));
+  EXPECT_THAT(e, Contains(Field(&FieldError::pointer, "/body_stiffness")));
+  c = {};
+  c.dt = std::nan("");
+  EXPECT_FALSE(CrowdSimulation::create(c));
+}
+
+TEST(CrowdSimulation, RejectsBadAgentsWallsAndGoals) {
+  CrowdSimulation sim = make();
+  AgentSpec spec;
+  spec.position = {std::nan(""), 0};
+  spec.velocity = {1e9, 0};
+  spec.role = "astronaut";
+  spec.desired_speed = -1;
+  spec.radius = 0;
+  spec.group_id = -5;
+  auto bad = sim.add_agent(spec);
+  ASSERT_FALSE(bad);
+  const auto& e = bad.error().errors;
+  for (const char* p : {"/position", "/velocity", "/role", "/desired_speed", "/radius", "/group_id"})
+    EXPECT_THAT(e, Contains(Field(&FieldError::pointer, p))) << p;
+  EXPECT_EQ(sim.size(), 0u);
+
+  EXPECT_FALSE(sim.add_wall({0, 0}, {INFINITY, 1}));
+  EXPECT_FALSE(sim.add_wall({1e7, 0}, {0, 0}));
+  const AgentId a = add(sim, {0, 0});
+  EXPECT_FALSE(sim.set_goal(a, Goal{{std::nan(""), 0}, 0.3}));
+  EXPECT_FALSE(sim.set_goal(a, Goal{{1, 0}, -1}));
+  auto missing = sim.set_goal(AgentId(99), Goal{{1, 0}, 0.3});
+  ASSERT_FALSE(missing);
+  EXPECT_EQ(missing.error().code, ErrorCode::kNotFound);
+  EXPECT_FALSE(sim.set_desired_speed(a, 100.0));
+}
+
+TEST(CrowdSimulation, StateCarriesTheMessageFields) {
+  CrowdSimulation sim = make();
+  AgentSpec spec;
+  spec.position = {1, 2};
+  spec.velocity = {0, 0.5};
+  spec.role = "staff";
+  spec.group_id = 7;
+  spec.activity = Activity::kQueuing;
+  spec.intent.target = "counter_1";
+  spec.tags = {"spotlight"};
+  auto id = sim.add_agent(spec);
+  ASSERT_TRUE(id);
+  ASSERT_TRUE(sim.set_bt_node(*id, "JoinQueue"));
+  ASSERT_TRUE(sim.set_goal(*id, Goal{{5, 5}, 0.2}));
+  const PedestrianState s = sim.state(*id);
+  EXPECT_EQ(s.role, "staff");
+  EXPECT_EQ(s.group_id, 7);
+  EXPECT_EQ(s.activity, Activity::kQueuing);
+  EXPECT_EQ(s.intent.target, "counter_1");
+  EXPECT_EQ(s.intent.goal_id, 0);
+  EXPECT_EQ(s.metadata.bt_node, "JoinQueue");
+  EXPECT_EQ(s.metadata.tags, std::vector<std::string>{"spotlight"});
+  EXPECT_NEAR(s.pose.yaw, std::numbers::pi / 2, 1e-12);
+  EXPECT_GE(sim.desired_speed(*id), 0.8);  // sampled from the staff distribution
+  EXPECT_LE(sim.desired_speed(*id), 2.2);
+  auto round = pedestrian_state_from_json(to_json(s));
+  ASSERT_TRUE(round);
+  EXPECT_EQ(*round, s);
+}
+
+// ---- force terms (LightSFM) -----------------------------------------------------------------
+
+// LightSFM's computeSocialForce for one pair, written out independently in double precision.
+Vec2 lightsfm_social(Vec2 pi, Vec2 vi, Vec2 pj, Vec2 vj, const ForceParameters& f) {
+  const double dx = pj.x - pi.x, dy = pj.y - pi.y, d = std::hypot(dx, dy);
+  const double ex = dx / d, ey = dy / d;
+  const double ix = f.lambda * (vi.x - vj.x) + ex, iy = f.lambda * (vi.y - vj.y) + ey;
+  const double il = std::hypot(ix, iy), tx = ix / il, ty = iy / il;
+  double theta = std::atan2(ey, ex) - std::atan2(ty, tx);
+  while (theta <= -std::numbers::pi) theta += 2 * std::numbers::pi;
+  while (theta > std::numbers::pi) theta -= 2 * std::numbers::pi;
+  const double b = f.gamma * il;
+  const double along = -std::exp(-d / b - std::pow(f.n_prime * b * theta, 2));
+  const double sign = theta > 0 ? 1.0 : (theta < 0 ? -1.0 : 0.0);
+  const double side = -sign * std::exp(-d / b - std::pow(f.n * b * theta, 2));
+  return {f.social_factor * (along * tx + side * -ty), f.social_factor * (along * ty + side * tx)};
+}
+
+TEST(CrowdSimulation, SocialForceMatchesLightSfmFormula) {
+  Rng rng(3);
+  const ForceParameters f;
+  for (int trial = 0; trial < 200; ++trial) {
+    CrowdSimulation sim = make();
+    const Vec2 pi{0, 0};
+    const Vec2 vi{rng.uniform(-1.3, 1.3), rng.uniform(-1.3, 1.3)};
+    const Vec2 pj{rng.uniform(-2.5, 2.5), rng.uniform(-2.5, 2.5)};
+    const Vec2 vj{rng.uniform(-1.3, 1.3), rng.uniform(-1.3, 1.3)};
+    if (norm({pj.x, pj.y}) < 0.1 || norm(pj) > 2.9) continue;
+    const AgentId i = add(sim, pi, vi, 2.0);
+    add(sim, pj, vj, 2.0);
+    const Vec2 expected = lightsfm_social(pi, vi, pj, vj, f);
+    const Vec2 got = sim.forces(i).social;
+    const double tol = 1e-5 + 1e-5 * norm(expected);  // single-precision kernel
+    EXPECT_NEAR(got.x, expected.x, tol) << "trial " << trial;
+    EXPECT_NEAR(got.y, expected.y, tol) << "trial " << trial;
+  }
+}
+
+TEST(CrowdSimulation, HeadOnAgentsRepelAndGoalAttracts) {
+  CrowdSimulation sim = make();
+  const AgentId a = add(sim, {0, 0}, {1, 0});
+  add(sim, {1.5, 0.2}, {-1, 0});
+  ASSERT_TRUE(sim.set_goal(a, Goal{{10, 0}, 0.3}));
+  const ForceBreakdown f = sim.forces(a);
+  EXPECT_LT(f.social.x, 0.0);  // slowed down by the oncoming agent
+  EXPECT_LT(f.social.y, 0.0);  // and pushed to the side away from it
+  // Desired force: 2.0·(1.3·e − v)/0.5 with v = (1, 0).
+  EXPECT_NEAR(f.desired.x, 2.0 * (1.3 - 1.0) / 0.5, 1e-12);
+  EXPECT_NEAR(f.desired.y, 0.0, 1e-12);
+}
+
+TEST(CrowdSimulation, ObstacleForceIsLightSfmsExponential) {
+  CrowdSimulation sim = make();
+  ASSERT_TRUE(sim.add_wall({-5, 0}, {5, 0}));
+  const AgentId a = add(sim, {0, 0.8});
+  const ForceBreakdown f = sim.forces(a);
+  EXPECT_NEAR(f.obstacle.x, 0.0, 1e-12);
+  EXPECT_NEAR(f.obstacle.y, 10.0 * std::exp(-(0.8 - 0.3) / 0.2), 1e-9);
+  // A corner: the shared vertex pushes once, not twice.
+  CrowdSimulation corner = make();
+  ASSERT_TRUE(corner.add_wall({0, 0}, {0, 5}));
+  ASSERT_TRUE(corner.add_wall({0, 0}, {5, 0}));
+  const AgentId c = add(corner, {-0.6, -0.8});
+  EXPECT_NEAR(norm(corner.forces(c).obstacle), 10.0 * std::exp(-(1.0 - 0.3) / 0.2), 1e-9);
+}
+
+TEST(CrowdSimulation, GroupForcesPullMembersTogether) {
+  CrowdSimulation sim = make();
+  const AgentId a = add(sim, {0, 0}, {}, 1.3, 5);
+  add(sim, {4, 0}, {}, 1.3, 5);
+  add(sim, {4, 1}, {}, 1.3, 5);
+  const ForceBreakdown f = sim.forces(a);
+  EXPECT_GT(f.group.x, 0.5);  // coherence towards the others
+  // Gaze: walking away from the group (goal at −x) slows the agent along its direction.
+  ASSERT_TRUE(sim.set_goal(a, Goal{{-10, 0}, 0.3}));
+  const ForceBreakdown g = sim.forces(a);
+  EXPECT_GT(g.group.x, f.group.x);
+  // Repulsion between touching members.
+  CrowdSimulation pair = make();
+  const AgentId p = add(pair, {0, 0}, {}, 1.3, 1);
+  add(pair, {0.4, 0}, {}, 1.3, 1);
+  CrowdSimulation strangers = make();
+  const AgentId s = add(strangers, {0, 0});
+  add(strangers, {0.4, 0});
+  EXPECT_LT(pair.forces(p).group.x, 0.0);
+  EXPECT_EQ(strangers.forces(s).group.x, 0.0);
+}
+
+// ---- determinism and the reference ------------------------------------------------------------
+
+TEST(CrowdSimulation, SameSeedGivesBitIdenticalTrajectories) {
+  CrowdSimulation a = busy_room(200, 1, 99);
+  CrowdSimulation b = busy_room(200, 1, 99);
+  CrowdSimulation c = busy_room(200, 1, 100);
+  for (int k = 0; k < 100; ++k) {
+    a.step();
+    b.step();
+    c.step();
+  }
+  EXPECT_TRUE(bit_identical(snapshot(a), snapshot(b)));
+  EXPECT_FALSE(bit_identical(snapshot(a), snapshot(c)));
+}
+
+TEST(CrowdSimulation, ThreadCountDoesNotChangeAnyBit) {
+  CrowdSimulation one = busy_room(300, 1, 5);
+  CrowdSimulation two = busy_room(300, 2, 5);
+  CrowdSimulation three = busy_room(300, 3, 5);
+  for (int k = 0; k < 100; ++k) {
+    one.step();
+    two.step();
+    three.step();
+  }
+  EXPECT_TRUE(bit_identical(snapshot(one), snapshot(two)));
+  EXPECT_TRUE(bit_identical(snapshot(one), snapshot(three)));
+}
+
+TEST(CrowdSimulation, CellListAgreesWithBruteForceReference) {
+  // N = 500 for 100 steps: same forces and cut-off, only the summation order differs.
+  CrowdSimulation grid = busy_room(500, 2, 21);
+  CrowdSimulation brute = busy_room(500, 2, 21);
+  for (int k = 0; k < 100; ++k) {
+    grid.step();
+    brute.step_reference();
+  }
+  double worst = 0.0;
+  for (std::uint32_t i = 0; i < grid.size(); ++i) {
+    const Vec2 p = grid.position(AgentId(i));
+    const Vec2 q = brute.position(AgentId(i));
+    worst = std::max(worst, std::hypot(p.x - q.x, p.y - q.y));
+  }
+  EXPECT_LT(worst, 1e-4);
+}
+
+// ---- hard guarantees ----------------------------------------------------------------------
+
+// Independent crossing check: the move p→q properly crosses wall ab.
+bool crosses(Vec2 p, Vec2 q, const WallSegment& w) {
+  auto side = [](Vec2 a, Vec2 b, Vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); };
+  const double s1 = side(w.a, w.b, p), s2 = side(w.a, w.b, q);
+  if (s1 == 0.0) return false;                         // started on the wall's line
+  if (s2 != 0.0 && (s1 > 0) == (s2 > 0)) return false;  // stayed on its side
+  const double t1 = side(p, q, w.a), t2 = side(p, q, w.b);
+  return (t1 > 0) != (t2 > 0) || t1 == 0.0 || t2 == 0.0;
+}
+
+TEST(CrowdSimulation, NoAgentEverCrossesAWallInADenseRandomBox) {
+  Rng rng(2024);
+  SimulationConfig config;
+  config.threads = 2;
+  config.body_stiffness = 50.0;
+  CrowdSimulation sim = make(config);
+  const std::vector<Vec2> box = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  ASSERT_TRUE(sim.add_polyline(box, true));
+  for (int w = 0; w < 25; ++w) {  // random inner walls, some degenerate
+    const Vec2 a{rng.uniform(0, 10), rng.uniform(0, 10)};
+    const Vec2 b = rng.chance(0.2) ? a : Vec2{rng.uniform(0, 10), rng.uniform(0, 10)};
+    ASSERT_TRUE(sim.add_wall(a, b));
+  }
+  for (int k = 0; k < 250; ++k) {  // 2.5 agents/m², random velocities, goals partly outside
+    AgentSpec spec;
+    spec.position = {rng.uniform(0.05, 9.95), rng.uniform(0.05, 9.95)};
+    spec.velocity = {rng.uniform(-2, 2), rng.uniform(-2, 2)};
+    spec.role = rng.chance(0.1) ? "jogger" : "adult";
+    auto id = sim.add_agent(spec);
+    ASSERT_TRUE(id);
+    ASSERT_TRUE(sim.set_goals(*id, {Goal{{rng.uniform(-5, 15), rng.uniform(-5, 15)}, 0.2},
+                                    Goal{{rng.uniform(-5, 15), rng.uniform(-5, 15)}, 0.2}},
+                              true));
+  }
+  const std::vector<WallSegment> walls = sim.walls();
+  std::size_t crossings = 0;
+  for (int step = 0; step < 300; ++step) {
+    std::vector<Vec2> before(sim.size());
+    for (std::uint32_t i = 0; i < sim.size(); ++i) before[i] = sim.position(AgentId(i));
+    sim.step();
+    for (std::uint32_t i = 0; i < sim.size(); ++i) {
+      const Vec2 after = sim.position(AgentId(i));
+      ASSERT_TRUE(std::isfinite(after.x) && std::isfinite(after.y));
+      for (const WallSegment& w : walls) crossings += crosses(before[i], after, w) ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(crossings, 0u);
+  for (std::uint32_t i = 0; i < sim.size(); ++i) {
+    const Vec2 p = sim.position(AgentId(i));
+    EXPECT_TRUE(p.x > 0 && p.x < 10 && p.y > 0 && p.y < 10) << "agent " << i << " left the box";
+  }
+}
+
+TEST(CrowdSimulation, DegenerateInputsNeverProduceNaN) {
+  SimulationConfig config;
+  config.body_stiffness = 100.0;
+  CrowdSimulation sim = make(config);
+  ASSERT_TRUE(sim.add_wall({0, 0}, {0, 0}));        // zero-length wall
+  ASSERT_TRUE(sim.add_wall({-3, 1}, {3, 1}));
+  ASSERT_TRUE(sim.add_wall({3, 1}, {3, 1}));        // duplicate point on a vertex
+  ASSERT_TRUE(sim.add_wall({-3, 1}, {3, 1}));       // duplicate wall
+  for (int k = 0; k < 6; ++k) add(sim, {0, 0}, {}, 1.3, k < 3 ? 1 : -1);  // coincident, on a point wall
+  const AgentId on_wall = add(sim, {1, 1});         // exactly on a wall
+  const AgentId on_vertex = add(sim, {3, 1}, {1, 1});
+  const AgentId still = add(sim, {-2, -2}, {}, 0.0);  // desired speed 0
+  add(sim, {-2, -2}, {0.5, 0});                     // coincident with it, moving
+  ASSERT_TRUE(sim.set_goal(on_wall, Goal{{1, 1}, 0.0}));   // goal at its own position, radius 0
+  ASSERT_TRUE(sim.set_goal(on_vertex, Goal{{3, 5}, 0.0}));
+  ASSERT_TRUE(sim.set_goal(still, Goal{{5, -2}, 0.1}));
+  for (int step = 0; step < 200; ++step) {
+    sim.step();
+    for (std::uint32_t i = 0; i < sim.size(); ++i) {
+      const PedestrianState s = sim.state(AgentId(i));
+      ASSERT_TRUE(std::isfinite(s.pose.x) && std::isfinite(s.pose.y) && std::isfinite(s.pose.yaw) &&
+                  std::isfinite(s.twist.vx) && std::isfinite(s.twist.vy) && std::isfinite(s.twist.omega))
+          << "agent " << i << " at step " << step;
+    }
+  }
+  // The coincident agents parted.
+  EXPECT_GT(norm({sim.position(AgentId(0)).x - sim.position(AgentId(1)).x,
+                  sim.position(AgentId(0)).y - sim.position(AgentId(1)).y}),
+            0.1);
+  EXPECT_EQ(norm(sim.velocity(still)), 0.0);  // desired speed 0: never moves
+}
+
+TEST(CrowdSimulation, GoalsAreVisitedInOrderAndInactiveAgentsFreeze) {
+  CrowdSimulation sim = make();
+  const AgentId a = add(sim, {0, 0});
+  ASSERT_TRUE(sim.set_goals(a, {Goal{{3, 0}, 0.3}, Goal{{3, 3}, 0.3}}));
+  const AgentId frozen = add(sim, {10, 10}, {1, 0});
+  ASSERT_TRUE(sim.set_active(frozen, false));
+  bool saw_second = false;
+  for (int k = 0; k < 400 && sim.current_goal(a); ++k) {
+    sim.step();
+    if (sim.state(a).intent.goal_id == 1) saw_second = true;
+  }
+  EXPECT_TRUE(saw_second);
+  EXPECT_FALSE(sim.current_goal(a));
+  EXPECT_EQ(sim.state(a).intent.goal_id, -1);
+  EXPECT_LT(std::hypot(sim.position(a).x - 3, sim.position(a).y - 3), 0.5);
+  EXPECT_EQ(sim.position(frozen), (Vec2{10, 10}));
+}
+
+}  // namespace
+}  // namespace socsim::crowd
