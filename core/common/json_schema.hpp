@@ -26,7 +26,7 @@ class JsonSchema {
   // kValidation with pointers into the schema document.
   static Result<JsonSchema> compile(Json schema);
 
-  // Every violation, in document order, at most max_errors (then one "… more" entry).
+  // Every violation (object members in key order), at most max_errors (then one "… more" entry).
   [[nodiscard]] std::vector<FieldError> validate(const Json& instance, std::size_t max_errors = 100) const;
 
   // kValidation naming the first problems when the instance does not conform.
