@@ -333,6 +333,11 @@ std::string describe(const MergedConstraint& m) {
 KnowledgeBase::KnowledgeBase(store::Store& store, EmbeddingProvider embeddings)
     : store_(store), embeddings_(std::move(embeddings)) {}
 
+void KnowledgeBase::set_embedding_provider(EmbeddingProvider embeddings) {
+  embeddings_ = std::move(embeddings);
+  for (auto& g : indexed_generation_) g = kNeverIndexed;
+}
+
 Result<BuildingCode> KnowledgeBase::building_code(const std::string& ref_id) const {
   auto codes = store_.read([&](Database& db) { return load_codes(db, "WHERE ref_id = ?1", {ref_id}); });
   if (!codes) return tl::unexpected(codes.error());
@@ -371,7 +376,7 @@ Status KnowledgeBase::upsert(const BuildingCode& code) {
   for (const auto& s : checked->sources) sources.push_back(to_json(s));
   Json constraints = Json::array();
   for (const auto& c : checked->constraints) constraints.push_back(to_json(c));
-  return store_.write([&](Database& db) -> Status {
+  auto written = store_.write([&](Database& db) -> Status {
     auto st = db.prepare(
         "INSERT INTO building_codes (ref_id, building_type, jurisdiction, title, description, keywords, sources, constraints) "
         "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8) ON CONFLICT(ref_id) DO UPDATE SET building_type = excluded.building_type, "
@@ -382,6 +387,8 @@ Status KnowledgeBase::upsert(const BuildingCode& code) {
     st->bind(5, checked->description).bind(6, checked->keywords).bind(7, sources.dump()).bind(8, constraints.dump());
     return st->run();
   });
+  if (written) ++generation_[static_cast<std::size_t>(Kind::kBuildingCode)];
+  return written;
 }
 
 Status KnowledgeBase::upsert(const BehaviorNode& node) {
@@ -389,7 +396,7 @@ Status KnowledgeBase::upsert(const BehaviorNode& node) {
   if (!checked) return tl::unexpected(checked.error());
   Json ports = Json::array();
   for (const auto& p : checked->ports) ports.push_back(to_json(p));
-  return store_.write([&](Database& db) -> Status {
+  auto written = store_.write([&](Database& db) -> Status {
     // Every tag name (name or alias) must resolve to one node only.
     auto others = db.prepare(
         "SELECT n.name FROM behavior_nodes n WHERE n.name <> ?1 AND (n.name = ?2 OR EXISTS "
@@ -419,10 +426,13 @@ Status KnowledgeBase::upsert(const BehaviorNode& node) {
     st->bind(8, checked->keywords).bind(9, Json(checked->aliases).dump()).bind(10, ports.dump());
     return st->run();
   });
+  if (written) ++generation_[static_cast<std::size_t>(Kind::kBehaviorNode)];
+  return written;
 }
 
 Result<std::size_t> KnowledgeBase::index_embeddings(Kind kind) const {
   if (!embeddings_.available()) return std::size_t{0};
+  const std::uint64_t generation = generation_[static_cast<std::size_t>(kind)].load();
   auto entries = store_.read([&](Database& db) { return entries_for_embedding(db, kind); });
   if (!entries) return tl::unexpected(entries.error());
   auto stored = store_.read([&](Database& db) { return stored_vectors(db, kind, embeddings_.model); });
@@ -463,6 +473,7 @@ Result<std::size_t> KnowledgeBase::index_embeddings(Kind kind) const {
     });
     if (!written) return tl::unexpected(written.error());
   }
+  indexed_generation_[static_cast<std::size_t>(kind)] = generation;
   return stale.size();
 }
 
@@ -488,7 +499,10 @@ Result<SearchResult> KnowledgeBase::search(std::string_view query, Kind kind, st
   bool dense_used = false;
   if (embeddings_.available()) {
     auto run_dense = [&]() -> Result<std::vector<Ranked>> {
-      if (auto indexed = index_embeddings(kind); !indexed) return tl::unexpected(indexed.error());
+      const auto k_index = static_cast<std::size_t>(kind);
+      if (indexed_generation_[k_index].load() != generation_[k_index].load()) {
+        if (auto indexed = index_embeddings(kind); !indexed) return tl::unexpected(indexed.error());
+      }
       auto q = embeddings_.embed({std::string(query)});
       if (!q) return tl::unexpected(q.error());
       if (auto s = check_embeddings(*q, 1, embeddings_.model); !s) return tl::unexpected(s.error());

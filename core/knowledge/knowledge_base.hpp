@@ -2,6 +2,9 @@
 // The knowledge store's face: building-code references and behaviour nodes kept in SQLite,
 // looked up by id, listed, searched (FTS5 BM25, fused with dense embeddings by reciprocal-rank
 // fusion when an embedding provider is set) and merged into the constraints a floor plan must meet.
+#include <array>
+#include <atomic>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -68,10 +71,12 @@ class KnowledgeBase {
  public:
   // The store must have been migrated (store::Store::open does it) and outlive this object.
   explicit KnowledgeBase(store::Store& store, EmbeddingProvider embeddings = {});
+  KnowledgeBase(const KnowledgeBase&) = delete;
+  KnowledgeBase& operator=(const KnowledgeBase&) = delete;
 
   // Replaces the dense-retrieval provider (an empty one switches dense retrieval off). Call it
   // before the object is shared between threads.
-  void set_embedding_provider(EmbeddingProvider embeddings) { embeddings_ = std::move(embeddings); }
+  void set_embedding_provider(EmbeddingProvider embeddings);
   [[nodiscard]] const EmbeddingProvider& embedding_provider() const { return embeddings_; }
 
   Result<BuildingCode> building_code(const std::string& ref_id) const;
@@ -91,7 +96,9 @@ class KnowledgeBase {
   Result<SearchResult> search(std::string_view query, Kind kind, std::size_t k = 5) const;
 
   // Embeds the entries of `kind` whose vector for the provider's model is missing or stale
-  // (text changed); returns how many were embedded. search() calls it on demand.
+  // (text changed); returns how many were embedded. search() calls it until it has succeeded
+  // once, and again after each upsert through this object (entries written to the same file by
+  // another process are picked up by calling it explicitly).
   Result<std::size_t> index_embeddings(Kind kind) const;
 
   // The constraints a floor plan of this building type must honour, in SI. Entries of the type
@@ -105,6 +112,11 @@ class KnowledgeBase {
  private:
   store::Store& store_;
   EmbeddingProvider embeddings_;
+  // Per Kind: upserts through this object bump generation_; a successful index_embeddings()
+  // records the generation it started from, so search() re-indexes only after a change.
+  static constexpr std::uint64_t kNeverIndexed = ~std::uint64_t{0};
+  std::array<std::atomic<std::uint64_t>, 2> generation_{};
+  mutable std::array<std::atomic<std::uint64_t>, 2> indexed_generation_{kNeverIndexed, kNeverIndexed};
 };
 
 }  // namespace socsim::knowledge

@@ -283,9 +283,14 @@ TEST_F(KnowledgeBaseTest, EmbeddingsAreStoredOnceAndRefreshedWhenAnEntryChanges)
   EXPECT_EQ(*kb_->index_embeddings(Kind::kBehaviorNode), 0u);
 
   auto node = kb_->behavior_node("Wander");
-  node->keywords += " meander";
+  node->keywords += " meander meandering";
   ASSERT_TRUE(kb_->upsert(*node));
-  EXPECT_EQ(*kb_->index_embeddings(Kind::kBehaviorNode), 1u);
+  // search() notices the change and re-embeds the one entry before ranking.
+  auto found = kb_->search("meander", Kind::kBehaviorNode, 3);
+  ASSERT_TRUE(found);
+  ASSERT_FALSE(found->hits.empty());
+  EXPECT_EQ(found->hits.front().provenance.id, "Wander");
+  EXPECT_EQ(*kb_->index_embeddings(Kind::kBehaviorNode), 0u);
 
   auto rows = store_->read([](store::Database& db) -> Result<std::int64_t> {
     auto st = db.prepare("SELECT count(*) FROM knowledge_embeddings WHERE model = 'socsim-hashed-ngram-v1-128' AND length(vector) = 512");
