@@ -73,7 +73,8 @@ struct Geos::Impl {
     std::vector<GEOSGeometry*> parts;
     parts.reserve(m.size());
     for (const auto& p : m) parts.push_back(polygon(p).release());
-    return own(GEOSGeom_createCollection_r(handle, GEOS_MULTIPOLYGON, parts.data(), static_cast<unsigned>(parts.size())),
+    return own(GEOSGeom_createCollection_r(handle, GEOS_MULTIPOLYGON, parts.data(),
+                                           static_cast<unsigned>(parts.size())),
                "createCollection");
   }
 
@@ -82,9 +83,11 @@ struct Geos::Impl {
     parts.reserve(segs.size());
     for (const auto& s : segs) {
       const Point pts[2] = {s.a, s.b};
-      parts.push_back(own(GEOSGeom_createLineString_r(handle, coords(pts, false)), "createLineString").release());
+      parts.push_back(
+          own(GEOSGeom_createLineString_r(handle, coords(pts, false)), "createLineString").release());
     }
-    return own(GEOSGeom_createCollection_r(handle, GEOS_MULTILINESTRING, parts.data(), static_cast<unsigned>(parts.size())),
+    return own(GEOSGeom_createCollection_r(handle, GEOS_MULTILINESTRING, parts.data(),
+                                           static_cast<unsigned>(parts.size())),
                "createCollection");
   }
 
@@ -112,7 +115,8 @@ struct Geos::Impl {
       Polygon p;
       p.outer = read_ring(GEOSGetExteriorRing_r(handle, g), true);
       const int holes = GEOSGetNumInteriorRings_r(handle, g);
-      for (int i = 0; i < holes; ++i) p.holes.push_back(read_ring(GEOSGetInteriorRingN_r(handle, g, i), true));
+      for (int i = 0; i < holes; ++i)
+        p.holes.push_back(read_ring(GEOSGetInteriorRingN_r(handle, g, i), true));
       out.push_back(std::move(p));
     } else if (type == GEOS_MULTIPOLYGON || type == GEOS_GEOMETRYCOLLECTION) {
       const int n = GEOSGetNumGeometries_r(handle, g);
@@ -174,13 +178,15 @@ Geos::~Geos() = default;
 Validity Geos::validity(const Polygon& polygon) const {
   auto check_ring = [](const std::vector<Point>& ring, const char* which) -> std::optional<Validity> {
     for (const Point& p : ring) {
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) return Validity{false, std::string("non-finite coordinate in ") + which, std::nullopt};
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        return Validity{false, std::string("non-finite coordinate in ") + which, std::nullopt};
     }
     std::size_t distinct = 0;
     for (std::size_t i = 0; i < ring.size(); ++i) {
       if (ring[i] != ring[(i + 1) % ring.size()]) ++distinct;
     }
-    if (distinct < 3) return Validity{false, std::string(which) + " needs at least 3 distinct points", std::nullopt};
+    if (distinct < 3)
+      return Validity{false, std::string(which) + " needs at least 3 distinct points", std::nullopt};
     return std::nullopt;
   };
   if (auto bad = check_ring(polygon.outer, "outer ring")) return *bad;
@@ -204,7 +210,8 @@ Validity Geos::validity(const Polygon& polygon) const {
   }
   if (location) {
     Point p;
-    if (GEOSGeomGetX_r(impl_->handle, location, &p.x) == 1 && GEOSGeomGetY_r(impl_->handle, location, &p.y) == 1) {
+    if (GEOSGeomGetX_r(impl_->handle, location, &p.x) == 1 &&
+        GEOSGeomGetY_r(impl_->handle, location, &p.y) == 1) {
       v.location = p;
     }
     GEOSGeom_destroy_r(impl_->handle, location);
@@ -259,7 +266,8 @@ double Geos::distance(const MultiPolygon& shape, Point p) const {
   auto g = impl_->multi(shape);
   auto pt = impl_->point(p);
   double d = 0.0;
-  if (!GEOSDistance_r(impl_->handle, g.get(), pt.get(), &d)) throw GeosError("GEOS distance failed: " + impl_->last_error);
+  if (!GEOSDistance_r(impl_->handle, g.get(), pt.get(), &d))
+    throw GeosError("GEOS distance failed: " + impl_->last_error);
   return d;
 }
 
@@ -267,7 +275,8 @@ double Geos::distance(const MultiPolygon& a, const MultiPolygon& b) const {
   auto ga = impl_->multi(a);
   auto gb = impl_->multi(b);
   double d = 0.0;
-  if (!GEOSDistance_r(impl_->handle, ga.get(), gb.get(), &d)) throw GeosError("GEOS distance failed: " + impl_->last_error);
+  if (!GEOSDistance_r(impl_->handle, ga.get(), gb.get(), &d))
+    throw GeosError("GEOS distance failed: " + impl_->last_error);
   return d;
 }
 
@@ -277,7 +286,8 @@ std::vector<Segment> Geos::shared_boundary(const Polygon& a, const Polygon& b, d
   auto ba = impl_->own(GEOSBoundary_r(impl_->handle, ga.get()), "boundary");
   auto bb = impl_->own(GEOSBoundary_r(impl_->handle, gb.get()), "boundary");
   Impl::Geom shared = [&] {
-    if (tolerance <= 0.0) return impl_->own(GEOSIntersection_r(impl_->handle, ba.get(), bb.get()), "intersection");
+    if (tolerance <= 0.0)
+      return impl_->own(GEOSIntersection_r(impl_->handle, ba.get(), bb.get()), "intersection");
     auto band = impl_->own(GEOSBuffer_r(impl_->handle, bb.get(), tolerance, 4), "buffer");
     return impl_->own(GEOSIntersection_r(impl_->handle, ba.get(), band.get()), "intersection");
   }();
@@ -312,14 +322,16 @@ std::vector<Segment> Geos::boundary_segments(const MultiPolygon& shapes) const {
   return impl_->straight_segments(noded);
 }
 
-double Geos::length_outside(std::span<const Segment> segments, const MultiPolygon& shape, double tolerance) const {
+double Geos::length_outside(std::span<const Segment> segments, const MultiPolygon& shape,
+                            double tolerance) const {
   if (segments.empty()) return 0.0;
   auto g = impl_->lines(segments);
   auto s = impl_->multi(shape);
   auto band = impl_->own(GEOSBuffer_r(impl_->handle, s.get(), tolerance, 4), "buffer");
   auto rest = impl_->own(GEOSDifference_r(impl_->handle, g.get(), band.get()), "difference");
   double len = 0.0;
-  if (!GEOSLength_r(impl_->handle, rest.get(), &len)) throw GeosError("GEOS length failed: " + impl_->last_error);
+  if (!GEOSLength_r(impl_->handle, rest.get(), &len))
+    throw GeosError("GEOS length failed: " + impl_->last_error);
   return len;
 }
 

@@ -49,7 +49,8 @@ class Geos {
 
   // The parts of a's boundary lying within `tolerance` of b's boundary, as maximal straight
   // segments (empty when the polygons only touch at points or not at all).
-  [[nodiscard]] std::vector<Segment> shared_boundary(const Polygon& a, const Polygon& b, double tolerance) const;
+  [[nodiscard]] std::vector<Segment> shared_boundary(const Polygon& a, const Polygon& b,
+                                                     double tolerance) const;
 
   // All rings of all polygons, noded and dissolved so that an edge shared by two polygons
   // appears once, as maximal straight segments in a deterministic order.

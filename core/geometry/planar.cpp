@@ -8,9 +8,13 @@
 
 namespace socsim::geometry {
 
-double length(const Segment& s) { return std::hypot(s.b.x - s.a.x, s.b.y - s.a.y); }
+double length(const Segment& s) {
+  return std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
+}
 
-double distance(Point a, Point b) { return std::hypot(b.x - a.x, b.y - a.y); }
+double distance(Point a, Point b) {
+  return std::hypot(b.x - a.x, b.y - a.y);
+}
 
 Point closest_point(const Segment& s, Point p) {
   const double dx = s.b.x - s.a.x;
@@ -21,10 +25,14 @@ Point closest_point(const Segment& s, Point p) {
   return {s.a.x + t * dx, s.a.y + t * dy};
 }
 
-double distance(const Segment& s, Point p) { return distance(closest_point(s, p), p); }
+double distance(const Segment& s, Point p) {
+  return distance(closest_point(s, p), p);
+}
 
 namespace {
-double cross(Point o, Point a, Point b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+double cross(Point o, Point a, Point b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
 }  // namespace
 
 double distance(const Segment& s, const Segment& t) {

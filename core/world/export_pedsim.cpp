@@ -65,16 +65,16 @@ std::string export_pedsim(const World& world) {
   for (const auto& w : world.walls()) {
     const Point a = P(w.segment.a);
     const Point b = P(w.segment.b);
-    o << "  <obstacle x1=\"" << micro(a.x) << "\" y1=\"" << micro(a.y) << "\" x2=\"" << micro(b.x) << "\" y2=\""
-      << micro(b.y) << "\"/>\n";
+    o << "  <obstacle x1=\"" << micro(a.x) << "\" y1=\"" << micro(a.y) << "\" x2=\"" << micro(b.x)
+      << "\" y2=\"" << micro(b.y) << "\"/>\n";
   }
   o << "  <!--Waypoints-->\n";
   for (const auto& r : world.rois()) {
     if (r.kind == "queue_lane") continue;
     const Point c = P(geometry::centroid(r.polygon.outer));
     const double radius = std::sqrt(geometry::area(r.polygon) / std::numbers::pi);
-    o << "  <waypoint id=\"" << xml_escape(r.name) << "\" x=\"" << micro(c.x) << "\" y=\"" << micro(c.y) << "\" r=\""
-      << micro(radius) << "\"/>\n";
+    o << "  <waypoint id=\"" << xml_escape(r.name) << "\" x=\"" << micro(c.x) << "\" y=\"" << micro(c.y)
+      << "\" r=\"" << micro(radius) << "\"/>\n";
   }
   for (const auto& e : world.entities()) {
     const Point c = P(e.pose.position());

@@ -14,11 +14,14 @@ std::string pose(double x, double y, double z, double yaw) {
   return micro(x) + " " + micro(y) + " " + micro(z) + " 0 0 " + micro(yaw);
 }
 
-void box_link(std::ostringstream& o, const std::string& name, const std::string& pose_text, const std::string& size) {
+void box_link(std::ostringstream& o, const std::string& name, const std::string& pose_text,
+              const std::string& size) {
   o << "      <link name=\"" << name << "\">\n"
     << "        <pose>" << pose_text << "</pose>\n"
-    << "        <collision name=\"collision\"><geometry><box><size>" << size << "</size></box></geometry></collision>\n"
-    << "        <visual name=\"visual\"><geometry><box><size>" << size << "</size></box></geometry></visual>\n"
+    << "        <collision name=\"collision\"><geometry><box><size>" << size
+    << "</size></box></geometry></collision>\n"
+    << "        <visual name=\"visual\"><geometry><box><size>" << size
+    << "</size></box></geometry></visual>\n"
     << "      </link>\n";
 }
 
@@ -45,7 +48,9 @@ std::string export_sdf(const World& world, const SdfOptions& options) {
   auto meets = [&](std::size_t self, Point p) {
     for (std::size_t k = 0; k < walls.size(); ++k) {
       if (k == self) continue;
-      if (geometry::distance(walls[k].segment.a, p) < 1e-6 || geometry::distance(walls[k].segment.b, p) < 1e-6) return true;
+      if (geometry::distance(walls[k].segment.a, p) < 1e-6 ||
+          geometry::distance(walls[k].segment.b, p) < 1e-6)
+        return true;
     }
     return false;
   };
@@ -59,7 +64,8 @@ std::string export_sdf(const World& world, const SdfOptions& options) {
     const Point a{s.a.x - ux * ea, s.a.y - uy * ea};
     const Point e{s.b.x + ux * eb, s.b.y + uy * eb};
     const double h = walls[i].height;
-    box_link(o, "wall_" + std::to_string(i), pose((a.x + e.x) / 2, (a.y + e.y) / 2, h / 2, std::atan2(uy, ux)),
+    box_link(o, "wall_" + std::to_string(i),
+             pose((a.x + e.x) / 2, (a.y + e.y) / 2, h / 2, std::atan2(uy, ux)),
              micro(len + ea + eb) + " " + micro(t) + " " + micro(h));
   }
   o << "    </model>\n  </world>\n</sdf>\n";

@@ -86,8 +86,10 @@ void GeodesicField::march(const OccupancyGrid& grid, std::vector<std::pair<Cell,
   const auto blocked = grid.blocked_cells();
   for (int y = 0; y < height_; ++y) {
     for (int x = 0; x < width_; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
-      open[static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(pw) + static_cast<std::size_t>(x + 1)] = blocked[i] ? 0 : 1;
+      const std::size_t i =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+      open[static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(pw) + static_cast<std::size_t>(x + 1)] =
+          blocked[i] ? 0 : 1;
     }
   }
   const double h = resolution_;
@@ -98,7 +100,8 @@ void GeodesicField::march(const OccupancyGrid& grid, std::vector<std::pair<Cell,
   heap_store.reserve(n / 4 + seeds.size());
   std::priority_queue<Item, std::vector<Item>, std::greater<>> heap(std::greater<>{}, std::move(heap_store));
   auto padded = [pw](Cell c) {
-    return static_cast<std::size_t>(c.y + 1) * static_cast<std::size_t>(pw) + static_cast<std::size_t>(c.x + 1);
+    return static_cast<std::size_t>(c.y + 1) * static_cast<std::size_t>(pw) +
+           static_cast<std::size_t>(c.x + 1);
   };
   for (const auto& [c, d] : seeds) {
     const std::size_t i = padded(c);
@@ -141,7 +144,8 @@ void GeodesicField::march(const OccupancyGrid& grid, std::vector<std::pair<Cell,
 
 float GeodesicField::at(Cell c) const {
   if (c.x < 0 || c.y < 0 || c.x >= width_ || c.y >= height_) return kInf;
-  return values_[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c.x)];
+  return values_[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width_) +
+                 static_cast<std::size_t>(c.x)];
 }
 
 std::optional<double> GeodesicField::distance(Point p) const {

@@ -81,10 +81,14 @@ OccupancyGrid OccupancyGrid::rasterise(const World& world, const GridOptions& op
   const double touch = 0.5 * res * std::sqrt(2.0) + 1e-12;
   const double reach = std::max(touch, options.inflation);
   auto block_near = [&](const Segment& s) {
-    const int x0 = std::max(0, static_cast<int>(std::floor((std::min(s.a.x, s.b.x) - reach - g.origin_.x) / res)));
-    const int x1 = std::min(g.width_ - 1, static_cast<int>(std::floor((std::max(s.a.x, s.b.x) + reach - g.origin_.x) / res)));
-    const int y0 = std::max(0, static_cast<int>(std::floor((std::min(s.a.y, s.b.y) - reach - g.origin_.y) / res)));
-    const int y1 = std::min(g.height_ - 1, static_cast<int>(std::floor((std::max(s.a.y, s.b.y) + reach - g.origin_.y) / res)));
+    const int x0 =
+        std::max(0, static_cast<int>(std::floor((std::min(s.a.x, s.b.x) - reach - g.origin_.x) / res)));
+    const int x1 = std::min(
+        g.width_ - 1, static_cast<int>(std::floor((std::max(s.a.x, s.b.x) + reach - g.origin_.x) / res)));
+    const int y0 =
+        std::max(0, static_cast<int>(std::floor((std::min(s.a.y, s.b.y) - reach - g.origin_.y) / res)));
+    const int y1 = std::min(
+        g.height_ - 1, static_cast<int>(std::floor((std::max(s.a.y, s.b.y) + reach - g.origin_.y) / res)));
     for (int iy = y0; iy <= y1; ++iy) {
       for (int ix = x0; ix <= x1; ++ix) {
         const std::size_t i = g.index({ix, iy});

@@ -29,7 +29,9 @@ class ElementReader {
   ElementReader(std::vector<FieldError>& errors, const XmlElement& e, std::string pointer)
       : errors_(errors), e_(e), ptr_(std::move(pointer)) {}
 
-  void add(const std::string& message) { errors_.push_back(FieldError{ptr_, message, {}, e_.line, e_.column}); }
+  void add(const std::string& message) {
+    errors_.push_back(FieldError{ptr_, message, {}, e_.line, e_.column});
+  }
 
   // Attributes this element may have; each other one is reported.
   void only(std::initializer_list<std::string_view> allowed) {
@@ -59,8 +61,8 @@ class ElementReader {
   int integer(const char* key, bool required, int fallback, int lo, int hi) {
     const double d = number(key, required, fallback);
     if (d != std::floor(d) || d < lo || d > hi) {
-      add("attribute " + std::string(key) + " of <" + e_.name + "> must be an integer from " + std::to_string(lo) +
-          " to " + std::to_string(hi));
+      add("attribute " + std::string(key) + " of <" + e_.name + "> must be an integer from " +
+          std::to_string(lo) + " to " + std::to_string(hi));
       return fallback;
     }
     return static_cast<int>(d);
@@ -92,7 +94,8 @@ Polygon circle(Point c, double r, int sides = 16) {
 
 // The part of `shape` ∩ `area` that contains `anchor` (or the largest part), its ring
 // starting at the vertex nearest the anchor (GEOS does not keep the input's first vertex).
-std::optional<Polygon> clip(const geometry::Geos& geos, const Polygon& shape, const Polygon& area, Point anchor) {
+std::optional<Polygon> clip(const geometry::Geos& geos, const Polygon& shape, const Polygon& area,
+                            Point anchor) {
   const MultiPolygon parts = geos.intersection(MultiPolygon{shape}, MultiPolygon{area});
   const Polygon* best = nullptr;
   for (const auto& p : parts) {
@@ -119,8 +122,10 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
   if (!doc) return tl::unexpected(doc.error());
   std::vector<FieldError> errors;
   if (doc->name != "scenario") {
-    return fail(ErrorCode::kValidation, "not a pedsim scenario",
-                {FieldError{"", "root element is <" + doc->name + ">, expected <scenario>", {}, doc->line, doc->column}});
+    return fail(
+        ErrorCode::kValidation, "not a pedsim scenario",
+        {FieldError{
+            "", "root element is <" + doc->name + ">, expected <scenario>", {}, doc->line, doc->column}});
   }
 
   std::vector<Segment> obstacles;
@@ -142,7 +147,8 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
       const std::string ptr = "/obstacles/" + std::to_string(obstacles.size());
       ElementReader r(errors, e, ptr);
       r.only({"x1", "y1", "x2", "y2"});
-      const Segment s{{r.number("x1", true), r.number("y1", true)}, {r.number("x2", true), r.number("y2", true)}};
+      const Segment s{{r.number("x1", true), r.number("y1", true)},
+                      {r.number("x2", true), r.number("y2", true)}};
       if (geometry::length(s) <= options.build.boundary_tolerance) r.add("obstacle has no length");
       obstacles.push_back(s);
       obstacle_elements.push_back(&e);
@@ -150,7 +156,11 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
       const std::string ptr = "/waypoints/" + std::to_string(waypoints.size());
       ElementReader r(errors, e, ptr);
       r.only({"id", "x", "y", "r", "b"});
-      PedsimWaypoint w{r.id(), {r.number("x", true), r.number("y", true)}, r.number("r", true, 1.0), r.integer("b", false, 0, 0, 2), e.line};
+      PedsimWaypoint w{r.id(),
+                       {r.number("x", true), r.number("y", true)},
+                       r.number("r", true, 1.0),
+                       r.integer("b", false, 0, 0, 2),
+                       e.line};
       if (!(w.radius > 0)) r.add("waypoint radius r must be positive");
       claim(r, w.id, ptr);
       waypoints.push_back(std::move(w));
@@ -165,8 +175,12 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
       const std::string ptr = "/attractions/" + std::to_string(attractions.size());
       ElementReader r(errors, e, ptr);
       r.only({"id", "x", "y", "width", "height", "strength"});
-      PedsimAttraction a{r.id(), {r.number("x", true), r.number("y", true)}, r.number("width", true, 1.0),
-                         r.number("height", true, 1.0), r.number("strength", false), e.line};
+      PedsimAttraction a{r.id(),
+                         {r.number("x", true), r.number("y", true)},
+                         r.number("width", true, 1.0),
+                         r.number("height", true, 1.0),
+                         r.number("strength", false),
+                         e.line};
       if (!(a.width > 0 && a.height > 0)) r.add("attraction width and height must be positive");
       claim(r, a.id, ptr);
       attractions.push_back(std::move(a));
@@ -189,7 +203,9 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
           continue;
         }
         sr.only({"id"});
-        c.route.push_back({step.name == "addqueue" ? PedsimRouteStep::Kind::kQueue : PedsimRouteStep::Kind::kWaypoint, sr.id()});
+        c.route.push_back(
+            {step.name == "addqueue" ? PedsimRouteStep::Kind::kQueue : PedsimRouteStep::Kind::kWaypoint,
+             sr.id()});
       }
       agents.push_back(std::move(c));
     } else {
@@ -214,7 +230,9 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
       errors.push_back(FieldError{"/agents/" + std::to_string(a) + "/route/" + std::to_string(k),
                                   std::string(queue ? "<addqueue>" : "<addwaypoint>") + " names unknown " +
                                       (queue ? "queue" : "waypoint") + " '" + step.id + "'",
-                                  {}, step_el.line, step_el.column});
+                                  {},
+                                  step_el.line,
+                                  step_el.column});
     }
   }
   if (obstacles.empty()) {
@@ -256,28 +274,38 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
     }
     const geometry::Box b = geometry::bounds(all_points);
     const double m = options.margin;
-    site = Polygon{{{b.min.x - m, b.min.y - m}, {b.max.x + m, b.min.y - m}, {b.max.x + m, b.max.y + m}, {b.min.x - m, b.max.y + m}}, {}};
+    site = Polygon{{{b.min.x - m, b.min.y - m},
+                    {b.max.x + m, b.min.y - m},
+                    {b.max.x + m, b.max.y + m},
+                    {b.min.x - m, b.max.y + m}},
+                   {}};
   }
   const geometry::Box sb = geometry::bounds(site.outer);
-  const std::string walls_text = "the obstacles enclose x " + num(sb.min.x) + " .. " + num(sb.max.x) + ", y " +
-                                 num(sb.min.y) + " .. " + num(sb.max.y);
+  const std::string walls_text = "the obstacles enclose x " + num(sb.min.x) + " .. " + num(sb.max.x) +
+                                 ", y " + num(sb.min.y) + " .. " + num(sb.max.y);
   auto inside = [&](Point p) { return geometry::contains(site, p, options.build.boundary_tolerance); };
   auto outside_error = [&](const std::string& ptr, const std::string& what, Point p, int line) {
-    errors.push_back(FieldError{ptr, what + " at (" + num(p.x) + ", " + num(p.y) + ") lies outside the walls (" + walls_text + ")",
-                                {}, line, 1});
+    errors.push_back(FieldError{
+        ptr,
+        what + " at (" + num(p.x) + ", " + num(p.y) + ") lies outside the walls (" + walls_text + ")",
+        {},
+        line,
+        1});
   };
 
   WorldBuilder b;
   b.set_name(options.name);
   b.add_zone(Zone{"site", "pedsim_area", "", site});
-  for (const auto& s : obstacles) b.add_wall(Wall{s, options.build.default_wall_height, options.build.default_wall_style});
+  for (const auto& s : obstacles)
+    b.add_wall(Wall{s, options.build.default_wall_height, options.build.default_wall_style});
   for (std::size_t i = 0; i < waypoints.size(); ++i) {
     const auto& w = waypoints[i];
     if (!inside(w.position)) {
       outside_error("/waypoints/" + std::to_string(i), "waypoint '" + w.id + "'", w.position, w.line);
       continue;
     }
-    if (auto poly = clip(geos, circle(w.position, w.radius), site, w.position)) b.add_roi(Roi{w.id, "waypoint", *poly});
+    if (auto poly = clip(geos, circle(w.position, w.radius), site, w.position))
+      b.add_roi(Roi{w.id, "waypoint", *poly});
   }
   for (std::size_t i = 0; i < queues.size(); ++i) {
     const auto& q = queues[i];
@@ -291,7 +319,8 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
     const Point h = q.position;
     const Point t{h.x + u.x * options.queue_length, h.y + u.y * options.queue_length};
     // Head edge first: export_pedsim takes the end nearest the first vertex as the head.
-    const Polygon lane{{{h.x + n.x, h.y + n.y}, {h.x - n.x, h.y - n.y}, {t.x - n.x, t.y - n.y}, {t.x + n.x, t.y + n.y}}, {}};
+    const Polygon lane{
+        {{h.x + n.x, h.y + n.y}, {h.x - n.x, h.y - n.y}, {t.x - n.x, t.y - n.y}, {t.x + n.x, t.y + n.y}}, {}};
     if (auto poly = clip(geos, lane, site, h)) b.add_roi(Roi{q.id, "queue_lane", *poly});
   }
   for (std::size_t i = 0; i < attractions.size(); ++i) {
@@ -301,14 +330,18 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
       continue;
     }
     const Point c = at.center;
-    const Polygon rect{{{c.x - at.width / 2, c.y - at.height / 2}, {c.x + at.width / 2, c.y - at.height / 2},
-                        {c.x + at.width / 2, c.y + at.height / 2}, {c.x - at.width / 2, c.y + at.height / 2}}, {}};
+    const Polygon rect{{{c.x - at.width / 2, c.y - at.height / 2},
+                        {c.x + at.width / 2, c.y - at.height / 2},
+                        {c.x + at.width / 2, c.y + at.height / 2},
+                        {c.x - at.width / 2, c.y + at.height / 2}},
+                       {}};
     if (auto poly = clip(geos, rect, site, c)) b.add_roi(Roi{at.id, "area", *poly});
   }
   for (std::size_t i = 0; i < agents.size(); ++i) {
     if (!inside(agents[i].position)) {
-      outside_error("/agents/" + std::to_string(i), std::string(agents[i].type == 2 ? "robot" : "agent cluster"),
-                    agents[i].position, agents[i].line);
+      outside_error("/agents/" + std::to_string(i),
+                    std::string(agents[i].type == 2 ? "robot" : "agent cluster"), agents[i].position,
+                    agents[i].line);
     }
   }
   if (!errors.empty()) return fail(ErrorCode::kValidation, "the pedsim scenario is not valid", errors);
@@ -329,8 +362,8 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
     }
     return tl::unexpected(std::move(e));
   }
-  return PedsimScenario{std::move(*world), enclosed, std::move(waypoints), std::move(queues), std::move(attractions),
-                        std::move(agents)};
+  return PedsimScenario{std::move(*world),      enclosed,         std::move(waypoints), std::move(queues),
+                        std::move(attractions), std::move(agents)};
 }
 
 }  // namespace socsim::world

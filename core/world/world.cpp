@@ -10,8 +10,8 @@ namespace socsim::world {
 
 namespace {
 constexpr std::array<std::string_view, 14> kRoiKinds = {
-    "area",         "assembly_zone", "corridor", "counter_area", "entrance", "exit",       "goal_area",
-    "queue_lane",   "seating_area",  "spawn_area", "waiting_zone", "walkway", "waypoint", "work_area"};
+    "area",       "assembly_zone", "corridor",   "counter_area", "entrance", "exit",     "goal_area",
+    "queue_lane", "seating_area",  "spawn_area", "waiting_zone", "walkway",  "waypoint", "work_area"};
 
 template <class T, class IdT>
 std::optional<IdT> find_by_name(const std::vector<T>& items, std::string_view name) {
@@ -22,15 +22,23 @@ std::optional<IdT> find_by_name(const std::vector<T>& items, std::string_view na
 }
 }  // namespace
 
-std::span<const std::string_view> roi_kinds() { return kRoiKinds; }
+std::span<const std::string_view> roi_kinds() {
+  return kRoiKinds;
+}
 
 bool is_roi_kind(std::string_view kind) {
   return std::find(kRoiKinds.begin(), kRoiKinds.end(), kind) != kRoiKinds.end();
 }
 
-std::optional<ZoneId> World::find_zone(std::string_view name) const { return find_by_name<Zone, ZoneId>(zones_, name); }
-std::optional<DoorId> World::find_door(std::string_view name) const { return find_by_name<Door, DoorId>(doors_, name); }
-std::optional<RoiId> World::find_roi(std::string_view name) const { return find_by_name<Roi, RoiId>(rois_, name); }
+std::optional<ZoneId> World::find_zone(std::string_view name) const {
+  return find_by_name<Zone, ZoneId>(zones_, name);
+}
+std::optional<DoorId> World::find_door(std::string_view name) const {
+  return find_by_name<Door, DoorId>(doors_, name);
+}
+std::optional<RoiId> World::find_roi(std::string_view name) const {
+  return find_by_name<Roi, RoiId>(rois_, name);
+}
 std::optional<EntityId> World::find_entity(std::string_view name) const {
   return find_by_name<Entity, EntityId>(entities_, name);
 }

@@ -29,18 +29,25 @@ std::string num(double v) {
   return s;
 }
 
-std::string pt(Point p) { return "(" + num(p.x) + ", " + num(p.y) + ")"; }
+std::string pt(Point p) {
+  return "(" + num(p.x) + ", " + num(p.y) + ")";
+}
 
-bool finite(Point p) { return std::isfinite(p.x) && std::isfinite(p.y); }
-bool finite(const Pose2& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.yaw); }
+bool finite(Point p) {
+  return std::isfinite(p.x) && std::isfinite(p.y);
+}
+bool finite(const Pose2& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.yaw);
+}
 
 // Names are referenced from behaviour trees, XML and SVG ids: keep them to a safe alphabet.
 std::optional<std::string> name_problem(const std::string& name) {
   if (name.empty()) return "must not be empty";
-  if (name.size() > kMaxNameLength) return "must be at most " + std::to_string(kMaxNameLength) + " characters";
+  if (name.size() > kMaxNameLength)
+    return "must be at most " + std::to_string(kMaxNameLength) + " characters";
   for (const char ch : name) {
-    const bool ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' ||
-                    ch == '-' || ch == '.';
+    const bool ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+                    ch == '_' || ch == '-' || ch == '.';
     if (!ok) return "'" + name + "' may only contain letters, digits, '_', '-' and '.'";
   }
   return std::nullopt;
@@ -122,8 +129,12 @@ class Validator {
   std::vector<FieldError> errors_;
 };
 
-std::string zone_ptr(std::size_t i) { return "/zones/" + std::to_string(i); }
-std::string door_ptr(std::size_t i) { return "/doors/" + std::to_string(i); }
+std::string zone_ptr(std::size_t i) {
+  return "/zones/" + std::to_string(i);
+}
+std::string door_ptr(std::size_t i) {
+  return "/doors/" + std::to_string(i);
+}
 
 }  // namespace
 
@@ -217,8 +228,13 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
   if (!(opt.agent_radius >= 0 && std::isfinite(opt.agent_radius)) || !(opt.boundary_tolerance > 0) ||
       !(opt.door_snap_distance >= 0) || !(opt.overlap_tolerance >= 0) || !(opt.grid_resolution > 0) ||
       !(opt.default_wall_height > 0)) {
-    return fail(ErrorCode::kValidation, "world build options out of range",
-                {FieldError{"", "agent_radius, tolerances, grid_resolution and default_wall_height must be positive", {}, 0, 0}});
+    return fail(
+        ErrorCode::kValidation, "world build options out of range",
+        {FieldError{"",
+                    "agent_radius, tolerances, grid_resolution and default_wall_height must be positive",
+                    {},
+                    0,
+                    0}});
   }
   Geos geos;
   std::map<std::string, std::string> names;
@@ -245,7 +261,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     if (finite(w.segment.a) && finite(w.segment.b) && geometry::length(w.segment) <= opt.boundary_tolerance) {
       v.add(ptr + "/end", "wall from " + pt(w.segment.a) + " to " + pt(w.segment.b) + " has no length");
     }
-    if (!(w.height > 0 && std::isfinite(w.height))) v.add(ptr + "/height", "must be a positive number of metres");
+    if (!(w.height > 0 && std::isfinite(w.height)))
+      v.add(ptr + "/height", "must be a positive number of metres");
     v.label(ptr + "/style", w.style, true);
   }
   for (std::size_t i = 0; i < doors_.size(); ++i) {
@@ -256,8 +273,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     if (!(d.width > 0 && std::isfinite(d.width))) {
       v.add(ptr + "/width", "must be a positive number of metres");
     } else if (d.width < 2 * opt.agent_radius) {
-      v.add(ptr + "/width", "door '" + d.name + "' is " + num(d.width) + " m wide, narrower than an agent of radius " +
-                                num(opt.agent_radius) + " m");
+      v.add(ptr + "/width", "door '" + d.name + "' is " + num(d.width) +
+                                " m wide, narrower than an agent of radius " + num(opt.agent_radius) + " m");
     }
     if (d.connects.size() > 2) {
       v.add(ptr + "/connects", "lists " + std::to_string(d.connects.size()) +
@@ -289,7 +306,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     for (std::size_t k = 0; k < e.affordances.size(); ++k) {
       const std::string aptr = ptr + "/affordances/" + std::to_string(k);
       v.label(aptr, e.affordances[k], false);
-      if (!seen.insert(e.affordances[k]).second) v.add(aptr, "duplicate affordance '" + e.affordances[k] + "'");
+      if (!seen.insert(e.affordances[k]).second)
+        v.add(aptr, "duplicate affordance '" + e.affordances[k] + "'");
     }
   }
   if (std::find(zone_ok.begin(), zone_ok.end(), false) != zone_ok.end() || zones_.empty()) return v.failure();
@@ -304,10 +322,11 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
         const auto& a = boxes[i];
         const auto& b = boxes[j];
         if (a.max.x <= b.min.x || b.max.x <= a.min.x || a.max.y <= b.min.y || b.max.y <= a.min.y) continue;
-        const double overlap = geos.area(geos.intersection(MultiPolygon{zones_[i].polygon}, MultiPolygon{zones_[j].polygon}));
+        const double overlap =
+            geos.area(geos.intersection(MultiPolygon{zones_[i].polygon}, MultiPolygon{zones_[j].polygon}));
         if (overlap > opt.overlap_tolerance) {
-          v.add(zone_ptr(j) + "/polygon", "zone '" + zones_[j].name + "' overlaps zone '" + zones_[i].name + "' (" +
-                                              zone_ptr(i) + ") by " + num(overlap) + " m²");
+          v.add(zone_ptr(j) + "/polygon", "zone '" + zones_[j].name + "' overlaps zone '" + zones_[i].name +
+                                              "' (" + zone_ptr(i) + ") by " + num(overlap) + " m²");
         }
       }
     }
@@ -323,7 +342,10 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
       const auto key = std::minmax(a, b);
       auto it = shared_cache.find(key);
       if (it == shared_cache.end()) {
-        it = shared_cache.emplace(key, geos.shared_boundary(zones_[key.first].polygon, zones_[key.second].polygon, tol)).first;
+        it = shared_cache
+                 .emplace(key,
+                          geos.shared_boundary(zones_[key.first].polygon, zones_[key.second].polygon, tol))
+                 .first;
       }
       return it->second;
     };
@@ -348,7 +370,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
       }
       if (!resolved) continue;
       if (ends.size() == 2 && ends[0] == ends[1]) {
-        v.add(ptr + "/connects", "door '" + spec.name + "' connects zone '" + zones_[ends[0]].name + "' with itself");
+        v.add(ptr + "/connects",
+              "door '" + spec.name + "' connects zone '" + zones_[ends[0]].name + "' with itself");
         continue;
       }
       if (ends.empty()) {
@@ -367,8 +390,9 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
             if (d < best) best = d, bz = z;
           }
           v.add(ptr + "/pose", "door '" + spec.name + "' at " + pt(c) +
-                                   " is on no zone boundary (nearest is zone '" + zones_[bz].name + "', " + num(best) +
-                                   " m away; at most " + num(opt.door_snap_distance) + " m allowed)");
+                                   " is on no zone boundary (nearest is zone '" + zones_[bz].name + "', " +
+                                   num(best) + " m away; at most " + num(opt.door_snap_distance) +
+                                   " m allowed)");
           continue;
         }
         for (std::size_t x = 0; x < near.size() && ends.empty(); ++x) {
@@ -387,7 +411,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
         host = shared(ends[0], ends[1]);
         if (host.empty()) {
           v.add(ptr + "/connects", "zones '" + za.name + "' and '" + zones_[ends[1]].name +
-                                       "' share no boundary, so door '" + spec.name + "' cannot connect them");
+                                       "' share no boundary, so door '" + spec.name +
+                                       "' cannot connect them");
           continue;
         }
       } else {
@@ -403,7 +428,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
                                                          zones_[ends[1]].name + "'"
                                                    : "the outside boundary of zone '" + za.name + "'";
         std::string msg = "door '" + spec.name + "' at " + pt(c) + " is not on " + where;
-        if (!host.empty()) msg += " (" + num(nh.distance) + " m away; at most " + num(opt.door_snap_distance) + " m allowed)";
+        if (!host.empty())
+          msg += " (" + num(nh.distance) + " m away; at most " + num(opt.door_snap_distance) + " m allowed)";
         v.add(ptr + "/pose", msg);
         continue;
       }
@@ -414,8 +440,9 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
       const double half = spec.width / 2;
       if (t - half < -tol || t + half > len + tol) {
         const double over = std::max(-(t - half), t + half - len);
-        v.add(ptr + "/width", "door '" + spec.name + "' (" + num(spec.width) + " m) does not fit on its boundary from " +
-                                  pt(s.a) + " to " + pt(s.b) + "; the opening runs " + num(over) + " m past its end");
+        v.add(ptr + "/width", "door '" + spec.name + "' (" + num(spec.width) +
+                                  " m) does not fit on its boundary from " + pt(s.a) + " to " + pt(s.b) +
+                                  "; the opening runs " + num(over) + " m past its end");
         continue;
       }
       Door d;
@@ -430,12 +457,15 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
       // Two doors in one opening would double-count it.
       for (const auto& other : doors) {
         const Segment& o = other.opening;
-        auto off = [&](Point p) { return std::abs((p.x - d.opening.a.x) * u.y - (p.y - d.opening.a.y) * u.x); };
+        auto off = [&](Point p) {
+          return std::abs((p.x - d.opening.a.x) * u.y - (p.y - d.opening.a.y) * u.x);
+        };
         if (off(o.a) > tol || off(o.b) > tol) continue;
         auto along = [&](Point p) { return (p.x - d.opening.a.x) * u.x + (p.y - d.opening.a.y) * u.y; };
         const double lo = std::max(0.0, std::min(along(o.a), along(o.b)));
         const double hi = std::min(spec.width, std::max(along(o.a), along(o.b)));
-        if (hi - lo > tol) v.add(ptr + "/pose", "door '" + spec.name + "' overlaps door '" + other.name + "'");
+        if (hi - lo > tol)
+          v.add(ptr + "/pose", "door '" + spec.name + "' overlaps door '" + other.name + "'");
       }
       doors.push_back(std::move(d));
     }
@@ -453,8 +483,9 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
           const Segment inner{{d.opening.a.x + u.x * cut, d.opening.a.y + u.y * cut},
                               {d.opening.b.x - u.x * cut, d.opening.b.y - u.y * cut}};
           if (geometry::distance(walls[k].segment, inner) < tol) {
-            v.add("/walls/" + std::to_string(k), "wall from " + pt(walls[k].segment.a) + " to " + pt(walls[k].segment.b) +
-                                                     " blocks door '" + d.name + "'");
+            v.add("/walls/" + std::to_string(k), "wall from " + pt(walls[k].segment.a) + " to " +
+                                                     pt(walls[k].segment.b) + " blocks door '" + d.name +
+                                                     "'");
           }
         }
       }
@@ -489,7 +520,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
               "entity '" + e.name + "' at " + pt(e.pose.position()) + " is outside every zone");
         continue;
       }
-      entities.push_back(Entity{e.type, e.name, e.pose, e.affordances, ZoneId(static_cast<std::uint32_t>(*in))});
+      entities.push_back(
+          Entity{e.type, e.name, e.pose, e.affordances, ZoneId(static_cast<std::uint32_t>(*in))});
     }
     if (!v.ok()) return v.failure();
 
@@ -506,7 +538,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
 
     // 6. Every zone reachable from every other for an agent of the given radius.
     if (opt.check_reachability && zones_.size() > 1) {
-      const auto grid = OccupancyGrid::rasterise(w, GridOptions{opt.grid_resolution, opt.agent_radius, 4'000'000});
+      const auto grid =
+          OccupancyGrid::rasterise(w, GridOptions{opt.grid_resolution, opt.agent_radius, 4'000'000});
       const auto label = grid.components();
       std::vector<std::map<int, std::size_t>> counts(zones_.size());
       for (int y = 0; y < grid.height(); ++y) {
@@ -521,7 +554,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
       std::map<int, std::size_t> votes;
       for (std::size_t z = 0; z < zones_.size(); ++z) {
         if (counts[z].empty()) {
-          v.add(zone_ptr(z) + "/polygon", "zone '" + zones_[z].name + "' has no free space for an agent of radius " +
+          v.add(zone_ptr(z) + "/polygon", "zone '" + zones_[z].name +
+                                              "' has no free space for an agent of radius " +
                                               num(opt.agent_radius) + " m");
           continue;
         }
@@ -546,9 +580,9 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
               doors_of += " (" + num(d.width) + " m)";
             }
           }
-          v.add(zone_ptr(z), "zone '" + zones_[z].name + "' cannot be reached from zone '" + zones_[ref_zone].name +
-                                 "' by an agent of radius " + num(opt.agent_radius) + " m; " +
-                                 (doors_of.empty() ? "it has no door" : "its doors: " + doors_of));
+          v.add(zone_ptr(z), "zone '" + zones_[z].name + "' cannot be reached from zone '" +
+                                 zones_[ref_zone].name + "' by an agent of radius " + num(opt.agent_radius) +
+                                 " m; " + (doors_of.empty() ? "it has no door" : "its doors: " + doors_of));
         }
       }
       if (!v.ok()) return v.failure();

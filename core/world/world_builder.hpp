@@ -12,13 +12,14 @@
 namespace socsim::world {
 
 struct BuildOptions {
-  double agent_radius = 0.25;         // m; every zone must be reachable for an agent this wide
-  double boundary_tolerance = 0.01;   // m; points this close to a boundary lie on it
-  double door_snap_distance = 0.25;   // m; a door centre may sit this far off the boundary (within the wall)
-  double overlap_tolerance = 1e-3;    // m²; zones may overlap by this much (rounding), ROIs leave zones by this much
-  double default_wall_height = 3.0;   // m; for derived walls
+  double agent_radius = 0.25;        // m; every zone must be reachable for an agent this wide
+  double boundary_tolerance = 0.01;  // m; points this close to a boundary lie on it
+  double door_snap_distance = 0.25;  // m; a door centre may sit this far off the boundary (within the wall)
+  double overlap_tolerance =
+      1e-3;  // m²; zones may overlap by this much (rounding), ROIs leave zones by this much
+  double default_wall_height = 3.0;          // m; for derived walls
   std::string default_wall_style = "plain";  // for derived walls of zones without a material
-  double grid_resolution = 0.05;      // m; reachability grid (coarsened for very large worlds)
+  double grid_resolution = 0.05;             // m; reachability grid (coarsened for very large worlds)
   bool check_reachability = true;
 };
 

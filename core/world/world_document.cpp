@@ -24,17 +24,26 @@ class DocumentReader {
     if (!units) return u;
     check_.only_keys(*units, "/units", {"length", "angle"});
     if (auto len = check_.string(*units, "/units", "length", false)) {
-      if (*len == "m") u.length = 1.0;
-      else if (*len == "cm") u.length = 0.01;
-      else if (*len == "mm") u.length = 0.001;
-      else if (*len == "ft") u.length = 0.3048;
-      else if (*len == "in") u.length = 0.0254;
-      else check_.add("/units/length", "unknown length unit '" + *len + "' (known: m, cm, mm, ft, in)");
+      if (*len == "m")
+        u.length = 1.0;
+      else if (*len == "cm")
+        u.length = 0.01;
+      else if (*len == "mm")
+        u.length = 0.001;
+      else if (*len == "ft")
+        u.length = 0.3048;
+      else if (*len == "in")
+        u.length = 0.0254;
+      else
+        check_.add("/units/length", "unknown length unit '" + *len + "' (known: m, cm, mm, ft, in)");
     }
     if (auto ang = check_.string(*units, "/units", "angle", false)) {
-      if (*ang == "rad") u.angle = 1.0;
-      else if (*ang == "deg") u.angle = std::numbers::pi / 180.0;
-      else check_.add("/units/angle", "unknown angle unit '" + *ang + "' (known: rad, deg)");
+      if (*ang == "rad")
+        u.angle = 1.0;
+      else if (*ang == "deg")
+        u.angle = std::numbers::pi / 180.0;
+      else
+        check_.add("/units/angle", "unknown angle unit '" + *ang + "' (known: rad, deg)");
     }
     units_ = u;
     return u;
@@ -94,8 +103,10 @@ class DocumentReader {
     bool ok = true;
     for (std::size_t i = 0; i < v->size(); ++i) {
       auto q = point_at((*v)[i], JsonChecker::child(p, i));
-      if (q) poly.outer.push_back(*q);
-      else ok = false;
+      if (q)
+        poly.outer.push_back(*q);
+      else
+        ok = false;
     }
     if (!ok) return std::nullopt;
     // A closed ring ([..., first]) is accepted; it is stored open.
@@ -113,7 +124,8 @@ class DocumentReader {
     return *d * units_.length;
   }
 
-  std::vector<std::string> strings(const Json& obj, const std::string& ptr, const char* key, std::size_t max_items) {
+  std::vector<std::string> strings(const Json& obj, const std::string& ptr, const char* key,
+                                   std::size_t max_items) {
     std::vector<std::string> out;
     const Json* v = check_.array(obj, ptr, key, false, max_items);
     if (!v) return out;
@@ -159,7 +171,9 @@ class DocumentReader {
   Units units_;
 };
 
-Json point_json(Point p) { return Json::array({p.x, p.y}); }
+Json point_json(Point p) {
+  return Json::array({p.x, p.y});
+}
 
 Json pose_json(const Pose2& p) {
   if (p.yaw == 0.0) return Json::array({p.x, p.y});
@@ -190,7 +204,8 @@ Result<WorldBuilder> builder_from_document(const Json& doc) {
     check.add("", std::string("a world document must be an object, not ") + doc.type_name());
     return tl::unexpected(check.error("the world document is not valid"));
   }
-  check.only_keys(doc, "", {"name", "units", "origin", "floor", "zones", "walls", "doors", "segmentation", "entities"});
+  check.only_keys(
+      doc, "", {"name", "units", "origin", "floor", "zones", "walls", "doors", "segmentation", "entities"});
   DocumentReader read(check);
   read.units(doc);
   WorldBuilder b;
@@ -278,11 +293,13 @@ Json world_to_document(const World& world) {
   for (const auto& d : world.doors()) {
     Json connects = Json::array({world.zone(d.zone).name});
     if (d.other) connects.push_back(world.zone(*d.other).name);
-    doors.push_back({{"name", d.name}, {"pose", pose_json(d.pose)}, {"width", d.width}, {"connects", connects}});
+    doors.push_back(
+        {{"name", d.name}, {"pose", pose_json(d.pose)}, {"width", d.width}, {"connects", connects}});
   }
   doc["doors"] = std::move(doors);
   Json rois = Json::array();
-  for (const auto& r : world.rois()) rois.push_back({{"name", r.name}, {"kind", r.kind}, {"polygon", polygon_json(r.polygon)}});
+  for (const auto& r : world.rois())
+    rois.push_back({{"name", r.name}, {"kind", r.kind}, {"polygon", polygon_json(r.polygon)}});
   doc["segmentation"] = std::move(rois);
   Json entities = Json::array();
   for (const auto& e : world.entities()) {

@@ -14,7 +14,8 @@ Result<World> world_from_yaml(std::string_view text, const BuildOptions& options
   auto doc = parse_yaml_untrusted(text, &positions, limits);
   if (!doc) return tl::unexpected(doc.error());
   if (doc->is_null()) {
-    return fail(ErrorCode::kValidation, "world.yaml is empty", {FieldError{"/zones", "is required", {}, 1, 1}});
+    return fail(ErrorCode::kValidation, "world.yaml is empty",
+                {FieldError{"/zones", "is required", {}, 1, 1}});
   }
   auto world = world_from_document(*doc, options);
   if (!world) {
@@ -90,10 +91,11 @@ std::string world_to_yaml(const World& world) {
   std::ostringstream out;
   out << "# socsim world (world.yaml): lengths in metres, angles in radians\n";
   if (doc.contains("name")) out << "name: " << FlowWriter::quoted(doc["name"].get<std::string>()) << "\n";
-  out << "units: {length: " << doc["units"]["length"].get<std::string>() << ", angle: "
-      << doc["units"]["angle"].get<std::string>() << "}\n";
+  out << "units: {length: " << doc["units"]["length"].get<std::string>()
+      << ", angle: " << doc["units"]["angle"].get<std::string>() << "}\n";
   out << "origin: " << FlowWriter::flow(doc["origin"]) << "\n";
-  if (doc.contains("floor")) out << "floor: {material: " << FlowWriter::quoted(doc["floor"]["material"].get<std::string>()) << "}\n";
+  if (doc.contains("floor"))
+    out << "floor: {material: " << FlowWriter::quoted(doc["floor"]["material"].get<std::string>()) << "}\n";
   for (const char* list : {"zones", "walls", "doors", "segmentation", "entities"}) {
     const Json& items = doc[list];
     if (items.empty()) {

@@ -11,7 +11,8 @@ namespace socsim::world {
 
 // Parses, checks the document and builds the World. Every FieldError of the result carries
 // the line and column of the field (or of the object that lacks it).
-Result<World> world_from_yaml(std::string_view text, const BuildOptions& options = {}, const YamlLimits& limits = {});
+Result<World> world_from_yaml(std::string_view text, const BuildOptions& options = {},
+                              const YamlLimits& limits = {});
 
 // Stable text: one flow-style line per element, numbers in shortest round-trip form.
 std::string world_to_yaml(const World& world);

@@ -26,12 +26,23 @@ std::string xml_escape(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -66,7 +77,8 @@ class XmlParser {
   bool starts(std::string_view t) const { return s_.substr(pos_, t.size()) == t; }
 
   void skip_space() {
-    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' || s_[pos_] == '\r')) ++pos_;
+    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' || s_[pos_] == '\r'))
+      ++pos_;
   }
 
   void skip_past(std::string_view end, const char* what) {
@@ -138,11 +150,16 @@ class XmlParser {
     const auto end = s_.find(';', pos_);
     if (end == std::string_view::npos || end - pos_ > 12) fail("unterminated entity reference");
     const std::string_view ent = s_.substr(pos_ + 1, end - pos_ - 1);
-    if (ent == "lt") out += '<';
-    else if (ent == "gt") out += '>';
-    else if (ent == "amp") out += '&';
-    else if (ent == "quot") out += '"';
-    else if (ent == "apos") out += '\'';
+    if (ent == "lt")
+      out += '<';
+    else if (ent == "gt")
+      out += '>';
+    else if (ent == "amp")
+      out += '&';
+    else if (ent == "quot")
+      out += '"';
+    else if (ent == "apos")
+      out += '\'';
     else if (ent.size() > 1 && ent[0] == '#') {
       const bool hex = ent[1] == 'x';
       const std::string_view digits = ent.substr(hex ? 2 : 1);
@@ -150,9 +167,12 @@ class XmlParser {
       std::uint32_t cp = 0;
       for (const char c : digits) {
         int d = -1;
-        if (c >= '0' && c <= '9') d = c - '0';
-        else if (hex && c >= 'a' && c <= 'f') d = c - 'a' + 10;
-        else if (hex && c >= 'A' && c <= 'F') d = c - 'A' + 10;
+        if (c >= '0' && c <= '9')
+          d = c - '0';
+        else if (hex && c >= 'a' && c <= 'f')
+          d = c - 'a' + 10;
+        else if (hex && c >= 'A' && c <= 'F')
+          d = c - 'A' + 10;
         if (d < 0) fail("bad character reference");
         cp = cp * (hex ? 16 : 10) + static_cast<std::uint32_t>(d);
         if (cp > 0x10FFFF) fail("invalid character reference");
@@ -166,7 +186,8 @@ class XmlParser {
 
   XmlElement element(int depth) {
     if (depth > limits_.max_depth) fail("elements nested deeper than " + std::to_string(limits_.max_depth));
-    if (++elements_ > limits_.max_elements) fail("more than " + std::to_string(limits_.max_elements) + " elements");
+    if (++elements_ > limits_.max_elements)
+      fail("more than " + std::to_string(limits_.max_elements) + " elements");
     XmlElement e;
     e.line = 0;
     const std::size_t open = pos_;
@@ -198,8 +219,10 @@ class XmlParser {
         const char c = s_[pos_];
         if (c == quote) break;
         if (c == '<') fail("'<' in attribute value");
-        if (c == '&') entity(value);
-        else value += c, ++pos_;
+        if (c == '&')
+          entity(value);
+        else
+          value += c, ++pos_;
       }
       ++pos_;
       if (e.attribute(key)) fail("duplicate attribute '" + key + "'");
@@ -240,8 +263,10 @@ class XmlParser {
   void position(XmlElement& e, std::size_t at) {
     // Line/column computed incrementally (documents are read front to back).
     while (line_pos_ < at) {
-      if (s_[line_pos_] == '\n') ++line_, col_ = 1;
-      else ++col_;
+      if (s_[line_pos_] == '\n')
+        ++line_, col_ = 1;
+      else
+        ++col_;
       ++line_pos_;
     }
     e.line = line_;
@@ -261,17 +286,19 @@ class XmlParser {
 
 Result<XmlElement> parse_xml(std::string_view text, const XmlLimits& limits) {
   if (text.size() > limits.max_bytes) {
-    return fail(ErrorCode::kPayloadTooLarge, "XML document is " + std::to_string(text.size()) + " bytes; at most " +
-                                                 std::to_string(limits.max_bytes) + " allowed");
+    return fail(ErrorCode::kPayloadTooLarge, "XML document is " + std::to_string(text.size()) +
+                                                 " bytes; at most " + std::to_string(limits.max_bytes) +
+                                                 " allowed");
   }
   XmlParser parser(text, limits);
   try {
     return parser.document();
   } catch (const XmlReject& r) {
     auto [line, column] = line_column(text, std::min(r.pos, text.size()));
-    return fail(ErrorCode::kBadRequest,
-                "XML: " + r.message + " (line " + std::to_string(line) + ", column " + std::to_string(column) + ")",
-                {FieldError{"", r.message, {}, line, column}});
+    return fail(
+        ErrorCode::kBadRequest,
+        "XML: " + r.message + " (line " + std::to_string(line) + ", column " + std::to_string(column) + ")",
+        {FieldError{"", r.message, {}, line, column}});
   }
 }
 

@@ -63,7 +63,8 @@ Json resolve_plain(const std::string& s, const YAML::Mark& mark) {
 
 class JsonBuilder : public YAML::EventHandler {
  public:
-  JsonBuilder(SourcePositions* positions, std::size_t max_nodes) : positions_(positions), max_nodes_(max_nodes) {}
+  JsonBuilder(SourcePositions* positions, std::size_t max_nodes)
+      : positions_(positions), max_nodes_(max_nodes) {}
 
   Json take() { return std::move(root_); }
   [[nodiscard]] bool empty() const { return !has_root_; }
@@ -76,7 +77,8 @@ class JsonBuilder : public YAML::EventHandler {
   }
   void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { reject_anchor(mark); }
   void OnAnchor(const YAML::Mark& mark, const std::string&) override { reject_anchor(mark); }
-  void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t anchor, const std::string& v) override {
+  void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t anchor,
+                const std::string& v) override {
     check(mark, anchor, tag);
     if (expecting_key()) {
       Frame& f = stack_.back();
@@ -120,7 +122,8 @@ class JsonBuilder : public YAML::EventHandler {
 
   void check(const YAML::Mark& mark, YAML::anchor_t anchor, const std::string& tag) {
     if (++nodes_ > max_nodes_) {
-      throw YamlReject{"document has more than " + std::to_string(max_nodes_) + " nodes", mark.line + 1, mark.column + 1};
+      throw YamlReject{"document has more than " + std::to_string(max_nodes_) + " nodes", mark.line + 1,
+                       mark.column + 1};
     }
     if (anchor != YAML::NullAnchor) reject_anchor(mark);
     if (tag != "?" && tag != "!" && !tag.empty()) {
@@ -199,15 +202,18 @@ void SourcePositions::annotate(Error& error) const {
   }
 }
 
-Result<Json> parse_yaml_untrusted(std::string_view text, SourcePositions* positions, const YamlLimits& limits) {
+Result<Json> parse_yaml_untrusted(std::string_view text, SourcePositions* positions,
+                                  const YamlLimits& limits) {
   if (text.size() > limits.max_bytes) {
     return fail(ErrorCode::kPayloadTooLarge, "YAML document is " + std::to_string(text.size()) +
-                                                 " bytes; at most " + std::to_string(limits.max_bytes) + " allowed");
+                                                 " bytes; at most " + std::to_string(limits.max_bytes) +
+                                                 " allowed");
   }
   auto reject = [](const std::string& msg, int line, int column) {
-    return fail(ErrorCode::kBadRequest, "YAML: " + msg + " (line " + std::to_string(line) + ", column " +
-                                            std::to_string(column) + ")",
-                {FieldError{"", msg, {}, line, column}});
+    return fail(
+        ErrorCode::kBadRequest,
+        "YAML: " + msg + " (line " + std::to_string(line) + ", column " + std::to_string(column) + ")",
+        {FieldError{"", msg, {}, line, column}});
   };
   try {
     std::istringstream in{std::string(text)};

@@ -26,7 +26,8 @@ WorldBuilder ten_room_plan() {
       const std::string name = "room_" + std::to_string(side * 5 + i);
       const double x0 = 4.0 * i;
       const double y0 = side == 0 ? 0.0 : 7.0;
-      b.add_zone(Zone{name, "office", "painted_plaster", {{{x0, y0}, {x0 + 4, y0}, {x0 + 4, y0 + 5}, {x0, y0 + 5}}, {}}});
+      b.add_zone(Zone{
+          name, "office", "painted_plaster", {{{x0, y0}, {x0 + 4, y0}, {x0 + 4, y0 + 5}, {x0, y0 + 5}}, {}}});
       b.add_door(DoorSpec{name + "_door", {x0 + 2, side == 0 ? 5.0 : 7.0, 0}, 0.9, {"corridor", name}});
       b.add_entity(EntitySpec{"desk", name + "_desk", {x0 + 2, y0 + 2.5, 0}, {"work"}});
     }
@@ -37,7 +38,9 @@ WorldBuilder ten_room_plan() {
   return b;
 }
 
-double ms_since(std::chrono::steady_clock::time_point t0) { return socsim::bench::seconds_since(t0) * 1e3; }
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return socsim::bench::seconds_since(t0) * 1e3;
+}
 
 // CPU time of this thread: on a loaded machine wall time mostly measures the other processes.
 double thread_cpu_ms() {
@@ -64,9 +67,14 @@ int run(const socsim::bench::Args& a) {
     }
     walls = w->walls().size();
   }
-  socsim::bench::emit({{"bench", "world_build_10_rooms"}, {"runs", runs}, {"zones", 11}, {"walls", walls},
-                       {"p50_ms", socsim::bench::percentile(build_ms, 50)}, {"p95_ms", socsim::bench::percentile(build_ms, 95)},
-                       {"cpu_p50_ms", socsim::bench::percentile(build_cpu, 50)}, {"cpu_p95_ms", socsim::bench::percentile(build_cpu, 95)}});
+  socsim::bench::emit({{"bench", "world_build_10_rooms"},
+                       {"runs", runs},
+                       {"zones", 11},
+                       {"walls", walls},
+                       {"p50_ms", socsim::bench::percentile(build_ms, 50)},
+                       {"p95_ms", socsim::bench::percentile(build_ms, 95)},
+                       {"cpu_p50_ms", socsim::bench::percentile(build_cpu, 50)},
+                       {"cpu_p95_ms", socsim::bench::percentile(build_cpu, 95)}});
 
   // 25.4 m square at 0.1 m plus a one-cell margin: a 256 x 256 grid.
   WorldBuilder square;
@@ -88,10 +96,15 @@ int run(const socsim::bench::Args& a) {
     field_ms.push_back(ms_since(t0));
     far = f.distance({24, 1}).value_or(-1);
   }
-  socsim::bench::emit({{"bench", "geodesic_field"}, {"runs", runs}, {"width", grid.width()}, {"height", grid.height()},
-                       {"serpentine_distance_m", far}, {"p50_ms", socsim::bench::percentile(field_ms, 50)},
+  socsim::bench::emit({{"bench", "geodesic_field"},
+                       {"runs", runs},
+                       {"width", grid.width()},
+                       {"height", grid.height()},
+                       {"serpentine_distance_m", far},
+                       {"p50_ms", socsim::bench::percentile(field_ms, 50)},
                        {"p95_ms", socsim::bench::percentile(field_ms, 95)},
-                       {"cpu_p50_ms", socsim::bench::percentile(field_cpu, 50)}, {"cpu_p95_ms", socsim::bench::percentile(field_cpu, 95)}});
+                       {"cpu_p50_ms", socsim::bench::percentile(field_cpu, 50)},
+                       {"cpu_p95_ms", socsim::bench::percentile(field_cpu, 95)}});
 
   const std::string yaml = world_to_yaml(plan.build().value());
   std::vector<double> yaml_ms;
@@ -102,8 +115,11 @@ int run(const socsim::bench::Args& a) {
     yaml_ms.push_back(ms_since(t0));
     if (again != yaml) return 1;
   }
-  socsim::bench::emit({{"bench", "world_yaml_read_build_write"}, {"runs", runs}, {"bytes", yaml.size()},
-                       {"p50_ms", socsim::bench::percentile(yaml_ms, 50)}, {"p95_ms", socsim::bench::percentile(yaml_ms, 95)}});
+  socsim::bench::emit({{"bench", "world_yaml_read_build_write"},
+                       {"runs", runs},
+                       {"bytes", yaml.size()},
+                       {"p50_ms", socsim::bench::percentile(yaml_ms, 50)},
+                       {"p95_ms", socsim::bench::percentile(yaml_ms, 95)}});
   return 0;
 }
 

@@ -11,7 +11,9 @@
 namespace socsim::geometry {
 namespace {
 
-Polygon rect(double x0, double y0, double x1, double y1) { return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}}; }
+Polygon rect(double x0, double y0, double x1, double y1) {
+  return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+}
 
 double total_length(const std::vector<Segment>& segs) {
   double l = 0;
@@ -104,7 +106,8 @@ TEST(Geos, BoundarySegmentsDissolveSharedEdgesAndMergeCollinearPieces) {
   const auto segs = geos.boundary_segments(MultiPolygon{rect(0, 0, 4, 4), rect(4, 0, 8, 4)});
   EXPECT_DOUBLE_EQ(total_length(segs), 28.0);
   // The bottom edge is noded at x=4 (the middle wall meets it), so it comes as two pieces.
-  const auto bottom = std::count_if(segs.begin(), segs.end(), [](const Segment& s) { return s.a.y == 0 && s.b.y == 0; });
+  const auto bottom =
+      std::count_if(segs.begin(), segs.end(), [](const Segment& s) { return s.a.y == 0 && s.b.y == 0; });
   EXPECT_EQ(bottom, 2);
   EXPECT_EQ(segs.size(), 7u);
 }
@@ -119,7 +122,7 @@ TEST(Geos, LengthOutsideMeasuresWhatLeavesTheShape) {
 TEST(Geos, PolygonizeFindsTheRoomsEnclosedBySegments) {
   Geos geos;
   // A square with a dividing line: two faces. A dangling segment encloses nothing.
-  const std::vector<Segment> segs{{{0, 0}, {4, 0}}, {{4, 0}, {4, 2}}, {{4, 2}, {0, 2}},
+  const std::vector<Segment> segs{{{0, 0}, {4, 0}}, {{4, 0}, {4, 2}},  {{4, 2}, {0, 2}},
                                   {{0, 2}, {0, 0}}, {{2, -1}, {2, 3}}, {{10, 10}, {11, 11}}};
   const auto faces = geos.polygonize(segs);
   ASSERT_EQ(faces.size(), 2u);
@@ -133,7 +136,8 @@ TEST(Geos, ContextsAreIndependentPerThread) {
     threads.emplace_back([t, &areas] {
       Geos geos;
       double sum = 0;
-      for (int i = 0; i < 50; ++i) sum += geos.area(geos.unite(MultiPolygon{rect(0, 0, t + 1, 1), rect(t, 0, t + 2, 1)}));
+      for (int i = 0; i < 50; ++i)
+        sum += geos.area(geos.unite(MultiPolygon{rect(0, 0, t + 1, 1), rect(t, 0, t + 2, 1)}));
       areas[static_cast<std::size_t>(t)] = sum;
     });
   }

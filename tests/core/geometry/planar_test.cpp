@@ -44,9 +44,9 @@ TEST(Planar, ContainsCountsBoundaryAndExcludesHoles) {
   Polygon p = kSquare;
   p.holes.push_back({{1, 1}, {3, 1}, {3, 3}, {1, 3}});
   EXPECT_TRUE(contains(p, {0.5, 0.5}));
-  EXPECT_TRUE(contains(p, {4, 2}));     // on the outer boundary
-  EXPECT_FALSE(contains(p, {2, 2}));    // in the hole
-  EXPECT_TRUE(contains(p, {1, 2}));     // on the hole's boundary
+  EXPECT_TRUE(contains(p, {4, 2}));   // on the outer boundary
+  EXPECT_FALSE(contains(p, {2, 2}));  // in the hole
+  EXPECT_TRUE(contains(p, {1, 2}));   // on the hole's boundary
   EXPECT_FALSE(contains(p, {5, 2}));
 }
 

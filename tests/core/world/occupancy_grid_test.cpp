@@ -36,7 +36,7 @@ TEST(OccupancyGrid, WallsAreInflatedByTheAgentRadius) {
   EXPECT_TRUE(free_at(thin, {4.2, 0.5}));  // 0.2 m from the shared wall
   EXPECT_FALSE(free_at(fat, {4.2, 0.5}));
   EXPECT_TRUE(free_at(fat, {4.4, 0.5}));
-  EXPECT_FALSE(free_at(fat, {2, 0.2}));    // near the outline too
+  EXPECT_FALSE(free_at(fat, {2, 0.2}));  // near the outline too
   // The door gap (y 1.5 .. 2.5) stays open for r = 0.3: its middle is 0.5 m from the jambs.
   EXPECT_TRUE(free_at(fat, {4.0, 2.0}));
   EXPECT_FALSE(free_at(fat, {4.0, 1.6}));

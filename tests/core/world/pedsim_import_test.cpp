@@ -38,7 +38,9 @@ constexpr const char* kBoxScenario = R"(<?xml version="1.0" encoding="UTF-8"?>
 </scenario>
 )";
 
-std::string peers(const char* file) { return std::string(SOCSIM_SHARED_DIR) + "/peers/pedsim/" + file; }
+std::string peers(const char* file) {
+  return std::string(SOCSIM_SHARED_DIR) + "/peers/pedsim/" + file;
+}
 
 TEST(PedsimImport, BoxScenarioBecomesAWorldAndPlainScenarioData) {
   auto s = import_pedsim(kBoxScenario);
@@ -79,7 +81,8 @@ TEST(PedsimImport, MistakesNameTheElementAndLine) {
 }
 
 TEST(PedsimImport, UnknownElementsAndAttributesAreRefused) {
-  auto s = import_pedsim("<scenario>\n<obstacle x1=\"0\" y1=\"0\" x2=\"1\" y2=\"0\" z=\"1\"/>\n<robot/>\n</scenario>");
+  auto s = import_pedsim(
+      "<scenario>\n<obstacle x1=\"0\" y1=\"0\" x2=\"1\" y2=\"0\" z=\"1\"/>\n<robot/>\n</scenario>");
   ASSERT_FALSE(s);
   EXPECT_THAT(s.error().errors.at(0).message, HasSubstr("unknown attribute 'z'"));
   EXPECT_THAT(s.error().errors.at(1).message, HasSubstr("unknown pedsim element <robot>"));
@@ -95,11 +98,14 @@ TEST(PedsimImport, PeerCorridorNamesTheWaypointOutsideItsWalls) {
   const FieldError& fe = s.error().errors[0];
   EXPECT_EQ(fe.pointer, "/waypoints/2");
   EXPECT_EQ(fe.line, 13);
-  EXPECT_EQ(fe.message, "waypoint 'robot_goal' at (22, 27) lies outside the walls (the obstacles enclose x -0.5 .. 29.5, y -0.5 .. 14.5)");
+  EXPECT_EQ(fe.message,
+            "waypoint 'robot_goal' at (22, 27) lies outside the walls (the obstacles enclose x -0.5 .. 29.5, "
+            "y -0.5 .. 14.5)");
 }
 
 TEST(PedsimImport, EveryOtherPeerScenarioImportsAndExportsBack) {
-  for (const char* file : {"airport.xml", "airport_activities.xml", "contexts_queueing.xml", "scene1.xml", "social_contexts.xml"}) {
+  for (const char* file : {"airport.xml", "airport_activities.xml", "contexts_queueing.xml", "scene1.xml",
+                           "social_contexts.xml"}) {
     const std::string path = peers(file);
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "peer file " << path << " is absent";
     auto s = import_pedsim(testing::read_text(path));
@@ -114,7 +120,9 @@ TEST(PedsimImport, EveryOtherPeerScenarioImportsAndExportsBack) {
     for (std::size_t q = 0; q < s->queues.size(); ++q) {
       EXPECT_NEAR(again->queues[q].position.x, s->queues[q].position.x, 1e-6) << file;
       EXPECT_NEAR(again->queues[q].position.y, s->queues[q].position.y, 1e-6) << file;
-      EXPECT_NEAR(std::fmod(again->queues[q].direction_deg - s->queues[q].direction_deg + 720.0, 360.0), 0.0, 1e-4) << file;
+      EXPECT_NEAR(std::fmod(again->queues[q].direction_deg - s->queues[q].direction_deg + 720.0, 360.0), 0.0,
+                  1e-4)
+          << file;
     }
   }
 }

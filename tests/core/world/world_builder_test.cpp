@@ -23,7 +23,6 @@ using testing::load;
 static_assert(!std::is_default_constructible_v<World>, "only the builder makes worlds");
 static_assert(std::is_copy_constructible_v<World>);
 
-
 double wall_length(const World& w) {
   double l = 0;
   for (const auto& wall : w.walls()) l += geometry::length(wall.segment);
@@ -153,7 +152,9 @@ doors:
   ASSERT_FALSE(w);
   const FieldError* fe = error_at(w.error(), "/zones/2");
   ASSERT_NE(fe, nullptr);
-  EXPECT_THAT(fe->message, HasSubstr("zone 'c' cannot be reached from zone 'a' by an agent of radius 0.25 m; it has no door"));
+  EXPECT_THAT(
+      fe->message,
+      HasSubstr("zone 'c' cannot be reached from zone 'a' by an agent of radius 0.25 m; it has no door"));
 }
 
 TEST(WorldBuilder, ReachabilityDependsOnTheAgentRadius) {
@@ -219,9 +220,11 @@ segmentation:
 )");
   ASSERT_FALSE(w);
   EXPECT_EQ(w.error().code, ErrorCode::kValidation);
-  EXPECT_THAT(error_at(w.error(), "/zones/1/name")->message, HasSubstr("duplicate name 'a' (already used at /zones/0/name)"));
+  EXPECT_THAT(error_at(w.error(), "/zones/1/name")->message,
+              HasSubstr("duplicate name 'a' (already used at /zones/0/name)"));
   EXPECT_THAT(error_at(w.error(), "/entities/0/affordances/1")->message, HasSubstr("duplicate affordance"));
-  EXPECT_THAT(error_at(w.error(), "/segmentation/0/kind")->message, HasSubstr("unknown ROI kind 'dance_floor'"));
+  EXPECT_THAT(error_at(w.error(), "/segmentation/0/kind")->message,
+              HasSubstr("unknown ROI kind 'dance_floor'"));
 }
 
 TEST(WorldBuilder, NamesMustBeSafeIdentifiers) {

@@ -12,8 +12,8 @@
 namespace socsim::world {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::example;
+using ::testing::HasSubstr;
 
 JsonSchema world_schema() {
   auto text = testing::read_text(std::string(SOCSIM_SOURCE_DIR) + "/schemas/world.schema.json");
@@ -93,7 +93,8 @@ TEST(WorldDocument, SchemaRejectsWhatTheReaderRejects) {
   bad_width["doors"][0]["width"] = "wide";
   rejected_by_both(bad_width, "/doors/0/width");
   Json bad_kind = base;
-  bad_kind["segmentation"] = Json::array({{{"name", "r"}, {"kind", "ballroom"}, {"polygon", {{1, 1}, {2, 1}, {2, 2}}}}});
+  bad_kind["segmentation"] =
+      Json::array({{{"name", "r"}, {"kind", "ballroom"}, {"polygon", {{1, 1}, {2, 1}, {2, 2}}}}});
   EXPECT_FALSE(schema.validate(bad_kind).empty());
   EXPECT_FALSE(world_from_document(bad_kind));
 }

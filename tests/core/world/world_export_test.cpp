@@ -19,7 +19,9 @@ namespace {
 
 using ::testing::HasSubstr;
 
-World clinic() { return testing::load(testing::example("world_clinic.yaml")); }
+World clinic() {
+  return testing::load(testing::example("world_clinic.yaml"));
+}
 
 std::vector<double> numbers(const std::string& text) {
   std::istringstream in(text);
@@ -47,10 +49,11 @@ TEST(WorldExport, SvgDrawsEveryElementWithIds) {
 }
 
 TEST(WorldExport, SvgGoldenForFigure3) {
-  testing::expect_golden("world_fig3.svg",
-                         "# golden: export_svg of schemas/examples/world_fig3.yaml — zone fill by type, dashed ROIs,\n"
-                         "# golden: explicit walls, the east door opening, entities and labels; y flipped for SVG.\n",
-                         export_svg(testing::load(testing::example("world_fig3.yaml"))));
+  testing::expect_golden(
+      "world_fig3.svg",
+      "# golden: export_svg of schemas/examples/world_fig3.yaml — zone fill by type, dashed ROIs,\n"
+      "# golden: explicit walls, the east door opening, entities and labels; y flipped for SVG.\n",
+      export_svg(testing::load(testing::example("world_fig3.yaml"))));
 }
 
 TEST(WorldExport, SdfIsWellFormedAndEveryLinkHasPoseAndGeometry) {
@@ -82,7 +85,8 @@ TEST(WorldExport, SdfIsWellFormedAndEveryLinkHasPoseAndGeometry) {
       if (*model->attribute("name") == "walls") {
         ++wall_links;
         // Height of the box = the wall's height (3 m), centred at half height.
-        const auto dims = numbers(link->children_named("collision")[0]->children[0].children[0].children[0].text);
+        const auto dims =
+            numbers(link->children_named("collision")[0]->children[0].children[0].children[0].text);
         EXPECT_DOUBLE_EQ(dims[2], 3.0);
         EXPECT_DOUBLE_EQ(numbers(poses[0]->text)[2], 1.5);
       }
@@ -92,10 +96,11 @@ TEST(WorldExport, SdfIsWellFormedAndEveryLinkHasPoseAndGeometry) {
 }
 
 TEST(WorldExport, SdfGoldenForTheClinic) {
-  testing::expect_golden("world_clinic.sdf",
-                         "# golden: export_sdf of schemas/examples/world_clinic.yaml — floor box, one static link per\n"
-                         "# golden: derived wall (length x 0.15 x 3 m box at its centre, corners closed, jambs not).\n",
-                         export_sdf(clinic()));
+  testing::expect_golden(
+      "world_clinic.sdf",
+      "# golden: export_sdf of schemas/examples/world_clinic.yaml — floor box, one static link per\n"
+      "# golden: derived wall (length x 0.15 x 3 m box at its centre, corners closed, jambs not).\n",
+      export_sdf(clinic()));
 }
 
 TEST(WorldExport, RosMapMarksWallsAndOutsideOccupied) {
@@ -111,7 +116,7 @@ TEST(WorldExport, RosMapMarksWallsAndOutsideOccupied) {
   in.get();
   EXPECT_EQ(magic, "P5");
   EXPECT_EQ(comment, "# socsim world clinic_small");
-  EXPECT_EQ(width, 202);   // 20 m / 0.1 + one cell margin each side
+  EXPECT_EQ(width, 202);  // 20 m / 0.1 + one cell margin each side
   EXPECT_EQ(height, 122);
   EXPECT_EQ(maxval, 255);
   const std::size_t data = static_cast<std::size_t>(in.tellg());
@@ -127,8 +132,9 @@ TEST(WorldExport, RosMapMarksWallsAndOutsideOccupied) {
   EXPECT_EQ(pixel(10.01, 3), 254);  // ... except at the door
   EXPECT_EQ(pixel(-0.05, 3), 0);    // outside
   EXPECT_THAT(map.yaml, HasSubstr("image: clinic.pgm\n"));
-  testing::expect_golden("world_clinic.map.yaml",
-                         "# golden: export_ros_map metadata for schemas/examples/world_clinic.yaml at 0.1 m.\n", map.yaml);
+  testing::expect_golden(
+      "world_clinic.map.yaml",
+      "# golden: export_ros_map metadata for schemas/examples/world_clinic.yaml at 0.1 m.\n", map.yaml);
 }
 
 TEST(WorldExport, PedsimUsesOnlyPedsimElements) {
@@ -147,10 +153,11 @@ TEST(WorldExport, PedsimUsesOnlyPedsimElements) {
   EXPECT_EQ(*queue.attribute("y"), "4.2");
   EXPECT_EQ(*queue.attribute("direction"), "270");
   EXPECT_EQ(doc->children_named("attraction").size(), 1u);
-  testing::expect_golden("world_clinic.pedsim.xml",
-                         "# golden: export_pedsim of schemas/examples/world_clinic.yaml — obstacles from derived walls,\n"
-                         "# golden: waypoints from ROIs and entities, the reception queue, the waiting-seat attraction.\n",
-                         export_pedsim(w));
+  testing::expect_golden(
+      "world_clinic.pedsim.xml",
+      "# golden: export_pedsim of schemas/examples/world_clinic.yaml — obstacles from derived walls,\n"
+      "# golden: waypoints from ROIs and entities, the reception queue, the waiting-seat attraction.\n",
+      export_pedsim(w));
 }
 
 TEST(WorldExport, OriginPlacesTheWorldInSimulatorCoordinates) {

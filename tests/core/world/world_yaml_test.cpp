@@ -12,8 +12,8 @@
 namespace socsim::world {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::example;
+using ::testing::HasSubstr;
 
 TEST(WorldYaml, PaperFigure3LoadsAsWritten) {
   auto w = world_from_yaml(example("world_fig3.yaml"));
@@ -37,7 +37,9 @@ TEST(WorldYaml, PaperFigure3LoadsAsWritten) {
 
 TEST(WorldYaml, TheFigureExcerptAloneNamesTheMissingZonePolygon) {
   // The figure's first lines verbatim: the zone has no polygon yet.
-  auto w = world_from_yaml("zones:\n  - name: canteen_hall\nwalls:\n  - {start: [0.0, 0.0], end: [10.0, 0.0],\n    height: 3.0, style: \"white_paint\"}\n");
+  auto w = world_from_yaml(
+      "zones:\n  - name: canteen_hall\nwalls:\n  - {start: [0.0, 0.0], end: [10.0, 0.0],\n    height: 3.0, "
+      "style: \"white_paint\"}\n");
   ASSERT_FALSE(w);
   ASSERT_EQ(w.error().errors.size(), 1u);
   const FieldError& fe = w.error().errors[0];
@@ -68,11 +70,12 @@ TEST(WorldYaml, WritingAndReadingBackGivesTheSameWorld) {
 }
 
 TEST(WorldYaml, ClinicGoldenFile) {
-  testing::expect_golden("world_clinic.yaml",
-                         "# golden: world_to_yaml of schemas/examples/world_clinic.yaml — derived walls (zone\n"
-                         "# golden: boundaries minus door openings, zone materials as styles), doors with connects,\n"
-                         "# golden: ROI kinds, entity affordances, yaw only where non-zero, shortest numbers.\n",
-                         world_to_yaml(testing::load(example("world_clinic.yaml"))));
+  testing::expect_golden(
+      "world_clinic.yaml",
+      "# golden: world_to_yaml of schemas/examples/world_clinic.yaml — derived walls (zone\n"
+      "# golden: boundaries minus door openings, zone materials as styles), doors with connects,\n"
+      "# golden: ROI kinds, entity affordances, yaw only where non-zero, shortest numbers.\n",
+      world_to_yaml(testing::load(example("world_clinic.yaml"))));
 }
 
 TEST(WorldYaml, UnitsAreConvertedToMetresAndRadians) {
@@ -119,45 +122,60 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BrokenCase{"zone without polygon", "zones:\n  - name: hall\n    type: lobby\n", "/zones/0/polygon", 2,
                    "is required"},
-        BrokenCase{"self-crossing polygon", "zones:\n  - name: bow\n    polygon: [[0, 0], [4, 4], [4, 0], [0, 4]]\n",
+        BrokenCase{"self-crossing polygon",
+                   "zones:\n  - name: bow\n    polygon: [[0, 0], [4, 4], [4, 0], [0, 4]]\n",
                    "/zones/0/polygon", 3, "Self-intersection at (2, 2)"},
         BrokenCase{"door on no wall",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\ndoors:\n  - {name: d, pose: [2, 2], width: 1}\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\ndoors:\n  - {name: d, "
+                   "pose: [2, 2], width: 1}\n",
                    "/doors/0/pose", 4, "is on no zone boundary"},
         BrokenCase{"ROI outside every zone",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nsegmentation:\n  - name: far\n    kind: waiting_zone\n    polygon: [[10, 10], [12, 10], [12, 12]]\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nsegmentation:\n  - "
+                   "name: far\n    kind: waiting_zone\n    polygon: [[10, 10], [12, 10], [12, 12]]\n",
                    "/segmentation/0/polygon", 6, "ROI 'far' lies outside every zone"},
         BrokenCase{"duplicate names",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nentities:\n  - {type: table, name: a, pose: [1, 1]}\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nentities:\n  - {type: "
+                   "table, name: a, pose: [1, 1]}\n",
                    "/entities/0/name", 4, "duplicate name 'a'"},
-        BrokenCase{"unknown key", "zones:\n  - name: a\n    colour: red\n    polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]\n",
+        BrokenCase{"unknown key",
+                   "zones:\n  - name: a\n    colour: red\n    polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]\n",
                    "/zones/0/colour", 3, "unknown field 'colour'"},
         BrokenCase{"wrong type",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\ndoors:\n  - {name: d, pose: [4, 2], width: wide}\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\ndoors:\n  - {name: d, "
+                   "pose: [4, 2], width: wide}\n",
                    "/doors/0/width", 4, "must be a number"},
-        BrokenCase{"point with three coordinates", "zones:\n  - name: a\n    polygon: [[0, 0], [4, 0, 1], [4, 4]]\n",
-                   "/zones/0/polygon/1", 3, "must be a point [x, y]"},
+        BrokenCase{"point with three coordinates",
+                   "zones:\n  - name: a\n    polygon: [[0, 0], [4, 0, 1], [4, 4]]\n", "/zones/0/polygon/1", 3,
+                   "must be a point [x, y]"},
         BrokenCase{"overlapping zones",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\n  - {name: b, polygon: [[3, 0], [7, 0], [7, 4], [3, 4]]}\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\n  - {name: b, polygon: "
+                   "[[3, 0], [7, 0], [7, 4], [3, 4]]}\n",
                    "/zones/1/polygon", 3, "overlaps zone 'a'"},
         BrokenCase{"unreachable zone",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\n  - {name: b, polygon: [[4, 0], [8, 0], [8, 4], [4, 4]]}\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\n  - {name: b, polygon: "
+                   "[[4, 0], [8, 0], [8, 4], [4, 4]]}\n",
                    "/zones/1", 3, "cannot be reached from zone 'a'"},
         BrokenCase{"door to an unknown zone",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\ndoors:\n  - name: d\n    pose: [4, 2]\n    width: 1\n    connects: [a, kitchen]\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\ndoors:\n  - name: d\n  "
+                   "  pose: [4, 2]\n    width: 1\n    connects: [a, kitchen]\n",
                    "/doors/0/connects/1", 7, "unknown zone 'kitchen'"},
         BrokenCase{"entity outside every zone",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nentities:\n\n  - {type: bed, name: bed_1, pose: [9, 9]}\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nentities:\n\n  - "
+                   "{type: bed, name: bed_1, pose: [9, 9]}\n",
                    "/entities/0/pose", 5, "is outside every zone"},
         BrokenCase{"unknown ROI kind",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nsegmentation:\n  - {name: r, kind: ballroom, polygon: [[1, 1], [2, 1], [2, 2]]}\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nsegmentation:\n  - "
+                   "{name: r, kind: ballroom, polygon: [[1, 1], [2, 1], [2, 2]]}\n",
                    "/segmentation/0/kind", 4, "unknown ROI kind 'ballroom'"},
         BrokenCase{"zones not a list", "zones: {name: a}\n", "/zones", 1, "must be an array"},
         BrokenCase{"negative wall height",
-                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nwalls:\n  - {start: [0, 0], end: [4, 0], height: -1}\n",
+                   "zones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\nwalls:\n  - {start: "
+                   "[0, 0], end: [4, 0], height: -1}\n",
                    "/walls/0/height", 4, "positive number of metres"},
-        BrokenCase{"unknown unit", "units: {length: furlong}\nzones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\n",
-                   "/units/length", 1, "unknown length unit 'furlong'"}),
+        BrokenCase{
+            "unknown unit",
+            "units: {length: furlong}\nzones:\n  - {name: a, polygon: [[0, 0], [4, 0], [4, 4], [0, 4]]}\n",
+            "/units/length", 1, "unknown length unit 'furlong'"}),
     [](const ::testing::TestParamInfo<BrokenCase>& param_info) {
       std::string n = param_info.param.what;
       for (char& ch : n) {

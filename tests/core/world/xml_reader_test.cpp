@@ -47,18 +47,18 @@ TEST_P(XmlErrors, NameWhatAndWhere) {
   EXPECT_EQ(doc.error().errors.at(0).line, GetParam().line);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Malformed, XmlErrors,
-    ::testing::Values(BadXml{"<a>\n<b></a>", "</a> closes <b>", 2},
-                      BadXml{"<!DOCTYPE lolz [<!ENTITY lol \"lol\">]>\n<a/>", "DOCTYPE is not allowed", 1},
-                      BadXml{"<a x=\"1\" x=\"2\"/>", "duplicate attribute 'x'", 1},
-                      BadXml{"<a>\n  &nbsp;</a>", "unknown entity '&nbsp;'", 2},
-                      BadXml{"<a x=1/>", "attribute value must be quoted", 1},
-                      BadXml{"<a>\n<b/>\n", "element <a> is not closed", 3},
-                      BadXml{"<a/><b/>", "content after the root element", 1},
-                      BadXml{"<a><!-- x -- y --></a>", "'--' inside a comment", 1},
-                      BadXml{"", "expected the root element", 1},
-                      BadXml{"<a>&#0;</a>", "invalid character reference", 1}));
+INSTANTIATE_TEST_SUITE_P(Malformed, XmlErrors,
+                         ::testing::Values(BadXml{"<a>\n<b></a>", "</a> closes <b>", 2},
+                                           BadXml{"<!DOCTYPE lolz [<!ENTITY lol \"lol\">]>\n<a/>",
+                                                  "DOCTYPE is not allowed", 1},
+                                           BadXml{"<a x=\"1\" x=\"2\"/>", "duplicate attribute 'x'", 1},
+                                           BadXml{"<a>\n  &nbsp;</a>", "unknown entity '&nbsp;'", 2},
+                                           BadXml{"<a x=1/>", "attribute value must be quoted", 1},
+                                           BadXml{"<a>\n<b/>\n", "element <a> is not closed", 3},
+                                           BadXml{"<a/><b/>", "content after the root element", 1},
+                                           BadXml{"<a><!-- x -- y --></a>", "'--' inside a comment", 1},
+                                           BadXml{"", "expected the root element", 1},
+                                           BadXml{"<a>&#0;</a>", "invalid character reference", 1}));
 
 TEST(XmlReader, DepthAndElementCountAreCapped) {
   std::string deep;

@@ -11,7 +11,8 @@ namespace {
 using ::testing::HasSubstr;
 
 TEST(YamlReader, PlainScalarsAreTypedQuotedOnesAreStrings) {
-  auto j = parse_yaml_untrusted("a: 3\nb: 2.5\nc: \"2.5\"\nd: true\ne: ~\nf: canteen\ng: 1e-3\nh: 'yes'\ni: -7\n");
+  auto j =
+      parse_yaml_untrusted("a: 3\nb: 2.5\nc: \"2.5\"\nd: true\ne: ~\nf: canteen\ng: 1e-3\nh: 'yes'\ni: -7\n");
   ASSERT_TRUE(j) << j.error().message();
   EXPECT_TRUE((*j)["a"].is_number_integer());
   EXPECT_DOUBLE_EQ((*j)["b"].get<double>(), 2.5);
