@@ -132,6 +132,23 @@ Vec2 guard_move(Vec2 p, Vec2 q, std::span<const std::uint32_t> near, const std::
   return first_blocking_wall(p, target, near, walls, &unused) < 0 ? target : safe;
 }
 
+// Pair forces are summed in 64-bit fixed point (2^-32 m/s² resolution). Integer addition is
+// associative, so the sum does not depend on the order neighbours are visited in: the cell-list
+// step and the O(N²) reference give bit-identical results. Bounded to ±2^30 per term (no overflow
+// for any realistic neighbour count).
+class FixedSum {
+ public:
+  void add(double v) {
+    constexpr double kLimit = 1073741824.0;  // 2^30 m/s²
+    const double clamped = v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v);
+    sum_ += static_cast<std::int64_t>(clamped * 4294967296.0);
+  }
+  [[nodiscard]] double value() const { return static_cast<double>(sum_) * 0x1.0p-32; }
+
+ private:
+  std::int64_t sum_ = 0;
+};
+
 // Frozen state of the candidate neighbours, in the order a scan visits them.
 struct NeighbourArrays {
   const double *x, *y, *vx, *vy, *r;
@@ -203,15 +220,15 @@ class NeighbourSums {
     social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, batch_.tie_x, batch_.tie_y,
                   batch_.fx, batch_.fy);
     for (int m = 0; m < count_; ++m) {
-      social_x += batch_.fx[m];
-      social_y += batch_.fy[m];
+      social_x.add(batch_.fx[m]);
+      social_y.add(batch_.fy[m]);
     }
     count_ = 0;
   }
 
-  double social_x = 0.0, social_y = 0.0;
-  double repulsion_x = 0.0, repulsion_y = 0.0;
-  double body_x = 0.0, body_y = 0.0;
+  FixedSum social_x, social_y;
+  FixedSum repulsion_x, repulsion_y;
+  FixedSum body_x, body_y;
 
  private:
   // The hot loop: locals with __restrict so the compiler keeps the array pointers in registers
@@ -261,8 +278,8 @@ class NeighbourSums {
 
   void touching(double dx, double dy, double d2, double reach, std::int32_t gj, std::uint32_t idj) {
     if (group_ >= 0 && gj == group_) {  // LightSFM: Σ (p_i − p_j) over touching group members
-      repulsion_x -= repulsion_factor_ * dx;
-      repulsion_y -= repulsion_factor_ * dy;
+      repulsion_x.add(-repulsion_factor_ * dx);
+      repulsion_y.add(-repulsion_factor_ * dy);
     }
     if (body_stiffness_ > 0.0) {
       double ex = 0.0;
@@ -277,8 +294,8 @@ class NeighbourSums {
         ex = u.x;
         ey = u.y;
       }
-      body_x -= body_stiffness_ * (reach - d) * ex;
-      body_y -= body_stiffness_ * (reach - d) * ey;
+      body_x.add(-body_stiffness_ * (reach - d) * ex);
+      body_y.add(-body_stiffness_ * (reach - d) * ey);
     }
   }
 
@@ -758,9 +775,9 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
     NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, fp, config_.body_stiffness);
     neighbours(sums, x, y);
     sums.flush();
-    f.social = {sums.social_x, sums.social_y};
-    f.group = {sums.repulsion_x, sums.repulsion_y};
-    f.body = {sums.body_x, sums.body_y};
+    f.social = {sums.social_x.value(), sums.social_y.value()};
+    f.group = {sums.repulsion_x.value(), sums.repulsion_y.value()};
+    f.body = {sums.body_x.value(), sums.body_y.value()};
   }
 
   // Group gaze and coherence (LightSFM computeGroupForce, non-paper variant).

@@ -24,8 +24,11 @@ struct SimulationConfig {
   double wall_cutoff = 2.0;       // m, walls farther away exert no force
   unsigned threads = 1;           // compute threads, including the caller
   std::uint64_t seed = 0;         // drives the sampled desired speeds
-  // Optional body contact force k·overlap (1/s², Helbing, Farkas & Vicsek 2000); 0 = pure LightSFM.
-  double body_stiffness = 0.0;
+  // Body contact force k·overlap between touching agents (1/s²; Helbing, Farkas & Vicsek 2000,
+  // k/m = 1.2e5/80 there, softened for dt = 0.05 s). LightSFM has none, and without it bodies
+  // interpenetrate in crowds: a 1 m door then passes 6.4 persons/s instead of the observed 1–2.
+  // 0 gives pure LightSFM.
+  double body_stiffness = 500.0;
 };
 Status validate(const SimulationConfig& config);
 
