@@ -22,7 +22,7 @@ struct CrowdSimulation::CellIndex {
   std::int64_t ny = 0;
   std::vector<std::uint32_t> start;    // nx*ny + 1 offsets into the sorted arrays
   std::vector<std::uint32_t> order;    // sorted position -> agent index
-  std::vector<std::uint32_t> cell_of;  // agent index -> cell (kNoCell when inactive)
+  std::vector<std::uint32_t> cell_of;  // agent index -> cell, then -> sorted position (kNoCell when inactive)
   std::vector<double> x, y, vx, vy, r;
   std::vector<std::int32_t> group;
   std::vector<std::uint32_t> id;
@@ -181,13 +181,13 @@ class NeighbourSums {
 
   [[nodiscard]] std::uint32_t id() const { return id_; }
 
-  // Visits entries [k0, k1) of `a`.
-  void scan(const NeighbourArrays& a, std::uint32_t k0, std::uint32_t k1) {
+  // Visits entries [k0, k1) of `a`; `self` is the owner's own entry, which is skipped.
+  void scan(const NeighbourArrays& a, std::uint32_t k0, std::uint32_t k1, std::uint32_t self) {
     arrays_ = &a;
-    if (a.id != nullptr && a.active == nullptr) {
-      gather<true>(a, k0, k1);
+    if (a.active == nullptr) {
+      gather<true>(a, k0, k1, self);
     } else {
-      gather<false>(a, k0, k1);
+      gather<false>(a, k0, k1, self);
     }
   }
 
@@ -195,7 +195,10 @@ class NeighbourSums {
     if (count_ == 0) return;
     const NeighbourArrays& a = *arrays_;
     for (int m = 0; m < count_; ++m) {
-      const double d2 = d2_[m];
+      // From the single-precision offsets: the same in the grid and the reference scan.
+      const double fdx = batch_.dx[m];
+      const double fdy = batch_.dy[m];
+      const double d2 = fdx * fdx + fdy * fdy;
       batch_.tie_x[m] = 0.0f;
       batch_.tie_y[m] = 0.0f;
       const std::uint32_t k = slot_[m];
@@ -219,48 +222,47 @@ class NeighbourSums {
     }
     social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, batch_.tie_x, batch_.tie_y,
                   batch_.fx, batch_.fy);
-    for (int m = 0; m < count_; ++m) {
-      social_x.add(batch_.fx[m]);
-      social_y.add(batch_.fy[m]);
+    std::int64_t sx = 0;
+    std::int64_t sy = 0;
+    for (int m = 0; m < padded; ++m) {  // padding entries are 0
+      sx += batch_.fx[m];
+      sy += batch_.fy[m];
     }
+    social_x_ += sx;
+    social_y_ += sy;
     count_ = 0;
   }
 
-  FixedSum social_x, social_y;
+  [[nodiscard]] Vec2 social() const {
+    return {static_cast<double>(social_x_) / kForceQuantum, static_cast<double>(social_y_) / kForceQuantum};
+  }
+
   FixedSum repulsion_x, repulsion_y;
   FixedSum body_x, body_y;
 
  private:
   // The hot loop: locals with __restrict so the compiler keeps the array pointers in registers
   // instead of reloading them after every store into the batch.
-  template <bool kSorted>
-  void gather(const NeighbourArrays& a, std::uint32_t k0, std::uint32_t k1) {
+  template <bool kAllActive>
+  void gather(const NeighbourArrays& a, std::uint32_t k0, std::uint32_t k1, std::uint32_t self) {
     const double* __restrict xs = a.x;
     const double* __restrict ys = a.y;
     const double* __restrict vxs = a.vx;
     const double* __restrict vys = a.vy;
-    const std::uint32_t* __restrict ids = a.id;
     const std::uint8_t* __restrict act = a.active;
     float* __restrict bdx = batch_.dx;
     float* __restrict bdy = batch_.dy;
     float* __restrict bdvx = batch_.dvx;
     float* __restrict bdvy = batch_.dvy;
-    double* __restrict bd2 = d2_;
     std::uint32_t* __restrict bslot = slot_;
     const double x = x_, y = y_, vx = vx_, vy = vy_, cut2 = cutoff2_;
-    const std::uint32_t self = id_;
     int m = count_;
     for (std::uint32_t k = k0; k < k1; ++k) {
       const double dx = xs[k] - x;
       const double dy = ys[k] - y;
       const double d2 = dx * dx + dy * dy;
-      bool take = (d2 <= cut2);
-      if constexpr (kSorted) {
-        take = take & (ids[k] != self);
-      } else {
-        take = take & (k != self) & (act[k] != 0);
-      }
-      bd2[m] = d2;
+      bool take = (d2 <= cut2) & (k != self);
+      if constexpr (!kAllActive) take = take & (act[k] != 0);
       bdx[m] = static_cast<float>(dx);
       bdy[m] = static_cast<float>(dy);
       bdvx[m] = static_cast<float>(vx - vxs[k]);
@@ -306,8 +308,9 @@ class NeighbourSums {
   SocialParams params_;
   const NeighbourArrays* arrays_ = nullptr;
   int count_ = 0;
+  std::int64_t social_x_ = 0;
+  std::int64_t social_y_ = 0;
   std::uint32_t slot_[kBatch];
-  double d2_[kBatch];
   PairBatch batch_;
 };
 
@@ -620,8 +623,12 @@ void CrowdSimulation::build_cells() {
   for (std::size_t k = 0; k < cells; ++k) c.start[k + 1] += c.start[k];
   c.order.resize(active);
   std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
-  for (std::size_t i = 0; i < n; ++i)
-    if (c.cell_of[i] != kNoCell) c.order[fill[c.cell_of[i]]++] = static_cast<std::uint32_t>(i);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (c.cell_of[i] == kNoCell) continue;
+    const std::uint32_t k = fill[c.cell_of[i]]++;
+    c.order[k] = static_cast<std::uint32_t>(i);
+    c.cell_of[i] = k;  // from here on: the agent's position in the sorted arrays
+  }
   c.x.resize(active);
   c.y.resize(active);
   c.vx.resize(active);
@@ -629,16 +636,18 @@ void CrowdSimulation::build_cells() {
   c.r.resize(active);
   c.group.resize(active);
   c.id.resize(active);
-  for (std::size_t k = 0; k < active; ++k) {
-    const std::uint32_t i = c.order[k];
-    c.x[k] = px_[i];
-    c.y[k] = py_[i];
-    c.vx[k] = vx_[i];
-    c.vy[k] = vy_[i];
-    c.r[k] = radius_[i];
-    c.group[k] = group_[i];
-    c.id[k] = i;
-  }
+  pool_->parallel_for(active, 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t i = c.order[k];
+      c.x[k] = px_[i];
+      c.y[k] = py_[i];
+      c.vx[k] = vx_[i];
+      c.vy[k] = vy_[i];
+      c.r[k] = radius_[i];
+      c.group[k] = group_[i];
+      c.id[k] = i;
+    }
+  });
 }
 
 namespace {
@@ -649,11 +658,13 @@ namespace {
 // can never hide a neighbour.
 struct GridScan {
   const std::vector<std::uint32_t>& start;
+  const std::vector<std::uint32_t>& position_of;  // agent -> its entry in the sorted arrays
   double origin_x, origin_y, cell, inv_cell, cutoff;
   std::int64_t nx, ny;
   NeighbourArrays arrays;
 
   void operator()(NeighbourSums& s, double x, double y) const {
+    const std::uint32_t self = position_of[s.id()];
     const double c = cutoff + 1e-9;
     const auto floor_clamp = [](double v, std::int64_t hi) {
       if (!(v > 0.0)) return std::int64_t{0};  // also catches NaN
@@ -672,7 +683,7 @@ struct GridScan {
       const std::int64_t x_hi = clamp_x((x + half - origin_x) * inv_cell);
       const std::uint32_t k0 = start[static_cast<std::size_t>(row * nx + x_lo)];
       const std::uint32_t k1 = start[static_cast<std::size_t>(row * nx + x_hi + 1)];
-      s.scan(arrays, k0, k1);
+      s.scan(arrays, k0, k1, self);
     }
   }
 };
@@ -680,7 +691,7 @@ struct GridScan {
 struct FullScan {
   std::uint32_t n;
   NeighbourArrays arrays;
-  void operator()(NeighbourSums& s, double /*x*/, double /*y*/) const { s.scan(arrays, 0, n); }
+  void operator()(NeighbourSums& s, double /*x*/, double /*y*/) const { s.scan(arrays, 0, n, s.id()); }
 };
 
 }  // namespace
@@ -775,7 +786,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
     NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, fp, config_.body_stiffness);
     neighbours(sums, x, y);
     sums.flush();
-    f.social = {sums.social_x.value(), sums.social_y.value()};
+    f.social = sums.social();
     f.group = {sums.repulsion_x.value(), sums.repulsion_y.value()};
     f.body = {sums.body_x.value(), sums.body_y.value()};
   }
@@ -839,39 +850,40 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
 }
 
 void CrowdSimulation::finish_step() {
+  // Per agent and independent (each touches only its own entries), so it runs in parallel.
   const double dt = config_.dt;
-  for (std::size_t i = 0; i < size(); ++i) {
-    if (!active_[i]) continue;
-    px_[i] = npx_[i];
-    py_[i] = npy_[i];
-    vx_[i] = nvx_[i];
-    vy_[i] = nvy_[i];
-    if (vx_[i] * vx_[i] + vy_[i] * vy_[i] > 1e-12) {
-      const double yaw = std::atan2(vy_[i], vx_[i]);
-      omega_[i] = wrap_angle(yaw - yaw_[i]) / dt;
-      yaw_[i] = yaw;
-    } else {
-      omega_[i] = 0.0;
-    }
-    if (has_goal_[i]) {
+  pool_->parallel_for(size(), 1024, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!active_[i]) continue;
+      px_[i] = npx_[i];
+      py_[i] = npy_[i];
+      vx_[i] = nvx_[i];
+      vy_[i] = nvy_[i];
+      if (vx_[i] * vx_[i] + vy_[i] * vy_[i] > 1e-12) {
+        const double yaw = std::atan2(vy_[i], vx_[i]);
+        omega_[i] = wrap_angle(yaw - yaw_[i]) / dt;
+        yaw_[i] = yaw;
+      } else {
+        omega_[i] = 0.0;
+      }
+      if (!has_goal_[i]) continue;
       const double dx = gx_[i] - px_[i];
       const double dy = gy_[i] - py_[i];
-      if (dx * dx + dy * dy <= gr_[i] * gr_[i]) {
-        AgentMeta& m = meta_[i];
-        ++m.goal_index;
-        if (m.goal_index >= m.goals.size() && m.cyclic) m.goal_index = 0;
-        if (m.goal_index < m.goals.size()) {
-          gx_[i] = m.goals[m.goal_index].position.x;
-          gy_[i] = m.goals[m.goal_index].position.y;
-          gr_[i] = m.goals[m.goal_index].radius;
-          m.intent.goal_id = static_cast<std::int64_t>(m.goal_index);
-        } else {
-          has_goal_[i] = 0;
-          m.intent.goal_id = -1;
-        }
+      if (dx * dx + dy * dy > gr_[i] * gr_[i]) continue;
+      AgentMeta& m = meta_[i];
+      ++m.goal_index;
+      if (m.goal_index >= m.goals.size() && m.cyclic) m.goal_index = 0;
+      if (m.goal_index < m.goals.size()) {
+        gx_[i] = m.goals[m.goal_index].position.x;
+        gy_[i] = m.goals[m.goal_index].position.y;
+        gr_[i] = m.goals[m.goal_index].radius;
+        m.intent.goal_id = static_cast<std::int64_t>(m.goal_index);
+      } else {
+        has_goal_[i] = 0;
+        m.intent.goal_id = -1;
       }
     }
-  }
+  });
   ++steps_;
 }
 
@@ -880,6 +892,7 @@ void CrowdSimulation::step() {
   build_cells();
   const CellIndex& c = *cells_;
   const GridScan scan{c.start,
+                      c.cell_of,
                       c.origin_x,
                       c.origin_y,
                       c.cell,

@@ -1,6 +1,7 @@
 #pragma once
 // The vectorised inner loop of the social force model: LightSFM's agent–agent force for a batch
 // of neighbours of one agent, in single precision.
+#include <cstdint>
 
 namespace socsim::crowd {
 
@@ -13,6 +14,11 @@ struct SocialParams {
   float lambda, gamma, inv_gamma, n, n_prime, factor;
 };
 
+// Pair forces leave the kernel as integers in units of 2^-20 m/s²: integer sums are exact and
+// associative, so the total does not depend on the order neighbours were visited in (the grid
+// and the O(N²) reference agree to the bit, whatever the thread count).
+inline constexpr float kForceQuantum = 1048576.0f;  // 2^20
+
 inline constexpr int kBatch = 64;
 // Batches passed to social_kernel are padded to a multiple of this (the widest vector).
 inline constexpr int kBatchLanes = 8;
@@ -24,13 +30,13 @@ struct PairBatch {
   alignas(16) float dvy[kBatch];
   alignas(16) float tie_x[kBatch];
   alignas(16) float tie_y[kBatch];
-  alignas(16) float fx[kBatch];
-  alignas(16) float fy[kBatch];
+  alignas(16) std::int32_t fx[kBatch];
+  alignas(16) std::int32_t fy[kBatch];
 };
 
-// Writes the force on the agent from each of `count` neighbours into fx, fy (m/s²).
+// Writes the force on the agent from each of `count` neighbours into fx, fy (units of 2^-20 m/s²).
 void social_kernel(const SocialParams& p, int count, const float* __restrict dx, const float* __restrict dy,
                    const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,
-                   const float* __restrict tie_y, float* __restrict fx, float* __restrict fy);
+                   const float* __restrict tie_y, std::int32_t* __restrict fx, std::int32_t* __restrict fy);
 
 }  // namespace socsim::crowd
