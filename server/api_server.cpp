@@ -62,6 +62,7 @@ ApiServer::ApiServer(ServerConfig config, store::Store& store, EventHub& events)
   http.set_payload_max_length(kBodyDrainFactor * cfg.max_body_bytes);  // POST routes enforce max_body (http_util)
   http.set_read_timeout(cfg.read_timeout_s, 0);
   http.set_write_timeout(cfg.write_timeout_s, 0);
+  http.set_tcp_nodelay(true);  // small JSON replies must not wait for delayed ACKs (Nagle)
   http.set_keep_alive_max_count(100);
   http.set_keep_alive_timeout(5);
   http.set_default_headers({{"X-Content-Type-Options", "nosniff"}});

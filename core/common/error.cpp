@@ -25,6 +25,7 @@ constexpr std::array kTable = {
     Row{ErrorCode::kStore, {"store", "Store failure", 500}},
     Row{ErrorCode::kUpstream, {"upstream", "The generator endpoint failed", 502}},
     Row{ErrorCode::kUpstreamTimeout, {"upstream-timeout", "The generator endpoint timed out", 504}},
+    Row{ErrorCode::kCancelled, {"cancelled", "The job was cancelled", 409}},
     Row{ErrorCode::kInternal, {"internal", "Internal error", 500}},
 };
 }  // namespace

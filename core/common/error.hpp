@@ -29,6 +29,7 @@ enum class ErrorCode {
   kStore,               // other database failure
   kUpstream,            // LLM endpoint failed or answered badly
   kUpstreamTimeout,
+  kCancelled,           // the job was cancelled by its owner
   kInternal,
 };
 
