@@ -39,21 +39,13 @@ void log_line(const Json& line) {
 }
 
 struct ApiServer::Impl {
-  static cards::CardLimits limits_from(const ServerConfig& c) {
-    cards::CardLimits limits;
-    limits.max_prompt_bytes = c.max_prompt_bytes;
-    return limits;
-  }
-  Impl(ServerConfig c, store::Store& s, EventHub& e)
-      : ctx{c, s, e, cards::CardCatalogue(s, limits_from(c)), KeyRing(c.api_keys), std::chrono::steady_clock::now()},
-        limiter(c.rate_limit_rps, c.rate_limit_burst) {}
+  explicit Impl(Services& s) : ctx(s), limiter(s.config.rate_limit_rps, s.config.rate_limit_burst) {}
   RouteContext ctx;
   RateLimiter limiter;
   httplib::Server http;
 };
 
-ApiServer::ApiServer(ServerConfig config, store::Store& store, EventHub& events)
-    : impl_(std::make_unique<Impl>(std::move(config), store, events)) {
+ApiServer::ApiServer(Services& services) : impl_(std::make_unique<Impl>(services)) {
   auto& http = impl_->http;
   auto& ctx = impl_->ctx;
   const ServerConfig& cfg = ctx.config;
@@ -134,8 +126,7 @@ ApiServer::ApiServer(ServerConfig config, store::Store& store, EventHub& events)
     log_line(line);
   });
 
-  register_system_routes(http, ctx);
-  register_card_routes(http, ctx);
+  for (auto& [name, registrar] : route_groups()) registrar(http, ctx);
 
   if (std::filesystem::is_directory(cfg.web_root)) {
     http.set_mount_point("/", cfg.web_root);

@@ -6,10 +6,8 @@
 #include <memory>
 #include <string>
 
-#include "core/cards/catalogue.hpp"
-#include "core/store/store.hpp"
-#include "server/config.hpp"
-#include "server/event_hub.hpp"
+#include "core/common/error.hpp"
+#include "server/services.hpp"
 
 namespace httplib {
 class Server;
@@ -19,7 +17,7 @@ namespace socsim::server {
 
 class ApiServer {
  public:
-  ApiServer(ServerConfig config, store::Store& store, EventHub& events);
+  explicit ApiServer(Services& services);
   ~ApiServer();
   ApiServer(const ApiServer&) = delete;
   ApiServer& operator=(const ApiServer&) = delete;

@@ -8,86 +8,37 @@
 
 #include "core/cards/catalogue.hpp"
 #include "core/store/store.hpp"
+#include "server/registry.hpp"
 #include "socsim/buildinfo.hpp"
 
 namespace socsim::server {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: socsim <command> [options]\n\n"
-    "commands:\n"
-    "  serve                 run the REST + WebSocket daemon (socsim serve --help)\n"
+constexpr const char* kCardUsage =
     "  card list             list cards   [--q TEXT] [--tag T] [--author A] [--domain D] [--page-size N] [--cursor C]\n"
     "  card show ID          print a card as JSON\n"
     "  card export ID        write the card's export file  [-o FILE]\n"
-    "  card import FILE      import an export file ('-' reads standard input)\n"
-    "  migrate               apply pending migrations and print the schema version\n"
-    "  version               print version and build\n\n"
-    "Every command but serve and version takes --db FILE (default ./var/socsim.db, or $SOCSIM_DB).\n";
+    "  card import FILE      import an export file ('-' reads standard input)\n";
 
-// Splits "--key value" options from positional words.
-struct Parsed {
-  std::vector<std::string> words;
-  std::map<std::string, std::string> options;
-};
-
-Parsed parse(const std::vector<std::string>& args) {
-  Parsed p;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if ((a.rfind("--", 0) == 0 || a == "-o") && a.size() > 1) {
-      if (auto eq = a.find('='); eq != std::string::npos) {
-        p.options[a.substr(0, eq)] = a.substr(eq + 1);
-      } else if (i + 1 < args.size()) {
-        p.options[a] = args[++i];
-      } else {
-        p.options[a] = "";
-      }
-    } else {
-      p.words.push_back(a);
-    }
-  }
-  return p;
-}
-
-std::string db_path(const Parsed& p) {
-  if (auto it = p.options.find("--db"); it != p.options.end()) return it->second;
-  if (const char* env = std::getenv("SOCSIM_DB"); env && *env) return env;
-  return "./var/socsim.db";
-}
-
-int report(const Error& e) {
-  std::cerr << "socsim: " << e.message() << "\n";
-  return e.status() >= 500 ? 1 : 2;
-}
-
-std::optional<std::string> opt(const Parsed& p, const std::string& key) {
-  auto it = p.options.find(key);
-  if (it == p.options.end()) return std::nullopt;
-  return it->second;
-}
-
-}  // namespace
-
-int run_card_command(const std::vector<std::string>& args) {
-  const Parsed p = parse(args);
+int card_command(const std::vector<std::string>& args) {
+  const CliArgs p = parse_cli(args);
   if (p.words.empty()) {
-    std::cerr << kUsage;
+    std::cerr << "usage:\n" << kCardUsage;
     return 2;
   }
-  auto store = store::Store::open(db_path(p));
-  if (!store) return report(store.error());
+  auto store = store::Store::open(cli_db_path(p));
+  if (!store) return cli_report(store.error());
   cards::CardCatalogue catalogue(**store);
   const std::string& verb = p.words[0];
 
   if (verb == "list") {
     cards::CardQuery q;
-    q.text = opt(p, "--q");
-    q.tag = opt(p, "--tag");
-    q.author = opt(p, "--author");
-    q.domain = opt(p, "--domain");
-    q.cursor = opt(p, "--cursor");
-    if (auto n = opt(p, "--page-size")) {
+    q.text = p.opt("--q");
+    q.tag = p.opt("--tag");
+    q.author = p.opt("--author");
+    q.domain = p.opt("--domain");
+    q.cursor = p.opt("--cursor");
+    if (auto n = p.opt("--page-size")) {
       try {
         q.page_size = static_cast<std::size_t>(std::stoul(*n));
       } catch (const std::exception&) {
@@ -100,7 +51,7 @@ int run_card_command(const std::vector<std::string>& args) {
       }
     }
     auto page = catalogue.list(q);
-    if (!page) return report(page.error());
+    if (!page) return cli_report(page.error());
     Json items = Json::array();
     for (const auto& c : page->items) items.push_back(cards::summary_json(c));
     std::cout << Json{{"items", items}, {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}}.dump(2)
@@ -108,19 +59,19 @@ int run_card_command(const std::vector<std::string>& args) {
     return 0;
   }
   if (p.words.size() < 2) {
-    std::cerr << "socsim: card " << verb << " needs an argument\n" << kUsage;
+    std::cerr << "socsim: card " << verb << " needs an argument\n" << kCardUsage;
     return 2;
   }
   if (verb == "show") {
     auto c = catalogue.get(p.words[1]);
-    if (!c) return report(c.error());
+    if (!c) return cli_report(c.error());
     std::cout << cards::to_json(*c).dump(2) << "\n";
     return 0;
   }
   if (verb == "export") {
     auto doc = catalogue.export_card(p.words[1]);
-    if (!doc) return report(doc.error());
-    if (auto out = opt(p, "-o")) {
+    if (!doc) return cli_report(doc.error());
+    if (auto out = p.opt("-o")) {
       std::ofstream f(*out, std::ios::binary);
       f << *doc;
       if (!f) {
@@ -145,39 +96,91 @@ int run_card_command(const std::vector<std::string>& args) {
       buf << f.rdbuf();
     }
     auto outcome = catalogue.import_card(buf.str());
-    if (!outcome) return report(outcome.error());
+    if (!outcome) return cli_report(outcome.error());
     std::cout << Json{{"id", outcome->card.id}, {"content_hash", outcome->card.content_hash}, {"created", outcome->created}}.dump()
               << "\n";
     return 0;
   }
-  std::cerr << "socsim: unknown card command '" << verb << "'\n" << kUsage;
+  std::cerr << "socsim: unknown card command '" << verb << "'\n" << kCardUsage;
   return 2;
 }
 
+int migrate_command(const std::vector<std::string>& args) {
+  auto store = store::Store::open(cli_db_path(parse_cli(args)));
+  if (!store) return cli_report(store.error());
+  const auto& r = (*store)->migration_report();
+  std::cout << Json{{"db", (*store)->path()}, {"from_version", r.from_version}, {"to_version", r.to_version}, {"applied", r.applied}}.dump()
+            << "\n";
+  return 0;
+}
+
+int version_command(const std::vector<std::string>&) {
+  std::cout << "socsim " << build::kVersion << " (" << build::kGitSha << ", " << build::kFlavor << ", " << build::kCompiler
+            << ")\n";
+  return 0;
+}
+
+}  // namespace
+
+SOCSIM_COMMAND("card", kCardUsage, card_command);
+SOCSIM_COMMAND("migrate", "  migrate               apply pending migrations and print the schema version\n", migrate_command);
+SOCSIM_COMMAND("version", "  version               print version and build\n", version_command);
+
+std::optional<std::string> CliArgs::opt(const std::string& key) const {
+  auto it = options.find(key);
+  if (it == options.end()) return std::nullopt;
+  return it->second;
+}
+
+CliArgs parse_cli(const std::vector<std::string>& args) {
+  CliArgs p;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if ((a.rfind("--", 0) == 0 || a == "-o") && a.size() > 1) {
+      if (auto eq = a.find('='); eq != std::string::npos) {
+        p.options[a.substr(0, eq)] = a.substr(eq + 1);
+      } else if (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) {
+        p.options[a] = args[++i];
+      } else {
+        p.options[a] = "";
+      }
+    } else {
+      p.words.push_back(a);
+    }
+  }
+  return p;
+}
+
+std::string cli_db_path(const CliArgs& a) {
+  if (auto db = a.opt("--db")) return *db;
+  if (const char* env = std::getenv("SOCSIM_DB"); env && *env) return env;
+  return "./var/socsim.db";
+}
+
+int cli_report(const Error& e) {
+  std::cerr << "socsim: " << e.message() << "\n";
+  return e.status() >= 500 ? 1 : 2;
+}
+
 int run_cli(const std::vector<std::string>& args) {
+  auto usage = [] {
+    std::string u = "usage: socsim <command> [options]\n\ncommands:\n";
+    for (const auto& [name, info] : commands()) u += info.usage;
+    u += "\nCommands that read the catalogue take --db FILE (default ./var/socsim.db, or $SOCSIM_DB).\n";
+    return u;
+  };
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    std::cout << kUsage;
+    std::cout << usage();
     return args.empty() ? 2 : 0;
   }
-  const std::string& cmd = args[0];
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (cmd == "serve") return run_serve(rest);
-  if (cmd == "card") return run_card_command(rest);
-  if (cmd == "version" || cmd == "--version") {
-    std::cout << "socsim " << build::kVersion << " (" << build::kGitSha << ", " << build::kFlavor << ", "
-              << build::kCompiler << ")\n";
-    return 0;
+  std::string cmd = args[0];
+  if (cmd == "--version") cmd = "version";
+  auto it = commands().find(cmd);
+  if (it == commands().end()) {
+    std::cerr << "socsim: unknown command '" << cmd << "'\n" << usage();
+    return 2;
   }
-  if (cmd == "migrate") {
-    auto store = store::Store::open(db_path(parse(rest)));
-    if (!store) return report(store.error());
-    const auto& r = (*store)->migration_report();
-    std::cout << Json{{"db", (*store)->path()}, {"from_version", r.from_version}, {"to_version", r.to_version}, {"applied", r.applied}}.dump()
-              << "\n";
-    return 0;
-  }
-  std::cerr << "socsim: unknown command '" << cmd << "'\n" << kUsage;
-  return 2;
+  return it->second.run(std::vector<std::string>(args.begin() + 1, args.end()));
 }
 
 }  // namespace socsim::server

@@ -61,8 +61,13 @@ Status apply(ServerConfig& c, const std::string& flag, const std::string& value,
     auto keys = parse_api_keys(value);
     if (!keys) return bad(keys.error().detail);
     c.api_keys = std::move(*keys);
-  } else if (flag == "--llm-url") c.llm_url = value;
-  else if (flag == "--llm-model") c.llm_model = value;
+  } else if (flag == "--llm-url") c.llm.base_url = value;
+  else if (flag == "--llm-model") c.llm.model = value;
+  else if (flag == "--job-workers") {
+    std::size_t w = 0;
+    if (auto s = size(w, 1); !s) return s;
+    c.job_workers = static_cast<int>(std::min<std::size_t>(w, 64));
+  }
   else return fail(ErrorCode::kBadRequest, "unknown option " + flag + " (see socsim serve --help)");
   return {};
 }
@@ -84,7 +89,8 @@ const std::vector<FlagSpec>& serve_flags() {
       {"--rate-limit", "SOCSIM_RATE_LIMIT", "requests per second per client, 0 = off (default 50)"},
       {"--rate-burst", "SOCSIM_RATE_BURST", "burst size of the per-client rate limit (default 100)"},
       {"--api-keys", "SOCSIM_API_KEYS", "name:secret[,name:secret…]; when set, writes need a Bearer key"},
-      {"--llm-url", "SOCSIM_LLM_URL", "OpenAI-compatible endpoint base URL (optional)"},
+      {"--job-workers", "SOCSIM_JOB_WORKERS", "threads running generation jobs (default 2)"},
+      {"--llm-url", "SOCSIM_LLM_URL", "OpenAI-compatible endpoint base URL, e.g. http://localhost:11434 (optional)"},
       {"--llm-model", "SOCSIM_LLM_MODEL", "model name for the LLM generator"},
   };
   return flags;
@@ -123,11 +129,17 @@ std::map<std::string, std::string> current_environment() {
 
 Result<ServerConfig> load_config(const std::vector<std::string>& args, const std::map<std::string, std::string>& env) {
   ServerConfig c;
+  auto llm = llm::LlmConfig::from_environment([&env](const char* name) -> const char* {
+    auto it = env.find(name);
+    return it == env.end() ? nullptr : it->second.c_str();
+  });
+  if (!llm) return tl::unexpected(llm.error());
+  c.llm = std::move(*llm);
   for (const FlagSpec& f : serve_flags()) {
+    if (f.env == "SOCSIM_LLM_URL" || f.env == "SOCSIM_LLM_MODEL") continue;  // read by LlmConfig
     if (auto it = env.find(f.env); it != env.end() && !it->second.empty())
       if (auto s = apply(c, f.flag, it->second, f.env); !s) return tl::unexpected(s.error());
   }
-  if (auto it = env.find("SOCSIM_LLM_API_KEY"); it != env.end() && !it->second.empty()) c.llm_key_set = true;
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::string flag = args[i], value;
     if (auto eq = flag.find('='); eq != std::string::npos) {
@@ -140,6 +152,7 @@ Result<ServerConfig> load_config(const std::vector<std::string>& args, const std
     if (auto s = apply(c, flag, value, flag); !s) return tl::unexpected(s.error());
   }
   if (c.default_page_size > c.max_page_size) c.default_page_size = c.max_page_size;
+  if (auto s = c.llm.validate(); !s) return tl::unexpected(s.error());
   return c;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/common/error.hpp"
+#include "core/llm/llm_config.hpp"
 
 namespace socsim::server {
 
@@ -32,9 +33,8 @@ struct ServerConfig {
   int read_timeout_s = 10;
   int write_timeout_s = 10;
   std::vector<ApiKey> api_keys;  // empty: writes are open (local use)
-  std::string llm_url;
-  std::string llm_model;
-  bool llm_key_set = false;
+  int job_workers = 2;
+  llm::LlmConfig llm;  // SOCSIM_LLM_* (see core/llm/llm_config.hpp); --llm-url/--llm-model override
 };
 
 struct FlagSpec {

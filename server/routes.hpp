@@ -1,36 +1,40 @@
 #pragma once
-// What the route handlers share, and the functions that register each group of routes.
+// What the route handlers share. Route groups live in routes_*.cpp and register themselves with
+// SOCSIM_ROUTES (server/registry.hpp).
 #include <chrono>
+#include <map>
 #include <optional>
 #include <string>
 
 #include <httplib.h>
 
 #include "core/cards/catalogue.hpp"
-#include "core/store/store.hpp"
 #include "server/auth.hpp"
-#include "server/config.hpp"
-#include "server/event_hub.hpp"
+#include "server/registry.hpp"
+#include "server/services.hpp"
 
 namespace socsim::server {
 
 struct RouteContext {
-  ServerConfig config;
+  Services& services;
+  const ServerConfig& config;
   store::Store& store;
   EventHub& events;
+  JobRunner& jobs;
+  knowledge::KnowledgeBase& knowledge;
+  llm::LlmClient* llm;  // null when no endpoint is configured
   cards::CardCatalogue catalogue;
   KeyRing keys;
-  std::chrono::steady_clock::time_point started;
   int http_port = 0;
 
+  explicit RouteContext(Services& s);
   // The author recorded for a write: the key's name, or "anonymous" on an open server.
   [[nodiscard]] std::string author(const httplib::Request& req) const;
-  // Base of URLs handed to clients, from --public-host or the request's Host header.
+  // Host name for URLs handed to clients: --public-host, else the request's Host header.
   [[nodiscard]] std::string public_host(const httplib::Request& req) const;
+  // Whether a write may touch another author's resource (open servers have no authors to protect).
+  [[nodiscard]] bool any_author() const { return !keys.enabled(); }
 };
-
-void register_system_routes(httplib::Server& http, RouteContext& ctx);
-void register_card_routes(httplib::Server& http, RouteContext& ctx);
 
 // Embedded copies of schemas/ (openapi.yaml and the JSON Schemas), keyed by file name.
 const std::map<std::string, std::string>& embedded_schemas();

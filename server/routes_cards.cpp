@@ -35,9 +35,7 @@ void reply_card(httplib::Response& res, int status, const cards::Card& card) {
 
 Json event(const char* type, const cards::Card& card) { return {{"type", type}, {"card", cards::summary_json(card)}}; }
 
-}  // namespace
-
-void register_card_routes(httplib::Server& http, RouteContext& ctx) {
+void card_routes(httplib::Server& http, RouteContext& ctx) {
   const std::size_t max_body = ctx.config.max_body_bytes;
   post_with_body(http, "/api/v1/cards", max_body, [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
     auto body = json_body(text);
@@ -86,7 +84,7 @@ void register_card_routes(httplib::Server& http, RouteContext& ctx) {
     const std::string id = req.matches[1].str();
     auto card = ctx.catalogue.get(id);
     if (!card) return reply_problem(res, card.error(), req.path);
-    if (auto s = ctx.catalogue.remove(id, ctx.author(req), !ctx.keys.enabled()); !s)
+    if (auto s = ctx.catalogue.remove(id, ctx.author(req), ctx.any_author()); !s)
       return reply_problem(res, s.error(), req.path);
     ctx.events.publish("cards", event("card.deleted", *card));
     res.status = 204;
@@ -118,5 +116,9 @@ void register_card_routes(httplib::Server& http, RouteContext& ctx) {
     reply_card(res, outcome->created ? 201 : 200, outcome->card);
   });
 }
+
+}  // namespace
+
+SOCSIM_ROUTES("cards", card_routes);
 
 }  // namespace socsim::server

@@ -5,6 +5,21 @@
 
 namespace socsim::server {
 
+RouteContext::RouteContext(Services& s)
+    : services(s),
+      config(s.config),
+      store(s.store),
+      events(s.events),
+      jobs(*s.jobs),
+      knowledge(*s.knowledge),
+      llm(s.llm.get()),
+      catalogue(s.store, [&] {
+        cards::CardLimits limits;
+        limits.max_prompt_bytes = s.config.max_prompt_bytes;
+        return limits;
+      }()),
+      keys(s.config.api_keys) {}
+
 std::string RouteContext::author(const httplib::Request& req) const {
   if (!keys.enabled()) return "anonymous";
   return keys.authenticate(req.get_header_value("Authorization")).value_or("anonymous");
@@ -21,10 +36,11 @@ std::string RouteContext::public_host(const httplib::Request& req) const {
   return host;
 }
 
-void register_system_routes(httplib::Server& http, RouteContext& ctx) {
+namespace {
+void system_routes(httplib::Server& http, RouteContext& ctx) {
   http.Get("/api/v1/health", [&ctx](const httplib::Request& req, httplib::Response& res) {
     auto count = ctx.catalogue.count();
-    const double uptime = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.started).count();
+    const double uptime = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.services.started).count();
     if (!count) {
       reply_problem(res, Error(ErrorCode::kStore, "the database is not answering: " + count.error().detail), req.path);
       return;
@@ -40,9 +56,10 @@ void register_system_routes(httplib::Server& http, RouteContext& ctx) {
     Json generators = Json::array();
     generators.push_back({{"name", "offline"}, {"available", true}, {"default", true}});
     generators.push_back({{"name", "llm"},
-                          {"available", !c.llm_url.empty()},
+                          {"available", ctx.llm != nullptr},
                           {"default", false},
-                          {"model", c.llm_model.empty() ? Json(nullptr) : Json(c.llm_model)}});
+                          {"model", c.llm.model.empty() ? Json(nullptr) : Json(c.llm.model)},
+                          {"embedding_model", c.llm.embedding_model.empty() ? Json(nullptr) : Json(c.llm.embedding_model)}});
     reply_json(res, 200,
                {{"name", "socsim"},
                 {"version", build::kVersion},
@@ -82,5 +99,9 @@ void register_system_routes(httplib::Server& http, RouteContext& ctx) {
     res.set_content(it->second, yaml ? "application/yaml" : "application/schema+json");
   });
 }
+
+}  // namespace
+
+SOCSIM_ROUTES("system", system_routes);
 
 }  // namespace socsim::server

@@ -12,6 +12,7 @@
 
 #include "server/api_server.hpp"
 #include "server/cli.hpp"
+#include "server/registry.hpp"
 #include "server/routes.hpp"
 #include "server/ws_server.hpp"
 #include "socsim/buildinfo.hpp"
@@ -26,7 +27,7 @@ void print_serve_help() {
 }
 }  // namespace
 
-int run_serve(const std::vector<std::string>& args) {
+int serve_command(const std::vector<std::string>& args) {
   for (const auto& a : args)
     if (a == "--help" || a == "-h") {
       print_serve_help();
@@ -50,14 +51,18 @@ int run_serve(const std::vector<std::string>& args) {
     std::cerr << "socsim serve: " << store.error().message() << "\n";
     return 1;
   }
-  EventHub events;
-  ApiServer api(*config, **store, events);
+  auto services = Services::create(*config, **store);
+  if (!services) {
+    std::cerr << "socsim serve: " << services.error().message() << "\n";
+    return 2;
+  }
+  ApiServer api(**services);
   auto http_port = api.bind();
   if (!http_port) {
     std::cerr << "socsim serve: " << http_port.error().detail << "\n";
     return 1;
   }
-  WsServer ws({config->host, config->ws_port, 256, 64}, events);
+  WsServer ws({config->host, config->ws_port, 256, 64}, (*services)->events);
   auto ws_port = ws.bind();
   if (!ws_port) {
     std::cerr << "socsim serve: " << ws_port.error().detail << "\n";
@@ -82,14 +87,18 @@ int run_serve(const std::vector<std::string>& args) {
             {"db", config->db},
             {"schema_version", (*store)->schema_version()},
             {"migrations_applied", (*store)->migration_report().applied},
-            {"writes_require_key", !config->api_keys.empty()}});
+            {"writes_require_key", !config->api_keys.empty()},
+            {"llm", config->llm.configured() ? Json(config->llm.base_url) : Json(nullptr)}});
   api.run();  // returns after stop(), once in-flight requests have finished
   if (running.exchange(false)) ::kill(::getpid(), SIGTERM);  // run() ended on its own: wake the waiter
   waiter.join();
   ws.stop();
+  (*services)->shutdown();
   (*store)->close();
   log_line({{"level", "info"}, {"event", "stopped"}});
   return 0;
 }
+
+SOCSIM_COMMAND("serve", "  serve                 run the REST + WebSocket daemon (socsim serve --help)\n", serve_command);
 
 }  // namespace socsim::server

@@ -37,6 +37,8 @@ class Session : public std::enable_shared_from_this<Session> {
                      [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_request(ec); });
   }
 
+  [[nodiscard]] const std::string& topic() const { return topic_; }
+
   // Called on the I/O thread.
   void send(std::string frame) {
     if (closed_) return;
@@ -61,11 +63,13 @@ class Session : public std::enable_shared_from_this<Session> {
     if (ec) return finish();
     const std::string target(request_.target());
     const std::string path = target.substr(0, target.find('?'));
-    if (!websocket::is_upgrade(request_) || (path != "/ws" && path != "/ws/catalogue")) {
+    if (path == "/ws" || path == "/ws/catalogue") topic_ = "cards";
+    else if (path == "/ws/jobs") topic_ = "jobs";
+    if (!websocket::is_upgrade(request_) || topic_.empty()) {
       auto res = std::make_shared<http::response<http::string_body>>(http::status::not_found, request_.version());
       res->set(http::field::content_type, "application/problem+json");
       res->body() = R"({"type":"https://socsim.dev/problems/not-found","title":"Not found","status":404,)"
-                    R"("detail":"WebSocket endpoints: /ws/catalogue","errors":[]})";
+                    R"("detail":"WebSocket endpoints: /ws/catalogue, /ws/jobs","errors":[]})";
       res->prepare_payload();
       http::async_write(ws_.next_layer(), *res, [self = shared_from_this(), res](beast::error_code, std::size_t) {
         self->finish();
@@ -79,7 +83,7 @@ class Session : public std::enable_shared_from_this<Session> {
   void on_accept(beast::error_code ec) {
     if (ec) return finish();
     ws_.text(true);
-    send(nlohmann::json{{"type", "hello"}, {"server", "socsim"}, {"version", build::kVersion}, {"topic", "cards"}}.dump());
+    send(nlohmann::json{{"type", "hello"}, {"server", "socsim"}, {"version", build::kVersion}, {"topic", topic_}}.dump());
     read_loop();
   }
 
@@ -118,6 +122,7 @@ class Session : public std::enable_shared_from_this<Session> {
   http::request<http::string_body> request_;
   std::deque<std::string> queue_;
   std::string current_;
+  std::string topic_;  // "cards" or "jobs", from the path
   bool writing_ = false;
   bool closed_ = false;
   std::size_t dropped_ = 0;
@@ -169,9 +174,10 @@ Result<int> WsServer::bind() {
 
 void WsServer::start() {
   Impl* impl = impl_.get();
-  impl->subscription = impl->shared.events.subscribe([impl](const std::string&, const std::string& payload) {
-    asio::post(impl->shared.io, [impl, payload] {
-      for (const auto& s : impl->shared.sessions) s->send(payload);
+  impl->subscription = impl->shared.events.subscribe([impl](const std::string& topic, const std::string& payload) {
+    asio::post(impl->shared.io, [impl, topic, payload] {
+      for (const auto& s : impl->shared.sessions)
+        if (s->topic() == topic) s->send(payload);
     });
   });
   impl->accept();

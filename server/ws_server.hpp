@@ -1,6 +1,7 @@
 #pragma once
 // The WebSocket endpoint (Boost.Beast, its own port). /ws/catalogue streams catalogue events
-// (card.created, card.deleted) as JSON text frames. A slow client loses its oldest queued
+// (card.created, card.deleted), /ws/jobs job events (queued, running, progress, finished), as JSON
+// text frames. A slow client loses its oldest queued
 // frames; it never slows the publisher.
 #include <memory>
 #include <string>

@@ -2,18 +2,14 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
-#include <cstdio>
-#include <ctime>
-#include <random>
 
+#include "core/common/ids.hpp"
 #include "core/common/json_check.hpp"
 #include "core/common/sha256.hpp"
 
 namespace socsim::cards {
 namespace {
 
-constexpr std::string_view kCrockford = "0123456789abcdefghjkmnpqrstvwxyz";
 constexpr int kExportFormat = 1;
 
 bool valid_tag(const std::string& t) {
@@ -208,36 +204,9 @@ Result<Card> parse_card(const Json& json, const CardLimits& limits) {
   return card;
 }
 
-std::string new_card_id() {
-  static thread_local std::mt19937_64 gen{std::random_device{}()};
-  std::string id = "crd_";
-  std::uint64_t a = gen(), b = gen();
-  for (int i = 0; i < 20; ++i) {
-    std::uint64_t& src = i < 12 ? a : b;
-    id.push_back(kCrockford[src & 31u]);
-    src >>= 5u;
-  }
-  return id;
-}
+std::string new_card_id() { return random_id("crd_"); }
 
-bool is_card_id(std::string_view s) {
-  if (s.size() != 24 || s.substr(0, 4) != "crd_") return false;
-  for (char ch : s.substr(4))
-    if (kCrockford.find(ch) == std::string_view::npos) return false;
-  return true;
-}
-
-std::string utc_now_rfc3339() {
-  const auto now = std::chrono::system_clock::now();
-  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
-  const std::time_t t = std::chrono::system_clock::to_time_t(now);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday,
-                tm.tm_hour, tm.tm_min, tm.tm_sec, static_cast<int>(ms));
-  return buf;
-}
+bool is_card_id(std::string_view s) { return is_random_id(s, "crd_"); }
 
 std::string export_document(const Card& card) {
   return canonical_json(Json{{"socsim_card_export", kExportFormat}, {"card", to_json(card)}}) + "\n";

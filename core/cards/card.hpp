@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/common/error.hpp"
+#include "core/common/ids.hpp"
 #include "core/common/json_io.hpp"
 
 namespace socsim::cards {
@@ -67,8 +68,6 @@ std::string content_hash(const CardContent& content, std::int64_t version, const
 // "crd_" + 20 characters of Crockford base32 (100 random bits).
 std::string new_card_id();
 bool is_card_id(std::string_view s);
-// Current UTC time as 2026-11-21T07:26:08.123Z.
-std::string utc_now_rfc3339();
 
 // The self-contained export file: canonical JSON + "\n"; import(export(c)) reproduces the bytes.
 std::string export_document(const Card& card);

@@ -33,8 +33,12 @@ int run(const Args& a) {
     std::cerr << store.error().message() << "\n";
     return 1;
   }
-  socsim::server::EventHub events;
-  socsim::server::ApiServer api(cfg, **store, events);
+  auto services = socsim::server::Services::create(cfg, **store);
+  if (!services) {
+    std::cerr << services.error().message() << "\n";
+    return 1;
+  }
+  socsim::server::ApiServer api(**services);
   const int port = api.bind().value();
   std::thread server([&] { api.run(); });
   std::cout.setstate(std::ios::failbit);  // silence the per-request log lines while measuring
@@ -102,6 +106,7 @@ int run(const Args& a) {
   }
   api.stop();
   server.join();
+  (*services)->shutdown();
   (*store)->close();
   std::filesystem::remove_all(dir);
   return 0;

@@ -22,7 +22,8 @@ class TestServer {
     std::filesystem::create_directories(config.web_root);
     std::ofstream(config.web_root + "/index.html") << "<!doctype html><title>socsim</title>";
     store_ = std::move(store::Store::open(config.db).value());
-    api_ = std::make_unique<server::ApiServer>(config, *store_, events_);
+    services_ = std::move(server::Services::create(config, *store_).value());
+    api_ = std::make_unique<server::ApiServer>(*services_);
     port_ = api_->bind().value();
     thread_ = std::thread([this] { api_->run(); });
     // Wait until the listener accepts.
@@ -34,6 +35,7 @@ class TestServer {
   ~TestServer() {
     api_->stop();
     thread_.join();
+    services_->shutdown();
   }
   TestServer(const TestServer&) = delete;
   TestServer& operator=(const TestServer&) = delete;
@@ -44,13 +46,13 @@ class TestServer {
     return c;
   }
   [[nodiscard]] int port() const { return port_; }
-  server::EventHub& events() { return events_; }
+  server::Services& services() { return *services_; }
   store::Store& store() { return *store_; }
 
  private:
   TempDir dir_;
-  server::EventHub events_;
   std::unique_ptr<store::Store> store_;
+  std::unique_ptr<server::Services> services_;
   std::unique_ptr<server::ApiServer> api_;
   std::thread thread_;
   int port_ = 0;

@@ -1,0 +1,53 @@
+// /api/v1/jobs: progress, result or problem of long-running work, its LLM calls, cancellation.
+#include "core/llm/call_log.hpp"
+#include "server/http_util.hpp"
+#include "server/routes.hpp"
+
+namespace socsim::server {
+namespace {
+
+constexpr const char* kJobPath = R"(/api/v1/jobs/([^/]+))";
+
+void job_routes(httplib::Server& http, RouteContext& ctx) {
+  http.Get("/api/v1/jobs", [&ctx](const httplib::Request& req, httplib::Response& res) {
+    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
+                          static_cast<std::int64_t>(ctx.config.max_page_size));
+    if (!size) return reply_problem(res, size.error(), req.path);
+    auto status = query(req, "status");
+    if (status && *status != "queued" && *status != "running" && *status != "succeeded" && *status != "failed" &&
+        *status != "cancelled")
+      return reply_problem(res, Error(ErrorCode::kValidation, "unknown job status",
+                                      {{"", "one of queued, running, succeeded, failed, cancelled", "status", 0, 0}}),
+                           req.path);
+    auto page = ctx.jobs.list(static_cast<std::size_t>(*size), query(req, "cursor"), query(req, "kind"), status);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    reply_json(res, 200, {{"items", page->items}, {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}});
+  });
+
+  http.Get(kJobPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+    const std::string id = req.matches[1].str();
+    auto job = ctx.jobs.get(id);
+    if (!job) return reply_problem(res, job.error(), req.path);
+    // Prompts, token counts, latency and cache hits of every LLM call the job made.
+    auto calls = llm::job_llm_calls(ctx.store, id);
+    (*job)["llm"] = calls ? *calls : Json(nullptr);
+    const std::string status = (*job)["status"];
+    if (status == "queued" || status == "running") res.set_header("Retry-After", "1");
+    reply_json(res, 200, *job);
+  });
+
+  http.Delete(kJobPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+    const std::string id = req.matches[1].str();
+    if (auto s = ctx.jobs.cancel(id, ctx.author(req), ctx.any_author()); !s)
+      return reply_problem(res, s.error(), req.path);
+    auto job = ctx.jobs.get(id);
+    if (!job) return reply_problem(res, job.error(), req.path);
+    reply_json(res, 202, *job);
+  });
+}
+
+}  // namespace
+
+SOCSIM_ROUTES("jobs", job_routes);
+
+}  // namespace socsim::server

@@ -1,0 +1,31 @@
+#include "server/services.hpp"
+
+namespace socsim::server {
+
+Result<std::unique_ptr<Services>> Services::create(ServerConfig config, store::Store& store) {
+  auto s = std::make_unique<Services>(std::move(config), store);
+  knowledge::EmbeddingProvider embeddings = knowledge::hashed_ngram_embedding();
+  if (s->config.llm.configured()) {
+    auto client = llm::LlmClient::create(s->config.llm);
+    if (!client) return tl::unexpected(client.error());
+    s->llm = std::move(*client);
+    if (!s->config.llm.embedding_model.empty()) {
+      llm::LlmClient* c = s->llm.get();
+      const std::string model = s->config.llm.embedding_model;
+      embeddings.model = model;
+      embeddings.embed = [c, model](const std::vector<std::string>& texts) -> Result<std::vector<knowledge::Embedding>> {
+        llm::EmbeddingRequest req;
+        req.inputs = texts;
+        req.model = model;
+        auto r = c->embed(req);
+        if (!r) return tl::unexpected(r.error());
+        return r->vectors;
+      };
+    }
+  }
+  s->knowledge = std::make_unique<knowledge::KnowledgeBase>(store, std::move(embeddings));
+  s->jobs = std::make_unique<JobRunner>(store, s->events, s->config.job_workers);
+  return s;
+}
+
+}  // namespace socsim::server
