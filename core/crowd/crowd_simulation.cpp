@@ -132,10 +132,10 @@ Vec2 guard_move(Vec2 p, Vec2 q, std::span<const std::uint32_t> near, const std::
   return first_blocking_wall(p, target, near, walls, &unused) < 0 ? target : safe;
 }
 
-// Pair forces are summed in 64-bit fixed point (2^-32 m/s² resolution). Integer addition is
-// associative, so the sum does not depend on the order neighbours are visited in: the cell-list
-// step and the O(N²) reference give bit-identical results. Bounded to ±2^30 per term (no overflow
-// for any realistic neighbour count).
+// Touching-pair forces (group repulsion, body force) are summed in 64-bit fixed point (2^-32 m/s²
+// resolution), like the quantised social forces: integer addition is associative, so the sum
+// does not depend on the order neighbours are visited in, and the cell-list step and the O(N²)
+// reference give bit-identical results. Each term is bounded to ±2^30 (no overflow).
 class FixedSum {
  public:
   void add(double v) {
@@ -153,14 +153,14 @@ class FixedSum {
 struct NeighbourArrays {
   const double *x, *y, *vx, *vy, *r;
   const std::int32_t* group;
-  const std::uint32_t* id;      // agent index of each entry (nullptr: the entry index is the id)
+  const std::uint32_t* id;      // agent index of each entry (nullptr: the entry index is the agent)
   const std::uint8_t* active;   // nullptr: all entries are active
 };
 
-// Collects the neighbours of one agent within the cut-off (in the order the scan visits them),
-// runs the kernel batch by batch and sums in that order. The collection is branch-free: every
-// candidate is written, and the batch only grows when it is within the cut-off. Group repulsion
-// and the body force act only between touching agents and are added in double precision.
+// Collects the neighbours of one agent within the cut-off, runs the kernel batch by batch and
+// sums the quantised forces exactly. The collection is branch-free: every candidate is written,
+// and the batch only grows when it is within the cut-off. Group repulsion and the body force act
+// only between touching agents and are computed in double precision.
 class NeighbourSums {
  public:
   NeighbourSums(std::uint32_t id, double x, double y, double vx, double vy, double r, std::int32_t group,
