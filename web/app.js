@@ -81,11 +81,20 @@ async function openCard(id) {
       el('p', {}, el('a', { href: `${api}/cards/${c.id}/export`, download: `${c.id}.card.json` }, 'Download export file'),
         ' · ', el('a', { href: `#card=${c.id}`, onclick: () => { navigator.clipboard?.writeText(location.href); toast('Link copied'); } }, 'Share link')),
       el('h3', {}, 'Metrics'), el('pre', {}, JSON.stringify(c.metrics, null, 2)),
-      el('h3', {}, 'World'), el('pre', {}, JSON.stringify(c.world, null, 2)),
+      el('h3', {}, 'World'),
+      (c.world && Array.isArray(c.world.zones) && c.world.zones.length)
+        ? worldCanvas(c.world) : el('p', { class: 'muted' }, 'No world drawn for this card.'),
+      el('details', {}, el('summary', {}, 'world JSON'), el('pre', {}, JSON.stringify(c.world, null, 2))),
       el('h3', {}, 'Program'), el('pre', {}, JSON.stringify(c.program, null, 2)));
   } catch (e) {
     d.replaceChildren(el('p', {}, `Could not open ${id}: ${e.message}`));
   }
+}
+
+function worldCanvas(world) {
+  const canvas = el('canvas', { width: '720', height: '420', class: 'world', 'aria-label': `floor plan ${world.name || ''}` });
+  window.socsimWorld.drawWorld(canvas, world);
+  return canvas;
 }
 
 function connectLive(url) {

@@ -50,6 +50,34 @@ test('catalogue lists, searches and opens cards', { skip: !existsSync(chromiumPa
   await page.close();
 });
 
+test('a card with a world shows its floor plan', { skip: !existsSync(chromiumPath) && 'Debian chromium is not installed' }, async () => {
+  const world = {
+    name: 'two_rooms', units: { length: 'm', angle: 'rad' }, origin: [0, 0],
+    zones: [{ name: 'lobby', type: 'lobby', polygon: [[0, 0], [8, 0], [8, 6], [0, 6]] },
+      { name: 'office', type: 'office', polygon: [[8, 0], [14, 0], [14, 6], [8, 6]] }],
+    walls: [{ start: [0, 0], end: [14, 0] }, { start: [14, 0], end: [14, 6] }, { start: [14, 6], end: [0, 6] },
+      { start: [0, 6], end: [0, 0] }, { start: [8, 0], end: [8, 2.5] }, { start: [8, 3.5], end: [8, 6] }],
+    doors: [{ name: 'd1', pose: [8, 3, 0], width: 1, connects: ['lobby', 'office'] }],
+    segmentation: [{ name: 'queue', kind: 'queue_lane', polygon: [[2, 1], [3, 1], [3, 4], [2, 4]] }],
+    entities: [{ type: 'counter', name: 'reception_counter', pose: [2.5, 4.5, 0] }],
+  };
+  const created = await server.post('/api/v1/cards', { ...card('Two rooms', 'a lobby and an office', ['world'], 'office'), world });
+  assert.equal(created.status, 201, JSON.stringify(created.body));
+  const page = await browser.newPage();
+  await page.goto(`${server.base}/#card=${created.body.id}`);
+  await page.waitForSelector('#detail canvas.world');
+  const inked = await page.evaluate(() => {
+    const c = document.querySelector('#detail canvas.world');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 3; i < d.length; i += 4) if (d[i] > 0) n++;
+    return n / (c.width * c.height);
+  });
+  assert.ok(inked > 0.3, `the floor plan covers only ${(inked * 100).toFixed(1)} % of the canvas`);
+  await page.screenshot({ path: join(artifacts, 'card-world.png'), fullPage: true });
+  await page.close();
+});
+
 test('a card created elsewhere appears live, and share links open it', { skip: !existsSync(chromiumPath) && 'Debian chromium is not installed' }, async () => {
   const page = await browser.newPage();
   await page.goto(server.base + '/');
