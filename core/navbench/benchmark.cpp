@@ -1,0 +1,448 @@
+#include "core/navbench/benchmark.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+
+#include "core/common/json_check.hpp"
+#include "core/common/rng.hpp"
+
+namespace socsim::navbench {
+namespace {
+
+using household::House;
+using household::Seconds;
+
+enum class EstimatorKind : std::uint8_t { kUniform, kPrior, kHint, kPosterior };
+enum class PlannerKind : std::uint8_t { kGreedy, kOsg, kCeg };
+struct MethodParts {
+  EstimatorKind estimator;
+  PlannerKind planner;
+};
+constexpr MethodParts kParts[] = {{EstimatorKind::kUniform, PlannerKind::kGreedy}, {EstimatorKind::kPrior, PlannerKind::kOsg},
+                                  {EstimatorKind::kPrior, PlannerKind::kCeg},      {EstimatorKind::kHint, PlannerKind::kOsg},
+                                  {EstimatorKind::kHint, PlannerKind::kCeg},       {EstimatorKind::kPosterior, PlannerKind::kOsg},
+                                  {EstimatorKind::kPosterior, PlannerKind::kCeg}};
+
+// Cells of the largest 4-connected part of the grid (ties: the one holding the lowest cell).
+std::vector<int> largest_component(const NavMap& map) {
+  std::vector<int> label(static_cast<std::size_t>(map.cells()), -1), best, current;
+  for (int c = 0; c < map.cells(); ++c) {
+    if (!map.free(c) || label[static_cast<std::size_t>(c)] >= 0) continue;
+    current.clear();
+    current.push_back(c);
+    label[static_cast<std::size_t>(c)] = c;
+    for (std::size_t head = 0; head < current.size(); ++head)
+      for (int h = 0; h < kHeadings; ++h) {
+        const int n = map.ahead(current[head], h);
+        if (n >= 0 && label[static_cast<std::size_t>(n)] < 0) {
+          label[static_cast<std::size_t>(n)] = c;
+          current.push_back(n);
+        }
+      }
+    if (current.size() > best.size()) best = current;
+  }
+  std::sort(best.begin(), best.end());
+  return best;
+}
+
+Json point(household::FloorPoint p) { return Json::array({p.x, p.z}); }
+
+Json pose_json(const NavMap& map, int pose) {
+  const auto c = map.center(cell_of(pose));
+  return Json::array({c.x, c.z, heading_of(pose)});
+}
+
+// What the viewer draws: rooms, solid walls, receptacles, the grid of reachable points.
+Json map_json(const House& house, const NavMap& map) {
+  Json rooms = Json::array();
+  for (const auto& r : house.rooms) {
+    Json floor = Json::array();
+    for (const auto& p : r.floor) floor.push_back(point(p));
+    rooms.push_back({{"id", r.id}, {"type", household::room_type_name(r.type)}, {"floor", floor}});
+  }
+  Json walls = Json::array();
+  for (const auto& w : map.walls()) walls.push_back(Json::array({w.a.x, w.a.z, w.b.x, w.b.z}));
+  Json receptacles = Json::array();
+  for (const auto& r : map.receptacles()) {
+    const auto& e = house.entities[static_cast<std::size_t>(r.entity)];
+    receptacles.push_back({{"id", r.id}, {"type", r.type}, {"room", r.room >= 0 ? Json(house.rooms[static_cast<std::size_t>(r.room)].id) : Json()},
+                           {"x", r.x}, {"z", r.z}, {"size_x", e.size_x}, {"size_z", e.size_z}});
+  }
+  std::string free(static_cast<std::size_t>(map.cells()), '0');
+  for (int c = 0; c < map.cells(); ++c)
+    if (map.free(c)) free[static_cast<std::size_t>(c)] = '1';
+  return {{"id", house.id},
+          {"rooms", rooms},
+          {"walls", walls},
+          {"receptacles", receptacles},
+          {"grid", {{"origin", Json::array({map.origin_x(), map.origin_z()})}, {"cell", map.cell_size()}, {"width", map.width()},
+                    {"depth", map.depth()}, {"free", free}}}};
+}
+
+}  // namespace
+
+std::string_view split_name(Split split) { return split == Split::kNormal ? "normal" : "hard"; }
+
+std::optional<Split> parse_split(std::string_view name) {
+  if (name == "normal") return Split::kNormal;
+  if (name == "hard") return Split::kHard;
+  return std::nullopt;
+}
+
+const std::vector<std::string>& target_types() {
+  // Five of them are ProcTHOR ObjectNav targets, six are not (as in the paper, whose targets are
+  // "not fully covered" by the visual models' types); all are often moved and often alone.
+  static const std::vector<std::string> types = {"AlarmClock", "Apple",     "Bowl",          "CellPhone", "Cloth", "KeyChain",
+                                                 "Laptop",     "Mug",       "Newspaper",     "RemoteControl", "Watch"};
+  return types;
+}
+
+const std::vector<Method>& methods() {
+  static const std::vector<Method> list = {{"Uniform+Greedy", "Greedy", false}, {"SP+OSG", "SP + OSG", false},
+                                           {"SP+CEG", "SP + CEG", false},         {"Hint+OSG", "Hint + OSG", true},
+                                           {"Hint+CEG", "Hint + CEG", true},      {"Posterior+OSG", "Posterior + OSG", false},
+                                           {"Posterior+CEG", "Posterior + CEG", false}};
+  return list;
+}
+
+Result<BenchmarkRequest> benchmark_request_from_json(const Json& json) {
+  JsonChecker check;
+  if (!json.is_object()) return fail(ErrorCode::kValidation, "the request must be a JSON object", {FieldError{"", "must be an object", {}, 0, 0}});
+  check.only_keys(json, "", {"split", "scenes", "seed", "tasks_per_scene", "max_steps", "training_houses", "alpha"});
+  BenchmarkRequest r;
+  if (auto s = check.string(json, "", "split", true)) {
+    if (auto split = parse_split(*s)) r.split = *split;
+    else check.add("/split", "must be \"normal\" or \"hard\"");
+  }
+  if (auto v = check.integer(json, "", "scenes", true, 1, 500)) r.scenes = static_cast<int>(*v);
+  if (auto v = check.integer(json, "", "seed", true, 0, INT64_MAX)) r.seed = static_cast<std::uint64_t>(*v);
+  if (auto v = check.integer(json, "", "tasks_per_scene", false, 1, 50)) r.tasks_per_scene = static_cast<int>(*v);
+  if (auto v = check.integer(json, "", "max_steps", false, 1, 5000)) r.max_steps = static_cast<int>(*v);
+  if (auto v = check.integer(json, "", "training_houses", false, 1, 20000)) r.training_houses = static_cast<int>(*v);
+  if (auto v = check.number(json, "", "alpha", false, 0.0, 1.0)) r.alpha = *v;
+  if (!check.ok()) return tl::unexpected(check.error("invalid navigation benchmark request"));
+  return r;
+}
+
+Json to_json(const BenchmarkRequest& r) {
+  return {{"split", split_name(r.split)},         {"scenes", r.scenes},     {"seed", r.seed},
+          {"tasks_per_scene", r.tasks_per_scene}, {"max_steps", r.max_steps}, {"training_houses", r.training_houses},
+          {"alpha", r.alpha}};
+}
+
+Result<ResidentPool> make_resident_pool(const household::HouseholdKnowledge& knowledge, std::uint64_t seed, int days) {
+  ResidentPool pool;
+  auto vocabulary = household::ActivityVocabulary::initial(knowledge);
+  for (const auto& persona : knowledge.personas) {
+    auto r = household::make_resident_offline(persona, knowledge, {days, household::Weekday::kWednesday, seed}, vocabulary);
+    if (!r) return tl::unexpected(r.error());
+    pool.push_back(std::make_shared<const household::ResidentProfile>(std::move(*r)));
+  }
+  if (pool.empty()) return fail(ErrorCode::kValidation, "no personas to draw residents from");
+  return pool;
+}
+
+std::uint64_t test_scene_seed(std::uint64_t seed, Split split, int index) {
+  std::uint64_t state = seed ^ fnv1a64(split == Split::kNormal ? "navbench/test/normal" : "navbench/test/hard") ^
+                        (static_cast<std::uint64_t>(index) * 0x9E3779B97F4A7C15ULL);
+  return splitmix64(state) & ~(std::uint64_t{1} << 63);
+}
+
+Result<TestScene> make_test_scene(const BenchmarkRequest& request, int index, const household::HouseholdKnowledge& knowledge,
+                                  const ResidentPool& pool) {
+  const bool hard = request.split == Split::kHard;
+  // A layout that cannot be packed is drawn again from the next seed of the same scene.
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    TestScene t;
+    t.seed = test_scene_seed(request.seed, request.split, index * 8 + attempt);
+    Rng rng(t.seed, fnv1a64("navbench/scene"));
+    const int rooms = static_cast<int>(hard ? rng.between(8, 10) : rng.between(4, 7));
+    const int wanted = static_cast<int>(hard ? rng.between(3, 4) : rng.between(1, 2));
+    auto house = household::generate_house({rooms, std::nullopt, t.seed}, knowledge);
+    if (!house) continue;
+    const int bedrooms = static_cast<int>(house->rooms_of(household::RoomType::kBedroom).size());
+    const int residents = std::max(1, std::min({wanted, bedrooms, static_cast<int>(pool.size())}));
+    t.house = std::make_shared<const House>(std::move(*house));
+    auto scene = household::configure_scene(t.house, pool, {residents, t.seed}, knowledge);
+    if (!scene) return tl::unexpected(scene.error());
+    t.scene = std::make_shared<const household::DynamicScene>(std::move(*scene));
+    auto map = build_nav_map(*t.house, request.nav);
+    if (!map) return tl::unexpected(map.error());
+    t.map = std::make_shared<const NavMap>(std::move(*map));
+    return t;
+  }
+  return fail(ErrorCode::kInternal, "could not generate test scene " + std::to_string(index));
+}
+
+std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestScene& t, int index) {
+  const House& house = *t.house;
+  const auto& scene = *t.scene;
+  const NavMap& map = *t.map;
+  Rng rng(t.seed, fnv1a64("navbench/tasks"));
+  const std::vector<int> part = largest_component(map);
+  std::vector<char> in_part(static_cast<std::size_t>(map.cells()), 0);
+  for (int c : part) in_part[static_cast<std::size_t>(c)] = 1;
+  if (part.empty()) return {};
+
+  // Target types with exactly one instance in this house.
+  std::vector<std::pair<std::string, int>> singles;  // type, index into House::objects
+  for (const auto& type : target_types()) {
+    int found = -1, count = 0;
+    for (std::size_t o = 0; o < house.objects.size(); ++o)
+      if (house.entities[static_cast<std::size_t>(house.objects[o])].type == type) found = static_cast<int>(o), ++count;
+    if (count == 1) singles.emplace_back(type, found);
+  }
+  struct Option {
+    Seconds time;
+    std::size_t single;
+    int receptacle;
+  };
+  std::vector<Option> candidates;
+  const auto minutes = static_cast<std::int64_t>(scene.end() / 60);
+  for (int k = 0; k < request.instants; ++k) {
+    const Seconds t0 = rng.between(household::kMinutesPerDay, std::max<std::int64_t>(household::kMinutesPerDay, minutes - 1)) * 60;
+    for (std::size_t s = 0; s < singles.size(); ++s) {
+      const int object = singles[s].second;
+      bool moved = false;
+      for (const auto& r : scene.relocations_between(t0 - request.recent + 1, t0 + 1)) moved = moved || r.object == object;
+      if (!moved) continue;
+      const int receptacle = map.receptacle_of_entity(scene.receptacle_at(object, t0));
+      if (receptacle < 0) continue;
+      bool seen_from_part = false;
+      for (int v : map.receptacles()[static_cast<std::size_t>(receptacle)].views) seen_from_part = seen_from_part || in_part[static_cast<std::size_t>(cell_of(v))];
+      if (seen_from_part) candidates.push_back({t0, s, receptacle});
+    }
+  }
+  rng.shuffle(candidates);
+  if (candidates.size() > static_cast<std::size_t>(request.tasks_per_scene)) candidates.resize(static_cast<std::size_t>(request.tasks_per_scene));
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Option& a, const Option& b) {
+    return a.time != b.time ? a.time < b.time : a.single < b.single;
+  });
+  std::vector<NavTask> tasks;
+  for (const auto& c : candidates) {
+    NavTask task;
+    task.scene = index;
+    task.time = c.time;
+    task.target_type = singles[c.single].first;
+    task.target_id = house.entities[static_cast<std::size_t>(house.objects[static_cast<std::size_t>(singles[c.single].second)])].id;
+    task.target_receptacle = c.receptacle;
+    task.receptacle_id = map.receptacles()[static_cast<std::size_t>(c.receptacle)].id;
+    for (int attempt = 0; attempt < 64 && task.start < 0; ++attempt) {
+      const int cell = part[rng.below(static_cast<std::uint32_t>(part.size()))];
+      const int pose = pose_of(cell, static_cast<int>(rng.below(kHeadings)));
+      const int steps = shortest_steps(map, pose, c.receptacle);
+      if (steps > 0) task.start = pose, task.shortest = steps;
+    }
+    if (task.start < 0) continue;
+    task.hint_resident = static_cast<int>(rng.below(static_cast<std::uint32_t>(scene.residents().size())));
+    task.hint = scene.hint(task.hint_resident, task.target_type, task.time, request.recent).text;
+    tasks.push_back(std::move(task));
+  }
+  return tasks;
+}
+
+MethodSuite::MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts)
+    : recent_(static_cast<double>(request.recent)),
+      prior_(std::make_shared<const ScenePriorEstimator>(std::move(counts))),
+      hint_(prior_, request.hint_trust),
+      osg_(request.alpha) {}
+
+std::vector<EpisodeResult> MethodSuite::run(const TestScene& t, const NavTask& task, int max_steps) const {
+  const GenerativeModel model = generative_model_of(*t.scene);
+  EstimateQuery q;
+  q.map = t.map.get();
+  q.target_type = task.target_type;
+  q.time = task.time;
+  q.recent = static_cast<Seconds>(recent_);
+  q.model = &model;
+  const std::vector<double> uniform = uniform_.estimate(q);
+  const std::vector<double> prior = prior_->estimate(q);
+  const std::vector<double> posterior = posterior_.estimate(q);
+  q.hint = task.hint;
+  const std::vector<double> hinted = hint_.estimate(q);
+  std::vector<EpisodeResult> out;
+  const EpisodeSpec spec{task.start, task.target_receptacle, max_steps};
+  for (const auto& parts : kParts) {
+    const std::vector<double>& p = parts.estimator == EstimatorKind::kUniform ? uniform
+                                   : parts.estimator == EstimatorKind::kPrior ? prior
+                                   : parts.estimator == EstimatorKind::kHint  ? hinted
+                                                                              : posterior;
+    const Planner& planner = parts.planner == PlannerKind::kGreedy ? static_cast<const Planner&>(greedy_)
+                             : parts.planner == PlannerKind::kOsg  ? static_cast<const Planner&>(osg_)
+                                                                   : static_cast<const Planner&>(ceg_);
+    out.push_back(run_episode(*t.map, spec, p, planner));
+  }
+  return out;
+}
+
+Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request, const household::HouseholdKnowledge& knowledge,
+                                      const ResidentPool& pool, std::shared_ptr<const PlacementCounts> counts, const RunHooks& hooks) {
+  if (request.scenes < 1) return fail(ErrorCode::kValidation, "no scenes", {FieldError{"/scenes", "must be at least 1", {}, 0, 0}});
+  if (!counts) return fail(ErrorCode::kValidation, "the scene prior needs training counts");
+  for (std::uint64_t s : counts->seeds)
+    if (!is_training_seed(s)) return fail(ErrorCode::kValidation, "the scene prior was counted on a house that is not a training house");
+  const auto t0 = std::chrono::steady_clock::now();
+  const MethodSuite suite(request, counts);
+  struct SceneOutcome {
+    std::vector<NavTask> tasks;
+    std::vector<std::vector<Outcome>> outcomes;
+    std::optional<Error> error;
+  };
+  std::vector<SceneOutcome> per_scene(static_cast<std::size_t>(request.scenes));
+  std::atomic<int> next{0}, done{0};
+  std::atomic<bool> stop{false};
+  std::mutex report;
+  auto work = [&] {
+    for (int i; !stop && (i = next.fetch_add(1)) < request.scenes;) {
+      if (hooks.cancelled && hooks.cancelled()) {
+        stop = true;
+        break;
+      }
+      auto& out = per_scene[static_cast<std::size_t>(i)];
+      auto scene = make_test_scene(request, i, knowledge, pool);
+      if (!scene) {
+        out.error = scene.error();
+        stop = true;
+        break;
+      }
+      out.tasks = sample_tasks(request, *scene, i);
+      for (const auto& task : out.tasks) {
+        std::vector<Outcome> row;
+        for (const auto& e : suite.run(*scene, task, request.max_steps)) row.push_back({e.success, e.steps, e.spl});
+        out.outcomes.push_back(std::move(row));
+      }
+      const int finished = ++done;
+      if (hooks.progress) {
+        std::lock_guard<std::mutex> lock(report);
+        hooks.progress(static_cast<double>(finished) / request.scenes,
+                       "scene " + std::to_string(finished) + " of " + std::to_string(request.scenes));
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int k = 1; k < std::max(1, hooks.threads); ++k) threads.emplace_back(work);
+  work();
+  for (auto& th : threads) th.join();
+  for (const auto& s : per_scene)
+    if (s.error) return tl::unexpected(*s.error);
+  if (hooks.cancelled && hooks.cancelled()) return fail(ErrorCode::kCancelled, "the benchmark was cancelled");
+
+  BenchmarkResult result;
+  result.request = request;
+  result.training_houses = counts->houses;
+  for (auto& s : per_scene) {
+    for (auto& t : s.tasks) result.tasks.push_back(std::move(t));
+    for (auto& o : s.outcomes) result.outcomes.push_back(std::move(o));
+  }
+  const double n = static_cast<double>(std::max<std::size_t>(1, result.tasks.size()));
+  for (std::size_t m = 0; m < methods().size(); ++m) {
+    MethodScore score{methods()[m].key};
+    for (const auto& row : result.outcomes) {
+      score.el += row[m].steps;
+      score.sr += row[m].success ? 1.0 : 0.0;
+      score.spl += row[m].spl;
+    }
+    score.el /= n;
+    score.sr *= 100.0 / n;
+    score.spl *= 100.0 / n;
+    result.scores.push_back(score);
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+Json to_json(const BenchmarkResult& r, bool with_tasks) {
+  Json methods_json = Json::object();
+  for (const auto& s : r.scores) methods_json[s.key] = {{"EL", s.el}, {"SR", s.sr}, {"SPL", s.spl}};
+  Json out = {{"split", split_name(r.request.split)},
+              {"tasks", r.tasks.size()},
+              {"scenes", r.request.scenes},
+              {"seed", r.request.seed},
+              {"max_steps", r.request.max_steps},
+              {"training_houses", r.training_houses},
+              {"methods", methods_json}};
+  if (with_tasks) {
+    Json rows = Json::array();
+    for (std::size_t i = 0; i < r.tasks.size(); ++i) {
+      const auto& t = r.tasks[i];
+      Json outcome = Json::object();
+      for (std::size_t m = 0; m < methods().size(); ++m)
+        outcome[methods()[m].key] = {{"success", r.outcomes[i][m].success}, {"steps", r.outcomes[i][m].steps}};
+      rows.push_back({{"task", i},
+                      {"scene", t.scene},
+                      {"time", t.time},
+                      {"target", t.target_type},
+                      {"shortest", t.shortest},
+                      {"outcomes", outcome}});
+    }
+    out["episodes"] = rows;
+  }
+  return out;
+}
+
+std::string format_table(const BenchmarkResult& r) {
+  char line[160];
+  std::string out;
+  std::snprintf(line, sizeof line, "Object-goal navigation, %s split: %d scenes, %zu tasks, seed %llu (map-based, %d steps)\n",
+                std::string(split_name(r.request.split)).c_str(), r.request.scenes, r.tasks.size(),
+                static_cast<unsigned long long>(r.request.seed), r.request.max_steps);
+  out += line;
+  std::snprintf(line, sizeof line, "%-18s %-4s %-5s %8s %8s %8s\n", "Method", "Map", "Hint", "EL", "SR(%)", "SPL");
+  out += line;
+  for (std::size_t m = 0; m < r.scores.size(); ++m) {
+    const auto& s = r.scores[m];
+    std::snprintf(line, sizeof line, "%-18s %-4s %-5s %8.1f %8.2f %8.2f\n", methods()[m].label.c_str(), "yes",
+                  methods()[m].uses_hint ? "yes" : "no", s.el, s.sr, s.spl);
+    out += line;
+  }
+  return out;
+}
+
+Result<Json> replay_task(const BenchmarkRequest& request, int index, const household::HouseholdKnowledge& knowledge,
+                         const ResidentPool& pool, std::shared_ptr<const PlacementCounts> counts) {
+  if (index < 0) return fail(ErrorCode::kNotFound, "no such episode");
+  int seen = 0;
+  const MethodSuite suite(request, std::move(counts));
+  for (int s = 0; s < request.scenes; ++s) {
+    auto scene = make_test_scene(request, s, knowledge, pool);
+    if (!scene) return tl::unexpected(scene.error());
+    const auto tasks = sample_tasks(request, *scene, s);
+    if (index >= seen + static_cast<int>(tasks.size())) {
+      seen += static_cast<int>(tasks.size());
+      continue;
+    }
+    const NavTask& task = tasks[static_cast<std::size_t>(index - seen)];
+    const NavMap& map = *scene->map;
+    const auto episodes = suite.run(*scene, task, request.max_steps);
+    Json per_method = Json::object();
+    for (std::size_t m = 0; m < episodes.size(); ++m) {
+      const auto& e = episodes[m];
+      Json path = Json::array({pose_json(map, task.start)});
+      for (int p : e.path) path.push_back(pose_json(map, p));
+      Json visited = Json::array();
+      for (int r : e.visited) visited.push_back(map.receptacles()[static_cast<std::size_t>(r)].id);
+      per_method[methods()[m].key] = {{"success", e.success}, {"steps", e.steps}, {"spl", e.spl}, {"path", path}, {"visited", visited}};
+    }
+    const auto& rec = map.receptacles()[static_cast<std::size_t>(task.target_receptacle)];
+    return Json{{"task", index},
+                {"scene", s},
+                {"split", split_name(request.split)},
+                {"seed", request.seed},
+                {"time", task.time},
+                {"clock", household::format_clock(task.time, scene->scene->first_day())},
+                {"target", {{"type", task.target_type}, {"id", task.target_id}, {"receptacle", task.receptacle_id}, {"x", rec.x}, {"z", rec.z}}},
+                {"start", pose_json(map, task.start)},
+                {"shortest", task.shortest},
+                {"hint", task.hint},
+                {"house", map_json(*scene->house, map)},
+                {"methods", per_method}};
+  }
+  return fail(ErrorCode::kNotFound, "the benchmark has " + std::to_string(seen) + " episodes; there is no episode " + std::to_string(index),
+              {FieldError{"/n", "must be below " + std::to_string(seen), "n", 0, 0}});
+}
+
+}  // namespace socsim::navbench

@@ -1,0 +1,71 @@
+#include "core/navbench/episode.hpp"
+
+#include <algorithm>
+
+namespace socsim::navbench {
+
+int shortest_steps(const NavMap& map, int start, int receptacle) {
+  const StepField f = map.steps_from(start);
+  const int v = f.nearest(map.receptacles()[static_cast<std::size_t>(receptacle)].views);
+  return v < 0 ? -1 : f.distance[static_cast<std::size_t>(v)];
+}
+
+EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<const double> probabilities, const Planner& planner) {
+  EpisodeResult out;
+  const auto& recs = map.receptacles();
+  if (spec.start < 0 || spec.start >= map.poses() || spec.target_receptacle < 0 ||
+      spec.target_receptacle >= static_cast<int>(recs.size()) || probabilities.size() != recs.size())
+    return out;
+  std::vector<char> observed(recs.size(), 0);
+  // Rules out everything seen from `pose`; true when the target is among it.
+  auto observe = [&](int pose) {
+    bool found = false;
+    for (int r : map.visible_from(pose)) {
+      observed[static_cast<std::size_t>(r)] = 1;
+      found = found || r == spec.target_receptacle;
+    }
+    return found;
+  };
+  StepField field = map.steps_from(spec.start);
+  const int goal = field.nearest(recs[static_cast<std::size_t>(spec.target_receptacle)].views);
+  out.shortest = goal < 0 ? -1 : field.distance[static_cast<std::size_t>(goal)];
+  out.success = observe(spec.start);
+  int pose = spec.start;
+  std::vector<Candidate> candidates;
+  std::vector<int> view_of;
+  while (!out.success && out.steps < spec.max_steps) {
+    if (pose != spec.start || out.steps > 0) field = map.steps_from(pose);
+    candidates.clear();
+    view_of.clear();
+    double total = 0.0;
+    for (std::size_t r = 0; r < recs.size(); ++r) {
+      if (observed[r]) continue;
+      const int v = field.nearest(recs[r].views);
+      if (v < 0) continue;
+      const double p = std::max(0.0, probabilities[r]);
+      candidates.push_back({static_cast<int>(r), p, field.distance[static_cast<std::size_t>(v)]});
+      view_of.push_back(v);
+      total += p;
+    }
+    if (candidates.empty()) break;  // everything reachable has been seen
+    if (total > 0)
+      for (auto& c : candidates) c.p /= total;
+    const std::size_t k = planner.choose(candidates);
+    const std::vector<int> path = field.path_to(view_of[k]);
+    for (int next : path) {
+      pose = next;
+      ++out.steps;
+      out.path.push_back(pose);
+      out.success = observe(pose);
+      if (out.success || out.steps >= spec.max_steps) break;
+    }
+    if (pose == view_of[k]) out.visited.push_back(candidates[k].receptacle);
+  }
+  if (out.success && out.shortest >= 0) {
+    const int longer = std::max(out.shortest, out.steps);
+    out.spl = longer == 0 ? 1.0 : static_cast<double>(out.shortest) / longer;
+  }
+  return out;
+}
+
+}  // namespace socsim::navbench

@@ -1,0 +1,268 @@
+#include "core/navbench/nav_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+namespace socsim::navbench {
+namespace {
+
+using household::FloorPoint;
+using household::House;
+
+constexpr int kDx[kHeadings] = {1, 0, -1, 0};
+constexpr int kDz[kHeadings] = {0, 1, 0, -1};
+constexpr double kEps = 1e-12;
+constexpr std::int64_t kMaxCells = 4'000'000;
+
+double cross(FloorPoint o, FloorPoint a, FloorPoint b) { return (a.x - o.x) * (b.z - o.z) - (a.z - o.z) * (b.x - o.x); }
+
+bool within_box(FloorPoint p, FloorPoint a, FloorPoint b) {
+  return p.x >= std::min(a.x, b.x) - 1e-12 && p.x <= std::max(a.x, b.x) + 1e-12 && p.z >= std::min(a.z, b.z) - 1e-12 &&
+         p.z <= std::max(a.z, b.z) + 1e-12;
+}
+
+double distance_to_segment(FloorPoint p, FloorPoint a, FloorPoint b) {
+  const double dx = b.x - a.x, dz = b.z - a.z;
+  const double len2 = dx * dx + dz * dz;
+  double t = len2 > 0 ? ((p.x - a.x) * dx + (p.z - a.z) * dz) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(p.x - (a.x + t * dx), p.z - (a.z + t * dz));
+}
+
+// Walls minus door openings; open walls (`empty`) are left out entirely.
+std::vector<WallPiece> solid_walls(const House& house) {
+  std::unordered_map<std::string, const household::Wall*> by_id;
+  for (const auto& w : house.walls) by_id.emplace(w.id, &w);
+  std::vector<std::pair<FloorPoint, FloorPoint>> openings;
+  for (const auto& d : house.doors) {
+    auto it = by_id.find(d.wall0);
+    if (it == by_id.end()) it = by_id.find(d.wall1);
+    if (it == by_id.end()) continue;
+    const auto& w = *it->second;
+    const double len = std::hypot(w.b.x - w.a.x, w.b.z - w.a.z);
+    if (len <= 0) continue;
+    const double ux = (w.b.x - w.a.x) / len, uz = (w.b.z - w.a.z) / len;
+    openings.push_back({{w.a.x + ux * d.hole_min.x, w.a.z + uz * d.hole_min.x}, {w.a.x + ux * d.hole_max.x, w.a.z + uz * d.hole_max.x}});
+  }
+  std::vector<WallPiece> out;
+  for (const auto& w : house.walls) {
+    if (w.empty) continue;
+    const double len = std::hypot(w.b.x - w.a.x, w.b.z - w.a.z);
+    if (len <= 1e-9) continue;
+    const double ux = (w.b.x - w.a.x) / len, uz = (w.b.z - w.a.z) / len;
+    std::vector<std::pair<double, double>> solid = {{0.0, len}};
+    for (const auto& [p0, p1] : openings) {
+      if (std::abs(cross(w.a, w.b, p0)) / len > 1e-3 || std::abs(cross(w.a, w.b, p1)) / len > 1e-3) continue;
+      const double t0 = (p0.x - w.a.x) * ux + (p0.z - w.a.z) * uz, t1 = (p1.x - w.a.x) * ux + (p1.z - w.a.z) * uz;
+      const double lo = std::min(t0, t1), hi = std::max(t0, t1);
+      std::vector<std::pair<double, double>> next;
+      for (auto [s, e] : solid) {
+        if (hi <= s || lo >= e) {
+          next.emplace_back(s, e);
+          continue;
+        }
+        if (lo > s) next.emplace_back(s, lo);
+        if (hi < e) next.emplace_back(hi, e);
+      }
+      solid = std::move(next);
+    }
+    for (auto [s, e] : solid)
+      if (e - s > 1e-6) out.push_back({{w.a.x + ux * s, w.a.z + uz * s}, {w.a.x + ux * e, w.a.z + uz * e}});
+  }
+  return out;
+}
+
+}  // namespace
+
+bool segments_touch(FloorPoint a, FloorPoint b, FloorPoint c, FloorPoint d) {
+  const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
+  const bool straddle_ab = (d1 > kEps && d2 < -kEps) || (d1 < -kEps && d2 > kEps);
+  const bool straddle_cd = (d3 > kEps && d4 < -kEps) || (d3 < -kEps && d4 > kEps);
+  if (straddle_ab && straddle_cd) return true;
+  if (std::abs(d1) <= kEps && within_box(a, c, d)) return true;
+  if (std::abs(d2) <= kEps && within_box(b, c, d)) return true;
+  if (std::abs(d3) <= kEps && within_box(c, a, b)) return true;
+  if (std::abs(d4) <= kEps && within_box(d, a, b)) return true;
+  return false;
+}
+
+std::vector<int> StepField::path_to(int pose) const {
+  std::vector<int> path;
+  if (pose < 0 || distance[static_cast<std::size_t>(pose)] < 0) return path;
+  for (int p = pose; parent[static_cast<std::size_t>(p)] >= 0; p = parent[static_cast<std::size_t>(p)]) path.push_back(p);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+int StepField::nearest(std::span<const int> poses) const {
+  int best = -1, best_d = 0;
+  for (int p : poses) {
+    const int d = distance[static_cast<std::size_t>(p)];
+    if (d < 0) continue;
+    if (best < 0 || d < best_d || (d == best_d && p < best)) best = p, best_d = d;
+  }
+  return best;
+}
+
+int NavMap::free_cells() const { return static_cast<int>(std::count(free_.begin(), free_.end(), std::uint8_t{1})); }
+
+FloorPoint NavMap::center(int cell) const {
+  return {origin_x_ + (cell % width_ + 0.5) * config_.cell, origin_z_ + (cell / width_ + 0.5) * config_.cell};
+}
+
+int NavMap::ahead(int cell, int heading) const {
+  if ((moves_[static_cast<std::size_t>(cell)] >> heading & 1u) == 0) return -1;
+  return cell + kDx[heading] + kDz[heading] * width_;
+}
+
+int NavMap::act(int pose, int action) const {
+  const int cell = cell_of(pose), h = heading_of(pose);
+  if (action == 1) return pose_of(cell, (h + 1) % kHeadings);
+  if (action == 2) return pose_of(cell, (h + kHeadings - 1) % kHeadings);
+  const int next = ahead(cell, h);
+  return next < 0 ? pose : pose_of(next, h);
+}
+
+bool NavMap::line_of_sight(FloorPoint a, FloorPoint b) const {
+  for (const auto& w : walls_)
+    if (segments_touch(a, b, w.a, w.b)) return false;
+  return true;
+}
+
+bool NavMap::sees(int pose, FloorPoint target) const {
+  const FloorPoint from = center(cell_of(pose));
+  const double vx = target.x - from.x, vz = target.z - from.z;
+  const double dist = std::hypot(vx, vz);
+  if (dist > config_.view_distance + 1e-9) return false;
+  if (dist > 1e-9) {
+    const int h = heading_of(pose);
+    const double cos_angle = (vx * kDx[h] + vz * kDz[h]) / dist;
+    if (cos_angle < std::cos(config_.field_of_view_deg / 2.0 * std::numbers::pi / 180.0) - 1e-9) return false;
+  }
+  return line_of_sight(from, target);
+}
+
+std::span<const int> NavMap::visible_from(int pose) const {
+  const auto p = static_cast<std::size_t>(pose);
+  return {visible_.data() + visible_offsets_[p], visible_offsets_[p + 1] - visible_offsets_[p]};
+}
+
+int NavMap::receptacle_of_entity(int entity) const {
+  for (std::size_t i = 0; i < receptacles_.size(); ++i)
+    if (receptacles_[i].entity == entity) return static_cast<int>(i);
+  return -1;
+}
+
+StepField NavMap::steps_from(int pose) const {
+  StepField f;
+  f.distance.assign(static_cast<std::size_t>(poses()), -1);
+  f.parent.assign(static_cast<std::size_t>(poses()), -1);
+  if (pose < 0 || pose >= poses() || !free(cell_of(pose))) return f;
+  std::vector<int> queue;
+  queue.reserve(static_cast<std::size_t>(poses()));
+  queue.push_back(pose);
+  f.distance[static_cast<std::size_t>(pose)] = 0;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int p = queue[head];
+    const int d = f.distance[static_cast<std::size_t>(p)];
+    for (int action = 0; action < 3; ++action) {
+      const int q = act(p, action);
+      if (q == p || f.distance[static_cast<std::size_t>(q)] >= 0) continue;
+      f.distance[static_cast<std::size_t>(q)] = d + 1;
+      f.parent[static_cast<std::size_t>(q)] = p;
+      queue.push_back(q);
+    }
+  }
+  return f;
+}
+
+Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
+  if (house.rooms.empty()) return fail(ErrorCode::kValidation, "a navigation map needs a house with rooms", {FieldError{"/rooms", "is empty", {}, 0, 0}});
+  if (!(config.cell > 0.01) || !(config.view_distance > 0) || !(config.field_of_view_deg > 0 && config.field_of_view_deg <= 360))
+    return fail(ErrorCode::kValidation, "bad navigation map configuration");
+  double x0 = 1e300, z0 = 1e300, x1 = -1e300, z1 = -1e300;
+  for (const auto& r : house.rooms)
+    for (const auto& p : r.floor) x0 = std::min(x0, p.x), z0 = std::min(z0, p.z), x1 = std::max(x1, p.x), z1 = std::max(z1, p.z);
+  if (!(x1 > x0) || !(z1 > z0)) return fail(ErrorCode::kValidation, "the house's rooms have no area", {FieldError{"/rooms", "floor polygons are empty", {}, 0, 0}});
+  const double w = std::ceil((x1 - x0) / config.cell), d = std::ceil((z1 - z0) / config.cell);
+  if (w * d > static_cast<double>(kMaxCells))
+    return fail(ErrorCode::kValidation, "the house is too large for the navigation grid", {FieldError{"/rooms", "spans more than 4 million grid cells", {}, 0, 0}});
+
+  NavMap m;
+  m.config_ = config;
+  m.origin_x_ = x0;
+  m.origin_z_ = z0;
+  m.width_ = static_cast<int>(w);
+  m.depth_ = static_cast<int>(d);
+  m.walls_ = solid_walls(house);
+  struct Box {
+    double x0, z0, x1, z1;
+  };
+  std::vector<Box> furniture;
+  for (int idx : house.receptacles) {
+    const auto& e = house.entities[static_cast<std::size_t>(idx)];
+    if (e.synthetic) continue;
+    furniture.push_back({e.position.x - e.size_x / 2, e.position.z - e.size_z / 2, e.position.x + e.size_x / 2, e.position.z + e.size_z / 2});
+  }
+  const auto n = static_cast<std::size_t>(m.cells());
+  m.free_.assign(n, 0);
+  for (int c = 0; c < m.cells(); ++c) {
+    const FloorPoint p = m.center(c);
+    if (house.room_at(p.x, p.z) < 0) continue;
+    bool blocked = false;
+    for (const auto& b : furniture) blocked = blocked || (p.x >= b.x0 && p.x <= b.x1 && p.z >= b.z0 && p.z <= b.z1);
+    for (std::size_t i = 0; i < m.walls_.size() && !blocked; ++i)
+      blocked = distance_to_segment(p, m.walls_[i].a, m.walls_[i].b) < config.wall_clearance;
+    m.free_[static_cast<std::size_t>(c)] = blocked ? 0 : 1;
+  }
+  m.moves_.assign(n, 0);
+  for (int c = 0; c < m.cells(); ++c) {
+    if (!m.free(c)) continue;
+    const int cx = c % m.width_, cz = c / m.width_;
+    for (int h = 0; h < kHeadings; ++h) {
+      const int nx = cx + kDx[h], nz = cz + kDz[h];
+      if (nx < 0 || nz < 0 || nx >= m.width_ || nz >= m.depth_) continue;
+      const int next = nz * m.width_ + nx;
+      if (!m.free(next) || !m.line_of_sight(m.center(c), m.center(next))) continue;
+      m.moves_[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(m.moves_[static_cast<std::size_t>(c)] | (1u << h));
+    }
+  }
+  // Receptacles and the poses that see them.
+  std::vector<std::vector<int>> seen_by(static_cast<std::size_t>(m.poses()));
+  const int reach = static_cast<int>(std::ceil(config.view_distance / config.cell)) + 1;
+  for (int idx : house.receptacles) {
+    const auto& e = house.entities[static_cast<std::size_t>(idx)];
+    MapReceptacle r;
+    r.entity = idx;
+    r.id = e.id;
+    r.type = e.type;
+    r.room = e.room;
+    if (e.room >= 0) r.room_type = house.rooms[static_cast<std::size_t>(e.room)].type;
+    r.x = e.position.x;
+    r.z = e.position.z;
+    const int cx = static_cast<int>(std::floor((r.x - x0) / config.cell)), cz = static_cast<int>(std::floor((r.z - z0) / config.cell));
+    const auto index = static_cast<int>(m.receptacles_.size());
+    for (int iz = std::max(0, cz - reach); iz <= std::min(m.depth_ - 1, cz + reach); ++iz)
+      for (int ix = std::max(0, cx - reach); ix <= std::min(m.width_ - 1, cx + reach); ++ix) {
+        const int c = iz * m.width_ + ix;
+        if (!m.free(c)) continue;
+        for (int h = 0; h < kHeadings; ++h)
+          if (m.sees(pose_of(c, h), {r.x, r.z})) {
+            r.views.push_back(pose_of(c, h));
+            seen_by[static_cast<std::size_t>(pose_of(c, h))].push_back(index);
+          }
+      }
+    std::sort(r.views.begin(), r.views.end());
+    m.receptacles_.push_back(std::move(r));
+  }
+  m.visible_offsets_.assign(static_cast<std::size_t>(m.poses()) + 1, 0);
+  for (std::size_t p = 0; p < seen_by.size(); ++p) {
+    m.visible_offsets_[p + 1] = m.visible_offsets_[p] + static_cast<std::uint32_t>(seen_by[p].size());
+    m.visible_.insert(m.visible_.end(), seen_by[p].begin(), seen_by[p].end());
+  }
+  return m;
+}
+
+}  // namespace socsim::navbench

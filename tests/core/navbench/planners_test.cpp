@@ -1,0 +1,112 @@
+// The planners on candidates and on hand-built houses where the right visiting order is known:
+// Greedy takes the nearest, CEG the best probability per step, OSG the best α-weighted trade of
+// scaled probability against scaled distance.
+#include "core/navbench/planners.hpp"
+
+#include <gtest/gtest.h>
+
+#include "core/navbench/episode.hpp"
+#include "tests/core/navbench/navbench_fixture.hpp"
+
+namespace socsim::navbench {
+namespace {
+
+using household::RoomType;
+using testing::cell_near;
+using testing::hand_built_house;
+using testing::map_of;
+
+TEST(Planners, EachPicksByItsOwnRule) {
+  // near & unlikely, middle & likely, far.
+  const std::vector<Candidate> a = {{0, 0.10, 2}, {1, 0.60, 30}, {2, 0.30, 40}};
+  EXPECT_EQ(GreedyPlanner().choose(a), 0u);
+  EXPECT_EQ(CegPlanner().choose(a), 0u);  // 0.05 per step beats 0.02 and 0.0075
+  EXPECT_EQ(OsgPlanner(0.5).choose(a), 1u);  // 0.5·1 − 0.5·0.75 = 0.125 beats 0.058 and −0.25
+  const std::vector<Candidate> b = {{0, 0.05, 2}, {1, 0.60, 10}, {2, 0.35, 40}};
+  EXPECT_EQ(GreedyPlanner().choose(b), 0u);
+  EXPECT_EQ(CegPlanner().choose(b), 1u);  // 0.06 per step beats 0.025
+  EXPECT_EQ(OsgPlanner(0.5).choose(b), 1u);
+  // α = 0 is distance only, α = 1 probability only.
+  EXPECT_EQ(OsgPlanner(0.0).choose(a), 0u);
+  EXPECT_EQ(OsgPlanner(1.0).choose(a), 1u);
+}
+
+TEST(Planners, UniformProbabilitiesMakeEveryPlannerGreedy) {
+  const std::vector<Candidate> c = {{0, 0.25, 9}, {1, 0.25, 4}, {2, 0.25, 4}, {3, 0.25, 12}};
+  EXPECT_EQ(GreedyPlanner().choose(c), 1u);  // ties go to the lower receptacle index
+  EXPECT_EQ(CegPlanner().choose(c), 1u);
+  EXPECT_EQ(OsgPlanner(0.5).choose(c), 1u);
+}
+
+//  z=2 +--------------------------------------------------+
+//      |          [0]              [1]                [2] |
+//      | agent →                                          |
+//  z=0 +--------------------------------------------------+
+//     x=0        x=2              x=5                x=9  x=10
+household::House corridor() {
+  return hand_built_house({{RoomType::kLivingRoom, 0, 0, 10, 2}}, {},
+                          {{"SideTable", 0, 2.0, 1.75}, {"SideTable", 0, 5.0, 1.75}, {"SideTable", 0, 9.0, 1.75}});
+}
+
+EpisodeResult search(const NavMap& map, const std::vector<double>& p, int target, const Planner& planner) {
+  return run_episode(map, {pose_of(cell_near(map, 0.3, 0.3), 0), target, 200}, p, planner);
+}
+
+TEST(Planners, GreedyWalksTheCorridorInOrder) {
+  const NavMap map = map_of(corridor());
+  const auto e = search(map, {0.1, 0.2, 0.7}, 2, GreedyPlanner());
+  EXPECT_TRUE(e.success);
+  // Walking along the corridor the tables stand 90° to the side, out of view: each is visited.
+  EXPECT_EQ(e.visited, (std::vector<int>{0, 1, 2}));
+  EXPECT_GE(e.steps, e.shortest);
+  EXPECT_LE(e.steps, e.shortest + 4);  // the detours are the turns to face tables 0 and 1
+}
+
+TEST(Planners, CegAndOsgGoStraightToTheLikelyFarEnd) {
+  const NavMap map = map_of(corridor());
+  // The target is on table 0, which Greedy looks at first; CEG and OSG believe the far end.
+  const auto far_first = [&](const Planner& planner) { return search(map, {0.05, 0.05, 0.9}, 0, planner); };
+  const auto greedy = far_first(GreedyPlanner()), ceg = far_first(CegPlanner()), osg = far_first(OsgPlanner(0.5));
+  EXPECT_EQ(greedy.visited, (std::vector<int>{0}));
+  EXPECT_EQ(greedy.steps, greedy.shortest);
+  EXPECT_EQ(ceg.visited, (std::vector<int>{2, 1, 0}));  // back from the far end, the nearer first
+  EXPECT_EQ(osg.visited, (std::vector<int>{2, 1, 0}));
+  EXPECT_GT(ceg.steps, greedy.steps);
+  EXPECT_LT(ceg.spl, greedy.spl);
+}
+
+//  Three rooms in a row: a fairly likely receptacle in a corner behind the start (0), the likeliest one in the
+//  next room (1) and an unlikely one two rooms away (2). CEG compares probability per step and
+//  takes the near one; OSG scales distances by the farthest candidate and takes the likeliest.
+TEST(Planners, CegAndOsgDisagreeWhereTheTradeIsClose) {
+  const auto house = hand_built_house(
+      {{RoomType::kKitchen, 0, 0, 4, 3}, {RoomType::kLivingRoom, 4, 0, 8, 3}, {RoomType::kBedroom, 8, 0, 12, 3}},
+      {{0, 1, 4.0, 1.5}, {1, 2, 8.0, 1.5}},
+      {{"CounterTop", 0, 0.4, 0.3}, {"Sofa", 1, 7.5, 2.7}, {"Bed", 2, 11.0, 2.5, 1.6, 0.8}});
+  const NavMap map = map_of(house);
+  const int start = pose_of(cell_near(map, 2.6, 2.6), 0);
+  const double d0 = shortest_steps(map, start, 0), d1 = shortest_steps(map, start, 1), d2 = shortest_steps(map, start, 2);
+  ASSERT_LT(d0, d1);
+  ASSERT_LT(d1, d2);
+  const std::vector<double> p = {0.4, 0.6, 0.0};
+  // The rules applied by hand to the measured distances.
+  ASSERT_GT(0.4 / d0, 0.6 / d1);                                          // CEG: the corner first
+  ASSERT_GT(0.5 * 1.0 - 0.5 * d1 / d2, 0.5 * 0.4 / 0.6 - 0.5 * d0 / d2);  // OSG: the likeliest first
+  // The target is where the estimate says it most likely is: on the sofa.
+  const auto ceg = run_episode(map, {start, 1, 200}, p, CegPlanner());
+  const auto osg = run_episode(map, {start, 1, 200}, p, OsgPlanner(0.5));
+  const auto greedy = run_episode(map, {start, 1, 200}, p, GreedyPlanner());
+  EXPECT_EQ(ceg.visited, (std::vector<int>{0, 1}));
+  EXPECT_EQ(osg.visited, (std::vector<int>{1}));
+  EXPECT_EQ(greedy.visited, (std::vector<int>{0, 1}));
+  EXPECT_EQ(osg.steps, osg.shortest);
+  for (const auto* e : {&ceg, &osg, &greedy}) {
+    EXPECT_TRUE(e->success);
+    EXPECT_GE(e->steps, e->shortest);
+    EXPECT_DOUBLE_EQ(e->spl, static_cast<double>(e->shortest) / e->steps);
+  }
+  EXPECT_LT(osg.steps, ceg.steps);
+}
+
+}  // namespace
+}  // namespace socsim::navbench
