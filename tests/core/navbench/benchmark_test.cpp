@@ -1,0 +1,185 @@
+// The benchmark: splits have the paper's room and resident counts; tasks target recently moved,
+// single-instance objects of the 11 types from starts that do not see them; SR and SPL are
+// percentages with SPL ≤ SR; the seed fixes the table whatever the thread count; requests are
+// validated field by field; an episode replays with its path and visited receptacles.
+#include "core/navbench/benchmark.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "tests/core/navbench/navbench_fixture.hpp"
+
+namespace socsim::navbench {
+namespace {
+
+using testing::knowledge;
+using testing::small_counts;
+using testing::small_pool;
+
+BenchmarkRequest small(Split split, std::uint64_t seed, int scenes = 4) {
+  BenchmarkRequest r;
+  r.split = split;
+  r.seed = seed;
+  r.scenes = scenes;
+  return r;
+}
+
+TEST(Benchmark, ElevenTargetTypesAndSevenMethods) {
+  EXPECT_EQ(target_types().size(), 11u);
+  for (const auto& t : target_types()) EXPECT_TRUE(knowledge().is_movable(t)) << t;
+  std::vector<std::string> keys;
+  for (const auto& m : methods()) keys.push_back(m.key);
+  EXPECT_EQ(keys, (std::vector<std::string>{"Uniform+Greedy", "SP+OSG", "SP+CEG", "Hint+OSG", "Hint+CEG", "Posterior+OSG", "Posterior+CEG"}));
+}
+
+TEST(Benchmark, SplitsHaveThePapersRoomsAndResidents) {
+  for (Split split : {Split::kNormal, Split::kHard}) {
+    for (int i = 0; i < 6; ++i) {
+      auto t = make_test_scene(small(split, 2), i, knowledge(), small_pool());
+      ASSERT_TRUE(t) << t.error().message();
+      const auto rooms = t->house->rooms.size();
+      const auto residents = t->scene->residents().size();
+      const auto bedrooms = t->house->rooms_of(household::RoomType::kBedroom).size();
+      if (split == Split::kNormal) {
+        EXPECT_TRUE(rooms >= 4 && rooms <= 7) << rooms;
+        EXPECT_TRUE(residents >= 1 && residents <= 2) << residents;
+      } else {
+        EXPECT_TRUE(rooms >= 8 && rooms <= 10) << rooms;
+        EXPECT_TRUE(residents >= std::min<std::size_t>(3, bedrooms) && residents <= 4) << residents;
+      }
+      EXPECT_FALSE(is_training_seed(t->seed));
+    }
+  }
+}
+
+TEST(Benchmark, TasksTargetRecentlyMovedSingleObjectsOutOfSight) {
+  const auto request = small(Split::kHard, 4, 6);
+  int total = 0;
+  for (int s = 0; s < request.scenes; ++s) {
+    auto t = make_test_scene(request, s, knowledge(), small_pool());
+    ASSERT_TRUE(t);
+    const auto tasks = sample_tasks(request, *t, s);
+    EXPECT_LE(tasks.size(), 10u);
+    std::set<household::Seconds> instants;
+    for (const auto& task : tasks) {
+      instants.insert(task.time);
+      EXPECT_NE(std::find(target_types().begin(), target_types().end(), task.target_type), target_types().end());
+      int instances = 0, object = -1;
+      for (std::size_t o = 0; o < t->house->objects.size(); ++o)
+        if (t->house->entities[static_cast<std::size_t>(t->house->objects[o])].type == task.target_type) ++instances, object = static_cast<int>(o);
+      EXPECT_EQ(instances, 1);
+      bool moved = false;
+      for (const auto& r : t->scene->relocations_between(task.time - request.recent + 1, task.time + 1)) moved = moved || r.object == object;
+      EXPECT_TRUE(moved);
+      EXPECT_EQ(t->map->receptacles()[static_cast<std::size_t>(task.target_receptacle)].entity, t->scene->receptacle_at(object, task.time));
+      EXPECT_GE(task.time, household::kSecondsPerDay);
+      EXPECT_GT(task.shortest, 0);
+      EXPECT_EQ(task.shortest, shortest_steps(*t->map, task.start, task.target_receptacle));
+      EXPECT_FALSE(task.hint.empty());
+      ++total;
+    }
+    EXPECT_LE(instants.size(), 2u);
+  }
+  EXPECT_GT(total, 20);
+}
+
+TEST(Benchmark, ScoresArePercentagesWithSplNoAboveSr) {
+  for (Split split : {Split::kNormal, Split::kHard}) {
+    auto r = run_benchmark(small(split, 8), knowledge(), small_pool(), small_counts(), {});
+    ASSERT_TRUE(r) << r.error().message();
+    ASSERT_FALSE(r->tasks.empty());
+    ASSERT_EQ(r->scores.size(), methods().size());
+    for (const auto& s : r->scores) {
+      EXPECT_GE(s.sr, 0.0);
+      EXPECT_LE(s.sr, 100.0);
+      EXPECT_GE(s.spl, 0.0);
+      EXPECT_LE(s.spl, s.sr + 1e-9) << s.key;
+      EXPECT_GT(s.el, 0.0);
+      EXPECT_LE(s.el, 200.0);
+    }
+    for (std::size_t i = 0; i < r->tasks.size(); ++i)
+      for (const auto& o : r->outcomes[i]) {
+        if (o.success) {
+          EXPECT_GE(o.steps, r->tasks[i].shortest);  // no method beats the grid's shortest path
+        }
+        EXPECT_LE(o.spl, 1.0);
+      }
+    const Json j = to_json(*r);
+    EXPECT_EQ(j["split"], std::string(split_name(split)));
+    EXPECT_EQ(j["tasks"], r->tasks.size());
+    EXPECT_TRUE(j["methods"]["SP+CEG"].contains("SPL"));
+    EXPECT_NE(format_table(*r).find("Posterior + CEG"), std::string::npos);
+  }
+}
+
+TEST(Benchmark, TheSeedFixesTheTableWhateverTheThreads) {
+  RunHooks one;
+  one.threads = 1;
+  auto a = run_benchmark(small(Split::kNormal, 21), knowledge(), small_pool(), small_counts(), one);
+  auto b = run_benchmark(small(Split::kNormal, 21), knowledge(), small_pool(), small_counts(), {});
+  auto c = run_benchmark(small(Split::kNormal, 22), knowledge(), small_pool(), small_counts(), {});
+  ASSERT_TRUE(a && b && c);
+  EXPECT_EQ(to_json(*a, true).dump(), to_json(*b, true).dump());
+  EXPECT_NE(to_json(*a, true).dump(), to_json(*c, true).dump());
+}
+
+TEST(Benchmark, ProgressIsReportedAndCancellingStops) {
+  std::vector<double> seen;
+  RunHooks hooks;
+  hooks.progress = [&](double f, const std::string&) { seen.push_back(f); };
+  auto r = run_benchmark(small(Split::kNormal, 3, 3), knowledge(), small_pool(), small_counts(), hooks);
+  ASSERT_TRUE(r);
+  ASSERT_EQ(seen.size(), 3u);
+  EXPECT_DOUBLE_EQ(*std::max_element(seen.begin(), seen.end()), 1.0);
+  hooks.cancelled = [] { return true; };
+  auto cancelled = run_benchmark(small(Split::kNormal, 3, 3), knowledge(), small_pool(), small_counts(), hooks);
+  ASSERT_FALSE(cancelled);
+  EXPECT_EQ(cancelled.error().code, ErrorCode::kCancelled);
+}
+
+TEST(Benchmark, RequestsAreValidatedFieldByField) {
+  auto ok = benchmark_request_from_json(Json{{"split", "hard"}, {"scenes", 50}, {"seed", 7}});
+  ASSERT_TRUE(ok);
+  EXPECT_EQ(ok->split, Split::kHard);
+  EXPECT_EQ(ok->scenes, 50);
+  EXPECT_EQ(ok->seed, 7u);
+  auto bad = benchmark_request_from_json(Json{{"split", "easy"}, {"scenes", 0}, {"seed", -1}, {"colour", "red"}});
+  ASSERT_FALSE(bad);
+  std::set<std::string> pointers;
+  for (const auto& e : bad.error().errors) pointers.insert(e.pointer);
+  EXPECT_EQ(pointers, (std::set<std::string>{"/split", "/scenes", "/seed", "/colour"}));
+  auto missing = benchmark_request_from_json(Json::object());
+  ASSERT_FALSE(missing);
+  EXPECT_EQ(missing.error().errors.size(), 3u);
+  EXPECT_FALSE(benchmark_request_from_json(Json::array()));
+}
+
+TEST(Benchmark, AnEpisodeReplaysWithItsPathAndVisits) {
+  const auto request = small(Split::kNormal, 8);
+  auto r = run_benchmark(request, knowledge(), small_pool(), small_counts(), {});
+  ASSERT_TRUE(r && !r->tasks.empty());
+  const int n = static_cast<int>(r->tasks.size()) - 1;
+  auto replay = replay_task(request, n, knowledge(), small_pool(), small_counts());
+  ASSERT_TRUE(replay) << replay.error().message();
+  const Json& j = *replay;
+  EXPECT_EQ(j["target"]["type"], r->tasks.back().target_type);
+  EXPECT_EQ(j["shortest"], r->tasks.back().shortest);
+  EXPECT_FALSE(j["house"]["rooms"].empty());
+  EXPECT_EQ(j["house"]["grid"]["free"].get<std::string>().size(),
+            static_cast<std::size_t>(j["house"]["grid"]["width"].get<int>() * j["house"]["grid"]["depth"].get<int>()));
+  for (std::size_t m = 0; m < methods().size(); ++m) {
+    const Json& e = j["methods"][methods()[m].key];
+    EXPECT_EQ(e["steps"], r->outcomes.back()[m].steps);
+    EXPECT_EQ(e["success"], r->outcomes.back()[m].success);
+    EXPECT_EQ(e["path"].size(), e["steps"].get<std::size_t>() + 1);
+    EXPECT_EQ(e["path"][0], j["start"]);
+  }
+  auto beyond = replay_task(request, static_cast<int>(r->tasks.size()), knowledge(), small_pool(), small_counts());
+  ASSERT_FALSE(beyond);
+  EXPECT_EQ(beyond.error().code, ErrorCode::kNotFound);
+}
+
+}  // namespace
+}  // namespace socsim::navbench

@@ -1,0 +1,202 @@
+// The estimators: Uniform is flat; the scene prior learns co-occurrence from training houses only
+// (disjoint seeds, blind to the test scene's objects and dynamics); hints are read from the
+// resident's words; the posterior always gives the true receptacle positive probability and is
+// calibrated over many tasks.
+#include "core/navbench/estimators.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "tests/core/navbench/navbench_fixture.hpp"
+
+namespace socsim::navbench {
+namespace {
+
+using household::RoomType;
+using testing::hand_built_house;
+using testing::knowledge;
+using testing::map_of;
+using testing::small_counts;
+using testing::small_pool;
+
+double sum(const std::vector<double>& p) { return std::accumulate(p.begin(), p.end(), 0.0); }
+
+household::House kitchen_and_bedroom() {
+  return hand_built_house({{RoomType::kKitchen, 0, 0, 4, 3}, {RoomType::kBedroom, 4, 0, 8, 3}}, {{0, 1, 4.0, 1.5}},
+                          {{"DiningTable", 0, 2.0, 1.5, 1.0, 1.0}, {"Bed", 1, 6.5, 1.5, 1.6, 2.0}, {"Dresser", 1, 5.0, 2.7, 1.0, 0.4}});
+}
+
+TEST(Estimators, UniformIsFlat) {
+  const NavMap map = map_of(kitchen_and_bedroom());
+  EstimateQuery q;
+  q.map = &map;
+  q.target_type = "Mug";
+  const auto p = UniformEstimator().estimate(q);
+  ASSERT_EQ(p.size(), 3u);
+  for (double x : p) EXPECT_DOUBLE_EQ(x, 1.0 / 3.0);
+}
+
+TEST(Estimators, ScenePriorFollowsTheTrainingCounts) {
+  // Training: mugs always on dining tables, books on beds.
+  PlacementCounts counts;
+  for (int i = 0; i < 5; ++i) {
+    auto h = kitchen_and_bedroom();
+    for (const auto& [type, parent] : std::vector<std::pair<std::string, int>>{{"Mug", 0}, {"Book", 1}}) {
+      household::Entity o;
+      o.kind = household::EntityKind::kObject;
+      o.type = type;
+      o.id = type + "|" + std::to_string(i);
+      o.parent = parent;
+      o.room = h.entities[static_cast<std::size_t>(parent)].room;
+      h.entities.push_back(o);
+    }
+    h.index();
+    add_house(counts, h, training_house_seed(9, i));
+  }
+  const ScenePriorEstimator prior(std::make_shared<const PlacementCounts>(counts));
+  // 5 mugs on 5 kitchen dining tables, backed off (one pseudo-count) to mugs per dining table,
+  // backed off to mugs per receptacle (6/16, scaled by 0.01).
+  EXPECT_NEAR(prior.rate("Mug", "DiningTable", RoomType::kKitchen), (5.0 + (5.0 + 0.00375) / 6.0) / 6.0, 1e-12);
+  const NavMap map = map_of(kitchen_and_bedroom());
+  EstimateQuery q;
+  q.map = &map;
+  q.target_type = "Mug";
+  auto p = prior.estimate(q);
+  EXPECT_NEAR(sum(p), 1.0, 1e-12);
+  EXPECT_GT(p[0], 0.95);  // the dining table
+  q.target_type = "Book";
+  p = prior.estimate(q);
+  EXPECT_GT(p[1], 0.95);  // the bed
+  EXPECT_GT(p[2], 0.0);   // never seen there, but not impossible
+}
+
+TEST(Estimators, TrainingAndTestSeedsNeverMeet) {
+  for (std::uint64_t seed : {0ULL, 1ULL, 42ULL, 0xFFFFFFFFFFFFFFFFULL})
+    for (int i = 0; i < 2000; ++i) {
+      ASSERT_TRUE(is_training_seed(training_house_seed(seed, i)));
+      ASSERT_FALSE(is_training_seed(test_scene_seed(seed, Split::kNormal, i)));
+      ASSERT_FALSE(is_training_seed(test_scene_seed(seed, Split::kHard, i)));
+    }
+  const auto& counts = *small_counts();
+  EXPECT_EQ(counts.houses, 200);
+  for (std::uint64_t s : counts.seeds) EXPECT_TRUE(is_training_seed(s));
+}
+
+TEST(Estimators, ScenePriorIgnoresTheTestScene) {
+  // Two different dynamic scenes on one test house, and the same house with its objects moved:
+  // the prior's answer is the same, because it only reads the map (receptacles) and the counts.
+  BenchmarkRequest request;
+  request.split = Split::kHard;
+  request.seed = 5;
+  auto t = make_test_scene(request, 0, knowledge(), small_pool());
+  ASSERT_TRUE(t) << t.error().message();
+  const ScenePriorEstimator prior(small_counts());
+  EstimateQuery q;
+  q.map = t->map.get();
+  q.target_type = "Mug";
+  q.time = 3 * household::kSecondsPerDay;
+  const auto before = prior.estimate(q);
+  auto other = household::configure_scene(t->house, small_pool(), {1, 77}, knowledge());
+  ASSERT_TRUE(other);
+  const GenerativeModel model = generative_model_of(*other);
+  q.model = &model;
+  q.hint = "Yes, I used the mug while having breakfast this morning and left it on the bed in the bedroom.";
+  EXPECT_EQ(prior.estimate(q), before);
+  household::House shuffled = *t->house;
+  for (int o : shuffled.objects) shuffled.entities[static_cast<std::size_t>(o)].parent = shuffled.receptacles.front();
+  const NavMap same_map = testing::map_of(shuffled);
+  q.map = &same_map;
+  EXPECT_EQ(prior.estimate(q), before);
+  // Counting a test house into the prior is refused by the benchmark.
+  auto leaked = std::make_shared<PlacementCounts>(*small_counts());
+  add_house(*leaked, *t->house, t->seed);
+  auto run = run_benchmark(request, knowledge(), small_pool(), leaked, {});
+  ASSERT_FALSE(run);
+  EXPECT_EQ(run.error().code, ErrorCode::kValidation);
+}
+
+TEST(Estimators, HintsAreReadFromTheResidentsWords) {
+  const NavMap map = map_of(kitchen_and_bedroom());
+  auto r = read_hint("Yes, I used the mug while having breakfast this morning and left it on the dining table in the kitchen.", map);
+  EXPECT_TRUE(r.used);
+  EXPECT_EQ(r.receptacle_type, "DiningTable");
+  ASSERT_TRUE(r.room);
+  EXPECT_EQ(*r.room, RoomType::kKitchen);
+  r = read_hint("No, I don't think I've used the mug recently.", map);
+  EXPECT_FALSE(r.used);
+  r = read_hint("Yes, I used it and left it on the piano in the hall.", map);
+  EXPECT_TRUE(r.used);
+  EXPECT_TRUE(r.receptacle_type.empty());
+  EXPECT_FALSE(r.room);
+
+  auto prior = std::make_shared<const ScenePriorEstimator>(small_counts());
+  const HintEstimator hint(prior, 0.85);
+  EstimateQuery q;
+  q.map = &map;
+  q.target_type = "Mug";
+  q.hint = "Yes, I used the mug while getting dressed this morning and left it on the dresser in the bedroom.";
+  const auto p = hint.estimate(q);
+  EXPECT_NEAR(sum(p), 1.0, 1e-12);
+  EXPECT_GE(p[2], 0.85);
+  q.hint = "No, I don't think I've used the mug recently.";
+  EXPECT_EQ(hint.estimate(q), prior->estimate(q));
+}
+
+TEST(Estimators, PosteriorNeverRulesOutTheTruthAndIsCalibrated) {
+  // For a calibrated forecaster E[p(true)] = E[Σ p²]; the support must always hold the truth.
+  BenchmarkRequest request;
+  request.split = Split::kHard;
+  request.seed = 11;
+  const PosteriorEstimator posterior;
+  double truth = 0.0, sharpness = 0.0;
+  int tasks = 0;
+  for (int s = 0; s < 12; ++s) {
+    auto t = make_test_scene(request, s, knowledge(), small_pool());
+    ASSERT_TRUE(t) << t.error().message();
+    const GenerativeModel model = generative_model_of(*t->scene);
+    for (const auto& task : sample_tasks(request, *t, s)) {
+      EstimateQuery q;
+      q.map = t->map.get();
+      q.target_type = task.target_type;
+      q.time = task.time;
+      q.recent = request.recent;
+      q.model = &model;
+      const auto p = posterior.estimate(q);
+      ASSERT_NEAR(sum(p), 1.0, 1e-9);
+      ASSERT_GT(p[static_cast<std::size_t>(task.target_receptacle)], 0.0) << task.target_type << " at " << task.time;
+      truth += p[static_cast<std::size_t>(task.target_receptacle)];
+      for (double x : p) sharpness += x * x;
+      ++tasks;
+    }
+  }
+  ASSERT_GT(tasks, 50);
+  EXPECT_NEAR(truth / tasks, sharpness / tasks, 0.08) << tasks << " tasks";
+  EXPECT_GT(truth / tasks, 0.2);  // and far sharper than uniform over ~40 receptacles
+}
+
+TEST(Estimators, PosteriorBeforeAnyEventIsTheStaticPlacement) {
+  BenchmarkRequest request;
+  auto t = make_test_scene(request, 1, knowledge(), small_pool());
+  ASSERT_TRUE(t);
+  const GenerativeModel model = generative_model_of(*t->scene);
+  const auto& h = *t->house;
+  const auto& first = h.entities[static_cast<std::size_t>(h.objects.front())];
+  int same_type = 0;
+  for (int o : h.objects) same_type += h.entities[static_cast<std::size_t>(o)].type == first.type;
+  EstimateQuery q;
+  q.map = t->map.get();
+  q.target_type = first.type;
+  q.time = 0;
+  q.recent = 0;
+  q.model = &model;
+  const auto p = PosteriorEstimator().estimate(q);
+  if (same_type == 1) {
+    EXPECT_DOUBLE_EQ(p[static_cast<std::size_t>(t->map->receptacle_of_entity(first.parent))], 1.0);
+  } else {
+    EXPECT_DOUBLE_EQ(sum(p), 0.0);  // several instances: the posterior makes no claim
+  }
+}
+
+}  // namespace
+}  // namespace socsim::navbench
