@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <deque>
+#include <future>
 #include <set>
 #include <thread>
 
@@ -39,9 +40,10 @@ class Session : public std::enable_shared_from_this<Session> {
 
   [[nodiscard]] const std::string& topic() const { return topic_; }
 
-  // Called on the I/O thread.
+  // Called on the I/O thread. Frames published before the handshake has finished are not for
+  // this client yet (and writing then would race the handshake's own write).
   void send(std::string frame) {
-    if (closed_) return;
+    if (closed_ || !open_) return;
     if (queue_.size() >= shared_.options.max_queued_frames) {
       queue_.pop_front();  // drop the oldest for a slow reader
       ++dropped_;
@@ -50,13 +52,6 @@ class Session : public std::enable_shared_from_this<Session> {
     if (!writing_) write_next();
   }
 
-  void close() {
-    if (closed_) return;
-    closed_ = true;
-    beast::error_code ec;
-    ws_.next_layer().shutdown(tcp::socket::shutdown_both, ec);
-    ws_.next_layer().close(ec);
-  }
 
  private:
   void on_request(beast::error_code ec) {
@@ -83,6 +78,7 @@ class Session : public std::enable_shared_from_this<Session> {
   void on_accept(beast::error_code ec) {
     if (ec) return finish();
     ws_.text(true);
+    open_ = true;
     send(nlohmann::json{{"type", "hello"}, {"server", "socsim"}, {"version", build::kVersion}, {"topic", topic_}}.dump());
     read_loop();
   }
@@ -110,8 +106,12 @@ class Session : public std::enable_shared_from_this<Session> {
     });
   }
 
+  // Forgets the session. The socket is not closed under a pending operation (Beast's stream
+  // asserts when a read's failure path and a write complete out of order); it closes when the
+  // last handler holding the session has run and the session is destroyed.
   void finish() {
-    close();
+    closed_ = true;
+    queue_.clear();
     shared_.sessions.erase(shared_from_this());
   }
 
@@ -124,8 +124,13 @@ class Session : public std::enable_shared_from_this<Session> {
   std::string current_;
   std::string topic_;  // "cards" or "jobs", from the path
   bool writing_ = false;
+  bool open_ = false;  // handshake done
   bool closed_ = false;
   std::size_t dropped_ = 0;
+
+ public:
+  [[nodiscard]] std::size_t dropped() const { return dropped_; }
+  [[nodiscard]] std::size_t queued() const { return queue_.size(); }
 };
 
 }  // namespace
@@ -172,6 +177,21 @@ Result<int> WsServer::bind() {
   return port_;
 }
 
+WsStats WsServer::stats() {
+  std::promise<WsStats> p;
+  auto f = p.get_future();
+  asio::post(impl_->shared.io, [this, &p] {
+    WsStats st;
+    st.sessions = impl_->shared.sessions.size();
+    for (const auto& s : impl_->shared.sessions) {
+      st.frames_dropped += s->dropped();
+      st.frames_queued += s->queued();
+    }
+    p.set_value(st);
+  });
+  return f.get();
+}
+
 void WsServer::start() {
   Impl* impl = impl_.get();
   impl->subscription = impl->shared.events.subscribe([impl](const std::string& topic, const std::string& payload) {
@@ -187,14 +207,13 @@ void WsServer::start() {
 void WsServer::stop() {
   if (!impl_ || !impl_->thread.joinable()) return;
   impl_->shared.events.unsubscribe(impl_->subscription);
+  // Stopping the I/O context abandons every pending operation; destroying their handlers with
+  // the context releases the sessions, whose destructors close the sockets.
   asio::post(impl_->shared.io, [impl = impl_.get()] {
     beast::error_code ec;
     impl->acceptor.close(ec);
-    auto sessions = impl->shared.sessions;
-    for (const auto& s : sessions) s->close();
+    impl->shared.io.stop();
   });
-  // Posted after the closes, so they run first; then run() returns without waiting for peers.
-  asio::post(impl_->shared.io, [impl = impl_.get()] { impl->shared.io.stop(); });
   impl_->thread.join();
   impl_->shared.sessions.clear();
 }

@@ -18,6 +18,12 @@ struct WsOptions {
   std::size_t max_queued_frames = 64;
 };
 
+struct WsStats {
+  std::size_t sessions = 0;
+  std::size_t frames_dropped = 0;  // oldest frames dropped for clients that did not keep up
+  std::size_t frames_queued = 0;
+};
+
 class WsServer {
  public:
   WsServer(WsOptions options, EventHub& events);
@@ -28,6 +34,8 @@ class WsServer {
   void start();        // serves on a background I/O thread
   void stop();         // closes every connection and joins the thread
   [[nodiscard]] int port() const { return port_; }
+  // Counters read on the I/O thread (the server must be started).
+  WsStats stats();
 
  private:
   struct Impl;
