@@ -301,4 +301,25 @@ Json DynamicScene::to_json() const {
           {"residents", residents}, {"initial", initial}, {"events", events}};
 }
 
+Json to_json(const ResidentProfile& profile) {
+  return {{"persona", to_json(profile.persona)}, {"schedule", to_json(profile.schedule)}, {"activity_db", to_json(profile.activity_db)}};
+}
+
+Result<ResidentProfile> resident_profile_from_json(const Json& json, const HouseholdKnowledge& knowledge, const std::string& pointer) {
+  if (!json.is_object() || !json.contains("persona") || !json.contains("schedule") || !json.contains("activity_db"))
+    return fail(ErrorCode::kValidation, "invalid resident profile", {FieldError{pointer, "must have persona, schedule and activity_db", {}, 0, 0}});
+  auto persona = persona_from_json(json["persona"], pointer + "/persona");
+  if (!persona) return tl::unexpected(persona.error());
+  auto schedule = schedule_from_json(json["schedule"], knowledge, pointer + "/schedule");
+  if (!schedule) return tl::unexpected(schedule.error());
+  auto db = activity_db_from_json(json["activity_db"], knowledge);
+  if (!db) {
+    auto e = db.error();
+    for (auto& f : e.errors) f.pointer = pointer + "/activity_db" + f.pointer;
+    return tl::unexpected(e);
+  }
+  return ResidentProfile{std::move(*persona), std::move(*schedule), std::move(*db)};
+}
+
 }  // namespace socsim::household
+

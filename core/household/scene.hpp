@@ -130,6 +130,30 @@ class OfflineHintGenerator final : public HintGenerator {
   Result<Hint> hint(const HintQuery& query) override;
 };
 
+// A hint read as where the object is now (paper 000 §VI-A(c)): the event it refers to and the
+// probability of each receptacle of the house (entity indices; they sum to 1).
+struct HintInterpretation {
+  std::string activity, room;
+  std::vector<std::pair<int, double>> receptacles;
+};
+struct HintInterpretationQuery {
+  const House* house = nullptr;
+  std::string object;  // type, e.g. "Mug"
+  std::string hint;    // what the resident said
+  Seconds time = 0;
+  Weekday first_day = Weekday::kWednesday;
+};
+class HintInterpreter {
+ public:
+  virtual ~HintInterpreter() = default;
+  virtual Result<HintInterpretation> interpret(const HintInterpretationQuery& query) = 0;
+};
+
+// A resident profile as JSON ({persona, schedule, activity_db}) and back, validated.
+Json to_json(const ResidentProfile& profile);
+Result<ResidentProfile> resident_profile_from_json(const Json& json, const HouseholdKnowledge& knowledge,
+                                                   const std::string& pointer = "");
+
 // "RemoteControl" → "remote control".
 std::string object_words(std::string_view type);
 

@@ -982,4 +982,57 @@ Result<DayPlan> day_plan_from_json(const Json& json, const std::string& pointer)
   return plan;
 }
 
+Result<Schedule> schedule_from_json(const Json& json, const HouseholdKnowledge& knowledge, const std::string& pointer) {
+  JsonChecker check;
+  Schedule s;
+  if (!json.is_object()) {
+    check.add(pointer, "must be an object with persona_id, first_day, days, plans and entries");
+    return tl::unexpected(check.error("invalid schedule"));
+  }
+  if (auto v = check.string(json, pointer, "persona_id", true, 1, 80)) s.persona_id = *v;
+  if (auto v = check.string(json, pointer, "first_day", true, 3, 12)) {
+    if (auto wd = parse_weekday(*v)) s.first_day = *wd;
+    else check.add(JsonChecker::child(pointer, "first_day"), "must be a weekday name");
+  }
+  if (auto v = check.integer(json, pointer, "days", true, 1, 366)) s.days = static_cast<int>(*v);
+  if (const Json* plans = check.array(json, pointer, "plans", true, 366))
+    for (std::size_t i = 0; i < plans->size(); ++i) {
+      auto plan = day_plan_from_json((*plans)[i], JsonChecker::child(JsonChecker::child(pointer, "plans"), i));
+      if (!plan) {
+        for (const auto& f : plan.error().errors) check.add(f.pointer, f.message);
+        continue;
+      }
+      s.plans.push_back(std::move(*plan));
+    }
+  int cursor = 0;
+  if (const Json* entries = check.array(json, pointer, "entries", true, 200000))
+    for (std::size_t i = 0; i < entries->size(); ++i) {
+      const Json& e = (*entries)[i];
+      const std::string ptr = JsonChecker::child(JsonChecker::child(pointer, "entries"), i);
+      ScheduleEntry en;
+      auto start = check.integer(e, ptr, "start", true, 0, 366LL * 86400);
+      auto end = check.integer(e, ptr, "end", true, 1, 366LL * 86400);
+      if (start && end) {
+        if (*start % 60 != 0 || *end % 60 != 0) check.add(ptr, "start and end must be whole minutes");
+        en.start = static_cast<int>(*start / 60);
+        en.end = static_cast<int>(*end / 60);
+        if (en.start != cursor) check.add(JsonChecker::child(ptr, "start"), "must be " + std::to_string(cursor * 60) + " (entries are contiguous)");
+        if (en.end <= en.start) check.add(JsonChecker::child(ptr, "end"), "must be after start");
+        cursor = en.end;
+      }
+      if (auto v = check.string(e, ptr, "activity", true, 1, 120)) en.name = *v;
+      if (auto v = check.string(e, ptr, "primary", true, 1, 120)) en.primary = *v;
+      if (auto v = check.string(e, ptr, "role", true, 1, 40)) {
+        if (auto role = parse_activity_role(*v)) en.role = *role;
+        else check.add(JsonChecker::child(ptr, "role"), "unknown activity role");
+      }
+      en.activity = knowledge.activity_index(en.primary);
+      s.entries.push_back(std::move(en));
+    }
+  if (check.ok() && cursor != s.days * 1440)
+    check.add(JsonChecker::child(pointer, "entries"), "must end at " + std::to_string(s.days * 86400) + " (the end of the last day)");
+  if (!check.ok()) return tl::unexpected(check.error("invalid schedule"));
+  return s;
+}
+
 }  // namespace socsim::household

@@ -131,6 +131,9 @@ std::vector<ScheduleIssue> check_schedule(const Schedule& schedule, const Person
 Json to_json(const Schedule& schedule);
 Json to_json(const DayPlan& plan);
 Result<DayPlan> day_plan_from_json(const Json& json, const std::string& pointer = "");
+// Reads a schedule written by to_json (stored households); entries must tile [0, days·86400)
+// in whole minutes, roles must be known; errors are named by JSON pointer below `pointer`.
+Result<Schedule> schedule_from_json(const Json& json, const HouseholdKnowledge& knowledge, const std::string& pointer = "");
 std::string format_minutes(int minutes_of_day);  // "07:30"
 
 }  // namespace socsim::household

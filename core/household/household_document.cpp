@@ -1,0 +1,249 @@
+#include "core/household/household_document.hpp"
+
+#include <algorithm>
+
+#include "core/common/json_check.hpp"
+#include "core/common/rng.hpp"
+#include "core/common/sha256.hpp"
+#include "core/household/procthor.hpp"
+
+namespace socsim::household {
+
+Result<HouseholdRequest> household_request_from_json(const Json& json) {
+  JsonChecker check;
+  HouseholdRequest r;
+  if (!json.is_object()) {
+    check.add("", "must be an object with rooms or house, residents, days, start_weekday, seed and generator");
+    return tl::unexpected(check.error("invalid household request"));
+  }
+  check.only_keys(json, "", {"rooms", "house", "residents", "days", "start_weekday", "seed", "generator", "model"});
+  const bool has_rooms = json.contains("rooms"), has_house = json.contains("house");
+  if (has_rooms == has_house) check.add(has_rooms ? "/house" : "/rooms", has_rooms ? "give rooms or house, not both" : "give rooms (1-10) or a ProcTHOR house");
+  if (auto v = check.integer(json, "", "rooms", false, 1, 10)) r.rooms = static_cast<int>(*v);
+  if (has_house) {
+    if (!json["house"].is_object()) check.add("/house", "must be a ProcTHOR house object");
+    else r.house = json["house"];
+  }
+  if (json.contains("residents")) {
+    const Json& res = json["residents"];
+    if (res.is_number_integer()) {
+      const auto n = res.get<std::int64_t>();
+      if (n < 0 || n > 4) check.add("/residents", "must be 0 (chosen by bedrooms) to 4");
+      else r.resident_count = static_cast<int>(n);
+    } else if (res.is_array()) {
+      if (res.empty() || res.size() > 4) check.add("/residents", "must list 1 to 4 persona ids");
+      for (std::size_t i = 0; i < res.size(); ++i) {
+        if (!res[i].is_string() || res[i].get_ref<const std::string&>().empty() || res[i].get_ref<const std::string&>().size() > 80)
+          check.add("/residents/" + std::to_string(i), "must be a persona id");
+        else if (std::find(r.resident_ids.begin(), r.resident_ids.end(), res[i].get<std::string>()) != r.resident_ids.end())
+          check.add("/residents/" + std::to_string(i), "is listed twice");
+        else
+          r.resident_ids.push_back(res[i].get<std::string>());
+      }
+      r.resident_count = static_cast<int>(r.resident_ids.size());
+    } else {
+      check.add("/residents", "must be a count (0-4) or a list of persona ids");
+    }
+  }
+  if (auto v = check.integer(json, "", "days", false, 1, 28)) r.days = static_cast<int>(*v);
+  if (auto v = check.string(json, "", "start_weekday", false, 3, 12)) {
+    if (auto wd = parse_weekday(*v)) r.start_weekday = *wd;
+    else check.add("/start_weekday", "must be a weekday name (Monday … Sunday)");
+  }
+  if (auto v = check.integer(json, "", "seed", false, 0, INT64_MAX)) r.seed = static_cast<std::uint64_t>(*v);
+  if (auto v = check.string(json, "", "generator", false, 1, 20)) {
+    if (*v != "offline" && *v != "llm") check.add("/generator", "must be offline or llm");
+    else r.generator = *v;
+  }
+  if (auto v = check.string(json, "", "model", false, 1, 200)) r.model = *v;
+  if (!check.ok()) return tl::unexpected(check.error("invalid household request"));
+  return r;
+}
+
+Json to_json(const HouseholdRequest& r) {
+  Json j = Json::object();
+  if (r.house) j["house"] = *r.house;
+  else j["rooms"] = r.rooms;
+  if (!r.resident_ids.empty()) j["residents"] = r.resident_ids;
+  else j["residents"] = r.resident_count;
+  j["days"] = r.days;
+  j["start_weekday"] = weekday_name(r.start_weekday);
+  j["seed"] = r.seed;
+  j["generator"] = r.generator;
+  if (r.model) j["model"] = *r.model;
+  return j;
+}
+
+Result<House> household_house(const HouseholdRequest& r, const HouseholdKnowledge& knowledge) {
+  if (r.house) {
+    auto h = import_procthor(*r.house, knowledge, "house");
+    if (!h) {
+      auto e = h.error();
+      for (auto& f : e.errors) f.pointer = "/house" + f.pointer;
+      return tl::unexpected(e);
+    }
+    return h;
+  }
+  return generate_house({r.rooms, std::nullopt, r.seed}, knowledge);
+}
+
+std::string household_id(const HouseholdRequest& request, std::string_view salt) {
+  return "hh_" + sha256_hex(canonical_json(to_json(request)) + "|" + std::string(salt)).substr(0, 20);
+}
+
+Result<HouseholdDocument> generate_household(const HouseholdRequest& request, const HouseholdKnowledge& knowledge,
+                                             std::span<const Persona> personas, const ProfileGenerators& gens,
+                                             const HouseholdProgress& progress, const std::string& id) {
+  auto house = household_house(request, knowledge);
+  if (!house) return tl::unexpected(house.error());
+  const auto bedrooms = static_cast<int>(house->rooms_of(RoomType::kBedroom).size());
+  const int most = std::min(4, bedrooms);
+  if (most < 1) return fail(ErrorCode::kValidation, "the house has no bedroom", {FieldError{request.house ? "/house" : "/rooms", "needs at least one bedroom", {}, 0, 0}});
+
+  Rng rng(request.seed, fnv1a64("household"));
+  std::vector<Persona> chosen;
+  if (!request.resident_ids.empty()) {
+    if (static_cast<int>(request.resident_ids.size()) > most)
+      return fail(ErrorCode::kValidation, "more residents than bedrooms",
+                  {FieldError{"/residents", "this house has room for " + std::to_string(most) + " (one bedroom each)", {}, 0, 0}});
+    JsonChecker check;
+    for (std::size_t i = 0; i < request.resident_ids.size(); ++i) {
+      auto it = std::find_if(personas.begin(), personas.end(), [&](const Persona& p) { return persona_id(p) == request.resident_ids[i]; });
+      if (it == personas.end()) check.add("/residents/" + std::to_string(i), "no persona '" + request.resident_ids[i] + "'");
+      else chosen.push_back(*it);
+    }
+    if (!check.ok()) return tl::unexpected(check.error("unknown persona"));
+  } else {
+    if (request.resident_count > most)
+      return fail(ErrorCode::kValidation, "more residents than bedrooms",
+                  {FieldError{"/residents", "this house has room for 1 to " + std::to_string(most) + " (one bedroom each)", {}, 0, 0}});
+    const int n = request.resident_count > 0 ? request.resident_count : static_cast<int>(rng.between(1, most));
+    std::vector<const Persona*> pool;
+    for (const auto& p : knowledge.personas) pool.push_back(&p);
+    if (pool.empty()) return fail(ErrorCode::kValidation, "no personas to choose residents from");
+    rng.shuffle(pool);
+    for (int i = 0; i < n && i < static_cast<int>(pool.size()); ++i) chosen.push_back(*pool[static_cast<std::size_t>(i)]);
+  }
+
+  HouseholdDocument doc;
+  doc.id = id;
+  doc.request = request;
+  doc.scene_seed = rng.next_u64() >> 1;
+  OfflineDayPlanner offline_planner(knowledge);
+  OfflineDecomposer offline_decomposer(knowledge);
+  OfflineActivityDatabaseGenerator offline_db(knowledge);
+  DayPlanGenerator& planner = gens.planner ? *gens.planner : offline_planner;
+  ScheduleDecomposer& decomposer = gens.decomposer ? *gens.decomposer : offline_decomposer;
+  ActivityDatabaseGenerator& dbgen = gens.activity_db ? *gens.activity_db : offline_db;
+  auto vocabulary = ActivityVocabulary::initial(knowledge);
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    if (progress) progress(0.05 + 0.9 * static_cast<double>(i) / static_cast<double>(chosen.size()), "schedule of " + chosen[i].name);
+    const ScheduleRequest sr{request.days, request.start_weekday, request.seed ^ fnv1a64(persona_id(chosen[i]))};
+    auto schedule = generate_schedule(chosen[i], sr, planner, decomposer, vocabulary);
+    if (!schedule) return tl::unexpected(schedule.error());
+    if (progress) progress(0.05 + 0.9 * (static_cast<double>(i) + 0.5) / static_cast<double>(chosen.size()), "activity database of " + chosen[i].name);
+    auto db = dbgen.generate(chosen[i], primaries_of(*schedule), sr.seed);
+    if (!db) return tl::unexpected(db.error());
+    doc.residents.push_back(std::make_shared<const ResidentProfile>(ResidentProfile{chosen[i], std::move(*schedule), std::move(*db)}));
+  }
+  if (auto scene = instantiate_household(doc, knowledge); !scene) return tl::unexpected(scene.error());
+  if (progress) progress(1.0, "scene configured");
+  return doc;
+}
+
+Result<DynamicScene> instantiate_household(const HouseholdDocument& doc, const HouseholdKnowledge& knowledge) {
+  auto house = household_house(doc.request, knowledge);
+  if (!house) return tl::unexpected(house.error());
+  house->id = doc.id;
+  auto shared = std::make_shared<const House>(std::move(*house));
+  return configure_scene(shared, doc.residents, {static_cast<int>(doc.residents.size()), doc.scene_seed}, knowledge);
+}
+
+Json to_json(const HouseholdDocument& doc) {
+  Json residents = Json::array();
+  for (const auto& r : doc.residents) residents.push_back(to_json(*r));
+  return {{"format", "socsim.household/1"}, {"id", doc.id}, {"request", to_json(doc.request)}, {"scene_seed", doc.scene_seed},
+          {"residents", residents}};
+}
+
+Result<HouseholdDocument> household_document_from_json(const Json& json, const HouseholdKnowledge& knowledge) {
+  if (!json.is_object() || json.value("format", "") != "socsim.household/1")
+    return fail(ErrorCode::kValidation, "not a household document", {FieldError{"/format", "must be socsim.household/1", {}, 0, 0}});
+  HouseholdDocument doc;
+  doc.id = json.value("id", "");
+  if (doc.id.rfind("hh_", 0) != 0) return fail(ErrorCode::kValidation, "invalid household document", {FieldError{"/id", "must start with hh_", {}, 0, 0}});
+  auto request = household_request_from_json(json.value("request", Json::object()));
+  if (!request) {
+    auto e = request.error();
+    for (auto& f : e.errors) f.pointer = "/request" + f.pointer;
+    return tl::unexpected(e);
+  }
+  doc.request = std::move(*request);
+  if (!json.contains("scene_seed") || !json["scene_seed"].is_number_unsigned())
+    return fail(ErrorCode::kValidation, "invalid household document", {FieldError{"/scene_seed", "must be a non-negative integer", {}, 0, 0}});
+  doc.scene_seed = json["scene_seed"].get<std::uint64_t>();
+  if (!json.contains("residents") || !json["residents"].is_array() || json["residents"].empty())
+    return fail(ErrorCode::kValidation, "invalid household document", {FieldError{"/residents", "must list the residents' profiles", {}, 0, 0}});
+  for (std::size_t i = 0; i < json["residents"].size(); ++i) {
+    auto p = resident_profile_from_json(json["residents"][i], knowledge, "/residents/" + std::to_string(i));
+    if (!p) return tl::unexpected(p.error());
+    doc.residents.push_back(std::make_shared<const ResidentProfile>(std::move(*p)));
+  }
+  return doc;
+}
+
+Status store_household(store::Store& store, const HouseholdDocument& doc, const Json& summary, const std::string& author,
+                       const std::optional<std::string>& job_id) {
+  const std::string body = to_json(doc).dump();
+  return store.write([&](store::Database& db) -> Status {
+    auto ins = db.prepare(
+        "INSERT INTO households(id, job_id, author, generator, summary, document) VALUES (?, ?, ?, ?, ?, ?) "
+        "ON CONFLICT(id) DO NOTHING");
+    if (!ins) return tl::unexpected(ins.error());
+    ins->bind(1, doc.id).bind(2, job_id).bind(3, author).bind(4, doc.request.generator).bind(5, summary.dump()).bind(6, body);
+    return ins->run();
+  });
+}
+
+Result<Json> load_household_document(store::Store& store, const std::string& id) {
+  return store.read([&](store::Database& db) -> Result<Json> {
+    auto st = db.prepare("SELECT document FROM households WHERE id = ?");
+    if (!st) return tl::unexpected(st.error());
+    st->bind(1, id);
+    auto row = st->step();
+    if (!row) return tl::unexpected(row.error());
+    if (!*row) return fail(ErrorCode::kNotFound, "no household '" + id + "'");
+    auto j = parse_json_untrusted(st->text(0));
+    if (!j) return fail(ErrorCode::kStore, "household '" + id + "' is stored as invalid JSON");
+    return std::move(*j);
+  });
+}
+
+Result<std::vector<HouseholdRow>> list_households(store::Store& store, std::size_t limit, const std::optional<std::string>& after_id) {
+  return store.read([&](store::Database& db) -> Result<std::vector<HouseholdRow>> {
+    auto st = db.prepare(after_id ? "SELECT id, job_id, author, generator, summary, created_at FROM households WHERE rowid < "
+                                    "(SELECT rowid FROM households WHERE id = ?) ORDER BY rowid DESC LIMIT ?"
+                                  : "SELECT id, job_id, author, generator, summary, created_at FROM households ORDER BY rowid DESC LIMIT ?");
+    if (!st) return tl::unexpected(st.error());
+    if (after_id) st->bind(1, *after_id).bind(2, static_cast<std::int64_t>(limit));
+    else st->bind(1, static_cast<std::int64_t>(limit));
+    std::vector<HouseholdRow> out;
+    for (;;) {
+      auto row = st->step();
+      if (!row) return tl::unexpected(row.error());
+      if (!*row) break;
+      HouseholdRow r;
+      r.id = st->text(0);
+      r.job_id = st->optional_text(1);
+      r.author = st->text(2);
+      r.generator = st->text(3);
+      auto s = parse_json_untrusted(st->text(4));
+      r.summary = s ? *s : Json::object();
+      r.created_at = st->text(5);
+      out.push_back(std::move(r));
+    }
+    return out;
+  });
+}
+
+}  // namespace socsim::household
