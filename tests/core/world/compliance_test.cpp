@@ -1,0 +1,175 @@
+// Compliance reports: every retrieved constraint appears once with its value, requirement,
+// status and source; failures name the element; geometry of clear widths and inscribed circles.
+#include "core/world/compliance.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/world/world_yaml.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace socsim::world {
+namespace {
+
+using ::testing::HasSubstr;
+
+class Compliance : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    store_ = store::Store::open(dir_.file("kb.db")).value();
+    kb_ = std::make_unique<knowledge::KnowledgeBase>(*store_);
+  }
+  std::vector<knowledge::MergedConstraint> constraints(const std::string& type) { return kb_->constraints_for(type).value(); }
+  static const ComplianceCheck& check(const ComplianceReport& r, const std::string& name) {
+    for (const auto& c : r.checks)
+      if (c.name == name) return c;
+    throw std::runtime_error("no check " + name);
+  }
+
+  socsim::testing::TempDir dir_;
+  std::unique_ptr<store::Store> store_;
+  std::unique_ptr<knowledge::KnowledgeBase> kb_;
+};
+
+// A small clinic: one patient room below the 15 m² of HBN 03-01, a 2 m corridor (below the
+// 2.438 m of IBC 1020.2), doors of 1.0 m (below IBC 1010.1.1's 1.054 m for I-2).
+const char* kClinic = R"(name: "clinic"
+zones:
+  - {name: "lobby", type: "lobby", polygon: [[0, 0], [6, 0], [6, 8], [0, 8]]}
+  - {name: "corridor", type: "corridor", polygon: [[6, 0], [8, 0], [8, 8], [6, 8]]}
+  - {name: "room_a", type: "patient_room", polygon: [[8, 0], [11.5, 0], [11.5, 4], [8, 4]]}
+  - {name: "room_b", type: "patient_room", polygon: [[8, 4], [13, 4], [13, 8], [8, 8]]}
+doors:
+  - {name: "entrance", pose: [0, 4], width: 1.8, connects: ["lobby"]}
+  - {name: "lobby_corridor", pose: [6, 4], width: 1.2, connects: ["lobby", "corridor"]}
+  - {name: "door_a", pose: [8, 2], width: 1.0, connects: ["corridor", "room_a"]}
+  - {name: "door_b", pose: [8, 6], width: 1.2, connects: ["corridor", "room_b"]}
+)";
+
+TEST_F(Compliance, EveryConstraintIsReportedOnceWithItsSource) {
+  const World w = world_from_yaml(kClinic).value();
+  const auto cs = constraints("hospital");
+  const ComplianceReport r = check_compliance(w, "hospital", cs);
+  ASSERT_EQ(r.checks.size(), cs.size());
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    EXPECT_EQ(r.checks[i].name, cs[i].constraint.name);
+    EXPECT_EQ(r.checks[i].ref_id, cs[i].ref_id);
+    EXPECT_FALSE(r.checks[i].section.empty()) << r.checks[i].name;
+    EXPECT_FALSE(r.checks[i].detail.empty()) << r.checks[i].name;
+  }
+  EXPECT_FALSE(r.passed);
+
+  const auto& room = check(r, "patient_bedroom_area");
+  EXPECT_EQ(room.status, CheckStatus::kFail);
+  EXPECT_EQ(room.ref_id, "hbn0301_patient_bedroom");
+  EXPECT_DOUBLE_EQ(room.required, 15.0);
+  EXPECT_DOUBLE_EQ(*room.value, 14.0);
+  EXPECT_EQ(room.element, "room_a");
+  EXPECT_EQ(room.checked, 2u);
+  ASSERT_EQ(room.failures.size(), 1u);
+
+  const auto& corridor = check(r, "corridor_clear_width");
+  EXPECT_EQ(corridor.status, CheckStatus::kFail);
+  EXPECT_DOUBLE_EQ(*corridor.value, 2.0);
+  EXPECT_EQ(corridor.element, "corridor");
+
+  const auto& door = check(r, "door_clear_width");
+  EXPECT_EQ(door.status, CheckStatus::kFail);
+  ASSERT_EQ(door.failures.size(), 1u);
+  EXPECT_EQ(door.failures[0].element, "door_a");
+  EXPECT_EQ(door.ref_id, "ibc2018_1010_door_i2");
+  EXPECT_THAT(door.section, HasSubstr("1010.1.1"));
+
+  // Travel distance: from the far corner of room_b to the entrance, well under 61 m.
+  const auto& travel = check(r, "exit_access_travel_distance");
+  EXPECT_EQ(travel.status, CheckStatus::kPass);
+  EXPECT_GT(*travel.value, 12.0);
+  EXPECT_LT(*travel.value, 25.0);
+
+  const auto& walls = check(r, "ceiling_height");
+  EXPECT_EQ(walls.status, CheckStatus::kPass);
+  EXPECT_DOUBLE_EQ(*walls.value, 3.0);
+
+  const Json j = to_json(r);
+  EXPECT_EQ(j["passed"], false);
+  EXPECT_EQ(j["summary"]["fail"].get<int>(), static_cast<int>(r.failures().size()));
+  EXPECT_EQ(j["checks"].size(), cs.size());
+}
+
+TEST_F(Compliance, OccupantLoadDrivesTheEgressWidth) {
+  const World w = world_from_yaml(kClinic).value();
+  const ComplianceReport r = check_compliance(w, "hospital", constraints("hospital"));
+  // Lobby 48 m² at 1 m²/person (waiting), rooms 14 + 20 m² at 11.148 m²/person (sleeping).
+  EXPECT_DOUBLE_EQ(r.occupant_load, 48 + 2 + 2);
+  const auto& egress = check(r, "egress_width_per_occupant");
+  EXPECT_EQ(egress.status, CheckStatus::kPass);
+  EXPECT_NEAR(egress.required, 52 * 0.00508, 1e-9);
+  EXPECT_DOUBLE_EQ(*egress.value, 1.8);
+  EXPECT_EQ(check(r, "occupant_load_factor_waiting").status, CheckStatus::kUsed);
+}
+
+TEST_F(Compliance, DwellingRulesUseBedroomsAndTheirSizes) {
+  const char* flat = R"(zones:
+  - {name: "hall", type: "hallway", polygon: [[0, 0], [1.2, 0], [1.2, 8], [0, 8]]}
+  - {name: "bed_1", type: "bedroom", polygon: [[1.2, 0], [5.2, 0], [5.2, 3], [1.2, 3]]}
+  - {name: "bed_2", type: "bedroom", polygon: [[1.2, 3], [3.2, 3], [3.2, 8], [1.2, 8]]}
+doors:
+  - {name: "front", pose: [0.6, 0], width: 0.9, connects: ["hall"]}
+  - {name: "d1", pose: [1.2, 1.5], width: 0.85, connects: ["hall", "bed_1"]}
+  - {name: "d2", pose: [1.2, 5.5], width: 0.85, connects: ["hall", "bed_2"]}
+)";
+  const World w = world_from_yaml(flat).value();
+  const ComplianceReport r = check_compliance(w, "residential", constraints("residential"));
+  // bed_1 (12 m², main) passes the double-bedroom area; bed_2 is 2 m wide, below 2.15 m.
+  EXPECT_EQ(check(r, "bedroom_double_area").status, CheckStatus::kPass);
+  EXPECT_EQ(check(r, "bedroom_double_area").element, "bed_1");
+  const auto& width = check(r, "bedroom_single_min_width");
+  EXPECT_EQ(width.status, CheckStatus::kFail);
+  EXPECT_EQ(width.element, "bed_2");
+  EXPECT_DOUBLE_EQ(*width.value, 2.0);
+  // Two bedrooms, one double: a 2b3p dwelling of 31.6 m² against 61 m²; the other rows do not apply.
+  EXPECT_EQ(check(r, "dwelling_gia_2b3p").status, CheckStatus::kFail);
+  EXPECT_NEAR(*check(r, "dwelling_gia_2b3p").value, 9.6 + 12 + 10, 1e-9);
+  EXPECT_EQ(check(r, "dwelling_gia_1b2p").status, CheckStatus::kNotApplicable);
+  EXPECT_EQ(check(r, "built_in_storage_2b").status, CheckStatus::kFail);
+  EXPECT_EQ(check(r, "built_in_storage_3b").status, CheckStatus::kNotApplicable);
+  EXPECT_EQ(check(r, "escape_opening_area").status, CheckStatus::kNotChecked);
+  EXPECT_EQ(check(r, "stair_clear_width").status, CheckStatus::kNotApplicable);
+  const DwellingRequirement need = dwelling_requirement(constraints("residential"), std::vector<double>{12.0, 10.0});
+  EXPECT_DOUBLE_EQ(need.gross_internal_area, 61.0);
+  EXPECT_DOUBLE_EQ(need.storage_area, 2.0);
+}
+
+TEST_F(Compliance, RequirementsForGeneratorsFollowTheConstraints) {
+  const auto h = constraints("hospital");
+  EXPECT_DOUBLE_EQ(room_requirement(h, "patient_room", false).min_area, 15.0);
+  EXPECT_DOUBLE_EQ(room_requirement(h, "corridor", false).min_dimension, 2.438);
+  const PlanRequirement p = plan_requirement(h, "hospital");
+  EXPECT_DOUBLE_EQ(p.door_width, 1.054);
+  EXPECT_DOUBLE_EQ(p.corridor_width, 2.438);
+  EXPECT_DOUBLE_EQ(p.travel_distance, 60.96);
+  const auto r = constraints("residential");
+  EXPECT_DOUBLE_EQ(room_requirement(r, "bedroom", true).min_area, 11.5);
+  EXPECT_DOUBLE_EQ(room_requirement(r, "bedroom", false).min_area, 7.5);
+  EXPECT_DOUBLE_EQ(room_requirement(r, "bedroom", true).min_dimension, 2.75);
+  EXPECT_DOUBLE_EQ(plan_requirement(r, "residential").public_door_width, 0.813);
+}
+
+TEST(ComplianceGeometry, ClearWidthAndInscribedCircleOfPolygons) {
+  const Polygon rect{{{0, 0}, {5, 0}, {5, 2}, {0, 2}}, {}};
+  EXPECT_DOUBLE_EQ(clear_width(rect), 2.0);
+  EXPECT_DOUBLE_EQ(inscribed_diameter(rect), 2.0);
+  // A rotated 1.5 m wide rectangle.
+  const Polygon rotated{{{0, 0}, {3, 3}, {1.9393398282201788, 4.060660171779821}, {-1.0606601717798212, 1.0606601717798212}}, {}};
+  EXPECT_NEAR(clear_width(rotated), 1.5, 1e-6);
+  // An L-shaped corridor: arms 1.2 m and 2.4 m wide; the narrow arm decides.
+  const Polygon ell{{{0, 0}, {10, 0}, {10, 1.2}, {2.4, 1.2}, {2.4, 8}, {0, 8}}, {}};
+  EXPECT_NEAR(clear_width(ell), 1.2, 0.01);
+  EXPECT_NEAR(inscribed_diameter(ell), 2.4, 0.01);
+  // A room with a 0.8 m neck between two halls.
+  const Polygon neck{{{0, 0}, {4, 0}, {4, 1.6}, {6, 1.6}, {6, 0}, {10, 0}, {10, 4}, {6, 4}, {6, 2.4}, {4, 2.4}, {4, 4}, {0, 4}}, {}};
+  EXPECT_NEAR(clear_width(neck), 0.8, 0.01);
+}
+
+}  // namespace
+}  // namespace socsim::world
