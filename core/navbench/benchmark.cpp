@@ -146,6 +146,29 @@ Result<ResidentPool> make_resident_pool(const household::HouseholdKnowledge& kno
   return pool;
 }
 
+Result<household::HouseholdKnowledge> load_benchmark_knowledge(store::Store& store) {
+  auto knowledge = household::load_household_knowledge(store);
+  if (!knowledge) return tl::unexpected(knowledge.error());
+  auto posted = household::list_stored_personas(store, false);
+  if (!posted) return tl::unexpected(posted.error());
+  std::erase_if(knowledge->personas, [&](const household::Persona& p) {
+    return std::any_of(posted->begin(), posted->end(), [&](const household::Persona& q) { return household::persona_id(q) == household::persona_id(p); });
+  });
+  knowledge->index();
+  return knowledge;
+}
+
+Result<BenchmarkInputs> prepare_inputs(const household::HouseholdKnowledge& knowledge, const BenchmarkRequest& request, int threads) {
+  BenchmarkInputs in;
+  auto pool = make_resident_pool(knowledge, request.seed);
+  if (!pool) return tl::unexpected(pool.error());
+  in.pool = std::move(*pool);
+  auto counts = count_training_placements(knowledge, request.training_houses, request.training_seed, threads);
+  if (!counts) return tl::unexpected(counts.error());
+  in.counts = std::make_shared<const PlacementCounts>(std::move(*counts));
+  return in;
+}
+
 std::uint64_t test_scene_seed(std::uint64_t seed, Split split, int index) {
   std::uint64_t state = seed ^ fnv1a64(split == Split::kNormal ? "navbench/test/normal" : "navbench/test/hard") ^
                         (static_cast<std::uint64_t>(index) * 0x9E3779B97F4A7C15ULL);

@@ -55,6 +55,19 @@ using ResidentPool = std::vector<std::shared_ptr<const household::ResidentProfil
 // Wednesday, as the paper's five days) and activity database.
 Result<ResidentPool> make_resident_pool(const household::HouseholdKnowledge& knowledge, std::uint64_t seed, int days = 5);
 
+// The household knowledge with only the built-in personas: personas posted later must not change
+// the residents, or the same seed would give another table.
+Result<household::HouseholdKnowledge> load_benchmark_knowledge(store::Store& store);
+
+// What a run needs besides the request: the resident pool (from the seed) and the scene-prior
+// counts (from the training seed).
+struct BenchmarkInputs {
+  ResidentPool pool;
+  std::shared_ptr<const PlacementCounts> counts;
+};
+Result<BenchmarkInputs> prepare_inputs(const household::HouseholdKnowledge& knowledge, const BenchmarkRequest& request,
+                                       int threads = 2);
+
 // A test scene: the house, its dynamic scene and its navigation map.
 struct TestScene {
   std::uint64_t seed = 0;  // never a training seed
