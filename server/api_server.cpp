@@ -21,8 +21,10 @@ bool is_write(const std::string& method) {
 }
 
 bool json_content_type(const std::string& ct) {
+  // YAML is accepted too: POST /api/v1/worlds/validate takes a world.yaml text.
   return ct.empty() || ct.rfind("application/json", 0) == 0 || ct.rfind("application/problem+json", 0) == 0 ||
-         (ct.find("+json") != std::string::npos);
+         (ct.find("+json") != std::string::npos) || ct.rfind("application/yaml", 0) == 0 ||
+         ct.rfind("text/yaml", 0) == 0;
 }
 
 std::mutex& log_mutex() {

@@ -1,0 +1,347 @@
+// /api/v1/worlds: floor plans from a scene graph or a prompt (offline at once, LLM as a job),
+// stored as world.yaml with their compliance report and knowledge provenance; exports to SDF,
+// pedsim_ros, ROS map and SVG; validation of a posted world.yaml.
+#include "core/common/ids.hpp"
+#include "core/common/sha256.hpp"
+#include "core/knowledge/building_type.hpp"
+#include "core/world/floorplan_llm.hpp"
+#include "core/world/floorplan_request.hpp"
+#include "core/world/world_document.hpp"
+#include "core/world/world_export.hpp"
+#include "core/world/world_yaml.hpp"
+#include "server/http_util.hpp"
+#include "server/routes.hpp"
+
+namespace socsim::server {
+namespace {
+
+using store::Database;
+
+constexpr const char* kWorldPath = R"(/api/v1/worlds/(wld_[0-9a-z]{20}|[^/]+))";
+constexpr std::string_view kCursorPrefix = "w1.";
+
+std::string base64(std::string_view bytes) {
+  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const auto b = [&](std::size_t k) { return i + k < bytes.size() ? static_cast<unsigned char>(bytes[i + k]) : 0u; };
+    const unsigned v = (b(0) << 16) | (b(1) << 8) | b(2);
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kAlphabet[v & 63] : '=';
+  }
+  return out;
+}
+
+struct StoredWorld {
+  std::string id, name, domain, generator, author, created_at, world_yaml, content_hash;
+  std::int64_t seed = 0;
+  Json request, scene_graph, compliance, provenance;
+};
+
+constexpr const char* kColumns =
+    "id, name, domain, generator, seed, author, request, scene_graph, world_yaml, compliance, provenance, content_hash, "
+    "created_at";
+
+StoredWorld row(store::Statement& st) {
+  StoredWorld w;
+  w.id = st.text(0);
+  w.name = st.text(1);
+  w.domain = st.text(2);
+  w.generator = st.text(3);
+  w.seed = st.int64(4);
+  w.author = st.text(5);
+  w.request = Json::parse(st.text(6));
+  w.scene_graph = Json::parse(st.text(7));
+  w.world_yaml = st.text(8);
+  w.compliance = Json::parse(st.text(9));
+  w.provenance = Json::parse(st.text(10));
+  w.content_hash = st.text(11);
+  w.created_at = st.text(12);
+  return w;
+}
+
+Json summary(const StoredWorld& w) {
+  return Json{{"id", w.id},
+              {"name", w.name},
+              {"domain", w.domain},
+              {"generator", w.generator},
+              {"seed", w.seed},
+              {"author", w.author},
+              {"created_at", w.created_at},
+              {"compliant", w.compliance.value("passed", false)},
+              {"links",
+               {{"self", "/api/v1/worlds/" + w.id},
+                {"world_yaml", "/api/v1/worlds/" + w.id + "/world.yaml"},
+                {"export", "/api/v1/worlds/" + w.id + "/export?format={sdf|pedsim|map|map-pgm|map-yaml|svg}"}}}};
+}
+
+// Stores a generated plan; returns its id.
+Result<StoredWorld> store_world(store::Store& db, const world::FloorPlan& plan, const Json& request,
+                                const std::string& author, const std::string& generator, std::uint64_t seed) {
+  StoredWorld w;
+  w.id = random_id("wld_");
+  w.name = plan.world.name();
+  w.domain = plan.scene_graph.domain;
+  w.generator = generator;
+  w.seed = static_cast<std::int64_t>(seed);
+  w.author = author;
+  w.request = request;
+  w.scene_graph = world::to_json(plan.scene_graph);
+  w.world_yaml = world::world_to_yaml(plan.world);
+  w.compliance = world::to_json(plan.compliance);
+  w.provenance = plan.provenance;
+  w.content_hash = sha256_hex(w.world_yaml);
+  w.created_at = utc_now_rfc3339();
+  auto s = db.write([&](Database& d) -> Status {
+    auto st = d.prepare(std::string("INSERT INTO worlds (") + kColumns + ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?)");
+    if (!st) return tl::unexpected(st.error());
+    st->bind(1, w.id).bind(2, w.name).bind(3, w.domain).bind(4, w.generator).bind(5, w.seed).bind(6, w.author);
+    st->bind(7, canonical_json(w.request)).bind(8, canonical_json(w.scene_graph)).bind(9, w.world_yaml);
+    st->bind(10, canonical_json(w.compliance)).bind(11, canonical_json(w.provenance)).bind(12, w.content_hash);
+    st->bind(13, w.created_at);
+    return st->run();
+  });
+  if (!s) return tl::unexpected(s.error());
+  return w;
+}
+
+Result<StoredWorld> load_world(store::Store& db, const std::string& id) {
+  return db.read([&](Database& d) -> Result<StoredWorld> {
+    auto st = d.prepare(std::string("SELECT ") + kColumns + " FROM worlds WHERE id = ?");
+    if (!st) return tl::unexpected(st.error());
+    st->bind(1, id);
+    auto r = st->step();
+    if (!r) return tl::unexpected(r.error());
+    if (!*r) return fail(ErrorCode::kNotFound, "no world with id '" + id + "'");
+    return row(*st);
+  });
+}
+
+// The stored text always built before it was stored; a failure here is a broken invariant.
+Result<world::World> world_of(const StoredWorld& w) {
+  auto world = world::world_from_yaml(w.world_yaml);
+  if (!world) return fail(ErrorCode::kInternal, "stored world '" + w.id + "' no longer validates: " + world.error().message());
+  return world;
+}
+
+Json world_json(const StoredWorld& w, const world::World& world) {
+  Json j = summary(w);
+  j["world"] = world::world_to_document(world);
+  j["compliance"] = w.compliance;
+  j["provenance"] = w.provenance;
+  j["scene_graph"] = w.scene_graph;
+  j["request"] = w.request;
+  j["content_hash"] = w.content_hash;
+  return j;
+}
+
+Result<std::vector<knowledge::MergedConstraint>> constraints(RouteContext& ctx, const std::string& domain,
+                                                            const std::string& jurisdiction) {
+  return ctx.knowledge.constraints_for(domain, jurisdiction);
+}
+
+Status llm_available(const RouteContext& ctx) {
+  if (ctx.llm) return {};
+  return fail(ErrorCode::kValidation,
+              "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
+              {FieldError{"/generator", "must be offline on this server", {}, 0, 0}});
+}
+
+// Building type for checking a posted world: ?domain=, else classified from zone names and types.
+Result<std::string> domain_for(const httplib::Request& req, const world::World& w) {
+  if (auto d = query(req, "domain")) {
+    if (!knowledge::is_building_type(*d))
+      return fail(ErrorCode::kValidation, "unknown building type", {{"", "not a building type: '" + *d + "'", "domain", 0, 0}});
+    return *d;
+  }
+  std::vector<std::string> names;
+  for (const auto& z : w.zones()) names.push_back(z.name + " " + z.type);
+  return knowledge::classify_building_type(names).type;
+}
+
+void world_routes(httplib::Server& http, RouteContext& ctx) {
+  const std::size_t max_body = ctx.config.max_body_bytes;
+
+  post_with_body(http, "/api/v1/worlds", max_body, [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+    auto body = json_body(text);
+    if (!body) return reply_problem(res, body.error(), req.path);
+    auto request = world::floor_plan_request_from_json(*body);
+    if (!request) return reply_problem(res, request.error(), req.path);
+    auto resolved = world::resolve_scene_graph(*request);
+    if (!resolved) return reply_problem(res, resolved.error(), req.path);
+    auto cs = constraints(ctx, resolved->graph.domain, request->jurisdiction);
+    if (!cs) return reply_problem(res, cs.error(), req.path);
+
+    if (request->generator == "offline") {
+      world::OfflineOptions o;
+      o.seed = request->seed;
+      auto plan = world::generate_floor_plan(resolved->graph, *cs, o);
+      if (!plan) return reply_problem(res, plan.error(), req.path);
+      plan->provenance["classification"] = resolved->classification;
+      auto w = store_world(ctx.store, *plan, *body, ctx.author(req), "offline", request->seed);
+      if (!w) return reply_problem(res, w.error(), req.path);
+      ctx.events.publish("worlds", {{"type", "world.created"}, {"world", summary(*w)}});
+      res.set_header("Location", "/api/v1/worlds/" + w->id);
+      Json out = summary(*w);
+      out["compliance"] = w->compliance;
+      return reply_json(res, 201, out);
+    }
+
+    if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+    const std::string author = ctx.author(req);
+    auto id = ctx.jobs.submit(
+        "world.generate", *body, author,
+        [&ctx, request = *request, resolved = *resolved, cs = *cs, body = *body, author](const JobContext& job) -> Result<Json> {
+          llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
+          job.progress(0.0, "asking the LLM for a " + resolved.graph.domain + " floor plan of " +
+                                std::to_string(resolved.graph.rooms.size()) + " rooms");
+          world::LlmFloorPlanOptions o;
+          o.model = request.model;
+          o.seed = static_cast<std::int64_t>(request.seed);
+          o.job_id = job.id();
+          o.cancel = job.cancel_token();
+          auto plan = world::generate_floor_plan_llm(gen, request.prompt.value_or(""), resolved.graph, cs, o);
+          if (!plan) return tl::unexpected(plan.error());
+          plan->provenance["classification"] = resolved.classification;
+          auto w = store_world(ctx.store, *plan, body, author, "llm", request.seed);
+          if (!w) return tl::unexpected(w.error());
+          ctx.events.publish("worlds", {{"type", "world.created"}, {"world", summary(*w)}});
+          return Json{{"world_id", w->id}, {"location", "/api/v1/worlds/" + w->id}, {"compliant", w->compliance["passed"]}};
+        });
+    if (!id) return reply_problem(res, id.error(), req.path);
+    auto job = ctx.jobs.get(*id);
+    if (!job) return reply_problem(res, job.error(), req.path);
+    res.set_header("Location", "/api/v1/jobs/" + *id);
+    reply_json(res, 202, *job);
+  });
+
+  http.Get("/api/v1/worlds", [&ctx](const httplib::Request& req, httplib::Response& res) {
+    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
+                          static_cast<std::int64_t>(ctx.config.max_page_size));
+    if (!size) return reply_problem(res, size.error(), req.path);
+    std::optional<std::int64_t> before;
+    if (auto cursor = query(req, "cursor")) {
+      const std::string digits = cursor->rfind(kCursorPrefix, 0) == 0 ? cursor->substr(kCursorPrefix.size()) : "";
+      if (digits.empty() || digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
+        return reply_problem(res, Error(ErrorCode::kBadRequest, "the cursor is not one this server issued",
+                                        {{"", "use next_cursor from a previous page", "cursor", 0, 0}}), req.path);
+      before = std::stoll(digits);
+    }
+    const auto domain = query(req, "domain");
+    std::string sql = std::string("SELECT ") + kColumns + ", seq FROM worlds WHERE 1";
+    if (before) sql += " AND seq < :before";
+    if (domain) sql += " AND domain = :domain";
+    sql += " ORDER BY seq DESC LIMIT :limit";
+    auto page = ctx.store.read([&](Database& d) -> Result<Json> {
+      auto st = d.prepare(sql);
+      if (!st) return tl::unexpected(st.error());
+      int i = 1;
+      if (before) st->bind(i++, *before);
+      if (domain) st->bind(i++, *domain);
+      st->bind(i, *size + 1);
+      Json items = Json::array();
+      Json next = nullptr;
+      std::int64_t last = 0;
+      for (;;) {
+        auto r = st->step();
+        if (!r) return tl::unexpected(r.error());
+        if (!*r) break;
+        if (static_cast<std::int64_t>(items.size()) == *size) {
+          next = std::string(kCursorPrefix) + std::to_string(last);
+          break;
+        }
+        last = st->int64(13);
+        items.push_back(summary(row(*st)));
+      }
+      return Json{{"items", std::move(items)}, {"next_cursor", next}};
+    });
+    if (!page) return reply_problem(res, page.error(), req.path);
+    reply_json(res, 200, *page);
+  });
+
+  http.Get(kWorldPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+    auto w = load_world(ctx.store, req.matches[1].str());
+    if (!w) return reply_problem(res, w.error(), req.path);
+    auto world = world_of(*w);
+    if (!world) return reply_problem(res, world.error(), req.path);
+    res.set_header("ETag", "\"" + w->content_hash + "\"");
+    reply_json(res, 200, world_json(*w, *world));
+  });
+
+  http.Get(std::string(kWorldPath) + "/world.yaml", [&ctx](const httplib::Request& req, httplib::Response& res) {
+    auto w = load_world(ctx.store, req.matches[1].str());
+    if (!w) return reply_problem(res, w.error(), req.path);
+    res.set_header("ETag", "\"" + w->content_hash + "\"");
+    res.set_header("Content-Disposition", "inline; filename=\"" + w->id + ".world.yaml\"");
+    res.set_content(w->world_yaml, "application/yaml");
+  });
+
+  http.Get(std::string(kWorldPath) + "/export", [&ctx](const httplib::Request& req, httplib::Response& res) {
+    const auto format = query(req, "format");
+    static const std::vector<std::string> kFormats = {"sdf", "pedsim", "map", "map-pgm", "map-yaml", "svg"};
+    if (!format || std::find(kFormats.begin(), kFormats.end(), *format) == kFormats.end())
+      return reply_problem(res, Error(ErrorCode::kValidation, "choose an export format",
+                                      {{"", "one of sdf, pedsim, map, map-pgm, map-yaml, svg", "format", 0, 0}}), req.path);
+    auto w = load_world(ctx.store, req.matches[1].str());
+    if (!w) return reply_problem(res, w.error(), req.path);
+    auto world = world_of(*w);
+    if (!world) return reply_problem(res, world.error(), req.path);
+    const std::string file = w->id;
+    auto attach = [&](const std::string& name) { res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\""); };
+    if (*format == "sdf") {
+      attach(file + ".sdf");
+      return res.set_content(world::export_sdf(*world), "application/xml");
+    }
+    if (*format == "pedsim") {
+      attach(file + ".pedsim.xml");
+      return res.set_content(world::export_pedsim(*world), "application/xml");
+    }
+    if (*format == "svg") return res.set_content(world::export_svg(*world), "image/svg+xml");
+    world::RosMapOptions mo;
+    mo.image_file = file + ".pgm";
+    const world::RosMap map = world::export_ros_map(*world, mo);
+    if (*format == "map-pgm") {
+      attach(mo.image_file);
+      return res.set_content(map.pgm, "image/x-portable-graymap");
+    }
+    if (*format == "map-yaml") {
+      attach(file + ".yaml");
+      return res.set_content(map.yaml, "application/yaml");
+    }
+    reply_json(res, 200, {{"image_file", mo.image_file}, {"pgm_base64", base64(map.pgm)}, {"yaml", map.yaml}});
+  });
+
+  post_with_body(http, "/api/v1/worlds/validate", max_body, [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+    auto world = world::world_from_yaml(text);
+    if (!world) {
+      // Everything wrong with the posted document is a validation finding, syntax included.
+      Error e = world.error();
+      if (e.code == ErrorCode::kBadRequest) e.code = ErrorCode::kValidation;
+      return reply_problem(res, e, req.path);
+    }
+    auto domain = domain_for(req, *world);
+    if (!domain) return reply_problem(res, domain.error(), req.path);
+    auto cs = constraints(ctx, *domain, query(req, "jurisdiction").value_or(""));
+    if (!cs) return reply_problem(res, cs.error(), req.path);
+    const world::ComplianceReport report = world::check_compliance(*world, *domain, *cs);
+    reply_json(res, 200, {{"valid", true},
+                          {"name", world->name()},
+                          {"zones", world->zones().size()},
+                          {"doors", world->doors().size()},
+                          {"walls", world->walls().size()},
+                          {"rois", world->rois().size()},
+                          {"entities", world->entities().size()},
+                          {"area", world->area()},
+                          {"compliance", world::to_json(report)},
+                          {"knowledge", world::knowledge_provenance(*cs)}});
+  });
+}
+
+}  // namespace
+
+SOCSIM_ROUTES("worlds", world_routes);
+
+}  // namespace socsim::server
