@@ -447,7 +447,8 @@ Result<Json> replay_task(const BenchmarkRequest& request, int index, const house
       Json path = Json::array({pose_json(map, task.start)});
       for (int p : e.path) path.push_back(pose_json(map, p));
       Json visited = Json::array();
-      for (int r : e.visited) visited.push_back(map.receptacles()[static_cast<std::size_t>(r)].id);
+      for (std::size_t v = 0; v < e.visited.size(); ++v)
+        visited.push_back({{"receptacle", map.receptacles()[static_cast<std::size_t>(e.visited[v])].id}, {"step", e.visited_at[v]}});
       per_method[methods()[m].key] = {{"success", e.success}, {"steps", e.steps}, {"spl", e.spl}, {"path", path}, {"visited", visited}};
     }
     const auto& rec = map.receptacles()[static_cast<std::size_t>(task.target_receptacle)];

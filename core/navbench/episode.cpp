@@ -59,7 +59,10 @@ EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<
       out.success = observe(pose);
       if (out.success || out.steps >= spec.max_steps) break;
     }
-    if (pose == view_of[k]) out.visited.push_back(candidates[k].receptacle);
+    if (pose == view_of[k]) {
+      out.visited.push_back(candidates[k].receptacle);
+      out.visited_at.push_back(out.steps);
+    }
   }
   if (out.success && out.shortest >= 0) {
     const int longer = std::max(out.shortest, out.steps);

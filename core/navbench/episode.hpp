@@ -24,6 +24,7 @@ struct EpisodeResult {
   double spl = 0.0;           // success · shortest / max(shortest, steps)
   std::vector<int> path;      // pose after every action
   std::vector<int> visited;   // receptacles the planner chose and reached, in order
+  std::vector<int> visited_at;  // the step at which each was reached
 };
 
 // Fewest actions from `start` to any pose that sees the receptacle, −1 when none is reachable.

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "tests/core/navbench/navbench_fixture.hpp"
@@ -175,6 +176,16 @@ TEST(Benchmark, AnEpisodeReplaysWithItsPathAndVisits) {
     EXPECT_EQ(e["success"], r->outcomes.back()[m].success);
     EXPECT_EQ(e["path"].size(), e["steps"].get<std::size_t>() + 1);
     EXPECT_EQ(e["path"][0], j["start"]);
+    // Each visit ends where the agent stands within 1.5 m of that receptacle.
+    for (const auto& v : e["visited"]) {
+      const int step = v["step"];
+      ASSERT_LE(step, e["steps"].get<int>());
+      const auto& recs = j["house"]["receptacles"];
+      const auto rec = std::find_if(recs.begin(), recs.end(), [&](const Json& x) { return x["id"] == v["receptacle"]; });
+      ASSERT_NE(rec, recs.end());
+      const auto& at = e["path"][static_cast<std::size_t>(step)];
+      EXPECT_LE(std::hypot(at[0].get<double>() - (*rec)["x"].get<double>(), at[1].get<double>() - (*rec)["z"].get<double>()), 1.5 + 1e-9);
+    }
   }
   auto beyond = replay_task(request, static_cast<int>(r->tasks.size()), knowledge(), small_pool(), small_counts());
   ASSERT_FALSE(beyond);
