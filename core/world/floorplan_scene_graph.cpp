@@ -135,7 +135,7 @@ std::vector<std::string> words_of(std::string_view text) {
 
 bool is_stop(std::string_view w) {
   return w == "and" || w == "with" || w == "or" || w == "plus" || w == "a" || w == "an" || w == "the" ||
-         w == "of" || w == "for" || w == "in" || w == "has" || w == "have";
+         w == "for" || w == "in" || w == "has" || w == "have";
 }
 bool is_negation(std::string_view w) { return w == "no" || w == "not" || w == "without" || w == "non"; }
 

@@ -1,9 +1,17 @@
 // socsim-bench world: build + validate a 10-room plan (GEOS checks, derived walls, reachability
-// grid), a 256 x 256 geodesic field, and a world.yaml read/write round trip; p50/p95 in ms.
+// grid), a 256 x 256 geodesic field, a world.yaml read/write round trip, and offline floor-plan
+// generation of a 10-room hospital plan (layout, furnishing, validation, compliance); p50/p95 in ms.
+#include <unistd.h>
+
 #include <chrono>
 #include <ctime>
+#include <filesystem>
 #include <string>
 #include <vector>
+
+#include "core/knowledge/knowledge_base.hpp"
+#include "core/store/store.hpp"
+#include "core/world/floorplan_offline.hpp"
 
 #include "core/world/geodesic.hpp"
 #include "core/world/occupancy_grid.hpp"
@@ -37,6 +45,8 @@ WorldBuilder ten_room_plan() {
   b.add_roi(Roi{"waiting_zone", "waiting_zone", {{{14, 5.2}, {19, 5.2}, {19, 6.8}, {14, 6.8}}, {}}});
   return b;
 }
+
+int floor_plans(int runs);
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return socsim::bench::seconds_since(t0) * 1e3;
@@ -120,9 +130,62 @@ int run(const socsim::bench::Args& a) {
                        {"bytes", yaml.size()},
                        {"p50_ms", socsim::bench::percentile(yaml_ms, 50)},
                        {"p95_ms", socsim::bench::percentile(yaml_ms, 95)}});
-  return 0;
+  return floor_plans(runs);
+}
+
+// Offline generation of a 10-room hospital plan (lobby, corridor, 3 patient rooms, nurse station,
+// 2 treatment rooms, 2 toilets), one seed per run, against the seeded knowledge store.
+int floor_plans(int runs) {
+  const auto db = std::filesystem::temp_directory_path() / ("socsim-bench-world-" + std::to_string(::getpid()) + ".db");
+  int status = 0;
+  {
+    auto store = socsim::store::Store::open(db.string());
+    if (!store) {
+      std::cerr << store.error().message() << "\n";
+      return 1;
+    }
+    socsim::knowledge::KnowledgeBase kb(**store);
+    const auto constraints = kb.constraints_for("hospital").value();
+    const SceneGraph graph = room_program("hospital", {{"patient_room", 3}});
+    std::vector<double> gen_ms;
+    std::vector<double> gen_cpu;
+    double attempts = 0;
+    std::size_t entities = 0;
+    for (int i = 0; i < runs; ++i) {
+      OfflineOptions o;
+      o.seed = static_cast<std::uint64_t>(i + 1);
+      const auto t0 = std::chrono::steady_clock::now();
+      const double c0 = thread_cpu_ms();
+      auto plan = generate_floor_plan(graph, constraints, o);
+      gen_cpu.push_back(thread_cpu_ms() - c0);
+      gen_ms.push_back(ms_since(t0));
+      if (!plan || !plan->compliance.passed) {
+        std::cerr << (plan ? "plan not compliant" : plan.error().message()) << "\n";
+        status = 1;
+        break;
+      }
+      attempts += plan->provenance["attempts"].get<double>();
+      entities += plan->world.entities().size();
+    }
+    if (status == 0)
+      socsim::bench::emit({{"bench", "floor_plan_offline_10_rooms"},
+                           {"runs", runs},
+                           {"zones", graph.rooms.size()},
+                           {"constraints", constraints.size()},
+                           {"mean_attempts", attempts / runs},
+                           {"mean_entities", static_cast<double>(entities) / runs},
+                           {"p50_ms", socsim::bench::percentile(gen_ms, 50)},
+                           {"p95_ms", socsim::bench::percentile(gen_ms, 95)},
+                           {"cpu_p50_ms", socsim::bench::percentile(gen_cpu, 50)},
+                           {"cpu_p95_ms", socsim::bench::percentile(gen_cpu, 95)}});
+  }
+  std::error_code ec;
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix, ec);
+  return status;
 }
 
 }  // namespace
 
-SOCSIM_BENCH("world", "world build+validate (10 rooms), 256x256 geodesic field, world.yaml round trip", run);
+SOCSIM_BENCH("world",
+             "world build+validate (10 rooms), 256x256 geodesic field, world.yaml round trip, offline 10-room floor plan",
+             run);

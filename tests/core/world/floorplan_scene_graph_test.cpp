@@ -100,7 +100,7 @@ TEST(SceneGraph, PromptNumbersAndRoomWordsAreHonoured) {
   EXPECT_EQ(count_type(office->graph, "meeting_room"), 4);
   EXPECT_EQ(count_type(office->graph, "kitchenette"), 1);  // programme rooms stay; negation only drops additions
 
-  auto given = scene_graph_from_prompt("two toilets", std::string("canteen"));
+  auto given = scene_graph_from_prompt("a couple of toilets", std::string("canteen"));
   ASSERT_TRUE(given);
   EXPECT_EQ(given->graph.domain, "canteen");
   EXPECT_EQ(count_type(given->graph, "toilet"), 2);
