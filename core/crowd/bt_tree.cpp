@@ -678,7 +678,9 @@ const std::vector<BtBuiltinNode>& bt_builtin_nodes() {
       {"ReactiveFallback", K::kControl, {}, make<ReactiveNode>(false)},
       {"Parallel", K::kControl, {in("success_count", T::kInt, "-1"), in("failure_count", T::kInt, "1")},
        make<ParallelNode>()},
-      {"SubTree", K::kSubTree, {}, make<SubTreeNode>()},
+      // SubTree's attributes are read by the loader (ID, _autoremap, remappings); the ports are
+      // listed for the node library's description.
+      {"SubTree", K::kSubTree, {in("ID", T::kString), in("_autoremap", T::kBool, "false")}, make<SubTreeNode>()},
       {"Inverter", K::kDecorator, {}, make<InverterNode>()},
       {"Repeat", K::kDecorator, {in("num_cycles", T::kInt)}, make<LoopNode>(true)},
       {"RetryUntilSuccessful", K::kDecorator, {in("num_attempts", T::kInt)}, make<LoopNode>(false)},
