@@ -13,7 +13,7 @@ namespace {
 
 constexpr const char* kUsage =
     "  navbench --split normal|hard --scenes 50 --seed S [--out FILE]   object-goal navigation benchmark (Table I shape)\n"
-    "           [--tasks-per-scene 10] [--max-steps 200] [--training-houses 2000] [--threads 2] [--episodes]\n";
+    "           [--tasks-per-scene 10] [--max-steps 200] [--training-houses 10000] [--threads 2] [--episodes]\n";
 
 // An integer option within [lo, hi]; prints the problem and returns nullopt when it is not one.
 std::optional<std::int64_t> int_option(const CliArgs& a, const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) {
@@ -46,7 +46,7 @@ int navbench_command(const std::vector<std::string>& args) {
   const auto seed = int_option(a, "--seed", 0, 0, INT64_MAX);
   const auto tasks = int_option(a, "--tasks-per-scene", 10, 1, 50);
   const auto steps = int_option(a, "--max-steps", 200, 1, 5000);
-  const auto training = int_option(a, "--training-houses", 2000, 1, 20000);
+  const auto training = int_option(a, "--training-houses", 10000, 1, 20000);
   const auto threads = int_option(a, "--threads", 2, 1, 64);
   if (!scenes || !seed || !tasks || !steps || !training || !threads) return 2;
   request.scenes = static_cast<int>(*scenes);

@@ -32,7 +32,7 @@ struct BenchmarkRequest {
   int instants = 2;
   int max_steps = 200;
   household::Seconds recent = household::kSecondsPerDay;  // "recently moved": within this before the instant
-  int training_houses = 2000;       // static houses the scene prior is counted on
+  int training_houses = 10000;      // static houses the scene prior is counted on (as ProcTHOR-10k)
   std::uint64_t training_seed = 1;  // their seeds lie in the other half of the range (is_training_seed)
   double alpha = 0.5;               // OSG
   double hint_trust = 0.85;

@@ -22,6 +22,7 @@ struct GenerativeModel {
   std::shared_ptr<const household::House> house;
   std::vector<household::Resident> residents;
 };
+// Borrows the scene's house: the scene must outlive the model.
 GenerativeModel generative_model_of(const household::DynamicScene& scene);
 
 struct EstimateQuery {

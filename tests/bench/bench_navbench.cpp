@@ -17,7 +17,7 @@ int run_navbench(const bench::Args& a) {
   const auto scenes = static_cast<int>(a.integer("scenes", 50));
   const auto seed = static_cast<std::uint64_t>(a.integer("seed", 1));
   const auto threads = static_cast<int>(std::max<std::int64_t>(1, a.integer("threads", 2)));
-  const auto training = static_cast<int>(a.integer("training-houses", 2000));
+  const auto training = static_cast<int>(a.integer("training-houses", 10000));
   const std::string db = a.str("db", (std::filesystem::temp_directory_path() / ("socsim-bench-navbench-" + std::to_string(::getpid()) + ".db")).string());
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -74,7 +74,7 @@ int run_navbench(const bench::Args& a) {
   return 0;
 }
 
-SOCSIM_BENCH("navbench", "object-goal navigation benchmark, both splits: [--scenes 50] [--seed 1] [--threads 2] [--training-houses 2000] [--db FILE]",
+SOCSIM_BENCH("navbench", "object-goal navigation benchmark, both splits: [--scenes 50] [--seed 1] [--threads 2] [--training-houses 10000] [--db FILE]",
              run_navbench);
 
 }  // namespace
