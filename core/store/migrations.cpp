@@ -8,6 +8,18 @@
 
 namespace socsim::store {
 
+const std::map<std::string, std::string>& embedded_migration_files();  // generated from migrations/*.sql
+
+const std::vector<Migration>& embedded_migrations() {
+  static const std::vector<Migration> all = [] {
+    std::vector<Migration> v;
+    for (const auto& [name, sql] : embedded_migration_files()) v.push_back(migration_from_file(name, sql));
+    std::sort(v.begin(), v.end(), [](const Migration& a, const Migration& b) { return a.version < b.version; });
+    return v;
+  }();
+  return all;
+}
+
 Migration migration_from_file(const std::string& file_name, std::string sql) {
   Migration m;
   m.sql = std::move(sql);
