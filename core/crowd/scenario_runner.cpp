@@ -201,9 +201,10 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
         continue;
       }
     } else {
+      // A thin inflation: the field is a coarse guide (the social force keeps agents off walls);
+      // narrow passages must stay open at the field's resolution.
       const world::OccupancyGrid grid = world::OccupancyGrid::rasterise(
-          *world, world::GridOptions{options.environment.navigation_resolution, options.environment.navigation_inflation,
-                                     options.environment.navigation_max_cells});
+          *world, world::GridOptions{options.environment.navigation_resolution, 0.15, options.environment.navigation_max_cells});
       VelocityField::GeodesicSpec spec;
       spec.start = starts[g];
       spec.goal = goals;

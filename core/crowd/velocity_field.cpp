@@ -126,26 +126,72 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
   const double ch = bounds.height() / spec.height;
   static constexpr std::array<std::array<double, 2>, 5> kSamples = {
       {{0.5, 0.5}, {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}}};
+  // Per cell: 0 = no walkable sample (filled from neighbours below), 1 = vector, 2 = goal cell.
+  std::vector<std::uint8_t> kind(f.values_.size(), 0);
+  const auto at = [&](int i, int j) { return static_cast<std::size_t>(i) * static_cast<std::size_t>(spec.height) + static_cast<std::size_t>(j); };
   for (int i = 0; i < spec.width; ++i) {
     for (int j = 0; j < spec.height; ++j) {
       double sx = 0.0;
       double sy = 0.0;
+      bool goal = false;
       for (const auto& s : kSamples) {
         const world::Point p{bounds.min.x + (i + s[0]) * cw, bounds.min.y + (j + s[1]) * ch};
         const auto d = distance.descent(p);
-        if (!d) continue;  // blocked, unreachable or a goal cell
+        if (!d) {
+          const auto c = grid.cell_of(p);
+          goal = goal || (c && distance.at(*c) == 0.0f);
+          continue;
+        }
         sx += d->x;
         sy += d->y;
       }
       const double len = std::hypot(sx, sy);
-      if (len < 1e-9) continue;
-      double ux = sx / len;
-      double uy = sy / len;
+      if (len < 1e-9) {
+        kind[at(i, j)] = goal ? 2 : 0;
+        continue;
+      }
+      kind[at(i, j)] = 1;
+      f.values_[at(i, j)] = {sx / len, sy / len};
+    }
+  }
+  // Cells whose samples all fell next to a wall (blocked by the grid's inflation) take the mean
+  // direction of their neighbours, so an agent pressed against a wall still has a way to go.
+  for (int pass = 0; pass < 3; ++pass) {
+    std::vector<std::uint8_t> next = kind;
+    for (int i = 0; i < spec.width; ++i) {
+      for (int j = 0; j < spec.height; ++j) {
+        if (kind[at(i, j)] != 0) continue;
+        double sx = 0.0;
+        double sy = 0.0;
+        for (const auto& [di, dj] : std::array<std::pair<int, int>, 4>{{{-1, 0}, {1, 0}, {0, -1}, {0, 1}}}) {
+          const int ni = i + di;
+          const int nj = j + dj;
+          if (ni < 0 || nj < 0 || ni >= spec.width || nj >= spec.height || kind[at(ni, nj)] != 1) continue;
+          sx += f.values_[at(ni, nj)].x;
+          sy += f.values_[at(ni, nj)].y;
+        }
+        const double len = std::hypot(sx, sy);
+        if (len < 1e-9) continue;
+        f.values_[at(i, j)] = {sx / len, sy / len};
+        next[at(i, j)] = 1;
+      }
+    }
+    kind = std::move(next);
+  }
+  for (int i = 0; i < spec.width; ++i) {
+    for (int j = 0; j < spec.height; ++j) {
+      Vec2& v = f.values_[at(i, j)];
+      if (kind[at(i, j)] != 1) {
+        v = {};
+        continue;
+      }
+      double ux = v.x;
+      double uy = v.y;
       if (spec.variation > 0.0) {
         const double u = (i + 0.5) / spec.width;
-        const double v = (j + 0.5) / spec.height;
+        const double w = (j + 0.5) / spec.height;
         double angle = 0.0;
-        for (const Wave& w : waves) angle += w.a * std::sin(2.0 * std::numbers::pi * (w.fx * u + w.fy * v) + w.phase);
+        for (const Wave& wave : waves) angle += wave.a * std::sin(2.0 * std::numbers::pi * (wave.fx * u + wave.fy * w) + wave.phase);
         angle *= spec.variation / amplitude_sum;
         const double c = std::cos(angle);
         const double sn = std::sin(angle);
@@ -153,8 +199,7 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
         uy = sn * ux + c * uy;
         ux = rx;
       }
-      f.values_[static_cast<std::size_t>(i) * static_cast<std::size_t>(spec.height) + static_cast<std::size_t>(j)] = {
-          spec.speed * ux, spec.speed * uy};
+      v = {spec.speed * ux, spec.speed * uy};
     }
   }
   return f;

@@ -28,9 +28,9 @@ class VelocityField {
     std::uint64_t seed = 0;
   };
   // Each cell holds speed × the direction of steepest descent of the geodesic distance to the
-  // goal regions (sampled at up to five points of the cell, averaged over the walkable ones),
-  // turned by a smooth seeded angle field of amplitude `variation`; cells with no walkable
-  // point, or inside a goal region, hold zero. Errors (kValidation, pointer "/start/<k>" or
+  // goal regions (sampled at five points of the cell, averaged over the walkable ones), turned
+  // by a smooth seeded angle field of amplitude `variation`. Cells with no walkable sample take
+  // their neighbours' mean direction (up to three cells out); goal cells hold zero. Errors (kValidation, pointer "/start/<k>" or
   // "/goal/<k>"): empty or off-grid regions, a start region that cannot reach any goal.
   static Result<VelocityField> from_geodesic(const world::OccupancyGrid& grid, geometry::Box bounds,
                                              const GeodesicSpec& spec);
