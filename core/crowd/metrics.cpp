@@ -186,20 +186,13 @@ void MetricsRecorder::observe(double time, const std::vector<PedestrianState>& s
             closest_body = std::min(closest_body, d - ri - rj);
             if (d - ri - rj < 0.02) {
               ++tr.m.collisions;
-              if (is_robot) {
-                // SEAN 2.0 / HuNavSim: who moved into whom, from the bearing of each in the
-                // other's frame and their speeds.
-                const double alpha = std::atan2(-(p.x - q.x) * std::sin(o.pose.yaw) + (p.y - q.y) * std::cos(o.pose.yaw),
-                                                (p.x - q.x) * std::cos(o.pose.yaw) + (p.y - q.y) * std::sin(o.pose.yaw));
-                const double alpha2 = std::atan2((q.x - p.x) * std::cos(s.pose.yaw) + (q.y - p.y) * std::sin(s.pose.yaw),
-                                                 -(q.x - p.x) * std::sin(s.pose.yaw) + (q.y - p.y) * std::cos(s.pose.yaw));
-                const double vo = norm({o.twist.vx, o.twist.vy});
-                if (std::abs(alpha) < std::abs(alpha2)) ++robot_on_person_;
-                else if (std::abs(alpha) > std::abs(alpha2)) ++person_on_robot_;
-                else if (speed == vo) {
-                  ++robot_on_person_;
-                  ++person_on_robot_;
-                }
+              if (is_robot && d > 1e-9) {
+                // Who moved into whom: the one with the larger speed towards the other. (HuNavSim
+                // compares bearings with a swapped atan2; this is the rule it describes.)
+                const double robot_in = (v.x * (q.x - p.x) + v.y * (q.y - p.y)) / d;
+                const double person_in = (o.twist.vx * (p.x - q.x) + o.twist.vy * (p.y - q.y)) / d;
+                if (robot_in >= person_in) ++robot_on_person_;
+                if (person_in >= robot_in) ++person_on_robot_;
               }
             }
             if (d <= kForceRange) {

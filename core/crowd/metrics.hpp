@@ -46,7 +46,8 @@ struct RunMetrics {
   double avg_pedestrian_velocity = 0.0;  // m/s over every pedestrian and frame (robot excluded)
   std::vector<AgentMetrics> agents;      // pedestrians
   std::optional<AgentMetrics> robot;
-  // Robot only (HuNavSim's SEAN 2.0 split of collisions by who moved into whom).
+  // Robot only (HuNavSim's SEAN 2.0 split of collisions): robot on person when the robot's speed
+  // towards the person is the larger, person on robot when the person's is (both when equal).
   std::uint64_t robot_on_person_collisions = 0;
   std::uint64_t person_on_robot_collisions = 0;
 };
