@@ -1,6 +1,9 @@
 #include "core/household/household_document.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
 
 #include "core/common/json_check.hpp"
 #include "core/common/rng.hpp"
@@ -246,4 +249,120 @@ Result<std::vector<HouseholdRow>> list_households(store::Store& store, std::size
   });
 }
 
+namespace {
+
+Json point_json(double x, double z) { return {{"x", std::round(x * 1000.0) / 1000.0}, {"z", std::round(z * 1000.0) / 1000.0}}; }
+
+std::string room_id_of(const House& h, int room) { return room >= 0 ? h.rooms[static_cast<std::size_t>(room)].id : std::string(); }
+
+}  // namespace
+
+Json house_plan_json(const House& h) {
+  Json rooms = Json::array(), walls = Json::array(), doors = Json::array(), receptacles = Json::array();
+  for (const auto& r : h.rooms) {
+    Json floor = Json::array();
+    for (const auto& p : r.floor) floor.push_back(point_json(p.x, p.z));
+    rooms.push_back({{"id", r.id}, {"type", room_type_name(r.type)}, {"floor", floor}});
+  }
+  for (const auto& w : h.walls)
+    if (!w.empty && w.room_id != "exterior") walls.push_back({{"id", w.id}, {"room", w.room_id}, {"a", point_json(w.a.x, w.a.z)}, {"b", point_json(w.b.x, w.b.z)}});
+  for (const auto& d : h.doors) {
+    auto wall = std::find_if(h.walls.begin(), h.walls.end(), [&](const Wall& w) { return w.id == d.wall0; });
+    Json door = {{"id", d.id}, {"room0", d.room0}, {"room1", d.room1}, {"width", std::abs(d.hole_max.x - d.hole_min.x)}};
+    if (wall != h.walls.end()) {
+      const double dx = wall->b.x - wall->a.x, dz = wall->b.z - wall->a.z, len = std::hypot(dx, dz);
+      if (len > 0) {
+        const double along = (d.hole_min.x + d.hole_max.x) / 2.0;
+        door["center"] = point_json(wall->a.x + dx / len * along, wall->a.z + dz / len * along);
+        door["direction"] = point_json(dx / len, dz / len);
+      }
+    }
+    doors.push_back(std::move(door));
+  }
+  for (int idx : h.receptacles) {
+    const Entity& e = h.entities[static_cast<std::size_t>(idx)];
+    if (e.synthetic) continue;
+    receptacles.push_back({{"id", e.id}, {"type", e.type}, {"room", room_id_of(h, e.room)}, {"position", point_json(e.position.x, e.position.z)},
+                           {"size", {{"x", e.size_x}, {"z", e.size_z}}}, {"yaw", e.rotation.y}});
+  }
+  return {{"id", h.id}, {"rooms", rooms}, {"walls", walls}, {"doors", doors}, {"receptacles", receptacles}};
+}
+
+Json objects_at_json(const DynamicScene& scene, Seconds t) {
+  const House& h = scene.house();
+  const std::vector<int> at = scene.placement_at(t);
+  std::map<int, std::vector<std::size_t>> on;  // receptacle → objects on it, in object order
+  for (std::size_t o = 0; o < at.size(); ++o) on[at[o]].push_back(o);
+  Json objects = Json::array();
+  for (std::size_t o = 0; o < at.size(); ++o) {
+    const Entity& obj = h.entities[static_cast<std::size_t>(h.objects[o])];
+    const Entity& rec = h.entities[static_cast<std::size_t>(at[o])];
+    const auto& group = on[at[o]];
+    const auto k = static_cast<std::size_t>(std::find(group.begin(), group.end(), o) - group.begin());
+    // A small grid over the receptacle's footprint (synthetic floors: around the room's centre).
+    const std::size_t cols = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(group.size())))));
+    const double sx = std::max(0.2, rec.size_x) * 0.7, sz = std::max(0.2, rec.size_z) * 0.7;
+    const double fx = cols > 1 ? (static_cast<double>(k % cols) / static_cast<double>(cols - 1) - 0.5) : 0.0;
+    const double rows = std::ceil(static_cast<double>(group.size()) / static_cast<double>(cols));
+    const double fz = rows > 1 ? (static_cast<double>(k / cols) / (rows - 1) - 0.5) : 0.0;
+    const double yaw = rec.rotation.y * std::numbers::pi / 180.0;
+    const double lx = fx * sx, lz = fz * sz;
+    const double x = rec.position.x + lx * std::cos(yaw) + lz * std::sin(yaw), z = rec.position.z - lx * std::sin(yaw) + lz * std::cos(yaw);
+    objects.push_back({{"id", obj.id}, {"type", obj.type}, {"receptacle", rec.id}, {"receptacle_type", rec.type},
+                       {"room", room_id_of(h, rec.room)}, {"position", point_json(x, z)}});
+  }
+  return {{"t", t}, {"clock", format_clock(t, scene.first_day())}, {"objects", objects}};
+}
+
+Json event_json(const DynamicScene& scene, int index) {
+  const House& h = scene.house();
+  const SceneEvent& e = scene.events()[static_cast<std::size_t>(index)];
+  const ScheduleEntry& en = scene.entry(e);
+  Json moves = Json::array();
+  for (const auto& r : scene.relocations_between(e.end, e.end + 1))
+    if (r.event == index)
+      moves.push_back({{"object", h.entities[static_cast<std::size_t>(h.objects[static_cast<std::size_t>(r.object)])].id},
+                       {"from", h.entities[static_cast<std::size_t>(r.from)].id},
+                       {"to", h.entities[static_cast<std::size_t>(r.to)].id}});
+  return {{"index", index}, {"resident", e.resident}, {"start", e.start}, {"end", e.end},
+          {"clock", format_clock(e.start, scene.first_day()) + "-" + format_clock(e.end, scene.first_day()).substr(4)},
+          {"activity", en.name}, {"primary", en.primary}, {"role", activity_role_name(en.role)},
+          {"room", e.room >= 0 ? Json(room_id_of(h, e.room)) : Json(nullptr)}, {"relocations", moves}};
+}
+
+Json household_summary_json(const HouseholdDocument& doc, const DynamicScene& scene) {
+  const House& h = scene.house();
+  Json residents = Json::array(), schedules = Json::array();
+  for (std::size_t i = 0; i < scene.residents().size(); ++i) {
+    const Resident& r = scene.residents()[i];
+    const Persona& p = r.profile->persona;
+    residents.push_back({{"index", i}, {"persona_id", persona_id(p)}, {"name", p.name}, {"age", p.age}, {"gender", p.gender},
+                         {"occupation", p.occupation}, {"bedroom", r.bedroom >= 0 ? Json(room_id_of(h, r.bedroom)) : Json(nullptr)},
+                         {"bathroom", r.bathroom >= 0 ? Json(room_id_of(h, r.bathroom)) : Json(nullptr)},
+                         {"events", scene.events_of(static_cast<int>(i)).size()}});
+    Json entries = Json::array();
+    for (const auto& e : r.profile->schedule.entries)
+      entries.push_back({{"start", e.start * Seconds{60}}, {"end", e.end * Seconds{60}}, {"activity", e.name}, {"primary", e.primary},
+                         {"role", activity_role_name(e.role)}});
+    schedules.push_back({{"resident", i}, {"entries", entries}});
+  }
+  return {{"id", doc.id},
+          {"request", [&] {
+             Json r = to_json(doc.request);
+             if (r.contains("house")) r["house"] = "(ProcTHOR house)";
+             return r;
+           }()},
+          {"first_day", weekday_name(scene.first_day())},
+          {"days", doc.request.days},
+          {"end", scene.end()},
+          {"rooms", h.rooms.size()},
+          {"receptacles", h.receptacles.size()},
+          {"objects", h.objects.size()},
+          {"events", scene.events().size()},
+          {"relocations", scene.relocations().size()},
+          {"residents", residents},
+          {"schedules", schedules}};
+}
+
 }  // namespace socsim::household
+

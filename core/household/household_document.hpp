@@ -64,6 +64,16 @@ Result<HouseholdDocument> household_document_from_json(const Json& json, const H
 // A deterministic id for a request made by a job (or a CLI run).
 std::string household_id(const HouseholdRequest& request, std::string_view salt);
 
+// JSON views shared by the REST API, the CLI and the viewer.
+// Rooms (polygons), walls, doors (centre on the floor) and receptacles (position, footprint, yaw).
+Json house_plan_json(const House& house);
+// Every movable object at time t: its receptacle, room and a floor position on that receptacle
+// (objects sharing a receptacle are spread over its footprint, deterministically).
+Json objects_at_json(const DynamicScene& scene, Seconds t);
+Json event_json(const DynamicScene& scene, int event);
+// Residents (persona, bedroom, bathroom), their schedules (entries), counts of events and moves.
+Json household_summary_json(const HouseholdDocument& document, const DynamicScene& scene);
+
 // Rows of the `households` table.
 struct HouseholdRow {
   std::string id, author, generator, created_at;
