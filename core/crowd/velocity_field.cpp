@@ -126,6 +126,7 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
   const double ch = bounds.height() / spec.height;
   static constexpr std::array<std::array<double, 2>, 5> kSamples = {
       {{0.5, 0.5}, {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}}};
+  const bool fine = std::max(cw, ch) <= 2.0 * grid.resolution();
   // Per cell: 0 = no walkable sample (filled from neighbours below), 1 = vector, 2 = goal cell.
   std::vector<std::uint8_t> kind(f.values_.size(), 0);
   const auto at = [&](int i, int j) { return static_cast<std::size_t>(i) * static_cast<std::size_t>(spec.height) + static_cast<std::size_t>(j); };
@@ -134,8 +135,13 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
       double sx = 0.0;
       double sy = 0.0;
       bool goal = false;
-      for (const auto& s : kSamples) {
-        const world::Point p{bounds.min.x + (i + s[0]) * cw, bounds.min.y + (j + s[1]) * ch};
+      // Cells no larger than two routing cells read their centre only (the other samples would
+      // fall in the same routing cells); larger cells average five samples.
+      const std::size_t first = fine ? 1 : kSamples.size();
+      for (std::size_t k = 0; k < kSamples.size(); ++k) {
+        if (k >= first && (sx != 0.0 || sy != 0.0)) break;  // fine cells: others only if the centre fails
+        const auto& smp = kSamples[k];
+        const world::Point p{bounds.min.x + (i + smp[0]) * cw, bounds.min.y + (j + smp[1]) * ch};
         const auto d = distance.descent(p);
         if (!d) {
           const auto c = grid.cell_of(p);
@@ -178,6 +184,19 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
     }
     kind = std::move(next);
   }
+  std::vector<double> col_sin, col_cos, row_sin, row_cos;
+  for (const Wave& wave : waves) {
+    for (int i = 0; i < spec.width; ++i) {
+      const double x = 2.0 * std::numbers::pi * wave.fx * (i + 0.5) / spec.width + wave.phase;
+      col_sin.push_back(std::sin(x));
+      col_cos.push_back(std::cos(x));
+    }
+    for (int j = 0; j < spec.height; ++j) {
+      const double y = 2.0 * std::numbers::pi * wave.fy * (j + 0.5) / spec.height;
+      row_sin.push_back(std::sin(y));
+      row_cos.push_back(std::cos(y));
+    }
+  }
   for (int i = 0; i < spec.width; ++i) {
     for (int j = 0; j < spec.height; ++j) {
       Vec2& v = f.values_[at(i, j)];
@@ -188,10 +207,14 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
       double ux = v.x;
       double uy = v.y;
       if (spec.variation > 0.0) {
-        const double u = (i + 0.5) / spec.width;
-        const double w = (j + 0.5) / spec.height;
+        // sin(x_i + y_j) = sin x_i cos y_j + cos x_i sin y_j, with the per-column and per-row
+        // terms computed once.
         double angle = 0.0;
-        for (const Wave& wave : waves) angle += wave.a * std::sin(2.0 * std::numbers::pi * (wave.fx * u + wave.fy * w) + wave.phase);
+        for (std::size_t w = 0; w < waves.size(); ++w) {
+          const std::size_t ci = w * static_cast<std::size_t>(spec.width) + static_cast<std::size_t>(i);
+          const std::size_t rj = w * static_cast<std::size_t>(spec.height) + static_cast<std::size_t>(j);
+          angle += waves[w].a * (col_sin[ci] * row_cos[rj] + col_cos[ci] * row_sin[rj]);
+        }
         angle *= spec.variation / amplitude_sum;
         const double c = std::cos(angle);
         const double sn = std::sin(angle);
