@@ -36,7 +36,8 @@ void put(std::string& out, double v) {
   out.append(buf, ec == std::errc() ? ptr : buf);
 }
 
-std::optional<double> number_option(const CliArgs& a, const std::string& key, double fallback, double lo, double hi) {
+std::optional<double> number_option(const CliArgs& a, const std::string& key, double fallback, double lo,
+                                    double hi) {
   auto v = a.opt(key);
   if (!v) return fallback;
   double n = 0.0;
@@ -83,8 +84,8 @@ int simulate_command(const std::vector<std::string>& args) {
   auto runner = crowd::ScenarioRunner::create(&*world, *program, options);
   if (!runner) {
     for (const FieldError& f : runner.error().errors)
-      std::cerr << "  " << f.pointer << (f.line > 0 ? " line " + std::to_string(f.line) : std::string()) << ": "
-                << f.message << "\n";
+      std::cerr << "  " << f.pointer << (f.line > 0 ? " line " + std::to_string(f.line) : std::string())
+                << ": " << f.message << "\n";
     return cli_report(runner.error());
   }
 
@@ -134,8 +135,8 @@ int simulate_command(const std::vector<std::string>& args) {
   }
   const auto warnings = (*runner)->errors();
   for (const std::string& w : warnings) std::cerr << "socsim: warning: " << w << "\n";
-  std::cerr << "socsim: simulated " << (*runner)->agents().size() << " agents for " << (*runner)->time() << " s in "
-            << wall << " s; trajectories in " << *out_path << "\n";
+  std::cerr << "socsim: simulated " << (*runner)->agents().size() << " agents for " << (*runner)->time()
+            << " s in " << wall << " s; trajectories in " << *out_path << "\n";
   return 0;
 }
 

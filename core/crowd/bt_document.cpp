@@ -11,7 +11,8 @@ namespace socsim::crowd {
 
 BtRegistry BtRegistry::builtins() {
   BtRegistry r;
-  for (const BtBuiltinNode& n : bt_builtin_nodes()) (void)r.add(BtNodeType{n.name, n.kind, n.ports, n.factory, {}});
+  for (const BtBuiltinNode& n : bt_builtin_nodes())
+    (void)r.add(BtNodeType{n.name, n.kind, n.ports, n.factory, {}});
   return r;
 }
 
@@ -62,7 +63,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   for (std::size_t i = 1; i <= a.size(); ++i) {
     cur[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                        std::tolower(static_cast<unsigned char>(b[j - 1]));
       cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (same ? 0 : 1)});
     }
     std::swap(prev, cur);
@@ -84,7 +86,8 @@ std::string did_you_mean(std::string_view name, const std::vector<std::string>& 
 }
 
 std::optional<std::string> key_of(std::string_view text) {
-  if (text.size() >= 2 && text.front() == '{' && text.back() == '}') return std::string(text.substr(1, text.size() - 2));
+  if (text.size() >= 2 && text.front() == '{' && text.back() == '}')
+    return std::string(text.substr(1, text.size() - 2));
   return std::nullopt;
 }
 
@@ -135,7 +138,8 @@ class Loader {
         continue;
       }
       if (c.name != "BehaviorTree") {
-        error(file, c.line, c.column, "unexpected <" + c.name + "> in <root> (expected BehaviorTree, include or TreeNodesModel)");
+        error(file, c.line, c.column,
+              "unexpected <" + c.name + "> in <root> (expected BehaviorTree, include or TreeNodesModel)");
         continue;
       }
       const std::string* id = c.attribute("ID");
@@ -206,7 +210,8 @@ class Loader {
 
   void include(const XmlElement& c, const std::string& file, const std::filesystem::path& dir, int depth) {
     if (c.attribute("ros_pkg") != nullptr) {
-      error(file, c.line, c.column, "<include ros_pkg=…> is not supported; give a path relative to this file");
+      error(file, c.line, c.column,
+            "<include ros_pkg=…> is not supported; give a path relative to this file");
       return;
     }
     const std::string* path = c.attribute("path");
@@ -219,13 +224,15 @@ class Loader {
       return;
     }
     if (depth >= options_.max_include_depth) {
-      error(file, c.line, c.column, "includes nested deeper than " + std::to_string(options_.max_include_depth));
+      error(file, c.line, c.column,
+            "includes nested deeper than " + std::to_string(options_.max_include_depth));
       return;
     }
     const std::filesystem::path rel(*path);
     std::filesystem::path target = (dir / rel).lexically_normal();
     if (options_.confine_includes) {
-      const std::filesystem::path base = std::filesystem::weakly_canonical(options_.base_dir.empty() ? dir : options_.base_dir);
+      const std::filesystem::path base =
+          std::filesystem::weakly_canonical(options_.base_dir.empty() ? dir : options_.base_dir);
       const std::filesystem::path resolved = std::filesystem::weakly_canonical(target);
       const auto mismatch = std::mismatch(base.begin(), base.end(), resolved.begin(), resolved.end());
       if (rel.is_absolute() || mismatch.first != base.end()) {
@@ -262,7 +269,8 @@ class Loader {
     spec.file = file_;
     spec.line = e.line;
     std::string type_name = e.name;
-    const bool generic = e.name == "Action" || e.name == "Condition" || e.name == "Control" || e.name == "Decorator";
+    const bool generic =
+        e.name == "Action" || e.name == "Condition" || e.name == "Control" || e.name == "Decorator";
     if (generic) {
       const std::string* id = e.attribute("ID");
       if (id == nullptr) {
@@ -271,7 +279,8 @@ class Loader {
       }
       type_name = *id;
     }
-    if (version_ == 3 && type_name == "RetryUntilSuccesful") type_name = "RetryUntilSuccessful";  // v3 spelling
+    if (version_ == 3 && type_name == "RetryUntilSuccesful")
+      type_name = "RetryUntilSuccessful";  // v3 spelling
     const BtNodeType* type = registry_.find(type_name);
     if (type == nullptr) {
       error(e, "unknown node '" + type_name + "'" + did_you_mean(type_name, known_));
@@ -289,7 +298,8 @@ class Loader {
         if (children != 0) error(e, spec.type + " cannot have child nodes");
         break;
       case BtNodeKind::kDecorator:
-        if (children != 1) error(e, "decorator " + spec.type + " needs exactly one child, it has " + std::to_string(children));
+        if (children != 1)
+          error(e, "decorator " + spec.type + " needs exactly one child, it has " + std::to_string(children));
         break;
       case BtNodeKind::kControl:
         if (children == 0) error(e, "control node " + spec.type + " needs at least one child");
@@ -312,7 +322,8 @@ class Loader {
         error(e, "attribute '" + key + "' (BT.CPP scripting/pre-conditions) is not supported");
         continue;
       }
-      const auto port = std::find_if(type->ports.begin(), type->ports.end(), [&](const BtPortSpec& p) { return p.name == key; });
+      const auto port = std::find_if(type->ports.begin(), type->ports.end(),
+                                     [&](const BtPortSpec& p) { return p.name == key; });
       if (port == type->ports.end()) {
         std::string names;
         for (const BtPortSpec& p : type->ports) names += (names.empty() ? "" : ", ") + p.name;
@@ -329,28 +340,33 @@ class Loader {
       } else if (p.direction == BtPortDirection::kOut) {
         spec.ports.push_back(BtPortBinding{p.name, p.direction, p.type, std::nullopt, {}});
       } else {
-        error(e, spec.type + " is missing the required port '" + p.name + "' (" + std::string(bt_port_type_name(p.type)) + ")");
+        error(e, spec.type + " is missing the required port '" + p.name + "' (" +
+                     std::string(bt_port_type_name(p.type)) + ")");
       }
     }
     for (const XmlElement& c : e.children) spec.children.push_back(convert(c));
     return spec;
   }
 
-  void bind(const XmlElement& e, BtNodeSpec& spec, const BtPortSpec& port, const std::string& text, bool is_default) {
+  void bind(const XmlElement& e, BtNodeSpec& spec, const BtPortSpec& port, const std::string& text,
+            bool is_default) {
     BtPortBinding b{port.name, port.direction, port.type, std::nullopt, {}};
     if (auto key = key_of(text)) {
       b.key = *key == "=" ? port.name : *key;
       if (b.key->empty()) error(e, "port '" + port.name + "': empty blackboard key {}");
-      if (port.direction != BtPortDirection::kOut) reads_.push_back({file_, e.line, e.column, spec.type, port.name, *b.key, port.type});
+      if (port.direction != BtPortDirection::kOut)
+        reads_.push_back({file_, e.line, e.column, spec.type, port.name, *b.key, port.type});
       if (port.direction != BtPortDirection::kIn) written_.insert(*b.key);
     } else {
       if (port.direction == BtPortDirection::kOut) {
-        error(e, "output port '" + port.name + "' must name a blackboard entry like {" + port.name + "}, not '" + text + "'");
+        error(e, "output port '" + port.name + "' must name a blackboard entry like {" + port.name +
+                     "}, not '" + text + "'");
         return;
       }
       auto v = bt_convert(BtValue{text}, port.type);
       if (!v) {
-        error(e, std::string(is_default ? "default of port '" : "port '") + port.name + "': " + v.error().detail);
+        error(e, std::string(is_default ? "default of port '" : "port '") + port.name +
+                     "': " + v.error().detail);
         return;
       }
       b.literal = *v;
@@ -376,14 +392,18 @@ class Loader {
       if (key == "ID" || key == "name") continue;
       if (key == "_autoremap" || key == "__autoremap") {
         auto b = bt_convert(BtValue{value}, BtPortType::kBool);
-        if (!b) error(e, "_autoremap: " + b.error().detail);
-        else spec.autoremap = std::get<bool>(*b);
+        if (!b)
+          error(e, "_autoremap: " + b.error().detail);
+        else
+          spec.autoremap = std::get<bool>(*b);
         continue;
       }
       if (key == "__shared_blackboard") {
         auto b = bt_convert(BtValue{value}, BtPortType::kBool);
-        if (!b) error(e, "__shared_blackboard: " + b.error().detail);
-        else spec.shared_blackboard = std::get<bool>(*b);
+        if (!b)
+          error(e, "__shared_blackboard: " + b.error().detail);
+        else
+          spec.shared_blackboard = std::get<bool>(*b);
         continue;
       }
       if (!key.empty() && key[0] == '_') {
@@ -419,17 +439,19 @@ class Loader {
         std::string known;
         for (const std::string& k : available) known += (known.empty() ? "" : ", ") + k;
         error(r.file, r.line, r.column,
-              r.node + " port '" + r.port + "' reads blackboard key '{" + r.key + "}', which nothing writes (known: " + known + ")");
+              r.node + " port '" + r.port + "' reads blackboard key '{" + r.key +
+                  "}', which nothing writes (known: " + known + ")");
         continue;
       }
       auto s = seeded.find(r.key);
       if (s == seeded.end() || written_.count(r.key) != 0) continue;
       const bool fits = r.type == BtPortType::kString || r.type == s->second ||
-                        (s->second == BtPortType::kInt && (r.type == BtPortType::kDouble || r.type == BtPortType::kUnsigned));
+                        (s->second == BtPortType::kInt &&
+                         (r.type == BtPortType::kDouble || r.type == BtPortType::kUnsigned));
       if (!fits)
         error(r.file, r.line, r.column,
-              r.node + " port '" + r.port + "' is " + std::string(bt_port_type_name(r.type)) + " but {" + r.key + "} holds " +
-                  std::string(bt_port_type_name(s->second)));
+              r.node + " port '" + r.port + "' is " + std::string(bt_port_type_name(r.type)) + " but {" +
+                  r.key + "} holds " + std::string(bt_port_type_name(s->second)));
     }
   }
 
@@ -445,7 +467,8 @@ class Loader {
       std::function<void(const BtNodeSpec&)> walk = [&](const BtNodeSpec& s) {
         if (!fine) return;
         if (s.kind == BtNodeKind::kSubTree && !s.subtree_id.empty() && !visit(s.subtree_id)) {
-          error(s.file, s.line, 0, "SubTree '" + s.subtree_id + "' includes itself (recursive trees cannot be instantiated)");
+          error(s.file, s.line, 0,
+                "SubTree '" + s.subtree_id + "' includes itself (recursive trees cannot be instantiated)");
           fine = false;
         }
         for (const BtNodeSpec& c : s.children) walk(c);
@@ -488,7 +511,8 @@ class Loader {
 
 struct BtDocument::Impl : DocumentData {};
 
-Result<BtDocument> BtDocument::parse(std::string_view xml, const BtRegistry& registry, const BtLoadOptions& options) {
+Result<BtDocument> BtDocument::parse(std::string_view xml, const BtRegistry& registry,
+                                     const BtLoadOptions& options) {
   Loader loader(registry, options);
   auto impl = std::make_shared<Impl>();
   loader.read_root(xml, "", options.base_dir, 0, &impl->main);
@@ -499,14 +523,16 @@ Result<BtDocument> BtDocument::parse(std::string_view xml, const BtRegistry& reg
   return doc;
 }
 
-Result<BtDocument> BtDocument::load(const std::filesystem::path& file, const BtRegistry& registry, BtLoadOptions options) {
+Result<BtDocument> BtDocument::load(const std::filesystem::path& file, const BtRegistry& registry,
+                                    BtLoadOptions options) {
   std::ifstream in(file, std::ios::binary);
   if (!in) return fail(ErrorCode::kNotFound, "cannot read behaviour tree file " + file.string());
   std::ostringstream text;
   text << in.rdbuf();
   if (text.str().size() > options.limits.max_bytes)
     return fail(ErrorCode::kPayloadTooLarge, "behaviour tree file " + file.string() + " is too large");
-  const std::filesystem::path dir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+  const std::filesystem::path dir =
+      file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
   if (options.base_dir.empty()) options.base_dir = dir;
   Loader loader(registry, options);
   auto impl = std::make_shared<Impl>();
@@ -518,7 +544,9 @@ Result<BtDocument> BtDocument::load(const std::filesystem::path& file, const BtR
   return doc;
 }
 
-const std::string& BtDocument::main_tree() const { return impl_->main; }
+const std::string& BtDocument::main_tree() const {
+  return impl_->main;
+}
 
 std::vector<std::string> BtDocument::tree_ids() const {
   std::vector<std::string> out;
@@ -556,7 +584,8 @@ BtTree BtDocument::instantiate(std::string_view id) const {
     for (const BtNodeSpec& c : spec.children) node->add_child(build(c, bb));
     return node;
   };
-  tree.root_ = build(impl.trees.at(std::string(id.empty() ? std::string_view(impl.main) : id)), *boards.front());
+  tree.root_ =
+      build(impl.trees.at(std::string(id.empty() ? std::string_view(impl.main) : id)), *boards.front());
   return tree;
 }
 

@@ -47,7 +47,8 @@ struct BtLoadOptions {
   bool confine_includes = true;
   int max_include_depth = 8;
   // Blackboard entries every instance starts with and their types ({id} and {dt}).
-  std::vector<std::pair<std::string, BtPortType>> seeded_keys = {{"id", BtPortType::kInt}, {"dt", BtPortType::kDouble}};
+  std::vector<std::pair<std::string, BtPortType>> seeded_keys = {{"id", BtPortType::kInt},
+                                                                 {"dt", BtPortType::kDouble}};
   // Extra check of each literal port value (e.g. that an ROI name exists); returns a message
   // for a bad value.
   std::function<std::optional<std::string>(const BtNodeSpec& node, const BtPortBinding& port)> check_literal;
@@ -58,7 +59,8 @@ class BtDocument {
  public:
   // Errors: kBadRequest for XML syntax, kValidation for everything else; each FieldError has
   // the line and column and its message starts with "<file>:<line>: ".
-  static Result<BtDocument> parse(std::string_view xml, const BtRegistry& registry, const BtLoadOptions& options = {});
+  static Result<BtDocument> parse(std::string_view xml, const BtRegistry& registry,
+                                  const BtLoadOptions& options = {});
   static Result<BtDocument> load(const std::filesystem::path& file, const BtRegistry& registry,
                                  BtLoadOptions options = {});
 

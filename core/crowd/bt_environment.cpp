@@ -12,9 +12,15 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double dist(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
-world::Point pt(Vec2 v) { return {v.x, v.y}; }
-Vec2 vec(world::Point p) { return {p.x, p.y}; }
+double dist(Vec2 a, Vec2 b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+world::Point pt(Vec2 v) {
+  return {v.x, v.y};
+}
+Vec2 vec(world::Point p) {
+  return {p.x, p.y};
+}
 
 // A point inside the polygon: the centroid when it lies inside, else the centre of the widest
 // horizontal chord through the middle of the bounding box.
@@ -48,7 +54,8 @@ bool seat_like(const world::Entity& e) {
 }
 
 std::pair<std::int64_t, std::int64_t> seat_key(Vec2 p) {
-  return {static_cast<std::int64_t>(std::llround(p.x * 100.0)), static_cast<std::int64_t>(std::llround(p.y * 100.0))};
+  return {static_cast<std::int64_t>(std::llround(p.x * 100.0)),
+          static_cast<std::int64_t>(std::llround(p.y * 100.0))};
 }
 
 }  // namespace
@@ -56,9 +63,9 @@ std::pair<std::int64_t, std::int64_t> seat_key(Vec2 p) {
 BtEnvironment::BtEnvironment(CrowdSimulation& sim, const world::World* world, EnvironmentOptions options)
     : sim_(sim), world_(world), options_(options) {
   if (world_ != nullptr) {
-    grid_ = world::OccupancyGrid::rasterise(*world_, world::GridOptions{options_.navigation_resolution,
-                                                                         options_.navigation_inflation,
-                                                                         options_.navigation_max_cells});
+    grid_ = world::OccupancyGrid::rasterise(
+        *world_, world::GridOptions{options_.navigation_resolution, options_.navigation_inflation,
+                                    options_.navigation_max_cells});
     build_exits();
   }
   sync_agents();
@@ -147,28 +154,34 @@ std::optional<std::string> BtEnvironment::check_place(std::string_view name, std
     if (p && p->kind == Place::Kind::kRoi && p->type == "queue_lane") return std::nullopt;
     return "no queue_lane ROI named '" + std::string(name) + "' (queue lanes: " + list([&](auto& add) {
              for (world::RoiId r : world_->rois_of_kind("queue_lane")) add(world_->roi(r).name);
-           }) + ")";
+           }) +
+           ")";
   }
   if (what == "region") {
     if (p && p->region != nullptr) return std::nullopt;
     return "no ROI or zone named '" + std::string(name) + "' (ROIs: " + list([&](auto& add) {
              for (const world::Roi& r : world_->rois()) add(r.name);
-           }) + ")";
+           }) +
+           ")";
   }
   if (what == "exit") {
     if (name.empty()) return std::nullopt;
     if (exit_index(name)) return std::nullopt;
-    return "no exit named '" + std::string(name) + "' (exits: doors to the outside and ROIs of kind exit: " +
-           list([&](auto& add) {
+    return "no exit named '" + std::string(name) +
+           "' (exits: doors to the outside and ROIs of kind exit: " + list([&](auto& add) {
              for (const Exit& e : exits_) add(e.name);
-           }) + ")";
+           }) +
+           ")";
   }
   if (p) return std::nullopt;
-  return "no ROI, POI, door or zone named '" + std::string(name) + "' in the world (ROIs: " + list([&](auto& add) {
+  return "no ROI, POI, door or zone named '" + std::string(name) +
+         "' in the world (ROIs: " + list([&](auto& add) {
            for (const world::Roi& r : world_->rois()) add(r.name);
-         }) + "; POIs: " + list([&](auto& add) {
+         }) +
+         "; POIs: " + list([&](auto& add) {
            for (const world::Entity& e : world_->entities()) add(e.name);
-         }) + ")";
+         }) +
+         ")";
 }
 
 bool BtEnvironment::inside(const Place& place, Vec2 p) const {
@@ -206,8 +219,8 @@ void BtEnvironment::advance_goal(AgentId id) {
 
 // --- steering ----------------------------------------------------------------------------------
 
-void BtEnvironment::move_to(AgentId id, Vec2 target, double radius, double speed, Activity activity, Routing routing,
-                            Priority priority) {
+void BtEnvironment::move_to(AgentId id, Vec2 target, double radius, double speed, Activity activity,
+                            Routing routing, Priority priority) {
   AgentState& a = agents_.at(id.value());
   Command& c = priority == Priority::kLeader ? a.leader : a.own;
   c = Command{true, false, target, radius, speed, activity, routing};
@@ -306,7 +319,8 @@ const world::GeodesicField* BtEnvironment::route_field(Vec2 target) {
     return routes_.back().second.get();
   }
   const world::Point source = g.blocked(*g.cell_of(pt(target))) ? g.center(*cell) : pt(target);
-  auto field = std::make_shared<world::GeodesicField>(world::GeodesicField::from_points(g, std::span(&source, 1)));
+  auto field =
+      std::make_shared<world::GeodesicField>(world::GeodesicField::from_points(g, std::span(&source, 1)));
   routes_.emplace_back(key, std::move(field));
   while (routes_.size() > options_.max_cached_routes) routes_.pop_front();
   return routes_.back().second.get();
@@ -412,9 +426,10 @@ BtEnvironment::Queue* BtEnvironment::queue(std::string_view name) {
   std::optional<Vec2> counter;
   double best = kInf;
   for (const world::Entity& e : world_->entities()) {
-    const bool serves = e.type == "counter" || e.type == "desk" || e.type == "reception" ||
-                        std::find(e.affordances.begin(), e.affordances.end(), "serve") != e.affordances.end() ||
-                        std::find(e.affordances.begin(), e.affordances.end(), "queue_target") != e.affordances.end();
+    const bool serves =
+        e.type == "counter" || e.type == "desk" || e.type == "reception" ||
+        std::find(e.affordances.begin(), e.affordances.end(), "serve") != e.affordances.end() ||
+        std::find(e.affordances.begin(), e.affordances.end(), "queue_target") != e.affordances.end();
     if (!serves) continue;
     const Vec2 p{e.pose.x, e.pose.y};
     const double d = std::min(dist(p, end_a), dist(p, end_b));
@@ -440,7 +455,8 @@ BtEnvironment::Queue* BtEnvironment::queue(std::string_view name) {
   if (counter) {
     const double d = dist(*counter, head);
     const double back = std::min(0.55, d / 2.0);
-    q.service = d > 1e-9 ? Vec2{counter->x + (head.x - counter->x) / d * back, counter->y + (head.y - counter->y) / d * back}
+    q.service = d > 1e-9 ? Vec2{counter->x + (head.x - counter->x) / d * back,
+                                counter->y + (head.y - counter->y) / d * back}
                          : head;
   } else {
     q.service = {head.x - q.to_tail.x * 0.8, head.y - q.to_tail.y * 0.8};
@@ -483,7 +499,8 @@ std::optional<Vec2> BtEnvironment::reserve_seat(const Place& place, AgentId id, 
     } else {
       if (world_ != nullptr)
         for (const world::Entity& e : world_->entities())
-          if (seat_like(e) && geometry::contains(*place.region, {e.pose.x, e.pose.y})) seats.push_back({e.pose.x, e.pose.y});
+          if (seat_like(e) && geometry::contains(*place.region, {e.pose.x, e.pose.y}))
+            seats.push_back({e.pose.x, e.pose.y});
       if (seats.empty()) {
         // No seat entities: a 0.8 m grid of places inside the region, 0.4 m from its edges.
         const geometry::Box box = geometry::bounds(place.region->outer);
@@ -528,7 +545,8 @@ void BtEnvironment::release_seat(AgentId id) {
 
 // --- fields and exits --------------------------------------------------------------------------
 
-void BtEnvironment::add_velocity_field(std::string name, VelocityField field, std::vector<geometry::Polygon> goal_regions) {
+void BtEnvironment::add_velocity_field(std::string name, VelocityField field,
+                                       std::vector<geometry::Polygon> goal_regions) {
   fields_.insert_or_assign(std::move(name), FieldEntry{std::move(field), std::move(goal_regions)});
 }
 
@@ -570,10 +588,12 @@ std::optional<std::size_t> BtEnvironment::nearest_exit(Vec2 p) {
   for (std::size_t i = 0; i < exits_.size(); ++i) {
     if (!exit_fields_[i]) {
       if (exits_[i].region != nullptr) {
-        exit_fields_[i] = std::make_shared<world::GeodesicField>(world::GeodesicField::from_region(*grid_, *exits_[i].region));
+        exit_fields_[i] = std::make_shared<world::GeodesicField>(
+            world::GeodesicField::from_region(*grid_, *exits_[i].region));
       } else {
         const world::GeodesicField* f = route_field(exits_[i].point);
-        exit_fields_[i] = f != nullptr ? std::make_shared<world::GeodesicField>(*f) : std::make_shared<world::GeodesicField>();
+        exit_fields_[i] = f != nullptr ? std::make_shared<world::GeodesicField>(*f)
+                                       : std::make_shared<world::GeodesicField>();
       }
     }
     const auto d = exit_fields_[i]->distance(pt(p));
@@ -585,6 +605,8 @@ std::optional<std::size_t> BtEnvironment::nearest_exit(Vec2 p) {
   return best;
 }
 
-bool BtEnvironment::outside(Vec2 p) const { return world_ != nullptr && !world_->zone_at(pt(p)); }
+bool BtEnvironment::outside(Vec2 p) const {
+  return world_ != nullptr && !world_->zone_at(pt(p));
+}
 
 }  // namespace socsim::crowd

@@ -54,7 +54,9 @@ class BtEnvironment {
   [[nodiscard]] const world::World* world() const { return world_; }
   // Agents known to the environment (call after adding agents to the simulation).
   void sync_agents();
-  [[nodiscard]] bool valid(std::int64_t id) const { return id >= 0 && static_cast<std::uint64_t>(id) < agents_.size(); }
+  [[nodiscard]] bool valid(std::int64_t id) const {
+    return id >= 0 && static_cast<std::uint64_t>(id) < agents_.size();
+  }
 
   // --- decision steps ----------------------------------------------------------------------
   void begin_tick(double now);
@@ -130,7 +132,9 @@ class BtEnvironment {
   void join_queue(Queue& q, AgentId id);
   void leave_queue(Queue& q, AgentId id);
   // Service order of every queue so far (agent ids in the order they left the head).
-  [[nodiscard]] const std::vector<std::pair<std::string, AgentId>>& service_log() const { return service_log_; }
+  [[nodiscard]] const std::vector<std::pair<std::string, AgentId>>& service_log() const {
+    return service_log_;
+  }
   void log_service(const Queue& q, AgentId id) { service_log_.emplace_back(q.name, id); }
 
   // --- seats ---------------------------------------------------------------------------------
@@ -199,7 +203,7 @@ class BtEnvironment {
   double now_ = 0.0;
   std::map<std::string, Queue, std::less<>> queues_;
   std::vector<std::pair<std::string, AgentId>> service_log_;
-  std::map<std::string, std::vector<Vec2>, std::less<>> seats_;       // per place name
+  std::map<std::string, std::vector<Vec2>, std::less<>> seats_;          // per place name
   std::map<std::pair<std::int64_t, std::int64_t>, AgentId> seat_taken_;  // quantised seat → agent
   std::map<std::string, FieldEntry, std::less<>> fields_;
   std::vector<Exit> exits_;

@@ -14,7 +14,9 @@ namespace {
 using S = BtStatus;
 constexpr double kPi = std::numbers::pi;
 
-double dist(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double dist(Vec2 a, Vec2 b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
 Vec2 unit(Vec2 v) {
   const double l = std::hypot(v.x, v.y);
   return l > 1e-12 ? Vec2{v.x / l, v.y / l} : Vec2{};
@@ -29,7 +31,8 @@ double wrap(double a) {
 
 class LibraryNode : public BtNode {
  public:
-  LibraryNode(const BtNodeInit& init, BtEnvironment& env) : BtNode(init.spec, init.tree, init.blackboard), env_(env) {}
+  LibraryNode(const BtNodeInit& init, BtEnvironment& env)
+      : BtNode(init.spec, init.tree, init.blackboard), env_(env) {}
 
  protected:
   // The agent named by an id port; reports and returns nullopt when it does not exist.
@@ -79,7 +82,8 @@ class TargetNode : public LibraryNode {
   using LibraryNode::LibraryNode;
 
  protected:
-  std::optional<Target> resolve(AgentId id, const std::string& name_port, const std::string& index_port) const {
+  std::optional<Target> resolve(AgentId id, const std::string& name_port,
+                                const std::string& index_port) const {
     const auto name = get<std::string>(name_port);
     const auto index = get<std::int64_t>(index_port);
     if (!name || !index) return std::nullopt;
@@ -98,7 +102,8 @@ class TargetNode : public LibraryNode {
                       std::to_string(id.value()) + " has " + std::to_string(goals.size()) + " goals)");
         return std::nullopt;
       }
-      return Target{goals[static_cast<std::size_t>(*index)].position, nullptr, "goal " + std::to_string(*index)};
+      return Target{goals[static_cast<std::size_t>(*index)].position, nullptr,
+                    "goal " + std::to_string(*index)};
     }
     if (auto g = env_.current_goal(id)) return Target{g->position, nullptr, "current goal"};
     (void)failure("no goal: set '" + name_port + "' or '" + index_port + "', or give the agent goals");
@@ -292,7 +297,8 @@ class IsSpeaking final : public LibraryNode {
     const auto window = get<double>("duration");
     if (!id || !target || !d || !window) return S::kFailure;
     const auto spoke = env_.last_spoke(*target);
-    return spoke && env_.now() - *spoke <= *window && dist(pos(*id), pos(*target)) <= *d ? S::kSuccess : S::kFailure;
+    return spoke && env_.now() - *spoke <= *window && dist(pos(*id), pos(*target)) <= *d ? S::kSuccess
+                                                                                         : S::kFailure;
   }
 };
 
@@ -442,8 +448,8 @@ class SetGoal final : public TargetNode {
       return S::kSuccess;
     }
     if (*index < 0 || static_cast<std::uint64_t>(*index) >= list.goals.size())
-      return failure("goal_id " + std::to_string(*index) + " out of range (agent " + std::to_string(id->value()) +
-                     " has " + std::to_string(list.goals.size()) + " goals)");
+      return failure("goal_id " + std::to_string(*index) + " out of range (agent " +
+                     std::to_string(id->value()) + " has " + std::to_string(list.goals.size()) + " goals)");
     list.named.reset();
     list.index = static_cast<std::size_t>(*index);
     return S::kSuccess;
@@ -591,7 +597,8 @@ class ScaredNav final : public RobotReaction {
     if (auto g = env_.current_goal(id)) to_goal = unit({g->position.x - p.x, g->position.y - p.y});
     Vec2 dir = unit({to_goal.x + 2.0 * *factor * away.x, to_goal.y + 2.0 * *factor * away.y});
     if (dir == Vec2{}) dir = away == Vec2{} ? Vec2{1.0, 0.0} : away;
-    env_.move_to(id, {p.x + 2.0 * dir.x, p.y + 2.0 * dir.y}, 0.05, *vel, Activity::kRunning, Routing::kDirect);
+    env_.move_to(id, {p.x + 2.0 * dir.x, p.y + 2.0 * dir.y}, 0.05, *vel, Activity::kRunning,
+                 Routing::kDirect);
     return true;
   }
 };
@@ -726,8 +733,8 @@ class SetGroupWalk final : public LeaderNode {
       const double back = 0.3 * static_cast<double>(k / 2);
       const Vec2 slot{p.x + side.x * lateral - h.x * back, p.y + side.y * lateral - h.y * back};
       const AgentId m = (*others)[k];
-      env_.move_to(m, slot, 0.2, std::max(env_.base_speed(m), env_.base_speed(*lead)) * 1.15, Activity::kWalking,
-                   Routing::kPath, BtEnvironment::Priority::kLeader);
+      env_.move_to(m, slot, 0.2, std::max(env_.base_speed(m), env_.base_speed(*lead)) * 1.15,
+                   Activity::kWalking, Routing::kPath, BtEnvironment::Priority::kLeader);
     }
     return S::kRunning;
   }
@@ -797,7 +804,8 @@ class ConversationFormation final : public LeaderNode {
 // FAILURE when duration passes first (duration <= 0: no limit).
 class Approach final : public LibraryNode {
  public:
-  Approach(const BtNodeInit& init, BtEnvironment& env, bool to_robot) : LibraryNode(init, env), robot_(to_robot) {}
+  Approach(const BtNodeInit& init, BtEnvironment& env, bool to_robot)
+      : LibraryNode(init, env), robot_(to_robot) {}
 
  protected:
   S on_tick() override {
@@ -830,7 +838,8 @@ class Approach final : public LibraryNode {
 // BlockAgent / BlockRobot: stand front_dist ahead of the target, in its way, for duration.
 class Block final : public LibraryNode {
  public:
-  Block(const BtNodeInit& init, BtEnvironment& env, bool to_robot) : LibraryNode(init, env), robot_(to_robot) {}
+  Block(const BtNodeInit& init, BtEnvironment& env, bool to_robot)
+      : LibraryNode(init, env), robot_(to_robot) {}
 
  protected:
   S on_tick() override {
@@ -856,7 +865,8 @@ class Block final : public LibraryNode {
 // AvoidAgent / AvoidRobot: step away while closer than safe_distance, else stand watching.
 class Avoid final : public LibraryNode {
  public:
-  Avoid(const BtNodeInit& init, BtEnvironment& env, bool from_robot) : LibraryNode(init, env), robot_(from_robot) {}
+  Avoid(const BtNodeInit& init, BtEnvironment& env, bool from_robot)
+      : LibraryNode(init, env), robot_(from_robot) {}
 
  protected:
   S on_tick() override {
@@ -1163,7 +1173,8 @@ class Wander final : public LibraryNode {
       const geometry::Box box = geometry::bounds(region->region->outer);
       for (int attempt = 0; attempt < 64 && !point_; ++attempt) {
         const Vec2 p{rng.uniform(box.min.x, box.max.x), rng.uniform(box.min.y, box.max.y)};
-        if (geometry::contains(*region->region, {p.x, p.y}) && env_.walking_distance(pos(*id), p) < 1e9) point_ = p;
+        if (geometry::contains(*region->region, {p.x, p.y}) && env_.walking_distance(pos(*id), p) < 1e9)
+          point_ = p;
       }
       if (!point_) point_ = region->point;
     }
@@ -1345,8 +1356,12 @@ BtPortSpec in(std::string name, BtPortType type, std::optional<std::string> def 
 BtPortSpec out(std::string name, BtPortType type) {
   return BtPortSpec{std::move(name), BtPortDirection::kOut, type, std::nullopt};
 }
-BtPortSpec agent_port() { return in("agent_id", I, "{id}"); }
-BtPortSpec step_port() { return in("time_step", D, "{dt}"); }
+BtPortSpec agent_port() {
+  return in("agent_id", I, "{id}");
+}
+BtPortSpec step_port() {
+  return in("time_step", D, "{dt}");
+}
 
 template <class Node, class... Args>
 BtFactory bind(BtEnvironment& env, Args... args) {
@@ -1359,119 +1374,224 @@ std::vector<BtNodeType> library(BtEnvironment& env) {
   using K = BtNodeKind;
   return {
       {"IsGoalReached", K::kCondition, {agent_port()}, bind<IsGoalReached>(env), {}},
-      {"IsRobotVisible", K::kCondition, {agent_port(), in("distance", D, "5.0")}, bind<IsRobotVisible>(env), {}},
+      {"IsRobotVisible",
+       K::kCondition,
+       {agent_port(), in("distance", D, "5.0")},
+       bind<IsRobotVisible>(env),
+       {}},
       {"IsRobotClose", K::kCondition, {agent_port(), in("threshold", D, "1.0")}, bind<IsRobotClose>(env), {}},
       {"IsRobotFacingAgent", K::kCondition, {agent_port()}, bind<IsRobotFacingAgent>(env), {}},
-      {"IsAgentVisible", K::kCondition,
-       {in("observer_id", I, "{id}"), in("agent_id", I), in("distance", D, "5.0"), in("field_of_view", D, "3.14")},
-       bind<IsAgentVisible>(env), {}},
-      {"IsAgentClose", K::kCondition,
-       {in("observer_id", I, "{id}"), in("target_agent_id", I), in("threshold", D, "1.0")}, bind<IsAgentClose>(env), {}},
-      {"IsAtPosition", K::kCondition,
-       {agent_port(), in("target_x", D), in("target_y", D), in("tolerance", D, "0.1")}, bind<IsAtPosition>(env), {}},
-      {"RandomChance", K::kCondition, {agent_port(), in("probability", D, "0.3")}, bind<RandomChance>(env),
+      {"IsAgentVisible",
+       K::kCondition,
+       {in("observer_id", I, "{id}"), in("agent_id", I), in("distance", D, "5.0"),
+        in("field_of_view", D, "3.14")},
+       bind<IsAgentVisible>(env),
+       {}},
+      {"IsAgentClose",
+       K::kCondition,
+       {in("observer_id", I, "{id}"), in("target_agent_id", I), in("threshold", D, "1.0")},
+       bind<IsAgentClose>(env),
+       {}},
+      {"IsAtPosition",
+       K::kCondition,
+       {agent_port(), in("target_x", D), in("target_y", D), in("tolerance", D, "0.1")},
+       bind<IsAtPosition>(env),
+       {}},
+      {"RandomChance",
+       K::kCondition,
+       {agent_port(), in("probability", D, "0.3")},
+       bind<RandomChance>(env),
        {"RandomChanceCondition"}},
-      {"TimeExpired", K::kCondition, {in("seconds", D), in("ts", D, "{dt}"), in("only_once", B, "false")},
-       bind<TimeExpired>(env), {"TimeExpiredCondition"}},
-      {"IsAnyoneSpeaking", K::kCondition,
-       {agent_port(), step_port(), in("distance_threshold", D, "5.0"), in("duration", D, "5.0"), out("speaker_id", I)},
-       bind<IsAnyoneSpeaking>(env), {}},
-      {"IsSpeaking", K::kCondition,
-       {agent_port(), step_port(), in("target_id", I), in("distance_threshold", D, "5.0"), in("duration", D, "5.0")},
-       bind<IsSpeaking>(env), {}},
-      {"IsAnyoneLookingAtMe", K::kCondition,
+      {"TimeExpired",
+       K::kCondition,
+       {in("seconds", D), in("ts", D, "{dt}"), in("only_once", B, "false")},
+       bind<TimeExpired>(env),
+       {"TimeExpiredCondition"}},
+      {"IsAnyoneSpeaking",
+       K::kCondition,
+       {agent_port(), step_port(), in("distance_threshold", D, "5.0"), in("duration", D, "5.0"),
+        out("speaker_id", I)},
+       bind<IsAnyoneSpeaking>(env),
+       {}},
+      {"IsSpeaking",
+       K::kCondition,
+       {agent_port(), step_port(), in("target_id", I), in("distance_threshold", D, "5.0"),
+        in("duration", D, "5.0")},
+       bind<IsSpeaking>(env),
+       {}},
+      {"IsAnyoneLookingAtMe",
+       K::kCondition,
        {agent_port(), step_port(), in("distance_threshold", D, "5.0"), in("angle_threshold", D, "0.2"),
         in("duration", D, "5.0"), out("observer_id", I)},
-       bind<IsAnyoneLookingAtMe>(env), {}},
-      {"IsLookingAtMe", K::kCondition,
-       {agent_port(), step_port(), in("target_id", I), in("distance_threshold", D, "5.0"), in("angle_threshold", D, "0.2"),
-        in("duration", D, "5.0")},
-       bind<IsLookingAtMe>(env), {}},
+       bind<IsAnyoneLookingAtMe>(env),
+       {}},
+      {"IsLookingAtMe",
+       K::kCondition,
+       {agent_port(), step_port(), in("target_id", I), in("distance_threshold", D, "5.0"),
+        in("angle_threshold", D, "0.2"), in("duration", D, "5.0")},
+       bind<IsLookingAtMe>(env),
+       {}},
       {"RegularNav", K::kAction, {agent_port(), step_port()}, bind<RegularNav>(env), {}},
       {"UpdateGoal", K::kAction, {agent_port()}, bind<UpdateGoal>(env), {}},
-      {"SetGoal", K::kAction, {agent_port(), in("goal_id", I, "-1"), in("goal", T, "")}, bind<SetGoal>(env), {}},
-      {"GoTo", K::kAction,
+      {"SetGoal",
+       K::kAction,
+       {agent_port(), in("goal_id", I, "-1"), in("goal", T, "")},
+       bind<SetGoal>(env),
+       {}},
+      {"GoTo",
+       K::kAction,
        {agent_port(), step_port(), in("goal_id", I, "-1"), in("goal", T, ""), in("tolerance", D, "0.1")},
-       bind<GoTo>(env), {}},
-      {"StopAndWait", K::kAction, {agent_port(), in("wait_duration", D, "3.0")}, bind<StopAndWait>(env),
+       bind<GoTo>(env),
+       {}},
+      {"StopAndWait",
+       K::kAction,
+       {agent_port(), in("wait_duration", D, "3.0")},
+       bind<StopAndWait>(env),
        {"StopAndWaitTimerAction"}},
       {"StopMovement", K::kAction, {agent_port()}, bind<StopMovement>(env, true), {}},
       {"ResumeMovement", K::kAction, {agent_port()}, bind<StopMovement>(env, false), {}},
-      {"SurprisedNav", K::kAction,
-       {agent_port(), step_port(), in("beh_duration", D, "5.0"), in("only_once", B, "true")}, bind<SurprisedNav>(env), {}},
-      {"CuriousNav", K::kAction,
-       {agent_port(), step_port(), in("beh_duration", D, "5.0"), in("only_once", B, "true"), in("agent_vel", D, "1.0"),
-        in("stop_distance", D, "0.5")},
-       bind<CuriousNav>(env), {}},
-      {"ScaredNav", K::kAction,
-       {agent_port(), step_port(), in("beh_duration", D, "5.0"), in("only_once", B, "true"), in("runaway_vel", D, "1.5"),
-        in("scary_force_factor", D, "1.0")},
-       bind<ScaredNav>(env), {}},
-      {"ThreateningNav", K::kAction,
-       {agent_port(), step_port(), in("beh_duration", D, "5.0"), in("only_once", B, "true"), in("goal_dist", D, "1.0")},
-       bind<ThreateningNav>(env), {}},
-      {"FindNearestAgent", K::kAction, {agent_port(), out("target_agent_id", I)}, bind<FindNearestAgent>(env), {}},
+      {"SurprisedNav",
+       K::kAction,
+       {agent_port(), step_port(), in("beh_duration", D, "5.0"), in("only_once", B, "true")},
+       bind<SurprisedNav>(env),
+       {}},
+      {"CuriousNav",
+       K::kAction,
+       {agent_port(), step_port(), in("beh_duration", D, "5.0"), in("only_once", B, "true"),
+        in("agent_vel", D, "1.0"), in("stop_distance", D, "0.5")},
+       bind<CuriousNav>(env),
+       {}},
+      {"ScaredNav",
+       K::kAction,
+       {agent_port(), step_port(), in("beh_duration", D, "5.0"), in("only_once", B, "true"),
+        in("runaway_vel", D, "1.5"), in("scary_force_factor", D, "1.0")},
+       bind<ScaredNav>(env),
+       {}},
+      {"ThreateningNav",
+       K::kAction,
+       {agent_port(), step_port(), in("beh_duration", D, "5.0"), in("only_once", B, "true"),
+        in("goal_dist", D, "1.0")},
+       bind<ThreateningNav>(env),
+       {}},
+      {"FindNearestAgent",
+       K::kAction,
+       {agent_port(), out("target_agent_id", I)},
+       bind<FindNearestAgent>(env),
+       {}},
       {"SaySomething", K::kAction, {agent_port(), in("message", T, "")}, bind<SaySomething>(env), {}},
       {"SetGroupId", K::kAction, {agent_port(), in("group_id", I)}, bind<SetGroupId>(env), {}},
-      {"SetGroupWalk", K::kAction,
+      {"SetGroupWalk",
+       K::kAction,
        {in("main_agent_id", I, "{id}"), step_port(), in("non_main_agent_ids", T), in("duration", D, "5.0")},
-       bind<SetGroupWalk>(env), {}},
-      {"ConversationFormation", K::kAction,
-       {in("main_agent_id", I, "{id}"), in("non_main_agent_ids", T), in("goal_id", I, "-1"), in("goal", T, ""),
-        in("conversation_duration", D, "10.0"), step_port()},
-       bind<ConversationFormation>(env), {}},
-      {"ApproachAgent", K::kAction,
-       {agent_port(), step_port(), in("target_agent_id", I), in("closest_dist", D, "0.5"), in("max_vel", D, "1.0"),
+       bind<SetGroupWalk>(env),
+       {}},
+      {"ConversationFormation",
+       K::kAction,
+       {in("main_agent_id", I, "{id}"), in("non_main_agent_ids", T), in("goal_id", I, "-1"),
+        in("goal", T, ""), in("conversation_duration", D, "10.0"), step_port()},
+       bind<ConversationFormation>(env),
+       {}},
+      {"ApproachAgent",
+       K::kAction,
+       {agent_port(), step_port(), in("target_agent_id", I), in("closest_dist", D, "0.5"),
+        in("max_vel", D, "1.0"), in("duration", D, "5.0")},
+       bind<Approach>(env, false),
+       {}},
+      {"ApproachRobot",
+       K::kAction,
+       {agent_port(), step_port(), in("closest_dist", D, "1.5"), in("max_vel", D, "1.8"),
         in("duration", D, "5.0")},
-       bind<Approach>(env, false), {}},
-      {"ApproachRobot", K::kAction,
-       {agent_port(), step_port(), in("closest_dist", D, "1.5"), in("max_vel", D, "1.8"), in("duration", D, "5.0")},
-       bind<Approach>(env, true), {}},
-      {"BlockRobot", K::kAction, {agent_port(), step_port(), in("front_dist", D, "1.0"), in("duration", D, "5.0")},
-       bind<Block>(env, true), {}},
-      {"BlockAgent", K::kAction,
-       {agent_port(), step_port(), in("target_agent_id", I), in("front_dist", D, "1.0"), in("duration", D, "5.0")},
-       bind<Block>(env, false), {}},
-      {"AvoidRobot", K::kAction,
-       {agent_port(), step_port(), in("safe_distance", D, "1.5"), in("runaway_vel", D, "1.2"), in("duration", D, "0.0")},
-       bind<Avoid>(env, true), {}},
-      {"FollowAgent", K::kAction, {agent_port(), step_port(), in("target_agent_id", I), in("duration", D, "5.0")},
-       bind<FollowAgent>(env), {}},
-      {"LookAtAgent", K::kAction, {in("observer_id", I, "{id}"), in("target_id", I)},
-       bind<LookAt>(env, LookAt::What::kAgent), {}},
-      {"LookAtRobot", K::kAction, {agent_port()}, bind<LookAt>(env, LookAt::What::kRobot), {}},
-      {"LookAtPoint", K::kAction, {agent_port(), in("goal_id", I, "-1"), in("goal", T, "")},
-       bind<LookAt>(env, LookAt::What::kPoint), {}},
-      {"AvoidAgent", K::kAction,
-       {agent_port(), step_port(), in("target_agent_id", I), in("safe_distance", D, "1.5"), in("max_vel", D, "1.2"),
+       bind<Approach>(env, true),
+       {}},
+      {"BlockRobot",
+       K::kAction,
+       {agent_port(), step_port(), in("front_dist", D, "1.0"), in("duration", D, "5.0")},
+       bind<Block>(env, true),
+       {}},
+      {"BlockAgent",
+       K::kAction,
+       {agent_port(), step_port(), in("target_agent_id", I), in("front_dist", D, "1.0"),
+        in("duration", D, "5.0")},
+       bind<Block>(env, false),
+       {}},
+      {"AvoidRobot",
+       K::kAction,
+       {agent_port(), step_port(), in("safe_distance", D, "1.5"), in("runaway_vel", D, "1.2"),
         in("duration", D, "0.0")},
-       bind<Avoid>(env, false), {}},
-      {"JoinQueue", K::kAction, {agent_port(), step_port(), in("queue", T), in("spacing", D, "0.7"), out("position", I)},
-       bind<JoinQueue>(env), {}},
-      {"AdvanceQueue", K::kAction,
+       bind<Avoid>(env, true),
+       {}},
+      {"FollowAgent",
+       K::kAction,
+       {agent_port(), step_port(), in("target_agent_id", I), in("duration", D, "5.0")},
+       bind<FollowAgent>(env),
+       {}},
+      {"LookAtAgent",
+       K::kAction,
+       {in("observer_id", I, "{id}"), in("target_id", I)},
+       bind<LookAt>(env, LookAt::What::kAgent),
+       {}},
+      {"LookAtRobot", K::kAction, {agent_port()}, bind<LookAt>(env, LookAt::What::kRobot), {}},
+      {"LookAtPoint",
+       K::kAction,
+       {agent_port(), in("goal_id", I, "-1"), in("goal", T, "")},
+       bind<LookAt>(env, LookAt::What::kPoint),
+       {}},
+      {"AvoidAgent",
+       K::kAction,
+       {agent_port(), step_port(), in("target_agent_id", I), in("safe_distance", D, "1.5"),
+        in("max_vel", D, "1.2"), in("duration", D, "0.0")},
+       bind<Avoid>(env, false),
+       {}},
+      {"JoinQueue",
+       K::kAction,
+       {agent_port(), step_port(), in("queue", T), in("spacing", D, "0.7"), out("position", I)},
+       bind<JoinQueue>(env),
+       {}},
+      {"AdvanceQueue",
+       K::kAction,
        {agent_port(), step_port(), in("queue", T), in("advance_interval", D, "0.0"), out("position", I)},
-       bind<AdvanceQueue>(env), {}},
-      {"ServeAtCounter", K::kAction,
-       {agent_port(), in("counter", T), in("queue", T), in("service_time", D, "20.0"), in("service_spread", D, "0.0")},
-       bind<ServeAtCounter>(env), {}},
+       bind<AdvanceQueue>(env),
+       {}},
+      {"ServeAtCounter",
+       K::kAction,
+       {agent_port(), in("counter", T), in("queue", T), in("service_time", D, "20.0"),
+        in("service_spread", D, "0.0")},
+       bind<ServeAtCounter>(env),
+       {}},
       {"IsAtQueueHead", K::kCondition, {agent_port(), in("queue", T)}, bind<IsAtQueueHead>(env), {}},
-      {"SitAt", K::kAction, {agent_port(), step_port(), in("seat", T), in("duration", D, "300.0")}, bind<SitAt>(env), {}},
-      {"Wander", K::kAction,
+      {"SitAt",
+       K::kAction,
+       {agent_port(), step_port(), in("seat", T), in("duration", D, "300.0")},
+       bind<SitAt>(env),
+       {}},
+      {"Wander",
+       K::kAction,
        {agent_port(), step_port(), in("region", T), in("duration", D, "0.0"), in("pause_min", D, "1.0"),
         in("pause_max", D, "8.0")},
-       bind<Wander>(env), {}},
-      {"Gather", K::kAction,
+       bind<Wander>(env),
+       {}},
+      {"Gather",
+       K::kAction,
        {agent_port(), step_port(), in("point", T), in("radius", D, "1.5"), in("group_id", I, "-1"),
         in("duration", D, "60.0")},
-       bind<Gather>(env), {}},
-      {"Evacuate", K::kAction, {agent_port(), step_port(), in("exit", T, ""), in("speed_factor", D, "1.3")},
-       bind<Evacuate>(env), {}},
-      {"WaitAt", K::kAction,
-       {agent_port(), step_port(), in("location", T), in("duration", D, "30.0"), in("face", T, "")}, bind<WaitAt>(env),
+       bind<Gather>(env),
+       {}},
+      {"Evacuate",
+       K::kAction,
+       {agent_port(), step_port(), in("exit", T, ""), in("speed_factor", D, "1.3")},
+       bind<Evacuate>(env),
+       {}},
+      {"WaitAt",
+       K::kAction,
+       {agent_port(), step_port(), in("location", T), in("duration", D, "30.0"), in("face", T, "")},
+       bind<WaitAt>(env),
        {}},
       {"IsInRegion", K::kCondition, {agent_port(), in("region", T)}, bind<IsInRegion>(env), {}},
-      {"FollowVelocityField", K::kAction,
-       {agent_port(), step_port(), in("field", T), in("tolerance", D, "0.5")}, bind<FollowVelocityField>(env), {}},
+      {"FollowVelocityField",
+       K::kAction,
+       {agent_port(), step_port(), in("field", T), in("tolerance", D, "0.5")},
+       bind<FollowVelocityField>(env),
+       {}},
   };
 }
 
@@ -1512,11 +1632,12 @@ BtLoadOptions behavior_load_options(const BtEnvironment& env, std::filesystem::p
     if (port.type == BtPortType::kDouble) {
       const double v = std::get<double>(port.literal);
       if (n == "probability" && (v < 0.0 || v > 1.0)) return "must be in [0, 1]";
-      const bool non_negative = n.find("duration") != std::string::npos || n.find("distance") != std::string::npos ||
-                                n.find("dist") != std::string::npos || n == "seconds" || n == "tolerance" ||
-                                n == "threshold" || n == "radius" || n == "spacing" || n == "service_time" ||
-                                n == "service_spread" || n == "delay" || n.find("vel") != std::string::npos ||
-                                n == "pause_min" || n == "pause_max" || n == "speed_factor" || n == "advance_interval";
+      const bool non_negative =
+          n.find("duration") != std::string::npos || n.find("distance") != std::string::npos ||
+          n.find("dist") != std::string::npos || n == "seconds" || n == "tolerance" || n == "threshold" ||
+          n == "radius" || n == "spacing" || n == "service_time" || n == "service_spread" || n == "delay" ||
+          n.find("vel") != std::string::npos || n == "pause_min" || n == "pause_max" || n == "speed_factor" ||
+          n == "advance_interval";
       if (non_negative && v < 0.0) return "must not be negative";
       return std::nullopt;
     }
@@ -1531,9 +1652,11 @@ BtLoadOptions behavior_load_options(const BtEnvironment& env, std::filesystem::p
     if (n == "region") return env.check_place(v, "region");
     if (n == "exit") return env.check_place(v, "exit");
     if (n == "field")
-      return env.velocity_field(v) != nullptr ? std::nullopt
-                                              : std::optional<std::string>("no velocity field (ambient group) named '" + v + "'");
-    const bool place = n == "goal" || n == "counter" || n == "seat" || n == "point" || n == "location" || n == "face";
+      return env.velocity_field(v) != nullptr
+                 ? std::nullopt
+                 : std::optional<std::string>("no velocity field (ambient group) named '" + v + "'");
+    const bool place =
+        n == "goal" || n == "counter" || n == "seat" || n == "point" || n == "location" || n == "face";
     if (place && !(v.empty() && (n == "goal" || n == "face"))) return env.check_place(v, "place");
     (void)node;
     return std::nullopt;

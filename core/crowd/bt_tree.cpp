@@ -87,10 +87,10 @@ std::optional<bool> parse_bool(std::string_view text) {
 }
 
 tl::unexpected<Error> conversion_error(const BtValue& value, BtPortType type) {
-  const std::string shown = std::holds_alternative<std::monostate>(value) ? "an empty value" : "'" + bt_to_string(value) + "'";
-  return fail(ErrorCode::kValidation,
-              shown + " is not a valid " + std::string(bt_port_type_name(type)) +
-                  (type == BtPortType::kBool ? " (true/false)" : ""));
+  const std::string shown =
+      std::holds_alternative<std::monostate>(value) ? "an empty value" : "'" + bt_to_string(value) + "'";
+  return fail(ErrorCode::kValidation, shown + " is not a valid " + std::string(bt_port_type_name(type)) +
+                                          (type == BtPortType::kBool ? " (true/false)" : ""));
 }
 
 }  // namespace
@@ -145,7 +145,8 @@ Result<BtValue> bt_convert(const BtValue& value, BtPortType type) {
 // --- blackboard --------------------------------------------------------------------------------
 
 const BtValue* BtBlackboard::get(std::string_view key) const {
-  if (auto r = remap_.find(key); r != remap_.end()) return parent_ != nullptr ? parent_->get(r->second) : nullptr;
+  if (auto r = remap_.find(key); r != remap_.end())
+    return parent_ != nullptr ? parent_->get(r->second) : nullptr;
   if (auto e = entries_.find(key); e != entries_.end()) return &e->second;
   if (autoremap_ && parent_ != nullptr) return parent_->get(key);
   return nullptr;
@@ -183,13 +184,17 @@ void BtNode::halt() {
   status_ = BtStatus::kIdle;
 }
 
-void BtNode::reset() { halt(); }
+void BtNode::reset() {
+  halt();
+}
 
 void BtNode::halt_children(std::size_t from) {
   for (std::size_t i = from; i < children_.size(); ++i) children_[i]->halt();
 }
 
-void BtNode::reset_children() { halt_children(0); }
+void BtNode::reset_children() {
+  halt_children(0);
+}
 
 BtStatus BtNode::failure(const std::string& message) const {
   tree_->report(*spec_, message);
@@ -206,7 +211,8 @@ Result<BtValue> BtNode::input_value(std::string_view port, BtPortType type) cons
       return fail(ErrorCode::kValidation, "blackboard key '" + *b.key + "' has no value");
     }
     auto converted = bt_convert(*v, type);
-    if (!converted) tree_->report(*spec_, "port '" + b.name + "' ({" + *b.key + "}): " + converted.error().detail);
+    if (!converted)
+      tree_->report(*spec_, "port '" + b.name + "' ({" + *b.key + "}): " + converted.error().detail);
     return converted;
   }
   tree_->report(*spec_, "no port '" + std::string(port) + "'");
@@ -253,7 +259,9 @@ BtStatus BtTree::tick(double now) {
   return root_->tick();
 }
 
-void BtTree::halt() { root_->halt(); }
+void BtTree::halt() {
+  root_->halt();
+}
 
 namespace {
 void collect(BtNode* n, std::vector<BtNode*>& out) {
@@ -360,7 +368,8 @@ class FallbackNode final : public BtNode {
 // exactly one child active).
 class ReactiveNode final : public BtNode {
  public:
-  ReactiveNode(const BtNodeInit& init, bool sequence) : BtNode(init.spec, init.tree, init.blackboard), sequence_(sequence) {}
+  ReactiveNode(const BtNodeInit& init, bool sequence)
+      : BtNode(init.spec, init.tree, init.blackboard), sequence_(sequence) {}
 
  protected:
   BtStatus on_tick() override {
@@ -399,8 +408,10 @@ class ParallelNode final : public BtNode {
     auto failure_port = input<std::int64_t>("failure_count");
     if (!success_port || !failure_port) return BtStatus::kFailure;
     const auto n = static_cast<std::int64_t>(children_.size());
-    const std::int64_t need_success = *success_port < 0 ? std::max<std::int64_t>(n + *success_port + 1, 0) : *success_port;
-    const std::int64_t need_failure = *failure_port < 0 ? std::max<std::int64_t>(n + *failure_port + 1, 0) : *failure_port;
+    const std::int64_t need_success =
+        *success_port < 0 ? std::max<std::int64_t>(n + *success_port + 1, 0) : *success_port;
+    const std::int64_t need_failure =
+        *failure_port < 0 ? std::max<std::int64_t>(n + *failure_port + 1, 0) : *failure_port;
     if (need_success > n || need_failure > n)
       return failure("success_count/failure_count exceed the number of children (" + std::to_string(n) + ")");
     std::int64_t skipped = 0;
@@ -460,7 +471,8 @@ class InverterNode final : public BtNode {
 
 class ForceNode final : public BtNode {
  public:
-  ForceNode(const BtNodeInit& init, BtStatus result) : BtNode(init.spec, init.tree, init.blackboard), result_(result) {}
+  ForceNode(const BtNodeInit& init, BtStatus result)
+      : BtNode(init.spec, init.tree, init.blackboard), result_(result) {}
 
  protected:
   BtStatus on_tick() override {
@@ -479,7 +491,8 @@ class ForceNode final : public BtNode {
 // Repeat (repeat_on = SUCCESS) and RetryUntilSuccessful (repeat_on = FAILURE).
 class LoopNode final : public BtNode {
  public:
-  LoopNode(const BtNodeInit& init, bool repeat) : BtNode(init.spec, init.tree, init.blackboard), repeat_(repeat) {}
+  LoopNode(const BtNodeInit& init, bool repeat)
+      : BtNode(init.spec, init.tree, init.blackboard), repeat_(repeat) {}
 
  protected:
   BtStatus on_tick() override {
@@ -543,7 +556,8 @@ class TimeoutNode final : public BtNode {
 // Delay returns RUNNING and TimeDelay FAILURE (its documented behaviour).
 class DelayNode final : public BtNode {
  public:
-  DelayNode(const BtNodeInit& init, bool hunav) : BtNode(init.spec, init.tree, init.blackboard), hunav_(hunav) {}
+  DelayNode(const BtNodeInit& init, bool hunav)
+      : BtNode(init.spec, init.tree, init.blackboard), hunav_(hunav) {}
 
  protected:
   BtStatus on_tick() override {
@@ -616,7 +630,8 @@ class SubTreeNode final : public BtNode {
 
 class ConstantNode final : public BtNode {
  public:
-  ConstantNode(const BtNodeInit& init, BtStatus result) : BtNode(init.spec, init.tree, init.blackboard), result_(result) {}
+  ConstantNode(const BtNodeInit& init, BtStatus result)
+      : BtNode(init.spec, init.tree, init.blackboard), result_(result) {}
 
  protected:
   BtStatus on_tick() override { return result_; }
@@ -676,11 +691,16 @@ const std::vector<BtBuiltinNode>& bt_builtin_nodes() {
       {"Fallback", K::kControl, {}, make<FallbackNode>()},
       {"ReactiveSequence", K::kControl, {}, make<ReactiveNode>(true)},
       {"ReactiveFallback", K::kControl, {}, make<ReactiveNode>(false)},
-      {"Parallel", K::kControl, {in("success_count", T::kInt, "-1"), in("failure_count", T::kInt, "1")},
+      {"Parallel",
+       K::kControl,
+       {in("success_count", T::kInt, "-1"), in("failure_count", T::kInt, "1")},
        make<ParallelNode>()},
       // SubTree's attributes are read by the loader (ID, _autoremap, remappings); the ports are
       // listed for the node library's description.
-      {"SubTree", K::kSubTree, {in("ID", T::kString), in("_autoremap", T::kBool, "false")}, make<SubTreeNode>()},
+      {"SubTree",
+       K::kSubTree,
+       {in("ID", T::kString), in("_autoremap", T::kBool, "false")},
+       make<SubTreeNode>()},
       {"Inverter", K::kDecorator, {}, make<InverterNode>()},
       {"Repeat", K::kDecorator, {in("num_cycles", T::kInt)}, make<LoopNode>(true)},
       {"RetryUntilSuccessful", K::kDecorator, {in("num_attempts", T::kInt)}, make<LoopNode>(false)},

@@ -19,12 +19,15 @@ namespace socsim::crowd {
 // kSkipped is BT.CPP v4's status of a node that decided not to run (RunOnce after its run).
 enum class BtStatus : std::uint8_t { kIdle, kRunning, kSuccess, kFailure, kSkipped };
 std::string_view bt_status_name(BtStatus status);
-inline bool bt_completed(BtStatus s) { return s == BtStatus::kSuccess || s == BtStatus::kFailure; }
+inline bool bt_completed(BtStatus s) {
+  return s == BtStatus::kSuccess || s == BtStatus::kFailure;
+}
 
 enum class BtPortType : std::uint8_t { kInt, kUnsigned, kDouble, kBool, kString };
 enum class BtPortDirection : std::uint8_t { kIn, kOut, kInOut };
 std::string_view bt_port_type_name(BtPortType type);
-std::optional<BtPortType> bt_port_type_from_name(std::string_view name);  // int, unsigned, double, bool, string
+std::optional<BtPortType> bt_port_type_from_name(
+    std::string_view name);  // int, unsigned, double, bool, string
 
 // A blackboard or port value. Literal port text is converted to the port's type when loading.
 using BtValue = std::variant<std::monostate, bool, std::int64_t, double, std::string>;
@@ -41,7 +44,9 @@ class BtBlackboard {
   [[nodiscard]] const BtValue* get(std::string_view key) const;
   void set(const std::string& key, BtValue value);
   // Key `internal` of this blackboard is the parent's key `external` (SubTree port remapping).
-  void remap(std::string internal, std::string external) { remap_[std::move(internal)] = std::move(external); }
+  void remap(std::string internal, std::string external) {
+    remap_[std::move(internal)] = std::move(external);
+  }
   // Keys not found here are read from, and written to, the parent (SubTree _autoremap).
   void set_autoremap(bool on) { autoremap_ = on; }
 
@@ -82,14 +87,14 @@ struct BtNodeSpec {
   // SubTree only.
   std::string subtree_id;
   bool autoremap = false;
-  bool shared_blackboard = false;                  // v3 __shared_blackboard
-  std::vector<std::pair<std::string, std::string>> remaps;   // subtree key → parent key
+  bool shared_blackboard = false;                             // v3 __shared_blackboard
+  std::vector<std::pair<std::string, std::string>> remaps;    // subtree key → parent key
   std::vector<std::pair<std::string, std::string>> literals;  // subtree key → literal text
 };
 
 // Per-tree state the nodes share: simulated time and the run-time diagnostics.
 struct BtTreeContext {
-  double now = 0.0;  // s, simulated time of the current tick
+  double now = 0.0;                 // s, simulated time of the current tick
   std::vector<std::string> errors;  // first run-time errors (ill-typed blackboard values …)
   std::size_t error_count = 0;
   void report(const BtNodeSpec& spec, const std::string& message);

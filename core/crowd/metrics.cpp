@@ -10,9 +10,9 @@ namespace socsim::crowd {
 
 namespace {
 
-constexpr double kCloseRange = 10.0;   // m searched for the closest person
-constexpr double kForceRange = 3.6;    // m: social forces beyond are below 1e-4 of the contact value
-constexpr double kCell = 2.0;          // m, neighbour grid
+constexpr double kCloseRange = 10.0;  // m searched for the closest person
+constexpr double kForceRange = 3.6;   // m: social forces beyond are below 1e-4 of the contact value
+constexpr double kCell = 2.0;         // m, neighbour grid
 constexpr double kPi = std::numbers::pi;
 
 double wrap(double a) {
@@ -52,7 +52,8 @@ Vec2 obstacle_force(Vec2 p, double radius, const std::vector<WallSegment>& walls
     const double ux = w.b.x - w.a.x;
     const double uy = w.b.y - w.a.y;
     const double len2 = ux * ux + uy * uy;
-    const double t = len2 > 0.0 ? std::clamp(((p.x - w.a.x) * ux + (p.y - w.a.y) * uy) / len2, 0.0, 1.0) : 0.0;
+    const double t =
+        len2 > 0.0 ? std::clamp(((p.x - w.a.x) * ux + (p.y - w.a.y) * uy) / len2, 0.0, 1.0) : 0.0;
     const double dx = p.x - (w.a.x + t * ux);
     const double dy = p.y - (w.a.y + t * uy);
     const double d = std::hypot(dx, dy);
@@ -66,7 +67,9 @@ Vec2 obstacle_force(Vec2 p, double radius, const std::vector<WallSegment>& walls
   return sum;
 }
 
-double norm(Vec2 v) { return std::hypot(v.x, v.y); }
+double norm(Vec2 v) {
+  return std::hypot(v.x, v.y);
+}
 
 }  // namespace
 
@@ -93,8 +96,9 @@ MetricsRecorder::MetricsRecorder(MetricsRecorder&&) noexcept = default;
 MetricsRecorder& MetricsRecorder::operator=(MetricsRecorder&&) noexcept = default;
 MetricsRecorder::~MetricsRecorder() = default;
 
-void MetricsRecorder::observe(double time, const std::vector<PedestrianState>& states, const std::vector<double>& radii,
-                              const std::vector<std::uint8_t>& active, const std::vector<WallSegment>& walls) {
+void MetricsRecorder::observe(double time, const std::vector<PedestrianState>& states,
+                              const std::vector<double>& radii, const std::vector<std::uint8_t>& active,
+                              const std::vector<WallSegment>& walls) {
   const std::size_t n = states.size();
   if (tracks_.size() < n) tracks_.resize(n);
   if (frames_ == 0) first_time_ = time;
@@ -107,7 +111,8 @@ void MetricsRecorder::observe(double time, const std::vector<PedestrianState>& s
     return (static_cast<std::uint64_t>(gx) << 32) ^ (static_cast<std::uint64_t>(gy) & 0xffffffffu);
   };
   auto key = [&](double x, double y) {
-    return cell_key(static_cast<std::int64_t>(std::floor(x / kCell)), static_cast<std::int64_t>(std::floor(y / kCell)));
+    return cell_key(static_cast<std::int64_t>(std::floor(x / kCell)),
+                    static_cast<std::int64_t>(std::floor(y / kCell)));
   };
   for (std::uint32_t i = 0; i < n; ++i)
     if (active[i]) cells[key(states[i].pose.x, states[i].pose.y)].push_back(i);
@@ -150,7 +155,8 @@ void MetricsRecorder::observe(double time, const std::vector<PedestrianState>& s
     // Goals.
     if (i < goals_.size() && !goals_[i].empty()) {
       double nearest = std::numeric_limits<double>::infinity();
-      for (const Goal& g : goals_[i]) nearest = std::min(nearest, norm({p.x - g.position.x, p.y - g.position.y}));
+      for (const Goal& g : goals_[i])
+        nearest = std::min(nearest, norm({p.x - g.position.x, p.y - g.position.y}));
       tr.min_goal = std::min(tr.min_goal, nearest);
       tr.last_goal = nearest;
       const Goal& last = goals_[i].back();
@@ -214,9 +220,12 @@ void MetricsRecorder::observe(double time, const std::vector<PedestrianState>& s
       ++tr.closest_frames;
     }
     tr.min_people = std::min(tr.min_people, closest_centre);
-    if (closest_centre < 0.45) ++tr.intimate;
-    else if (closest_centre < 1.2) ++tr.personal;
-    else if (closest_centre < 3.6) ++tr.social;
+    if (closest_centre < 0.45)
+      ++tr.intimate;
+    else if (closest_centre < 1.2)
+      ++tr.personal;
+    else if (closest_centre < 3.6)
+      ++tr.social;
     tr.m.social_work += norm(force_on_me) + norm(obstacle_force(p, ri, walls));
 
     tr.seen = true;
@@ -232,14 +241,16 @@ RunMetrics MetricsRecorder::finish() const {
   out.frames = frames_;
   out.duration = last_time_ - first_time_;
   out.frame_period = frames_ > 1 ? out.duration / static_cast<double>(frames_ - 1) : 0.0;
-  out.avg_pedestrian_velocity = pedestrian_samples_ > 0 ? pedestrian_speed_sum_ / static_cast<double>(pedestrian_samples_) : 0.0;
+  out.avg_pedestrian_velocity =
+      pedestrian_samples_ > 0 ? pedestrian_speed_sum_ / static_cast<double>(pedestrian_samples_) : 0.0;
   out.robot_on_person_collisions = robot_on_person_;
   out.person_on_robot_collisions = person_on_robot_;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     const Track& tr = tracks_[i];
     AgentMetrics m = tr.m;
     const double frames = static_cast<double>(std::max<std::uint64_t>(m.frames, 1));
-    m.avg_distance_to_closest_person = tr.closest_frames > 0 ? tr.closest_sum / static_cast<double>(tr.closest_frames) : 0.0;
+    m.avg_distance_to_closest_person =
+        tr.closest_frames > 0 ? tr.closest_sum / static_cast<double>(tr.closest_frames) : 0.0;
     m.minimum_distance_to_people = std::isfinite(tr.min_people) ? tr.min_people : 0.0;
     m.intimate_space_intrusions = 100.0 * static_cast<double>(tr.intimate) / frames;
     m.personal_space_intrusions = 100.0 * static_cast<double>(tr.personal) / frames;
@@ -251,8 +262,10 @@ RunMetrics MetricsRecorder::finish() const {
     m.avg_overacceleration = tr.acc_samples > 0 ? tr.jerk_sum / static_cast<double>(tr.acc_samples) : 0.0;
     m.final_goal_distance = std::isfinite(tr.min_goal) ? tr.last_goal : 0.0;
     m.minimum_goal_distance = std::isfinite(tr.min_goal) ? tr.min_goal : 0.0;
-    if (robot_ && robot_->value() == i) out.robot = m;
-    else out.agents.push_back(std::move(m));
+    if (robot_ && robot_->value() == i)
+      out.robot = m;
+    else
+      out.agents.push_back(std::move(m));
   }
   return out;
 }

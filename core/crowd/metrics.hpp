@@ -17,9 +17,9 @@ struct AgentMetrics {
   std::uint32_t id = 0;
   std::string role;
   bool goal_reached = false;
-  std::optional<double> time_to_reach_goal;  // s from the start; none when never reached
-  double path_length = 0.0;                   // m
-  double cumulative_heading_changes = 0.0;    // rad
+  std::optional<double> time_to_reach_goal;     // s from the start; none when never reached
+  double path_length = 0.0;                     // m
+  double cumulative_heading_changes = 0.0;      // rad
   double avg_distance_to_closest_person = 0.0;  // m, body to body, frames with someone within 10 m
   double minimum_distance_to_people = 0.0;      // m, centre distance minus own radius
   double intimate_space_intrusions = 0.0;       // % of frames, closest person < 0.45 m
@@ -35,7 +35,7 @@ struct AgentMetrics {
   double minimum_goal_distance = 0.0;           // m over the run
   double social_force_on_agent = 0.0;           // Σ frames Σ people |F_social(person → agent)|
   double social_force_on_people = 0.0;          // Σ frames Σ people |F_social(agent → person)|
-  double social_work = 0.0;                     // Σ frames |Σ F_social on agent| + |F_obstacle| + Σ |F(agent → person)|
+  double social_work = 0.0;  // Σ frames |Σ F_social on agent| + |F_obstacle| + Σ |F(agent → person)|
   std::uint64_t frames = 0;
 };
 

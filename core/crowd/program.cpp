@@ -66,7 +66,8 @@ class Reader {
   }
 
   std::optional<ProgramRegion> region(const Json& v, const std::string& ptr) {
-    if (v.is_string() && !v.get_ref<const std::string&>().empty()) return ProgramRegion{v.get<std::string>(), ptr};
+    if (v.is_string() && !v.get_ref<const std::string&>().empty())
+      return ProgramRegion{v.get<std::string>(), ptr};
     if (v.is_array() && v.size() >= 3) {
       std::vector<Vec2> ring;
       for (std::size_t k = 0; k < v.size(); ++k) {
@@ -80,7 +81,8 @@ class Reader {
     return std::nullopt;
   }
 
-  std::vector<ProgramRegion> regions(const Json& obj, const std::string& ptr, const char* key, bool required) {
+  std::vector<ProgramRegion> regions(const Json& obj, const std::string& ptr, const char* key,
+                                     bool required) {
     std::vector<ProgramRegion> out;
     const Json* a = c.array(obj, ptr, key, required, 1000);
     if (a == nullptr) return out;
@@ -95,7 +97,8 @@ class Reader {
     const Json* a = c.array(obj, ptr, "goals", false, 10'000);
     if (a == nullptr) return out;
     for (std::size_t k = 0; k < a->size(); ++k)
-      if (auto t = target((*a)[k], JsonChecker::child(JsonChecker::child(ptr, "goals"), k))) out.push_back(*t);
+      if (auto t = target((*a)[k], JsonChecker::child(JsonChecker::child(ptr, "goals"), k)))
+        out.push_back(*t);
     return out;
   }
 
@@ -176,9 +179,11 @@ class Reader {
 Result<Program> program_from_json(const Json& j) {
   Reader r;
   JsonChecker& c = r.c;
-  if (!j.is_object()) return fail(ErrorCode::kValidation, "invalid program", {FieldError{"", "must be an object", {}, 0, 0}});
-  c.only_keys(j, "", {"$schema", "version", "name", "dt", "decision_period", "roles", "behavior_trees", "agents", "groups",
-                      "ambient_groups", "robot", "body_stiffness"});
+  if (!j.is_object())
+    return fail(ErrorCode::kValidation, "invalid program", {FieldError{"", "must be an object", {}, 0, 0}});
+  c.only_keys(j, "",
+              {"$schema", "version", "name", "dt", "decision_period", "roles", "behavior_trees", "agents",
+               "groups", "ambient_groups", "robot", "body_stiffness"});
   Program p;
   if (auto v = c.integer(j, "", "version", false, 1, 1)) (void)v;
   p.name = c.string(j, "", "name", false, 0, 256).value_or("");
@@ -196,7 +201,8 @@ Result<Program> program_from_json(const Json& j) {
 
   if (const Json* trees = c.object(j, "", "behavior_trees", false)) {
     for (const auto& [name, v] : trees->items()) {
-      if (auto t = r.tree(v, JsonChecker::child("/behavior_trees", name), false)) p.behavior_trees.emplace_back(name, *t);
+      if (auto t = r.tree(v, JsonChecker::child("/behavior_trees", name), false))
+        p.behavior_trees.emplace_back(name, *t);
     }
   }
 
@@ -209,17 +215,20 @@ Result<Program> program_from_json(const Json& j) {
         c.add(ptr, "must be an object");
         continue;
       }
-      c.only_keys(a, ptr, {"name", "role", "position", "spawn", "count", "yaw", "speed", "radius", "group_id", "goals",
-                           "cyclic_goals", "goal_radius", "behavior", "tags"});
+      c.only_keys(a, ptr,
+                  {"name", "role", "position", "spawn", "count", "yaw", "speed", "radius", "group_id",
+                   "goals", "cyclic_goals", "goal_radius", "behavior", "tags"});
       ProgramAgent agent;
       agent.pointer = ptr;
       agent.name = c.string(a, ptr, "name", false, 0, 128).value_or("");
       agent.role = c.string(a, ptr, "role", false, 1, 64).value_or("adult");
       if (a.contains("position")) agent.position = r.point(a["position"], ptr + "/position");
       if (a.contains("spawn")) agent.spawn = r.region(a["spawn"], ptr + "/spawn");
-      if (a.contains("position") == a.contains("spawn")) c.add(ptr, "needs exactly one of 'position' and 'spawn'");
+      if (a.contains("position") == a.contains("spawn"))
+        c.add(ptr, "needs exactly one of 'position' and 'spawn'");
       agent.count = static_cast<std::size_t>(c.integer(a, ptr, "count", false, 1, 100'000).value_or(1));
-      if (agent.count > 1 && a.contains("position")) c.add(ptr + "/count", "several agents need a 'spawn' region");
+      if (agent.count > 1 && a.contains("position"))
+        c.add(ptr + "/count", "several agents need a 'spawn' region");
       agent.yaw = c.number(a, ptr, "yaw", false, -1e3, 1e3);
       agent.speed = c.number(a, ptr, "speed", false, 0.0, 8.0);
       agent.radius = c.number(a, ptr, "radius", false, 0.05, 1.5);
@@ -230,8 +239,10 @@ Result<Program> program_from_json(const Json& j) {
       if (a.contains("behavior")) agent.behavior = r.tree(a["behavior"], ptr + "/behavior", true);
       if (const Json* tags = c.array(a, ptr, "tags", false, 64)) {
         for (std::size_t t = 0; t < tags->size(); ++t) {
-          if ((*tags)[t].is_string()) agent.tags.push_back((*tags)[t].get<std::string>());
-          else c.add(ptr + "/tags/" + std::to_string(t), "must be a string");
+          if ((*tags)[t].is_string())
+            agent.tags.push_back((*tags)[t].get<std::string>());
+          else
+            c.add(ptr + "/tags/" + std::to_string(t), "must be a string");
         }
       }
       total += agent.count;
@@ -273,13 +284,15 @@ Result<Program> program_from_json(const Json& j) {
         c.add(ptr, "must be an object");
         continue;
       }
-      c.only_keys(a, ptr, {"name", "start", "goal", "size", "speed", "role", "resolution", "variation", "tolerance",
-                           "on_arrival", "field", "behavior"});
+      c.only_keys(a, ptr,
+                  {"name", "start", "goal", "size", "speed", "role", "resolution", "variation", "tolerance",
+                   "on_arrival", "field", "behavior"});
       AmbientGroup g;
       g.pointer = ptr;
       g.name = c.string(a, ptr, "name", true, 1, 128).value_or("");
       for (const AmbientGroup& other : p.ambient_groups)
-        if (!g.name.empty() && other.name == g.name) c.add(ptr + "/name", "duplicate ambient group name '" + g.name + "'");
+        if (!g.name.empty() && other.name == g.name)
+          c.add(ptr + "/name", "duplicate ambient group name '" + g.name + "'");
       g.start = r.regions(a, ptr, "start", true);
       g.goal = r.regions(a, ptr, "goal", true);
       g.size = static_cast<std::size_t>(c.integer(a, ptr, "size", true, 0, 100'000).value_or(0));
@@ -289,9 +302,12 @@ Result<Program> program_from_json(const Json& j) {
       g.variation = c.number(a, ptr, "variation", false, 0.0, 1.5707963267948966).value_or(0.0);
       g.tolerance = c.number(a, ptr, "tolerance", false, 0.01, 10.0).value_or(0.5);
       if (auto arrival = c.string(a, ptr, "on_arrival", false, 1, 16)) {
-        if (*arrival == "exit") g.exit_at_goal = true;
-        else if (*arrival == "stand") g.exit_at_goal = false;
-        else c.add(ptr + "/on_arrival", "must be 'exit' or 'stand'");
+        if (*arrival == "exit")
+          g.exit_at_goal = true;
+        else if (*arrival == "stand")
+          g.exit_at_goal = false;
+        else
+          c.add(ptr + "/on_arrival", "must be 'exit' or 'stand'");
       }
       if (a.contains("field")) g.field = r.field(a["field"], ptr + "/field");
       if (a.contains("behavior")) g.behavior = r.tree(a["behavior"], ptr + "/behavior", true);
@@ -304,8 +320,10 @@ Result<Program> program_from_json(const Json& j) {
     const std::string ptr = "/robot";
     c.only_keys(*robot, ptr, {"position", "yaw", "speed", "radius", "goals", "cyclic_goals", "goal_radius"});
     ProgramRobot rb;
-    if (!robot->contains("position")) c.add(ptr + "/position", "is required");
-    else if (auto pos = r.point((*robot)["position"], ptr + "/position")) rb.position = *pos;
+    if (!robot->contains("position"))
+      c.add(ptr + "/position", "is required");
+    else if (auto pos = r.point((*robot)["position"], ptr + "/position"))
+      rb.position = *pos;
     rb.yaw = c.number(*robot, ptr, "yaw", false, -1e3, 1e3);
     rb.speed = c.number(*robot, ptr, "speed", false, 0.0, 8.0).value_or(0.8);
     rb.radius = c.number(*robot, ptr, "radius", false, 0.05, 1.5).value_or(0.35);

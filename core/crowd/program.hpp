@@ -69,13 +69,13 @@ struct AmbientGroup {
   std::vector<ProgramRegion> start;
   std::vector<ProgramRegion> goal;
   std::size_t size = 0;
-  double speed = 1.34;     // m/s, field magnitude and mean desired speed
+  double speed = 1.34;  // m/s, field magnitude and mean desired speed
   std::string role = "adult";
-  int resolution = 64;     // cells per axis of the generated field
-  double variation = 0.0;  // rad, seeded heading variation of the generated field
-  double tolerance = 0.5;  // Algorithm 1's tol
-  bool exit_at_goal = true;  // agents leave the simulation in the goal region
-  std::optional<ProgramField> field;  // supplied from outside (e.g. a diffusion model)
+  int resolution = 64;                  // cells per axis of the generated field
+  double variation = 0.0;               // rad, seeded heading variation of the generated field
+  double tolerance = 0.5;               // Algorithm 1's tol
+  bool exit_at_goal = true;             // agents leave the simulation in the goal region
+  std::optional<ProgramField> field;    // supplied from outside (e.g. a diffusion model)
   std::optional<ProgramTree> behavior;  // default: FollowVelocityField
   std::string pointer;
 };
@@ -99,9 +99,9 @@ struct ProgramGroup {
 
 struct Program {
   std::string name;
-  double dt = 0.05;               // s, simulation step
-  double decision_period = 0.1;   // s, between behaviour-tree ticks (a multiple of dt)
-  Json roles = Json::object();    // RoleTable::apply_json overrides
+  double dt = 0.05;              // s, simulation step
+  double decision_period = 0.1;  // s, between behaviour-tree ticks (a multiple of dt)
+  Json roles = Json::object();   // RoleTable::apply_json overrides
   std::vector<std::pair<std::string, ProgramTree>> behavior_trees;
   std::vector<ProgramAgent> agents;
   std::vector<ProgramGroup> groups;

@@ -92,7 +92,8 @@ class Builder {
 
   // A random free spot in one of the regions: inside, in a zone, `radius` from walls and from
   // agents already placed. Nullopt after many failed draws.
-  std::optional<Vec2> spawn(const std::vector<geometry::Polygon>& regions, double radius, const CrowdSimulation& sim) {
+  std::optional<Vec2> spawn(const std::vector<geometry::Polygon>& regions, double radius,
+                            const CrowdSimulation& sim) {
     std::vector<double> areas;
     for (const geometry::Polygon& p : regions) areas.push_back(std::abs(geometry::area(p)));
     for (int attempt = 0; attempt < 400; ++attempt) {
@@ -114,9 +115,7 @@ class Builder {
     }
     return std::nullopt;
   }
-  void place(Vec2 p, double radius) {
-    placed_[cell_key(p)].push_back({p, radius});
-  }
+  void place(Vec2 p, double radius) { placed_[cell_key(p)].push_back({p, radius}); }
 
   const world::World* world_;
   const Program& program_;
@@ -147,7 +146,8 @@ class Builder {
 
 ScenarioRunner::~ScenarioRunner() = default;
 
-Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::World* world, const Program& program,
+Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::World* world,
+                                                               const Program& program,
                                                                const RunnerOptions& options) {
   std::unique_ptr<ScenarioRunner> run(new ScenarioRunner());
   run->world_ = world;
@@ -175,7 +175,8 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
   if (world != nullptr)
     for (const world::Wall& w : world->walls())
       (void)s.add_wall({w.segment.a.x, w.segment.a.y}, {w.segment.b.x, w.segment.b.y});
-  run->decision_every_ = static_cast<std::uint64_t>(std::max(1.0, std::round(program.decision_period / program.dt)));
+  run->decision_every_ =
+      static_cast<std::uint64_t>(std::max(1.0, std::round(program.decision_period / program.dt)));
   run->env_ = std::make_unique<BtEnvironment>(s, world, options.environment);
   BtEnvironment& env = *run->env_;
 
@@ -195,7 +196,8 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
     }
     Result<VelocityField> field = fail(ErrorCode::kInternal, "");
     if (group.field) {
-      field = VelocityField::from_values(world->bounds(), group.field->width, group.field->height, group.field->values);
+      field = VelocityField::from_values(world->bounds(), group.field->width, group.field->height,
+                                         group.field->values);
       if (!field) {
         b.error(field.error(), group.pointer + "/field");
         continue;
@@ -204,7 +206,8 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       // A thin inflation: the field is a coarse guide (the social force keeps agents off walls);
       // narrow passages must stay open at the field's resolution.
       const world::OccupancyGrid grid = world::OccupancyGrid::rasterise(
-          *world, world::GridOptions{options.environment.navigation_resolution, 0.15, options.environment.navigation_max_cells});
+          *world, world::GridOptions{options.environment.navigation_resolution, 0.15,
+                                     options.environment.navigation_max_cells});
       VelocityField::GeodesicSpec spec;
       spec.start = starts[g];
       spec.goal = goals;
@@ -235,8 +238,9 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       }
       return std::pair{it->second, std::string()};
     }
-    Result<BtDocument> doc = !t.xml.empty() ? BtDocument::parse(t.xml, *run->registry_, load)
-                                            : BtDocument::load(options.base_dir / t.file, *run->registry_, load);
+    Result<BtDocument> doc = !t.xml.empty()
+                                 ? BtDocument::parse(t.xml, *run->registry_, load)
+                                 : BtDocument::load(options.base_dir / t.file, *run->registry_, load);
     if (!doc) {
       b.error(doc.error(), t.pointer);
       return std::nullopt;
@@ -257,7 +261,8 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
   for (const ProgramGroup& g : program.groups)
     for (std::size_t k = 0; k < g.agents.size(); ++k) {
       if (group_of.count(g.agents[k]) != 0)
-        b.error(g.pointer + "/agents/" + std::to_string(k), "agent " + std::to_string(g.agents[k]) + " is in two groups");
+        b.error(g.pointer + "/agents/" + std::to_string(k),
+                "agent " + std::to_string(g.agents[k]) + " is in two groups");
       group_of[g.agents[k]] = g.id;
     }
 
@@ -303,8 +308,8 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       } else if (auto p = b.spawn(spawn_regions, radius, s)) {
         spec.position = *p;
       } else {
-        b.error(a.pointer + "/spawn", "no free spot for agent " + std::to_string(k + 1) + " of " + std::to_string(a.count) +
-                                          " (region too small or blocked)");
+        b.error(a.pointer + "/spawn", "no free spot for agent " + std::to_string(k + 1) + " of " +
+                                          std::to_string(a.count) + " (region too small or blocked)");
         break;
       }
       if (!goals.empty()) spec.intent.goal_id = 0;
@@ -313,8 +318,8 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
         b.error(id.error(), a.pointer);
         break;
       }
-      run->agents_.push_back(
-          RunnerAgent{*id, AgentKind::kSpotlight, a.count > 1 ? a.name + "#" + std::to_string(k) : a.name, a.pointer});
+      run->agents_.push_back(RunnerAgent{*id, AgentKind::kSpotlight,
+                                         a.count > 1 ? a.name + "#" + std::to_string(k) : a.name, a.pointer});
       pending.push_back(Pending{tree, goals, a.cyclic_goals});
       run->exit_at_goal_.push_back(0);
     }
@@ -332,8 +337,9 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
     }
     const RoleParameters& rp = roles.at(*role);
     std::optional<std::pair<std::size_t, std::string>> tree =
-        group.behavior ? load_tree(*group.behavior)
-                       : load_tree(ProgramTree{ambient_tree(group.name, group.tolerance), {}, {}, {}, group.pointer});
+        group.behavior
+            ? load_tree(*group.behavior)
+            : load_tree(ProgramTree{ambient_tree(group.name, group.tolerance), {}, {}, {}, group.pointer});
     if (!b.ok()) continue;
     for (std::size_t k = 0; k < group.size; ++k) {
       const auto p = b.spawn(starts[g], rp.radius, s);
@@ -345,14 +351,16 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       AgentSpec spec;
       spec.position = *p;
       spec.role = group.role;
-      spec.desired_speed = std::clamp(speeds.normal(group.speed, rp.speed.sd), std::min(rp.speed.min, group.speed),
-                                      std::max(rp.speed.max, group.speed));
+      spec.desired_speed =
+          std::clamp(speeds.normal(group.speed, rp.speed.sd), std::min(rp.speed.min, group.speed),
+                     std::max(rp.speed.max, group.speed));
       auto id = s.add_agent(spec);
       if (!id) {
         b.error(id.error(), group.pointer);
         break;
       }
-      run->agents_.push_back(RunnerAgent{*id, AgentKind::kAmbient, group.name + "#" + std::to_string(k), group.pointer});
+      run->agents_.push_back(
+          RunnerAgent{*id, AgentKind::kAmbient, group.name + "#" + std::to_string(k), group.pointer});
       pending.push_back(Pending{tree, {}, false});
       run->exit_at_goal_.push_back(group.exit_at_goal ? 1 : 0);
     }
@@ -371,7 +379,8 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
     spec.radius = r.radius;
     spec.yaw = r.yaw;
     auto id = s.add_agent(spec);
-    if (!id) b.error(id.error(), r.pointer);
+    if (!id)
+      b.error(id.error(), r.pointer);
     else {
       robot = *id;
       run->agents_.push_back(RunnerAgent{*id, AgentKind::kRobot, "robot", r.pointer});
@@ -397,7 +406,8 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
     t.blackboard().set("dt", BtValue{run->decision_period()});
     run->trees_[i] = std::move(t);
   }
-  if (options.record_metrics) run->metrics_ = std::make_unique<MetricsRecorder>(std::move(metric_goals), robot);
+  if (options.record_metrics)
+    run->metrics_ = std::make_unique<MetricsRecorder>(std::move(metric_goals), robot);
   return run;
 }
 
@@ -468,7 +478,8 @@ void ScenarioRunner::run(double seconds, const FrameCallback& frame, unsigned fr
 std::vector<PedestrianState> ScenarioRunner::states() const {
   std::vector<PedestrianState> out;
   out.reserve(sim_->size());
-  for (std::size_t i = 0; i < sim_->size(); ++i) out.push_back(env_->state(AgentId(static_cast<std::uint32_t>(i))));
+  for (std::size_t i = 0; i < sim_->size(); ++i)
+    out.push_back(env_->state(AgentId(static_cast<std::uint32_t>(i))));
   return out;
 }
 
@@ -481,11 +492,14 @@ std::vector<std::string> ScenarioRunner::errors() const {
   std::vector<std::string> out;
   for (std::size_t i = 0; i < trees_.size(); ++i) {
     if (!trees_[i]) continue;
-    for (const std::string& e : trees_[i]->context().errors) out.push_back("agent " + std::to_string(i) + ": " + e);
+    for (const std::string& e : trees_[i]->context().errors)
+      out.push_back("agent " + std::to_string(i) + ": " + e);
   }
   return out;
 }
 
-RunMetrics ScenarioRunner::metrics() const { return metrics_ ? metrics_->finish() : RunMetrics{}; }
+RunMetrics ScenarioRunner::metrics() const {
+  return metrics_ ? metrics_->finish() : RunMetrics{};
+}
 
 }  // namespace socsim::crowd

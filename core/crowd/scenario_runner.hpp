@@ -32,8 +32,8 @@ enum class AgentKind : std::uint8_t { kSpotlight, kAmbient, kRobot };
 struct RunnerAgent {
   AgentId id;
   AgentKind kind = AgentKind::kSpotlight;
-  std::string name;      // program name ("" when none), "<group>#k" for ambient agents, "robot"
-  std::string pointer;   // program entry it comes from
+  std::string name;     // program name ("" when none), "<group>#k" for ambient agents, "robot"
+  std::string pointer;  // program entry it comes from
 };
 
 using FrameCallback = std::function<void(double time, std::span<const PedestrianState> states)>;
@@ -64,7 +64,9 @@ class ScenarioRunner {
   // Run-time problems the trees reported (first few per agent).
   [[nodiscard]] std::vector<std::string> errors() const;
   [[nodiscard]] RunMetrics metrics() const;
-  [[nodiscard]] double decision_period() const { return static_cast<double>(decision_every_) * sim_->config().dt; }
+  [[nodiscard]] double decision_period() const {
+    return static_cast<double>(decision_every_) * sim_->config().dt;
+  }
 
  private:
   ScenarioRunner() = default;

@@ -22,13 +22,15 @@ constexpr int kMaxCells = 4096;  // per axis
 
 }  // namespace
 
-Result<VelocityField> VelocityField::from_values(geometry::Box bounds, int width, int height, std::vector<Vec2> values) {
+Result<VelocityField> VelocityField::from_values(geometry::Box bounds, int width, int height,
+                                                 std::vector<Vec2> values) {
   std::vector<FieldError> errors;
   if (width < 1 || height < 1 || width > kMaxCells || height > kMaxCells)
     errors.push_back(field("/size", "width and height must be in [1, 4096]"));
   else if (values.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
     errors.push_back(field("/values", "must hold width × height vectors (" + std::to_string(width) + " × " +
-                                          std::to_string(height) + "), has " + std::to_string(values.size())));
+                                          std::to_string(height) + "), has " +
+                                          std::to_string(values.size())));
   if (!(std::isfinite(bounds.min.x) && std::isfinite(bounds.min.y) && std::isfinite(bounds.max.x) &&
         std::isfinite(bounds.max.y) && bounds.width() > 0.0 && bounds.height() > 0.0))
     errors.push_back(field("/bounds", "must be a finite box of positive size"));
@@ -36,8 +38,8 @@ Result<VelocityField> VelocityField::from_values(geometry::Box bounds, int width
     const Vec2 v = values[k];
     if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::abs(v.x) <= kMaxAgentSpeed &&
           std::abs(v.y) <= kMaxAgentSpeed))
-      errors.push_back(field("/values/" + std::to_string(k / static_cast<std::size_t>(std::max(height, 1))) + "/" +
-                                 std::to_string(k % static_cast<std::size_t>(std::max(height, 1))),
+      errors.push_back(field("/values/" + std::to_string(k / static_cast<std::size_t>(std::max(height, 1))) +
+                                 "/" + std::to_string(k % static_cast<std::size_t>(std::max(height, 1))),
                              "components must be finite and within ±8 m/s"));
   }
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid velocity field", std::move(errors));
@@ -73,12 +75,14 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
       for (int x = 0; x < grid.width(); ++x) {
         const world::Cell c{x, y};
         const world::Point p = grid.center(c);
-        if (p.x < box.min.x || p.x > box.max.x || grid.blocked(c) || !geometry::contains(spec.goal[k], p)) continue;
+        if (p.x < box.min.x || p.x > box.max.x || grid.blocked(c) || !geometry::contains(spec.goal[k], p))
+          continue;
         goal_cells.push_back(c);
         ++found;
       }
     }
-    if (found == 0) errors.push_back(field("/goal/" + std::to_string(k), "covers no walkable cell of the world"));
+    if (found == 0)
+      errors.push_back(field("/goal/" + std::to_string(k), "covers no walkable cell of the world"));
   }
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid velocity field", std::move(errors));
   const world::GeodesicField distance = world::GeodesicField::from_cells(grid, goal_cells);
@@ -97,8 +101,10 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
         reaches = std::isfinite(distance.at(c));
       }
     }
-    if (!walkable) errors.push_back(field("/start/" + std::to_string(k), "covers no walkable cell of the world"));
-    else if (!reaches) errors.push_back(field("/start/" + std::to_string(k), "cannot reach any goal region around the walls"));
+    if (!walkable)
+      errors.push_back(field("/start/" + std::to_string(k), "covers no walkable cell of the world"));
+    else if (!reaches)
+      errors.push_back(field("/start/" + std::to_string(k), "cannot reach any goal region around the walls"));
   }
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid velocity field", std::move(errors));
 
@@ -129,7 +135,9 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
   const bool fine = std::max(cw, ch) <= 2.0 * grid.resolution();
   // Per cell: 0 = no walkable sample (filled from neighbours below), 1 = vector, 2 = goal cell.
   std::vector<std::uint8_t> kind(f.values_.size(), 0);
-  const auto at = [&](int i, int j) { return static_cast<std::size_t>(i) * static_cast<std::size_t>(spec.height) + static_cast<std::size_t>(j); };
+  const auto at = [&](int i, int j) {
+    return static_cast<std::size_t>(i) * static_cast<std::size_t>(spec.height) + static_cast<std::size_t>(j);
+  };
   for (int i = 0; i < spec.width; ++i) {
     for (int j = 0; j < spec.height; ++j) {
       double sx = 0.0;
@@ -232,9 +240,12 @@ Vec2 VelocityField::sample(Vec2 position) const {
   if (values_.empty()) return {};
   const double fx = (position.x - bounds_.min.x) / bounds_.width() * width_;
   const double fy = (position.y - bounds_.min.y) / bounds_.height() * height_;
-  const int i = std::clamp(std::isfinite(fx) ? static_cast<int>(std::floor(std::clamp(fx, -1.0, 1.0e7))) : 0, 0, width_ - 1);
-  const int j = std::clamp(std::isfinite(fy) ? static_cast<int>(std::floor(std::clamp(fy, -1.0, 1.0e7))) : 0, 0, height_ - 1);
-  return values_[static_cast<std::size_t>(i) * static_cast<std::size_t>(height_) + static_cast<std::size_t>(j)];
+  const int i = std::clamp(std::isfinite(fx) ? static_cast<int>(std::floor(std::clamp(fx, -1.0, 1.0e7))) : 0,
+                           0, width_ - 1);
+  const int j = std::clamp(std::isfinite(fy) ? static_cast<int>(std::floor(std::clamp(fy, -1.0, 1.0e7))) : 0,
+                           0, height_ - 1);
+  return values_[static_cast<std::size_t>(i) * static_cast<std::size_t>(height_) +
+                 static_cast<std::size_t>(j)];
 }
 
 Vec2 velocity_field_goal(const VelocityField& field, Vec2 position, double dt, double tolerance) {

@@ -16,21 +16,23 @@ class VelocityField {
  public:
   // values[i * height + j] is the velocity of column i (along x from bounds.min.x) and row j
   // (along y from bounds.min.y): Algorithm 1's V_index with index = (i, j).
-  static Result<VelocityField> from_values(geometry::Box bounds, int width, int height, std::vector<Vec2> values);
+  static Result<VelocityField> from_values(geometry::Box bounds, int width, int height,
+                                           std::vector<Vec2> values);
 
   struct GeodesicSpec {
     std::vector<geometry::Polygon> start;  // where the group enters (checked to reach a goal)
     std::vector<geometry::Polygon> goal;   // where it heads
-    int width = 64;                         // cells along x (Algorithm 1: 64)
-    int height = 64;                        // cells along y
-    double speed = 1.34;                    // m/s, magnitude of every vector
-    double variation = 0.0;                 // rad, amplitude of the seeded smooth heading noise
+    int width = 64;                        // cells along x (Algorithm 1: 64)
+    int height = 64;                       // cells along y
+    double speed = 1.34;                   // m/s, magnitude of every vector
+    double variation = 0.0;                // rad, amplitude of the seeded smooth heading noise
     std::uint64_t seed = 0;
   };
   // Each cell holds speed × the direction of steepest descent of the geodesic distance to the
   // goal regions (sampled at five points of the cell, averaged over the walkable ones), turned
   // by a smooth seeded angle field of amplitude `variation`. Cells with no walkable sample take
-  // their neighbours' mean direction (up to three cells out); goal cells hold zero. Errors (kValidation, pointer "/start/<k>" or
+  // their neighbours' mean direction (up to three cells out); goal cells hold zero. Errors (kValidation,
+  // pointer "/start/<k>" or
   // "/goal/<k>"): empty or off-grid regions, a start region that cannot reach any goal.
   static Result<VelocityField> from_geodesic(const world::OccupancyGrid& grid, geometry::Box bounds,
                                              const GeodesicSpec& spec);

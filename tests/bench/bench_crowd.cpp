@@ -146,67 +146,71 @@ SOCSIM_BENCH("crowd", "--agents N --steps S --threads T [--walls] [--groups] [--
 // (fast marching) plus the per-cell descent directions, on the example clinic (20 × 12 m, a
 // routing grid of the same cell size). Also the cost of Algorithm 1's lookup per agent.
 int crowd_field_bench(const socsim::bench::Args& a) {
-               using namespace socsim;
-               const auto size = static_cast<int>(a.integer("size", 256));
-               const auto runs = static_cast<int>(a.integer("runs", 20));
-               const std::string path = a.str("world", "schemas/examples/world_clinic.yaml");  // run from the repository root
-               std::ifstream in(path);
-               std::ostringstream text;
-               text << in.rdbuf();
-               auto world = world::world_from_yaml(text.str());
-               if (!world) {
-                 std::cerr << world.error().message() << "\n";
-                 return 1;
-               }
-               const geometry::Box box = world->bounds();
-               const double cell = std::max(box.width(), box.height()) / size;
-               crowd::VelocityField::GeodesicSpec spec;
-               spec.width = spec.height = size;
-               spec.speed = 1.3;
-               spec.variation = 0.2;
-               spec.start = {geometry::Polygon{{{1, 7}, {9, 7}, {9, 11}, {1, 11}}, {}}};
-               spec.goal = {geometry::Polygon{{{14, 1}, {19, 1}, {19, 5}, {14, 5}}, {}}};
-               std::vector<double> grid_ms;
-               std::vector<double> field_ms;
-               std::vector<double> field_cpu_ms;
-               int cells = 0;
-               for (int r = 0; r < runs; ++r) {
-                 const auto t0 = std::chrono::steady_clock::now();
-                 const world::OccupancyGrid grid = world::OccupancyGrid::rasterise(*world, {cell, 0.15, 4'000'000});
-                 const auto t1 = std::chrono::steady_clock::now();
-                 const std::clock_t c1 = std::clock();
-                 auto f = crowd::VelocityField::from_geodesic(grid, box, spec);
-                 const std::clock_t c2 = std::clock();
-                 const auto t2 = std::chrono::steady_clock::now();
-                 field_cpu_ms.push_back(1000.0 * static_cast<double>(c2 - c1) / CLOCKS_PER_SEC);
-                 if (!f) {
-                   std::cerr << f.error().message() << "\n";
-                   return 1;
-                 }
-                 cells = grid.width() * grid.height();
-                 grid_ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-                 field_ms.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());
-               }
-               // Algorithm 1 per agent: lookup + intermediate goal.
-               auto f = crowd::VelocityField::from_geodesic(world::OccupancyGrid::rasterise(*world, {cell, 0.15, 4'000'000}), box, spec);
-               socsim::Rng rng(1);
-               std::vector<crowd::Vec2> points(100'000);
-               for (auto& p : points) p = {rng.uniform(box.min.x, box.max.x), rng.uniform(box.min.y, box.max.y)};
-               const auto t0 = std::chrono::steady_clock::now();
-               double sink = 0.0;
-               for (const auto& p : points) sink += crowd::velocity_field_goal(*f, p, 0.05, 0.5).x;
-               const double lookup_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
-                                        static_cast<double>(points.size());
-               socsim::bench::emit({{"bench", "crowd-field"},
-                                    {"size", size},
-                                    {"routing_cells", cells},
-                                    {"rasterise_ms_p50", socsim::bench::percentile(grid_ms, 50)},
-                                    {"field_ms_p50", socsim::bench::percentile(field_ms, 50)},
-                                    {"field_ms_p95", socsim::bench::percentile(field_ms, 95)},
-                                    {"field_cpu_ms_p50", socsim::bench::percentile(field_cpu_ms, 50)},
-                                    {"algorithm1_ns_per_agent", lookup_ns},
-                                    {"checksum", sink}});
-               return 0;
+  using namespace socsim;
+  const auto size = static_cast<int>(a.integer("size", 256));
+  const auto runs = static_cast<int>(a.integer("runs", 20));
+  const std::string path =
+      a.str("world", "schemas/examples/world_clinic.yaml");  // run from the repository root
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto world = world::world_from_yaml(text.str());
+  if (!world) {
+    std::cerr << world.error().message() << "\n";
+    return 1;
+  }
+  const geometry::Box box = world->bounds();
+  const double cell = std::max(box.width(), box.height()) / size;
+  crowd::VelocityField::GeodesicSpec spec;
+  spec.width = spec.height = size;
+  spec.speed = 1.3;
+  spec.variation = 0.2;
+  spec.start = {geometry::Polygon{{{1, 7}, {9, 7}, {9, 11}, {1, 11}}, {}}};
+  spec.goal = {geometry::Polygon{{{14, 1}, {19, 1}, {19, 5}, {14, 5}}, {}}};
+  std::vector<double> grid_ms;
+  std::vector<double> field_ms;
+  std::vector<double> field_cpu_ms;
+  int cells = 0;
+  for (int r = 0; r < runs; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const world::OccupancyGrid grid = world::OccupancyGrid::rasterise(*world, {cell, 0.15, 4'000'000});
+    const auto t1 = std::chrono::steady_clock::now();
+    const std::clock_t c1 = std::clock();
+    auto f = crowd::VelocityField::from_geodesic(grid, box, spec);
+    const std::clock_t c2 = std::clock();
+    const auto t2 = std::chrono::steady_clock::now();
+    field_cpu_ms.push_back(1000.0 * static_cast<double>(c2 - c1) / CLOCKS_PER_SEC);
+    if (!f) {
+      std::cerr << f.error().message() << "\n";
+      return 1;
+    }
+    cells = grid.width() * grid.height();
+    grid_ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    field_ms.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());
+  }
+  // Algorithm 1 per agent: lookup + intermediate goal.
+  auto f = crowd::VelocityField::from_geodesic(
+      world::OccupancyGrid::rasterise(*world, {cell, 0.15, 4'000'000}), box, spec);
+  socsim::Rng rng(1);
+  std::vector<crowd::Vec2> points(100'000);
+  for (auto& p : points) p = {rng.uniform(box.min.x, box.max.x), rng.uniform(box.min.y, box.max.y)};
+  const auto t0 = std::chrono::steady_clock::now();
+  double sink = 0.0;
+  for (const auto& p : points) sink += crowd::velocity_field_goal(*f, p, 0.05, 0.5).x;
+  const double lookup_ns =
+      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
+      static_cast<double>(points.size());
+  socsim::bench::emit({{"bench", "crowd-field"},
+                       {"size", size},
+                       {"routing_cells", cells},
+                       {"rasterise_ms_p50", socsim::bench::percentile(grid_ms, 50)},
+                       {"field_ms_p50", socsim::bench::percentile(field_ms, 50)},
+                       {"field_ms_p95", socsim::bench::percentile(field_ms, 95)},
+                       {"field_cpu_ms_p50", socsim::bench::percentile(field_cpu_ms, 50)},
+                       {"algorithm1_ns_per_agent", lookup_ns},
+                       {"checksum", sink}});
+  return 0;
 }
 
-SOCSIM_BENCH("crowd-field", "--size 256 --runs 20 [--world schemas/examples/world_clinic.yaml]", crowd_field_bench);
+SOCSIM_BENCH("crowd-field", "--size 256 --runs 20 [--world schemas/examples/world_clinic.yaml]",
+             crowd_field_bench);

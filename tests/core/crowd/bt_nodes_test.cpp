@@ -29,7 +29,8 @@ std::string read(const std::filesystem::path& p) {
 }
 
 world::World clinic() {
-  auto w = world::world_from_yaml(read(std::filesystem::path(SOCSIM_SOURCE_DIR) / "schemas/examples/world_clinic.yaml"));
+  auto w = world::world_from_yaml(
+      read(std::filesystem::path(SOCSIM_SOURCE_DIR) / "schemas/examples/world_clinic.yaml"));
   EXPECT_TRUE(w) << w.error().message();
   return *w;
 }
@@ -47,7 +48,9 @@ std::unique_ptr<ScenarioRunner> make(const world::World* w, const std::string& p
   return runner ? std::move(*runner) : nullptr;
 }
 
-double dist(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double dist(Vec2 a, Vec2 b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
 
 TEST(BtNodes, EveryNodeIsTheKnowledgeStoresNodeWithTheSamePorts) {
   testing::TempDir dir;
@@ -85,7 +88,8 @@ TEST(BtNodes, EveryNodeIsTheKnowledgeStoresNodeWithTheSamePorts) {
   }
   auto all = kb.behavior_nodes();
   ASSERT_TRUE(all);
-  for (const knowledge::BehaviorNode& n : *all) EXPECT_TRUE(implemented.count(n.name)) << n.name << " is not implemented";
+  for (const knowledge::BehaviorNode& n : *all)
+    EXPECT_TRUE(implemented.count(n.name)) << n.name << " is not implemented";
 }
 
 // HuNavSim's trees (BT.CPP v3 files, one with <include>, and a v4 file) with three agents
@@ -99,9 +103,12 @@ TEST(BtNodes, HuNavSimTreesLoadAndRunWithoutARobot) {
     // Ten goals so the warehouse tree's SetGoal goal_id="9" exists.
     std::string goals = "[[8, 0], [8, 8], [0, 8], [0, 0], [4, 4], [6, 2], [2, 6], [7, 7], [1, 1], [5, 5]]";
     const std::string program = R"({"agents": [
-        {"position": [0, 0], "goals": )" + goals + R"(, "behavior": {"file": ")" + file + R"("}},
-        {"position": [8, 8], "goals": [[0, 0], [8, 0]], "behavior": {"file": ")" + file + R"("}},
-        {"position": [0, 8], "goals": [[8, 0], [0, 8]], "behavior": {"file": ")" + file + R"("}}]})";
+        {"position": [0, 0], "goals": )" +
+                                goals + R"(, "behavior": {"file": ")" + file + R"("}},
+        {"position": [8, 8], "goals": [[0, 0], [8, 0]], "behavior": {"file": ")" +
+                                file + R"("}},
+        {"position": [0, 8], "goals": [[8, 0], [0, 8]], "behavior": {"file": ")" +
+                                file + R"("}}]})";
     auto runner = make(nullptr, program, peers);
     ASSERT_TRUE(runner);
     std::vector<int> goal_changes(3, 0);
@@ -189,7 +196,8 @@ TEST(BtNodes, ConversationFormationGathersEveryoneRoundTheMeetingPoint) {
   for (int k = 0; k < 400 && !all_talking; ++k) {
     runner->step();
     all_talking = true;
-    for (std::uint32_t i = 0; i < 3; ++i) all_talking = all_talking && runner->sim().state(AgentId(i)).activity == Activity::kInteracting;
+    for (std::uint32_t i = 0; i < 3; ++i)
+      all_talking = all_talking && runner->sim().state(AgentId(i)).activity == Activity::kInteracting;
   }
   ASSERT_TRUE(all_talking);
   for (std::uint32_t i = 0; i < 3; ++i) {
@@ -218,7 +226,8 @@ TEST(BtNodes, UnknownPlacesAndBadPortsAreReportedBeforeTheRunWithPointerAndLine)
   EXPECT_EQ(e.errors[1].line, 5);
   EXPECT_THAT(e.errors[1].message, HasSubstr("must be in [0, 1]"));
   EXPECT_EQ(e.errors[2].line, 6);
-  EXPECT_THAT(e.errors[2].message, HasSubstr("no queue_lane ROI named 'lobby' (queue lanes: reception_queue)"));
+  EXPECT_THAT(e.errors[2].message,
+              HasSubstr("no queue_lane ROI named 'lobby' (queue lanes: reception_queue)"));
 }
 
 TEST(BtNodes, AgentIdListsParse) {

@@ -83,17 +83,25 @@ class BtTreeTest : public ::testing::Test {
     auto in = [](std::string n, BtPortType t, std::optional<std::string> d = std::nullopt) {
       return BtPortSpec{std::move(n), BtPortDirection::kIn, t, std::move(d)};
     };
-    ASSERT_TRUE(registry.add({"Async", BtNodeKind::kAction,
-                              {in("ticks", BtPortType::kInt, "1"), in("result", BtPortType::kString, "SUCCESS")},
-                              [](const BtNodeInit& i) { return std::make_unique<AsyncAction>(i.spec, i.tree, i.blackboard); },
-                              {}}));
-    ASSERT_TRUE(registry.add({"Check", BtNodeKind::kCondition, {in("result", BtPortType::kString)},
-                              [](const BtNodeInit& i) { return std::make_unique<ResultCondition>(i.spec, i.tree, i.blackboard); },
-                              {"CheckCondition"}}));
-    ASSERT_TRUE(registry.add({"Write", BtNodeKind::kAction,
-                              {in("value", BtPortType::kDouble), BtPortSpec{"out", BtPortDirection::kOut, BtPortType::kDouble, {}}},
-                              [](const BtNodeInit& i) { return std::make_unique<WriteAction>(i.spec, i.tree, i.blackboard); },
-                              {}}));
+    ASSERT_TRUE(registry.add(
+        {"Async",
+         BtNodeKind::kAction,
+         {in("ticks", BtPortType::kInt, "1"), in("result", BtPortType::kString, "SUCCESS")},
+         [](const BtNodeInit& i) { return std::make_unique<AsyncAction>(i.spec, i.tree, i.blackboard); },
+         {}}));
+    ASSERT_TRUE(registry.add(
+        {"Check",
+         BtNodeKind::kCondition,
+         {in("result", BtPortType::kString)},
+         [](const BtNodeInit& i) { return std::make_unique<ResultCondition>(i.spec, i.tree, i.blackboard); },
+         {"CheckCondition"}}));
+    ASSERT_TRUE(registry.add(
+        {"Write",
+         BtNodeKind::kAction,
+         {in("value", BtPortType::kDouble),
+          BtPortSpec{"out", BtPortDirection::kOut, BtPortType::kDouble, {}}},
+         [](const BtNodeInit& i) { return std::make_unique<WriteAction>(i.spec, i.tree, i.blackboard); },
+         {}}));
   }
   void TearDown() override { g_probes = nullptr; }
 
@@ -123,11 +131,13 @@ class BtTreeTest : public ::testing::Test {
 };
 
 std::string tree(const std::string& body) {
-  return R"(<root BTCPP_format="4" main_tree_to_execute="T"><BehaviorTree ID="T">)" + body + "</BehaviorTree></root>";
+  return R"(<root BTCPP_format="4" main_tree_to_execute="T"><BehaviorTree ID="T">)" + body +
+         "</BehaviorTree></root>";
 }
 
 TEST_F(BtTreeTest, SequenceResumesAtTheRunningChild) {
-  BtTree t = make(tree(R"(<Sequence name="seq"><Check name="c" result="{a}"/><Async name="act" ticks="2"/></Sequence>)"));
+  BtTree t = make(
+      tree(R"(<Sequence name="seq"><Check name="c" result="{a}"/><Async name="act" ticks="2"/></Sequence>)"));
   EXPECT_EQ(t.tick(0.0), kRunning);
   EXPECT_EQ(st(t, "c"), kSuccess);
   EXPECT_EQ(st(t, "act"), kRunning);
@@ -143,7 +153,8 @@ TEST_F(BtTreeTest, SequenceResumesAtTheRunningChild) {
 }
 
 TEST_F(BtTreeTest, ReactiveSequenceHaltsTheRunningActionWhenAConditionFails) {
-  BtTree t = make(tree(R"(<ReactiveSequence name="rs"><Check name="c" result="{a}"/><Async name="act" ticks="5"/></ReactiveSequence>)"));
+  BtTree t = make(tree(
+      R"(<ReactiveSequence name="rs"><Check name="c" result="{a}"/><Async name="act" ticks="5"/></ReactiveSequence>)"));
   EXPECT_EQ(t.tick(0.0), kRunning);
   EXPECT_EQ(t.tick(0.1), kRunning);
   EXPECT_EQ(probes["c"].ticks, 2);  // re-checked every tick
@@ -156,7 +167,8 @@ TEST_F(BtTreeTest, ReactiveSequenceHaltsTheRunningActionWhenAConditionFails) {
 }
 
 TEST_F(BtTreeTest, FallbackStopsAtTheFirstSuccess) {
-  BtTree t = make(tree(R"(<Fallback name="fb"><Check name="c1" result="{a}"/><Async name="act" ticks="1"/></Fallback>)"));
+  BtTree t = make(
+      tree(R"(<Fallback name="fb"><Check name="c1" result="{a}"/><Async name="act" ticks="1"/></Fallback>)"));
   t.blackboard().set("a", BtValue{std::string("FAILURE")});
   EXPECT_EQ(t.tick(0.0), kRunning);
   EXPECT_EQ(st(t, "c1"), kFailure);
@@ -169,7 +181,8 @@ TEST_F(BtTreeTest, FallbackStopsAtTheFirstSuccess) {
 }
 
 TEST_F(BtTreeTest, ReactiveFallbackLetsAHigherPriorityChildInterrupt) {
-  BtTree t = make(tree(R"(<ReactiveFallback><Check name="urgent" result="{a}"/><Async name="idle" ticks="9"/></ReactiveFallback>)"));
+  BtTree t = make(tree(
+      R"(<ReactiveFallback><Check name="urgent" result="{a}"/><Async name="idle" ticks="9"/></ReactiveFallback>)"));
   t.blackboard().set("a", BtValue{std::string("FAILURE")});
   EXPECT_EQ(t.tick(0.0), kRunning);
   EXPECT_EQ(t.tick(0.1), kRunning);
@@ -239,7 +252,8 @@ TEST_F(BtTreeTest, RepeatAndRetryCountCompletions) {
   EXPECT_EQ(forever.tick(0.0), kRunning);
   EXPECT_EQ(probes["e"].ticks, kBtMaxLoopsPerTick);
 
-  BtTree retry = make(tree(R"(<RetryUntilSuccessful num_attempts="3"><Check name="r" result="{a}"/></RetryUntilSuccessful>)"));
+  BtTree retry = make(tree(
+      R"(<RetryUntilSuccessful num_attempts="3"><Check name="r" result="{a}"/></RetryUntilSuccessful>)"));
   retry.blackboard().set("a", BtValue{std::string("FAILURE")});
   EXPECT_EQ(retry.tick(0.0), kFailure);
   EXPECT_EQ(probes["r"].ticks, 3);
@@ -284,7 +298,8 @@ TEST_F(BtTreeTest, RunOnceSkipsAfterTheFirstRunAsInBtCppV4) {
 }
 
 TEST_F(BtTreeTest, BlackboardPortsConvertTypesLikeBtCpp) {
-  BtTree t = make(tree(R"(<Sequence><SetBlackboard output_key="x" value="2.5"/><Write value="{x}" out="{y}"/></Sequence>)"));
+  BtTree t = make(tree(
+      R"(<Sequence><SetBlackboard output_key="x" value="2.5"/><Write value="{x}" out="{y}"/></Sequence>)"));
   EXPECT_EQ(t.tick(0.0), kSuccess);
   EXPECT_EQ(std::get<double>(*t.blackboard().get("y")), 5.0);
 
@@ -297,10 +312,12 @@ TEST_F(BtTreeTest, BlackboardPortsConvertTypesLikeBtCpp) {
   EXPECT_EQ(std::get<std::string>(*bt_convert(BtValue{std::int64_t{7}}, BtPortType::kString)), "7");
 
   // A blackboard value of the wrong type at run time: the node fails and the tree reports it.
-  BtTree bad = make(tree(R"(<Sequence><SetBlackboard output_key="x" value="abc"/><Write name="w" value="{x}" out="{y}"/></Sequence>)"));
+  BtTree bad = make(tree(
+      R"(<Sequence><SetBlackboard output_key="x" value="abc"/><Write name="w" value="{x}" out="{y}"/></Sequence>)"));
   EXPECT_EQ(bad.tick(0.0), kFailure);
   ASSERT_EQ(bad.context().errors.size(), 1u);
-  EXPECT_THAT(bad.context().errors[0], HasSubstr("line 1: Write: port 'value' ({x}): 'abc' is not a valid double"));
+  EXPECT_THAT(bad.context().errors[0],
+              HasSubstr("line 1: Write: port 'value' ({x}): 'abc' is not a valid double"));
 }
 
 TEST_F(BtTreeTest, SubTreeRemapsPortsInBothDialects) {
@@ -308,20 +325,24 @@ TEST_F(BtTreeTest, SubTreeRemapsPortsInBothDialects) {
   BtTree v4 = make(R"(<root BTCPP_format="4" main_tree_to_execute="Main"><BehaviorTree ID="Main"><Sequence>
       <SetBlackboard output_key="p" value="1.5"/>
       <SubTree ID="Sub" in="{p}" out="{q}"/>
-      <SubTree ID="Sub" in="4" out="{r}"/></Sequence></BehaviorTree>)" + sub + "</root>");
+      <SubTree ID="Sub" in="4" out="{r}"/></Sequence></BehaviorTree>)" +
+                   sub + "</root>");
   EXPECT_EQ(v4.tick(0.0), kSuccess);
   EXPECT_EQ(std::get<double>(*v4.blackboard().get("q")), 3.0);
   EXPECT_EQ(std::get<double>(*v4.blackboard().get("r")), 8.0);  // literal port of the subtree
-  EXPECT_EQ(v4.blackboard().get("out"), nullptr);                 // the subtree's own key stays private
+  EXPECT_EQ(v4.blackboard().get("out"), nullptr);               // the subtree's own key stays private
 
-  BtTree autoremap = make(R"(<root BTCPP_format="4" main_tree_to_execute="Main"><BehaviorTree ID="Main"><Sequence>
-      <SetBlackboard output_key="in" value="0.5"/><SubTree ID="Sub" _autoremap="true"/></Sequence></BehaviorTree>)" + sub + "</root>");
+  BtTree autoremap =
+      make(R"(<root BTCPP_format="4" main_tree_to_execute="Main"><BehaviorTree ID="Main"><Sequence>
+      <SetBlackboard output_key="in" value="0.5"/><SubTree ID="Sub" _autoremap="true"/></Sequence></BehaviorTree>)" +
+           sub + "</root>");
   EXPECT_EQ(autoremap.tick(0.0), kSuccess);
   EXPECT_EQ(std::get<double>(*autoremap.blackboard().get("out")), 1.0);
 
   // v3 (no BTCPP_format): attribute values name parent keys, as HuNavSim's trees use them.
   BtTree v3 = make(R"(<root main_tree_to_execute="Main"><BehaviorTree ID="Main"><Sequence>
-      <SetBlackboard output_key="p" value="{id}"/><SubTree ID="Sub" in="p" out="q"/></Sequence></BehaviorTree>)" + sub + "</root>");
+      <SetBlackboard output_key="p" value="{id}"/><SubTree ID="Sub" in="p" out="q"/></Sequence></BehaviorTree>)" +
+                   sub + "</root>");
   v3.blackboard().set("id", BtValue{std::int64_t{21}});
   EXPECT_EQ(v3.tick(0.0), kSuccess);
   EXPECT_EQ(std::get<double>(*v3.blackboard().get("q")), 42.0);
@@ -330,13 +351,16 @@ TEST_F(BtTreeTest, SubTreeRemapsPortsInBothDialects) {
 TEST_F(BtTreeTest, IncludesResolveRelativeToTheFile) {
   const auto dir = std::filesystem::temp_directory_path() / ("bt_include_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir / "lib");
-  std::ofstream(dir / "lib" / "walk.xml") << R"(<root><BehaviorTree ID="Walk"><Async name="walk" ticks="1"/></BehaviorTree></root>)";
+  std::ofstream(dir / "lib" / "walk.xml")
+      << R"(<root><BehaviorTree ID="Walk"><Async name="walk" ticks="1"/></BehaviorTree></root>)";
   std::ofstream(dir / "main.xml") << R"(<root BTCPP_format="4" main_tree_to_execute="Main">
   <include path="lib/walk.xml"/>
   <BehaviorTree ID="Main"><SubTree ID="Walk"/></BehaviorTree>
 </root>)";
-  std::ofstream(dir / "loop.xml") << R"(<root main_tree_to_execute="A"><include path="loop.xml"/><BehaviorTree ID="A"><AlwaysSuccess/></BehaviorTree></root>)";
-  std::ofstream(dir / "escape.xml") << R"(<root main_tree_to_execute="A"><include path="../x.xml"/><BehaviorTree ID="A"><AlwaysSuccess/></BehaviorTree></root>)";
+  std::ofstream(dir / "loop.xml")
+      << R"(<root main_tree_to_execute="A"><include path="loop.xml"/><BehaviorTree ID="A"><AlwaysSuccess/></BehaviorTree></root>)";
+  std::ofstream(dir / "escape.xml")
+      << R"(<root main_tree_to_execute="A"><include path="../x.xml"/><BehaviorTree ID="A"><AlwaysSuccess/></BehaviorTree></root>)";
 
   auto doc = BtDocument::load(dir / "main.xml", registry);
   ASSERT_TRUE(doc) << doc.error().message();
@@ -351,7 +375,9 @@ TEST_F(BtTreeTest, IncludesResolveRelativeToTheFile) {
   auto escape = BtDocument::load(dir / "escape.xml", registry);
   ASSERT_FALSE(escape);
   EXPECT_THAT(escape.error().detail, HasSubstr("leaves the scenario directory"));
-  auto inline_include = BtDocument::parse(R"(<root><include path="x.xml"/><BehaviorTree ID="A"><AlwaysSuccess/></BehaviorTree></root>)", registry);
+  auto inline_include = BtDocument::parse(
+      R"(<root><include path="x.xml"/><BehaviorTree ID="A"><AlwaysSuccess/></BehaviorTree></root>)",
+      registry);
   ASSERT_FALSE(inline_include);
   EXPECT_THAT(inline_include.error().detail, HasSubstr("no base directory"));
   std::filesystem::remove_all(dir);
@@ -385,13 +411,19 @@ TEST_F(BtTreeTest, LoadErrorsNameTheLineAndTheProblem) {
   const Error syntax = error_of("<root>\n<BehaviorTree ID=\"A\"><Async></BehaviorTree></root>");
   EXPECT_EQ(syntax.code, ErrorCode::kBadRequest);
   EXPECT_EQ(syntax.errors.at(0).line, 2);
-  EXPECT_THAT(error_of("<root><BehaviorTree ID=\"A\"><AlwaysSuccess/></BehaviorTree><BehaviorTree ID=\"B\"><AlwaysSuccess/></BehaviorTree></root>").detail,
+  EXPECT_THAT(error_of("<root><BehaviorTree ID=\"A\"><AlwaysSuccess/></BehaviorTree><BehaviorTree "
+                       "ID=\"B\"><AlwaysSuccess/></BehaviorTree></root>")
+                  .detail,
               HasSubstr("several trees and no main_tree_to_execute"));
-  EXPECT_THAT(error_of("<root main_tree_to_execute=\"A\"><BehaviorTree ID=\"A\"><SubTree ID=\"A\"/></BehaviorTree></root>").detail,
-              HasSubstr("includes itself"));
+  EXPECT_THAT(
+      error_of(
+          "<root main_tree_to_execute=\"A\"><BehaviorTree ID=\"A\"><SubTree ID=\"A\"/></BehaviorTree></root>")
+          .detail,
+      HasSubstr("includes itself"));
   // Aliases and the generic <Action ID> form are accepted.
-  EXPECT_TRUE(BtDocument::parse(tree(R"(<Sequence><Condition ID="CheckCondition" result="SUCCESS"/><Action ID="Async"/></Sequence>)"),
-                                registry));
+  EXPECT_TRUE(BtDocument::parse(
+      tree(R"(<Sequence><Condition ID="CheckCondition" result="SUCCESS"/><Action ID="Async"/></Sequence>)"),
+      registry));
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // Validation of collective flow in a periodic corridor (realised as a ring: the simulation has no
 // periodic boundary, and a ring is the geometry of the classic single- and multi-lane
-// experiments), steered through the behaviour layer (BtEnvironment) as scenario agents are: the speed–density relation against Weidmann's fundamental
-// diagram, and lane formation in counter-flow, measured with Rex & Löwen's lane order parameter.
-// Each test prints what it measured.
+// experiments), steered through the behaviour layer (BtEnvironment) as scenario agents are: the speed–density
+// relation against Weidmann's fundamental diagram, and lane formation in counter-flow, measured with Rex &
+// Löwen's lane order parameter. Each test prints what it measured.
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -19,10 +19,14 @@ constexpr double kPi = std::numbers::pi;
 // Ring corridors 2.5 m wide: inner radius 5 m (39 m long on the centre line) for the fundamental
 // diagram, 6 m (45.6 m) for counter-flow.
 constexpr double kWidth = 2.5;
-double ring_area(double inner) { return kPi * ((inner + kWidth) * (inner + kWidth) - inner * inner); }
+double ring_area(double inner) {
+  return kPi * ((inner + kWidth) * (inner + kWidth) - inner * inner);
+}
 
 // Weidmann (1993): v(ρ) = 1.34 · (1 − exp(−1.913 · (1/ρ − 1/5.4))).
-double weidmann(double density) { return 1.34 * (1.0 - std::exp(-1.913 * (1.0 / density - 1.0 / 5.4))); }
+double weidmann(double density) {
+  return 1.34 * (1.0 - std::exp(-1.913 * (1.0 / density - 1.0 / 5.4)));
+}
 
 struct Ring {
   double inner = 5.0;
@@ -38,7 +42,8 @@ Ring make_ring(double inner, std::size_t n, double share_clockwise, std::uint64_
   Ring ring{inner, std::move(*created), {}, {}, nullptr};
   for (double r : {inner, inner + kWidth}) {
     std::vector<Vec2> circle;
-    for (int k = 0; k < 96; ++k) circle.push_back({r * std::cos(2 * kPi * k / 96), r * std::sin(2 * kPi * k / 96)});
+    for (int k = 0; k < 96; ++k)
+      circle.push_back({r * std::cos(2 * kPi * k / 96), r * std::sin(2 * kPi * k / 96)});
     EXPECT_TRUE(ring.sim.add_polyline(circle, true));
   }
   // Jittered placement on five circles 0.45 m apart, evenly spread along each.
@@ -49,8 +54,9 @@ Ring make_ring(double inner, std::size_t n, double share_clockwise, std::uint64_
   std::size_t placed = 0;
   for (std::size_t l = 0; l < lanes.size(); ++l) {
     const double r = lanes[l];
-    const auto count = l + 1 == lanes.size() ? n - placed
-                                             : static_cast<std::size_t>(std::round(n * 2 * kPi * r / total_length));
+    const auto count = l + 1 == lanes.size()
+                           ? n - placed
+                           : static_cast<std::size_t>(std::round(n * 2 * kPi * r / total_length));
     for (std::size_t k = 0; k < count; ++k) {
       const double a = 2 * kPi * (k + rng.uniform(-0.2, 0.2)) / static_cast<double>(count);
       const double rr = r + rng.uniform(-0.08, 0.08);
@@ -75,8 +81,8 @@ void steer(Ring& ring) {
     const Vec2 p = ring.sim.position(id);
     const double r = std::clamp(std::hypot(p.x, p.y), ring.inner + 0.3, ring.inner + kWidth - 0.3);
     const double a = std::atan2(p.y, p.x) + ring.direction[i] * 1.5 / r;
-    ring.env->move_to(id, {r * std::cos(a), r * std::sin(a)}, 0.1, ring.env->base_speed(id), Activity::kWalking,
-                      Routing::kDirect);
+    ring.env->move_to(id, {r * std::cos(a), r * std::sin(a)}, 0.1, ring.env->base_speed(id),
+                      Activity::kWalking, Routing::kDirect);
   }
   ring.env->apply();
 }
@@ -110,7 +116,8 @@ TEST(CrowdFlowValidation, SpeedDensityFollowsWeidmann) {
       }
     }
     const double speed = sum / static_cast<double>(samples);
-    std::cout << "density " << density << " /m²: " << speed << " m/s (Weidmann " << weidmann(density) << ")\n";
+    std::cout << "density " << density << " /m²: " << speed << " m/s (Weidmann " << weidmann(density)
+              << ")\n";
     EXPECT_NEAR(speed, weidmann(density), 0.4) << "density " << density;
     EXPECT_LT(speed, previous);
     previous = speed;
@@ -162,7 +169,8 @@ TEST(CrowdFlowValidation, CounterFlowFormsLanes) {
   double speed = 0.0;
   for (std::size_t i = 0; i < n; ++i) speed += tangential_speed(ring, i);
   speed /= static_cast<double>(n);
-  std::cout << "lane order parameter: " << mixed << " mixed -> " << lanes << " after 60 s; mean speed " << speed << " m/s\n";
+  std::cout << "lane order parameter: " << mixed << " mixed -> " << lanes << " after 60 s; mean speed "
+            << speed << " m/s\n";
   EXPECT_LT(mixed, 0.3);
   EXPECT_GT(lanes, mixed + 0.15);
   EXPECT_GT(speed, 0.0);

@@ -49,9 +49,12 @@ TEST(Metrics, WorkedExampleWithAWalkerAStanderAndARobot) {
     const double x = 0.5 * k;
     const double d = std::min(std::hypot(x - 2.0, 1.0), std::hypot(x - 10.0, 0.0)) - 0.3;
     min_d = std::min(min_d, d);
-    if (d < 0.45) ++intimate;
-    else if (d < 1.2) ++personal;
-    else if (d < 3.6) ++social;
+    if (d < 0.45)
+      ++intimate;
+    else if (d < 1.2)
+      ++personal;
+    else if (d < 3.6)
+      ++social;
   }
   EXPECT_NEAR(walker.minimum_distance_to_people, min_d, 1e-12);
   EXPECT_NEAR(walker.intimate_space_intrusions, 100.0 * intimate / 9.0, 1e-9);
@@ -66,7 +69,7 @@ TEST(Metrics, WorkedExampleWithAWalkerAStanderAndARobot) {
   ASSERT_TRUE(m.robot.has_value());
   EXPECT_EQ(m.robot->role, "robot");
   EXPECT_NEAR(m.robot->minimum_distance_to_people, 6.0 - 0.35, 1e-12);  // walker at x = 4
-  EXPECT_NEAR(m.avg_pedestrian_velocity, 0.5, 1e-12);  // (1 + 0) / 2, robot excluded
+  EXPECT_NEAR(m.avg_pedestrian_velocity, 0.5, 1e-12);                   // (1 + 0) / 2, robot excluded
 }
 
 TEST(Metrics, CollisionsAndWhoHitWhom) {
@@ -75,7 +78,8 @@ TEST(Metrics, CollisionsAndWhoHitWhom) {
   const std::vector<double> radii = {0.3, 0.3, 0.35};
   const std::vector<std::uint8_t> active = {1, 0, 1};  // agent 1 is gone (exited)
   for (int k = 0; k < 5; ++k)
-    rec.observe(0.1 * k, {at(0, 1.0, 0.0), at(1, 50, 50), at(2, 0.1 + 0.1 * k, 0.0, 1.0, 0.0)}, radii, active, {});
+    rec.observe(0.1 * k, {at(0, 1.0, 0.0), at(1, 50, 50), at(2, 0.1 + 0.1 * k, 0.0, 1.0, 0.0)}, radii, active,
+                {});
   const RunMetrics m = rec.finish();
   EXPECT_EQ(m.robot->collisions, 2u);  // (1 − x) − 0.65 < 0.02 for the robot at x = 0.4 and 0.5
   EXPECT_EQ(m.robot_on_person_collisions, 2u);

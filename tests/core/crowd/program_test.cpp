@@ -72,9 +72,9 @@ TEST(Program, EveryBadFieldIsReportedWithItsPointer) {
   std::vector<std::string> pointers;
   for (const FieldError& e : p.error().errors) pointers.push_back(e.pointer);
   EXPECT_THAT(pointers, ElementsAre("/colour", "/dt", "/agents/0", "/agents/1/position", "/agents/1/goals/0",
-                                    "/agents/1/goals/1", "/agents/2/behavior", "/groups/0/agents/1", "/ambient_groups/0/start",
-                                    "/ambient_groups/0/on_arrival", "/ambient_groups/0/field/values/1/0", "/robot/position",
-                                    "/robot/speed"));
+                                    "/agents/1/goals/1", "/agents/2/behavior", "/groups/0/agents/1",
+                                    "/ambient_groups/0/start", "/ambient_groups/0/on_arrival",
+                                    "/ambient_groups/0/field/values/1/0", "/robot/position", "/robot/speed"));
   EXPECT_EQ(p.error().code, ErrorCode::kValidation);
 
   auto syntax = program_from_text("{\"agents\": [}");
@@ -106,8 +106,8 @@ TEST(Program, RunnerChecksNamesAgainstTheWorld) {
   ASSERT_FALSE(runner);
   pointers.clear();
   for (const FieldError& e : runner.error().errors) pointers.push_back(e.pointer);
-  EXPECT_THAT(pointers, ElementsAre("/agents/0/spawn", "/agents/1/goals/1", "/agents/1/role", "/agents/2/behavior",
-                                    "/agents/3/behavior"));
+  EXPECT_THAT(pointers, ElementsAre("/agents/0/spawn", "/agents/1/goals/1", "/agents/1/role",
+                                    "/agents/2/behavior", "/agents/3/behavior"));
 }
 
 }  // namespace

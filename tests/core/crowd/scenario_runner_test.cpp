@@ -105,7 +105,8 @@ TEST(ScenarioRunner, QueueServesInJoiningOrderOneAtATime) {
   ASSERT_EQ(env.service_log().size(), 5u) << "all five served within 120 s";
   EXPECT_EQ(max_served_at_once, 1);
   ASSERT_EQ(joined.size(), 5u);
-  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(env.service_log()[i].second, joined[i]) << "service order = joining order";
+  for (std::size_t i = 0; i < 5; ++i)
+    EXPECT_EQ(env.service_log()[i].second, joined[i]) << "service order = joining order";
   // Timed service: consecutive departures at least service_time − spread (6 s) apart.
   for (std::size_t i = 1; i < 5; ++i)
     EXPECT_GE(served_at[joined[i].value()] - served_at[joined[i - 1].value()], 6.0 - 1e-9);
@@ -117,7 +118,8 @@ TEST(ScenarioRunner, FramesCarryTableIFieldsAndTheRunningNode) {
   auto run = ScenarioRunner::create(&l.world, l.program, options(2));
   ASSERT_TRUE(run);
   std::vector<PedestrianState> last;
-  (*run)->run(3.0, [&](double, std::span<const PedestrianState> s) { last.assign(s.begin(), s.end()); }, 20);
+  (*run)->run(
+      3.0, [&](double, std::span<const PedestrianState> s) { last.assign(s.begin(), s.end()); }, 20);
   ASSERT_EQ(last.size(), 7u);  // receptionist, five patients, robot
   EXPECT_EQ(last[0].role, "receptionist");
   EXPECT_EQ(last[1].role, "patient");

@@ -35,7 +35,9 @@ world::World clinic() {
   return *w;
 }
 
-geometry::Polygon rect(double x0, double y0, double x1, double y1) { return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}}; }
+geometry::Polygon rect(double x0, double y0, double x1, double y1) {
+  return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+}
 
 TEST(VelocityField, Algorithm1IndexAndLookAhead) {
   // V[i][j] = (i, j) / 100 over a 32 × 16 m world whose corner is at (-2, 4).
@@ -66,8 +68,8 @@ TEST(VelocityField, GeodesicFieldLeadsRoundTheWallsToTheGoal) {
   const world::World w = clinic();
   const world::OccupancyGrid grid = world::OccupancyGrid::rasterise(w, {0.1, 0.15, 4'000'000});
   VelocityField::GeodesicSpec spec;
-  spec.start = {rect(1, 7, 9, 11)};   // waiting room
-  spec.goal = {rect(14, 1, 19, 5)};   // patient room 1, reached through the corridor
+  spec.start = {rect(1, 7, 9, 11)};  // waiting room
+  spec.goal = {rect(14, 1, 19, 5)};  // patient room 1, reached through the corridor
   spec.speed = 1.2;
   auto f = VelocityField::from_geodesic(grid, w.bounds(), spec);
   ASSERT_TRUE(f) << f.error().message();
@@ -81,7 +83,8 @@ TEST(VelocityField, GeodesicFieldLeadsRoundTheWallsToTheGoal) {
     EXPECT_NEAR(s, 1.2, 1e-9);
     const Vec2 q{p.x + v.x / s * 0.05, p.y + v.y / s * 0.05};
     for (const world::Wall& wall : w.walls())
-      ASSERT_FALSE(move_blocked(p, q, {wall.segment.a.x, wall.segment.a.y}, {wall.segment.b.x, wall.segment.b.y}))
+      ASSERT_FALSE(
+          move_blocked(p, q, {wall.segment.a.x, wall.segment.a.y}, {wall.segment.b.x, wall.segment.b.y}))
           << "crossed a wall at (" << p.x << ", " << p.y << ")";
     p = q;
     arrived = geometry::contains(spec.goal[0], {p.x, p.y});
