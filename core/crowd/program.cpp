@@ -285,11 +285,12 @@ Result<Program> program_from_json(const Json& j) {
         continue;
       }
       c.only_keys(a, ptr,
-                  {"name", "start", "goal", "size", "speed", "role", "resolution", "variation", "tolerance",
-                   "on_arrival", "field", "behavior"});
+                  {"name", "description", "start", "goal", "size", "speed", "role", "resolution", "variation",
+                   "tolerance", "on_arrival", "field", "behavior"});
       AmbientGroup g;
       g.pointer = ptr;
       g.name = c.string(a, ptr, "name", true, 1, 128).value_or("");
+      g.description = c.string(a, ptr, "description", false, 0, 500).value_or("");
       for (const AmbientGroup& other : p.ambient_groups)
         if (!g.name.empty() && other.name == g.name)
           c.add(ptr + "/name", "duplicate ambient group name '" + g.name + "'");

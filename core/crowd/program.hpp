@@ -66,6 +66,7 @@ struct ProgramField {
 
 struct AmbientGroup {
   std::string name;
+  std::string description;  // canonical description ("visitors walking to the exit"), paper 001 §III-G
   std::vector<ProgramRegion> start;
   std::vector<ProgramRegion> goal;
   std::size_t size = 0;
