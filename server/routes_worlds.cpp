@@ -11,6 +11,7 @@
 #include "core/world/world_yaml.hpp"
 #include "server/http_util.hpp"
 #include "server/routes.hpp"
+#include "server/stored_worlds.hpp"
 
 namespace socsim::server {
 namespace {
@@ -341,6 +342,12 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
 }
 
 }  // namespace
+
+Result<StoredWorldText> stored_world_text(store::Store& store, const std::string& id) {
+  auto w = load_world(store, id);
+  if (!w) return tl::unexpected(w.error());
+  return StoredWorldText{w->id, w->domain, w->world_yaml};
+}
 
 SOCSIM_ROUTES("worlds", world_routes);
 
