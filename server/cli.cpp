@@ -175,9 +175,18 @@ int run_cli(const std::vector<std::string>& args) {
   }
   std::string cmd = args[0];
   if (cmd == "--version") cmd = "version";
+  // Two-word commands ("scenario generate") are registered whole, so that several files can add
+  // subcommands of one noun; they win over a one-word command of the same noun.
+  if (args.size() >= 2) {
+    if (auto two = commands().find(cmd + " " + args[1]); two != commands().end())
+      return two->second.run(std::vector<std::string>(args.begin() + 2, args.end()));
+  }
   auto it = commands().find(cmd);
   if (it == commands().end()) {
-    std::cerr << "socsim: unknown command '" << cmd << "'\n" << usage();
+    bool noun = false;
+    for (const auto& [name, info] : commands()) noun = noun || name.rfind(cmd + " ", 0) == 0;
+    std::cerr << "socsim: unknown " << (noun ? "subcommand of '" + cmd + "'" : "command '" + cmd + "'") << "\n"
+              << usage();
     return 2;
   }
   return it->second.run(std::vector<std::string>(args.begin() + 1, args.end()));
