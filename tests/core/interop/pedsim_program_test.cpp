@@ -7,59 +7,22 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "core/crowd/scenario_runner.hpp"
 #include "core/geometry/planar.hpp"
+#include "tests/core/interop/interop_text.hpp"
 
 namespace socsim::interop {
 namespace {
 
 using ::testing::HasSubstr;
 
-// A 24 x 12 m hall: entrance, a ticket queue growing west, a shop window attraction and a robot.
-constexpr const char* kHall = R"(<?xml version="1.0" encoding="UTF-8"?>
-<scenario>
-  <obstacle x1="0" y1="0" x2="24" y2="0"/>
-  <obstacle x1="24" y1="0" x2="24" y2="12"/>
-  <obstacle x1="24" y1="12" x2="0" y2="12"/>
-  <obstacle x1="0" y1="12" x2="0" y2="0"/>
-  <waypoint id="door" x="2" y="6" r="1.5"/>
-  <waypoint id="platform" x="21" y="3" r="2"/>
-  <waypoint id="kiosk" x="12" y="10" r="1.5"/>
-  <queue id="tickets" x="16" y="6" direction="180"/>
-  <attraction id="window" x="12" y="11" width="6" height="1.5" strength="4"/>
-  <agent x="4" y="6" n="10" dx="2" dy="3" type="0">
-    <addwaypoint id="door"/>
-    <addqueue id="tickets"/>
-    <addwaypoint id="platform"/>
-  </agent>
-  <agent x="20" y="9" n="6" dx="2" dy="2" type="1">
-    <addwaypoint id="kiosk"/>
-    <addwaypoint id="door"/>
-  </agent>
-  <agent x="6" y="2" n="4" dx="1" dy="1" type="3">
-    <addwaypoint id="platform"/>
-    <addwaypoint id="door"/>
-  </agent>
-  <agent x="3" y="3" n="1" dx="0" dy="0" type="2">
-    <addwaypoint id="platform"/>
-    <addwaypoint id="door"/>
-  </agent>
-</scenario>
-)";
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::kHall;
+using testing::read_text;
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);
@@ -68,8 +31,8 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text;
 }
 
-std::string peer(const char* file) {
-  return std::string(SOCSIM_SHARED_DIR) + "/peers/pedsim/" + file;
+std::string peer(const std::string& file) {
+  return testing::peer("pedsim", file);
 }
 
 TEST(PedsimProgram, ClustersBecomeAgentsWithRolesSpawnsRoutesAndTrees) {
@@ -258,7 +221,7 @@ TEST(PedsimProgram, PeerScenariosConvertAndSimulateThirtySeconds) {
                                                      {"scene1.xml", 262},
                                                      {"social_contexts.xml", 31}};
   for (const auto& [file, count] : agents) {
-    const std::string path = peer(file.c_str());
+    const std::string path = peer(file);
     if (!std::filesystem::exists(path))
       GTEST_SKIP() << "peer file " << path << " is absent (needs ../shared)";
     auto imported = import_pedsim_scenario(read_text(path));
