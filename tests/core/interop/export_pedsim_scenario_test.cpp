@@ -138,7 +138,9 @@ TEST(ExportPedsimScenario, SocsimProgramsGetWaypointsForTheirPlacesAndPoints) {
   const world::World w = testing::clinic();
   for (const char* file : {"program_queue.json", "program_ambient.json", "program_evacuation.json"}) {
     const crowd::Program p = testing::example_program(file);
-    auto text = export_pedsim_scenario(w, p, {7});
+    PedsimExportOptions options;
+    options.seed = 7;
+    auto text = export_pedsim_scenario(w, p, options);
     ASSERT_TRUE(text) << file << ": " << text.error().message();
     auto doc = world::parse_xml(*text);
     ASSERT_TRUE(doc) << file;
