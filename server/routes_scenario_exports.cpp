@@ -1,0 +1,116 @@
+// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv: a scenario card for other simulators.
+// hunav: a tar of <base>.yaml + behavior_trees/<base>__agent_<id>_bt.xml (or ?archive=json for
+// {"files": {path: text}}); pedsim: pedsim_ros scenario XML; csv: the card's trajectory log.
+// Without ?format the card's own export document is returned, as before.
+//
+// The group is named "card_exports" so that it registers before "cards" (groups register in name
+// order and cpp-httplib answers with the first matching route): it owns the /export path.
+#include "core/interop/export_hunav.hpp"
+#include "core/interop/export_pedsim_scenario.hpp"
+#include "core/interop/tar_archive.hpp"
+#include "core/interop/trajectory_csv.hpp"
+#include "core/scenario/trajectory_store.hpp"
+#include "core/world/world_document.hpp"
+#include "server/http_util.hpp"
+#include "server/routes.hpp"
+
+namespace socsim::server {
+namespace {
+
+constexpr const char* kExportPath = R"(/api/v1/cards/(crd_[0-9a-z]{20}|[^/]+)/export)";
+
+Error bad_parameter(const std::string& name, const std::string& message) {
+  return Error(ErrorCode::kValidation, message, {FieldError{"", message, name, 0, 0}});
+}
+
+// The card's world and program, checked as they are read.
+struct Scenario {
+  world::World world;
+  crowd::Program program;
+};
+
+Result<Scenario> card_scenario(const cards::Card& card) {
+  const cards::CardContent& c = card.content;
+  if (!c.world.is_object() || !c.program.is_object())
+    return fail(ErrorCode::kValidation, "card " + card.id + " has no world and program to export",
+                {FieldError{c.world.is_object() ? "/program" : "/world", "missing", {}, 0, 0}});
+  auto w = world::world_from_document(c.world);
+  if (!w) {
+    Error e = w.error();
+    for (FieldError& f : e.errors) f.pointer = "/world" + f.pointer;
+    return tl::unexpected(e);
+  }
+  auto p = crowd::program_from_json(c.program);
+  if (!p) {
+    Error e = p.error();
+    for (FieldError& f : e.errors) f.pointer = "/program" + f.pointer;
+    return tl::unexpected(e);
+  }
+  return Scenario{std::move(*w), std::move(*p)};
+}
+
+void attach(httplib::Response& res, const std::string& file, const std::string& body, const char* type) {
+  res.set_header("Content-Disposition", "attachment; filename=\"" + file + "\"");
+  res.set_content(body, type);
+}
+
+void export_routes(httplib::Server& http, RouteContext& ctx) {
+  http.Get(kExportPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+    const std::string id = req.matches[1].str();
+    const auto format = query(req, "format");
+    if (!format || *format == "card") {
+      auto doc = ctx.catalogue.export_card(id);
+      if (!doc) return reply_problem(res, doc.error(), req.path);
+      return attach(res, id + ".card.json", *doc, "application/json");
+    }
+    if (*format != "hunav" && *format != "pedsim" && *format != "csv")
+      return reply_problem(res, bad_parameter("format", "format must be card, hunav, pedsim or csv"),
+                           req.path);
+    const std::string archive = query(req, "archive").value_or("tar");
+    if (archive != "tar" && archive != "json")
+      return reply_problem(res, bad_parameter("archive", "archive must be tar or json"), req.path);
+    auto card = ctx.catalogue.get(id);
+    if (!card) return reply_problem(res, card.error(), req.path);
+
+    if (*format == "csv") {
+      const Json& log = card->content.trajectory_log;
+      if (!log.is_object() || !log.contains("sha256") || !log["sha256"].is_string())
+        return reply_problem(res,
+                             Error(ErrorCode::kNotFound, "card " + id + " has no trajectory log",
+                                   {FieldError{"/trajectory_log", "missing", {}, 0, 0}}),
+                             req.path);
+      auto loaded = scenario::load_trajectory_log(ctx.store, log["sha256"].get<std::string>());
+      if (!loaded) return reply_problem(res, loaded.error(), req.path);
+      return attach(res, id + ".trajectories.csv", interop::trajectories_csv(*loaded), "text/csv");
+    }
+
+    auto s = card_scenario(*card);
+    if (!s) return reply_problem(res, s.error(), req.path);
+    if (*format == "pedsim") {
+      interop::PedsimExportOptions options;
+      options.seed = card->content.seed;
+      auto xml = interop::export_pedsim_scenario(s->world, s->program, options);
+      if (!xml) return reply_problem(res, xml.error(), req.path);
+      return attach(res, id + ".pedsim.xml", *xml, "application/xml");
+    }
+    interop::HunavOptions options;
+    options.seed = card->content.seed;
+    options.base_name = interop::file_stem(id, "card") + "_agents";
+    auto files = interop::export_hunav(s->world, s->program, options);
+    if (!files) return reply_problem(res, files.error(), req.path);
+    if (archive == "json") {
+      Json bundle = Json::object();
+      for (const auto& f : *files) bundle[f.path] = f.content;
+      return reply_json(res, 200, {{"format", "hunav"}, {"files", bundle}});
+    }
+    auto tar = interop::tar_archive(*files);
+    if (!tar) return reply_problem(res, tar.error(), req.path);
+    attach(res, id + ".hunav.tar", *tar, "application/x-tar");
+  });
+}
+
+}  // namespace
+
+SOCSIM_ROUTES("card_exports", export_routes);
+
+}  // namespace socsim::server

@@ -1,0 +1,136 @@
+// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv: a card with the clinic world and the
+// queue program exports as a HuNavSim tar (or JSON bundle) and pedsim_ros XML; a card with a stored
+// trajectory log as CSV; without format the card's export document as before; bad formats 422.
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include "core/crowd/scenario_runner.hpp"
+#include "core/scenario/trajectory_store.hpp"
+#include "core/world/pedsim_import.hpp"
+#include "core/world/world_document.hpp"
+#include "core/world/world_yaml.hpp"
+#include "tests/core/interop/interop_text.hpp"
+#include "tests/server/test_server.hpp"
+
+namespace socsim {
+namespace {
+
+using interop::testing::example;
+
+std::string post_card(httplib::Client& c, const Json& body) {
+  auto r = c.Post("/api/v1/cards", body.dump(), "application/json");
+  EXPECT_TRUE(r);
+  if (!r) return {};
+  EXPECT_EQ(r->status, 201) << r->body;
+  return Json::parse(r->body).value("id", "");
+}
+
+Json clinic_card(const Json& extra = Json::object()) {
+  const world::World w = world::world_from_yaml(example("world_clinic.yaml")).value();
+  Json card = {{"title", "clinic queue"},
+               {"prompt", "patients queue at the reception"},
+               {"seed", 11},
+               {"world", world::world_to_document(w)},
+               {"program", Json::parse(example("program_queue.json"))}};
+  card["program"].erase("$schema");
+  card.update(extra);
+  return card;
+}
+
+TEST(ScenarioExports, HunavTarAndJsonBundleAndPedsimXml) {
+  testing::TestServer s;
+  auto c = s.client();
+  const std::string id = post_card(c, clinic_card());
+  ASSERT_FALSE(id.empty());
+
+  auto tar = c.Get("/api/v1/cards/" + id + "/export?format=hunav");
+  ASSERT_TRUE(tar);
+  ASSERT_EQ(tar->status, 200) << tar->body;
+  EXPECT_EQ(tar->get_header_value("Content-Type"), "application/x-tar");
+  EXPECT_EQ(tar->body.size() % 512, 0u);
+  EXPECT_EQ(tar->body.substr(257, 5), "ustar");
+
+  auto bundle = c.Get("/api/v1/cards/" + id + "/export?format=hunav&archive=json");
+  ASSERT_TRUE(bundle);
+  ASSERT_EQ(bundle->status, 200) << bundle->body;
+  const Json files = Json::parse(bundle->body)["files"];
+  const std::string base = id + "_agents";
+  ASSERT_TRUE(files.contains(base + ".yaml"));
+  const YAML::Node params =
+      YAML::Load(files[base + ".yaml"].get<std::string>())["hunav_loader"]["ros__parameters"];
+  ASSERT_EQ(params["agents"].size(), 6u);  // receptionist + 5 patients; the robot is not a HuNavSim agent
+  for (std::size_t k = 1; k <= 6; ++k)
+    EXPECT_TRUE(files.contains("behavior_trees/" + base + "__agent_" + std::to_string(k) + "_bt.xml")) << k;
+  // The tar holds the same first file.
+  EXPECT_NE(tar->body.find(files[base + ".yaml"].get<std::string>()), std::string::npos);
+
+  auto pedsim = c.Get("/api/v1/cards/" + id + "/export?format=pedsim");
+  ASSERT_TRUE(pedsim);
+  ASSERT_EQ(pedsim->status, 200) << pedsim->body;
+  EXPECT_EQ(pedsim->get_header_value("Content-Type"), "application/xml");
+  auto back = world::import_pedsim(pedsim->body);
+  ASSERT_TRUE(back) << back.error().message();
+  int agents = 0;
+  for (const auto& a : back->agents) agents += a.count;
+  EXPECT_EQ(agents, 7);
+
+  auto card_doc = c.Get("/api/v1/cards/" + id + "/export");
+  ASSERT_TRUE(card_doc);
+  EXPECT_EQ(card_doc->status, 200);
+  EXPECT_EQ(card_doc->get_header_value("Content-Type"), "application/json");
+  EXPECT_NE(card_doc->body.find(id), std::string::npos);
+}
+
+TEST(ScenarioExports, CsvFromTheStoredTrajectoryLog) {
+  testing::TestServer s;
+  const world::World w = world::world_from_yaml(example("world_clinic.yaml")).value();
+  const crowd::Program p = crowd::program_from_text(example("program_queue.json")).value();
+  auto runner = crowd::ScenarioRunner::create(&w, p, {});
+  ASSERT_TRUE(runner);
+  scenario::TrajectoryRecorder recorder(0.1);
+  (*runner)->run(
+      2.0, [&](double t, std::span<const crowd::PedestrianState> st) { recorder.add(t, st); }, 2);
+  const scenario::TrajectoryLog log = std::move(recorder).finish();
+  ASSERT_TRUE(scenario::save_trajectory_log(s.store(), log));
+  auto c = s.client();
+  const std::string id = post_card(c, clinic_card({{"trajectory_log",
+                                                    {{"uri", "/api/v1/trajectories/" + log.sha256()},
+                                                     {"format", "socsim-traj-v1+zlib"},
+                                                     {"frames", log.frame_count()},
+                                                     {"sha256", log.sha256()}}}}));
+  auto csv = c.Get("/api/v1/cards/" + id + "/export?format=csv");
+  ASSERT_TRUE(csv);
+  ASSERT_EQ(csv->status, 200) << csv->body;
+  EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");
+  EXPECT_EQ(csv->body.rfind("t,id,x,y,vx,vy,state,role,group_id\n", 0), 0u);
+  std::size_t rows = 0;
+  for (std::size_t f = 0; f < log.frame_count(); ++f) rows += log.frame(f).size();
+  EXPECT_EQ(static_cast<std::size_t>(std::count(csv->body.begin(), csv->body.end(), '\n')), rows + 1);
+}
+
+TEST(ScenarioExports, ProblemsAreNamed) {
+  testing::TestServer s;
+  auto c = s.client();
+  const std::string id = post_card(c, clinic_card());
+  auto bad = c.Get("/api/v1/cards/" + id + "/export?format=gazebo");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 422);
+  EXPECT_EQ(Json::parse(bad->body)["errors"][0]["parameter"], "format");
+  auto no_log = c.Get("/api/v1/cards/" + id + "/export?format=csv");
+  ASSERT_TRUE(no_log);
+  EXPECT_EQ(no_log->status, 404);
+  auto missing = c.Get("/api/v1/cards/crd_00000000000000000000/export?format=pedsim");
+  ASSERT_TRUE(missing);
+  EXPECT_EQ(missing->status, 404);
+  // A card whose program names a place the world lacks: 422 with the program pointer.
+  Json broken = clinic_card();
+  broken["program"]["agents"][1]["spawn"] = "no_such_room";
+  const std::string bid = post_card(c, broken);
+  auto refused = c.Get("/api/v1/cards/" + bid + "/export?format=hunav");
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->status, 422) << refused->body;
+  EXPECT_EQ(Json::parse(refused->body)["errors"][0]["pointer"], "/agents/1/spawn");
+}
+
+}  // namespace
+}  // namespace socsim
