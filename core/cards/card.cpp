@@ -98,11 +98,14 @@ void read_content(JsonChecker& c, const Json& body, const CardLimits& limits, bo
     } else if (!t.is_object()) {
       c.add("/trajectory_log", "must be an object or null");
     } else {
-      c.only_keys(t, "/trajectory_log", {"uri", "format", "frames", "rate_hz", "sha256"});
+      c.only_keys(t, "/trajectory_log", {"uri", "format", "frames", "rate_hz", "agents", "duration_s", "sha256"});
       c.string(t, "/trajectory_log", "uri", true, 1, 2048);
       c.string(t, "/trajectory_log", "format", true, 1, 64);
       c.integer(t, "/trajectory_log", "frames", false, 0);
       c.number(t, "/trajectory_log", "rate_hz", false, 0.0, 1000.0);
+      c.integer(t, "/trajectory_log", "agents", false, 0);
+      if (auto d = c.number(t, "/trajectory_log", "duration_s", false, 0.0, 86400.0); d && *d <= 0.0)
+        c.add("/trajectory_log/duration_s", "must be greater than 0");
       if (auto h = c.string(t, "/trajectory_log", "sha256", false); h && h->size() != 64)
         c.add("/trajectory_log/sha256", "must be 64 hex characters");
       out.trajectory_log = t;
