@@ -359,6 +359,7 @@ Intent parse_intent(std::string_view prompt) {
         // The previous count was bound to nothing: a crowd without a named role ("a crowd of 200").
         intent.crowd_size = static_cast<std::size_t>(std::llround(pending->count.value));
         intent.crowd_phrase = pending->count.phrase;
+        intent.crowd_clause = t[pending->start].clause;
       }
       pending = Pending{*c, i, i + c->length};
       i += c->length - 1;
@@ -368,6 +369,7 @@ Intent parse_intent(std::string_view prompt) {
       if (!pending->count.bare_article && !intent.crowd_size && pending->count.phrase.find("crowd") != std::string::npos) {
         intent.crowd_size = static_cast<std::size_t>(std::llround(pending->count.value));
         intent.crowd_phrase = pending->count.phrase;
+        intent.crowd_clause = t[pending->start].clause;
       }
       pending.reset();
     }
@@ -376,6 +378,7 @@ Intent parse_intent(std::string_view prompt) {
       pending->count.phrase.find("crowd") != std::string::npos) {
     intent.crowd_size = static_cast<std::size_t>(std::llround(pending->count.value));
     intent.crowd_phrase = pending->count.phrase;
+    intent.crowd_clause = t[pending->start].clause;
   }
 
   // Places: a preposition and the words after it, or a lexicon place phrase on its own.

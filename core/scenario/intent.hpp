@@ -60,6 +60,7 @@ struct Intent {
   std::vector<Clause> clauses;
   std::optional<std::size_t> crowd_size;  // "a crowd of 200" without a role
   std::string crowd_phrase;
+  std::size_t crowd_clause = 0;
   Timing timing;
 };
 

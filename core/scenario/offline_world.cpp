@@ -133,7 +133,7 @@ std::size_t WorldProbe::capacity(std::string_view region) const {
   double perimeter = 0.0;
   for (const world::Segment& e : geometry::edges(p->region->outer)) perimeter += geometry::length(e);
   const double usable = std::max(0.0, area - perimeter * 0.35);
-  return static_cast<std::size_t>(std::floor(usable * 0.5));
+  return static_cast<std::size_t>(std::floor(usable * 0.8));
 }
 
 std::vector<std::pair<std::string, std::string>> WorldProbe::neighbours(std::string_view zone) const {

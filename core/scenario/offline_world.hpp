@@ -46,7 +46,7 @@ class WorldProbe {
   [[nodiscard]] std::string zone_at(crowd::Vec2 p) const;
   [[nodiscard]] double zone_area(std::string_view zone) const;
   [[nodiscard]] double region_area(std::string_view region) const;  // ROI or zone polygon
-  // People that fit in a region for spawning (0.5 per m² of the area kept 0.35 m from its edges).
+  // People that fit in a region for spawning (0.8 per m² of the area kept 0.35 m from its edges).
   [[nodiscard]] std::size_t capacity(std::string_view region) const;
   // Zones sharing a door with `zone`, by door name.
   [[nodiscard]] std::vector<std::pair<std::string, std::string>> neighbours(std::string_view zone) const;
