@@ -104,8 +104,8 @@ void expect_round_trip(const std::string& xml, const std::string& file) {
   // moves when the robot is written last).
   auto trees = [](const Json& program) {
     std::multiset<std::string> out;
-    for (const auto& [name, tree] : program.value("behavior_trees", Json::object()).items())
-      out.insert(tree.dump());
+    const Json trees_of = program.value("behavior_trees", Json::object());
+    for (const auto& [name, tree] : trees_of.items()) out.insert(tree.dump());
     return out;
   };
   EXPECT_EQ(trees(again->program.program), trees(first->program.program)) << file;
@@ -155,11 +155,13 @@ TEST(ExportPedsimScenario, SocsimProgramsGetWaypointsForTheirPlacesAndPoints) {
     for (const auto& c : again->agents) exported += static_cast<std::size_t>(c.count);
     EXPECT_EQ(exported, agents) << file;
   }
-  // The queue program: patients queue at the reception lane and then go to the waiting seats; the
-  // robot's bare points get waypoints of their own.
+  // The queue program: patients queue at the reception lane, then sit in the waiting seats, which
+  // pedsim models as an attraction (strength 10: every patient goes there); the robot's bare points
+  // get waypoints of their own.
   const std::string queue = export_pedsim_scenario(w, testing::example_program("program_queue.json")).value();
-  EXPECT_THAT(queue,
-              HasSubstr("<addqueue id=\"reception_queue\"/>\n    <addwaypoint id=\"waiting_seats\"/>"));
+  EXPECT_THAT(queue, HasSubstr("<addqueue id=\"reception_queue\"/>\n  </agent>"));
+  EXPECT_THAT(queue, HasSubstr("<attraction id=\"waiting_seats\" x=\"5\" y=\"9.5\" width=\"8\" height=\"3\" "
+                               "strength=\"10\"/>"));
   EXPECT_THAT(queue, HasSubstr("<waypoint id=\"goal_1\" x=\"8.5\" y=\"5\""));
   EXPECT_THAT(queue, HasSubstr("<waypoint id=\"reception_counter\" x=\"5\" y=\"4.8\" r=\"1\"/>"));
 }
