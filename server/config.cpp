@@ -67,7 +67,15 @@ Status apply(ServerConfig& c, const std::string& flag, const std::string& value,
     std::size_t w = 0;
     if (auto s = size(w, 1); !s) return s;
     c.job_workers = static_cast<int>(std::min<std::size_t>(w, 64));
-  }
+  } else if (flag == "--max-simulations") return size(c.max_simulations, 1);
+  else if (flag == "--max-viewers") return size(c.max_viewers, 1);
+  else if (flag == "--max-sim-agents") return size(c.max_sim_agents, 1);
+  else if (flag == "--min-sim-speed") return real(c.min_sim_speed);
+  else if (flag == "--max-sim-speed") return real(c.max_sim_speed);
+  else if (flag == "--stream-hz") return real(c.stream_hz);
+  else if (flag == "--sim-idle") return real(c.sim_idle_s);
+  else if (flag == "--max-sim-duration") return real(c.max_sim_duration_s);
+  else if (flag == "--viewer-queue") return size(c.viewer_queue, 1);
   else return fail(ErrorCode::kBadRequest, "unknown option " + flag + " (see socsim serve --help)");
   return {};
 }
@@ -90,6 +98,15 @@ const std::vector<FlagSpec>& serve_flags() {
       {"--rate-burst", "SOCSIM_RATE_BURST", "burst size of the per-client rate limit (default 100)"},
       {"--api-keys", "SOCSIM_API_KEYS", "name:secret[,name:secret…]; when set, writes need a Bearer key"},
       {"--job-workers", "SOCSIM_JOB_WORKERS", "threads running generation jobs (default 2)"},
+      {"--max-simulations", "SOCSIM_MAX_SIMULATIONS", "live simulations running at once (default 4)"},
+      {"--max-viewers", "SOCSIM_MAX_VIEWERS", "WebSocket viewers per live simulation (default 32)"},
+      {"--max-sim-agents", "SOCSIM_MAX_SIM_AGENTS", "agents in one live simulation (default 10000)"},
+      {"--min-sim-speed", "SOCSIM_MIN_SIM_SPEED", "slowest speed factor of a live simulation (default 0.1)"},
+      {"--max-sim-speed", "SOCSIM_MAX_SIM_SPEED", "fastest speed factor of a live simulation (default 16)"},
+      {"--stream-hz", "SOCSIM_STREAM_HZ", "most frames per second streamed to a viewer, 1-120 (default 20)"},
+      {"--sim-idle", "SOCSIM_SIM_IDLE", "seconds a live simulation runs without viewers before it ends (default 30)"},
+      {"--max-sim-duration", "SOCSIM_MAX_SIM_DURATION", "longest simulated time of a live program, seconds (default 3600)"},
+      {"--viewer-queue", "SOCSIM_VIEWER_QUEUE", "frames queued per slow viewer before the oldest is dropped (default 8)"},
       {"--llm-url", "SOCSIM_LLM_URL", "OpenAI-compatible endpoint base URL, e.g. http://localhost:11434 (optional)"},
       {"--llm-model", "SOCSIM_LLM_MODEL", "model name for the LLM generator"},
   };
@@ -152,6 +169,13 @@ Result<ServerConfig> load_config(const std::vector<std::string>& args, const std
     if (auto s = apply(c, flag, value, flag); !s) return tl::unexpected(s.error());
   }
   if (c.default_page_size > c.max_page_size) c.default_page_size = c.max_page_size;
+  if (c.min_sim_speed <= 0 || c.min_sim_speed > c.max_sim_speed)
+    return fail(ErrorCode::kBadRequest, "--min-sim-speed must be above 0 and at most --max-sim-speed",
+                {{"", "bad speed range", "--min-sim-speed", 0, 0}});
+  if (c.stream_hz < 1 || c.stream_hz > 120)
+    return fail(ErrorCode::kBadRequest, "--stream-hz must be between 1 and 120", {{"", "out of range", "--stream-hz", 0, 0}});
+  if (c.max_sim_duration_s <= 0)
+    return fail(ErrorCode::kBadRequest, "--max-sim-duration must be above 0", {{"", "out of range", "--max-sim-duration", 0, 0}});
   if (auto s = c.llm.validate(); !s) return tl::unexpected(s.error());
   return c;
 }

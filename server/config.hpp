@@ -34,6 +34,16 @@ struct ServerConfig {
   int write_timeout_s = 10;
   std::vector<ApiKey> api_keys;  // empty: writes are open (local use)
   int job_workers = 2;
+  // Live simulations (/api/v1/simulations, /ws/simulations/{id}).
+  std::size_t max_simulations = 4;     // running at once
+  std::size_t max_viewers = 32;        // per simulation
+  std::size_t max_sim_agents = 10000;  // per simulation
+  double min_sim_speed = 0.1;
+  double max_sim_speed = 16.0;
+  double stream_hz = 20.0;             // most frames per second sent to a viewer
+  double sim_idle_s = 30.0;            // a simulation without viewers this long ends
+  double max_sim_duration_s = 3600.0;  // simulated seconds of a program session
+  std::size_t viewer_queue = 8;        // frames queued per viewer before the oldest is dropped
   llm::LlmConfig llm;  // SOCSIM_LLM_* (see core/llm/llm_config.hpp); --llm-url/--llm-model override
 };
 

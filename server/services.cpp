@@ -25,6 +25,16 @@ Result<std::unique_ptr<Services>> Services::create(ServerConfig config, store::S
   }
   s->knowledge = std::make_unique<knowledge::KnowledgeBase>(store, std::move(embeddings));
   s->jobs = std::make_unique<JobRunner>(store, s->events, s->config.job_workers);
+  SimulationLimits limits;
+  limits.max_sessions = s->config.max_simulations;
+  limits.max_viewers = s->config.max_viewers;
+  limits.max_agents = s->config.max_sim_agents;
+  limits.min_speed = s->config.min_sim_speed;
+  limits.max_speed = s->config.max_sim_speed;
+  limits.stream_hz = s->config.stream_hz;
+  limits.idle_s = s->config.sim_idle_s;
+  limits.max_duration_s = s->config.max_sim_duration_s;
+  s->simulations = std::make_unique<SimulationSessions>(limits);
   return s;
 }
 

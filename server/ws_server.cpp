@@ -1,14 +1,20 @@
 #include "server/ws_server.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <deque>
 #include <future>
+#include <mutex>
+#include <optional>
 #include <set>
 #include <thread>
 
 #include <boost/asio.hpp>
 #include <boost/beast.hpp>
 
+#include "core/common/json_io.hpp"
+#include "server/services.hpp"
+#include "server/simulation_sessions.hpp"
 #include "socsim/buildinfo.hpp"
 
 namespace socsim::server {
@@ -21,13 +27,74 @@ using tcp = asio::ip::tcp;
 
 class Session;
 
+// Hands work to the I/O thread until the server stops. Simulation threads post through it, so
+// nothing is posted into a context that is being destroyed.
+struct IoGate {
+  std::mutex mutex;
+  asio::io_context* io = nullptr;
+  template <class F>
+  void post(F&& f) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (io) asio::post(*io, std::forward<F>(f));
+  }
+  void close() {
+    std::lock_guard<std::mutex> lock(mutex);
+    io = nullptr;
+  }
+};
+
 struct Shared {
   asio::io_context io{1};
   WsOptions options;
   EventHub& events;
+  SimulationSessions* simulations;
+  std::shared_ptr<IoGate> gate = std::make_shared<IoGate>();
   std::set<std::shared_ptr<Session>> sessions;  // touched only on the I/O thread
-  Shared(WsOptions o, EventHub& e) : options(std::move(o)), events(e) {}
+  Shared(WsOptions o, EventHub& e, SimulationSessions* sims) : options(std::move(o)), events(e), simulations(sims) {
+    gate->io = &io;
+  }
 };
+
+constexpr std::string_view kSimulationPath = "/ws/simulations/";
+constexpr std::string_view kBinaryProtocol = "socsim.binary.v1";
+constexpr std::string_view kJsonProtocol = "socsim.json.v1";
+
+// The subprotocols a client offers (Sec-WebSocket-Protocol: a, b).
+std::vector<std::string> offered_protocols(std::string_view header) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= header.size()) {
+    std::size_t comma = header.find(',', start);
+    if (comma == std::string_view::npos) comma = header.size();
+    std::string_view item = header.substr(start, comma - start);
+    while (!item.empty() && (item.front() == ' ' || item.front() == '\t')) item.remove_prefix(1);
+    while (!item.empty() && (item.back() == ' ' || item.back() == '\t')) item.remove_suffix(1);
+    if (!item.empty()) out.emplace_back(item);
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::optional<std::string> query_value(std::string_view target, std::string_view name) {
+  const auto q = target.find('?');
+  if (q == std::string_view::npos) return std::nullopt;
+  std::string_view rest = target.substr(q + 1);
+  while (!rest.empty()) {
+    const auto amp = rest.find('&');
+    const std::string_view pair = rest.substr(0, amp);
+    const auto eq = pair.find('=');
+    if (pair.substr(0, eq) == name) return std::string(eq == std::string_view::npos ? "" : pair.substr(eq + 1));
+    if (amp == std::string_view::npos) break;
+    rest = rest.substr(amp + 1);
+  }
+  return std::nullopt;
+}
+
+WirePtr text_message(const Json& j) {
+  auto m = std::make_shared<WireMessage>();
+  m->bytes = j.dump(-1, ' ', false, Json::error_handler_t::replace);
+  return m;
+}
 
 class Session : public std::enable_shared_from_this<Session> {
  public:
@@ -43,67 +110,167 @@ class Session : public std::enable_shared_from_this<Session> {
   // Called on the I/O thread. Frames published before the handshake has finished are not for
   // this client yet (and writing then would race the handshake's own write).
   void send(std::string frame) {
-    if (closed_ || !open_) return;
-    if (queue_.size() >= shared_.options.max_queued_frames) {
-      queue_.pop_front();  // drop the oldest for a slow reader
-      ++dropped_;
-    }
-    queue_.push_back(std::move(frame));
-    if (!writing_) write_next();
+    if (!open_) return;
+    auto m = std::make_shared<WireMessage>();
+    m->bytes = std::move(frame);
+    m->frame = true;
+    enqueue(std::move(m));
   }
 
+  // Called on the I/O thread. A simulation viewer's messages queue from the moment it is attached
+  // (its hello first) and are written once the handshake is done.
+  void enqueue(WirePtr message) {
+    if (closed_ || close_after_) return;
+    const std::size_t limit =
+        simulation_ ? shared_.options.max_queued_simulation_frames : shared_.options.max_queued_frames;
+    if (message->frame && queue_.size() >= limit) {
+      // Drop the oldest frame for a slow reader; hello, status, targets and end are kept.
+      auto oldest = std::find_if(queue_.begin(), queue_.end(), [](const WirePtr& m) { return m->frame; });
+      if (oldest != queue_.end()) {
+        queue_.erase(oldest);
+        ++dropped_;
+        if (counters_) ++counters_->dropped;
+      }
+    }
+    queue_.push_back(std::move(message));
+    if (open_ && !writing_) write_next();
+  }
 
  private:
+  void refuse(const Error& error) {
+    auto res = std::make_shared<http::response<http::string_body>>(static_cast<http::status>(error.status()),
+                                                                   request_.version());
+    res->set(http::field::content_type, "application/problem+json");
+    if (error.retry_after_s > 0) res->set(http::field::retry_after, std::to_string(error.retry_after_s));
+    const std::string target(request_.target());
+    res->body() = error.to_problem(target.substr(0, target.find('?')))
+                      .dump(-1, ' ', false, Json::error_handler_t::replace);
+    res->prepare_payload();
+    http::async_write(ws_.next_layer(), *res,
+                      [self = shared_from_this(), res](beast::error_code, std::size_t) { self->finish(); });
+  }
+
   void on_request(beast::error_code ec) {
     if (ec) return finish();
     const std::string target(request_.target());
     const std::string path = target.substr(0, target.find('?'));
     if (path == "/ws" || path == "/ws/catalogue") topic_ = "cards";
     else if (path == "/ws/jobs") topic_ = "jobs";
-    if (!websocket::is_upgrade(request_) || topic_.empty()) {
-      auto res = std::make_shared<http::response<http::string_body>>(http::status::not_found, request_.version());
-      res->set(http::field::content_type, "application/problem+json");
-      res->body() = R"({"type":"https://socsim.dev/problems/not-found","title":"Not found","status":404,)"
-                    R"("detail":"WebSocket endpoints: /ws/catalogue, /ws/jobs","errors":[]})";
-      res->prepare_payload();
-      http::async_write(ws_.next_layer(), *res, [self = shared_from_this(), res](beast::error_code, std::size_t) {
-        self->finish();
-      });
-      return;
-    }
+    else if (path.rfind(kSimulationPath, 0) == 0 && websocket::is_upgrade(request_))
+      return on_simulation_request(target, path.substr(kSimulationPath.size()));
+    if (!websocket::is_upgrade(request_) || topic_.empty())
+      return refuse(Error(ErrorCode::kNotFound,
+                          "WebSocket endpoints: /ws/catalogue, /ws/jobs, /ws/simulations/{id}"));
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
+    ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
+  }
+
+  // /ws/simulations/{id}[?format=json|binary]: attach as a viewer before accepting, so an unknown,
+  // ended or full session is refused with an HTTP problem.
+  void on_simulation_request(const std::string& target, const std::string& id) {
+    if (!shared_.simulations) return refuse(Error(ErrorCode::kNotFound, "no simulation with id '" + id + "'"));
+    auto session = shared_.simulations->find(id);
+    if (!session) return refuse(session.error());
+    WireFormat format = WireFormat::kJson;
+    std::string protocol;
+    if (auto q = query_value(target, "format")) {
+      if (*q == "binary") format = WireFormat::kBinary;
+      else if (*q != "json")
+        return refuse(Error(ErrorCode::kValidation, "unknown frame format",
+                            {FieldError{"", "must be json or binary", "format", 0, 0}}));
+    }
+    for (const std::string& p : offered_protocols(std::string(request_[http::field::sec_websocket_protocol]))) {
+      if (p == kBinaryProtocol || p == kJsonProtocol) {  // the client's first known choice wins
+        protocol = p;
+        format = p == kBinaryProtocol ? WireFormat::kBinary : WireFormat::kJson;
+        break;
+      }
+    }
+    simulation_ = *session;
+    counters_ = std::make_shared<ViewerCounters>();
+    std::weak_ptr<Session> weak = shared_from_this();
+    std::shared_ptr<IoGate> gate = shared_.gate;
+    auto lease = (*session)->attach(
+        *session, format,
+        [weak, gate](const WirePtr& m) {
+          gate->post([weak, m] {
+            if (auto self = weak.lock()) self->enqueue(m);
+          });
+        },
+        counters_);
+    if (!lease) {
+      simulation_.reset();
+      return refuse(lease.error());
+    }
+    lease_ = std::move(*lease);
+    ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
+    ws_.set_option(websocket::stream_base::decorator([protocol](websocket::response_type& res) {
+      res.set(http::field::server, "socsim");
+      if (!protocol.empty()) res.set(http::field::sec_websocket_protocol, protocol);
+    }));
+    ws_.auto_fragment(false);           // one WebSocket frame per message: fewer writes
+    ws_.read_message_max(64 * 1024);    // control commands are small
     ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
   }
 
   void on_accept(beast::error_code ec) {
     if (ec) return finish();
-    ws_.text(true);
     open_ = true;
-    send(nlohmann::json{{"type", "hello"}, {"server", "socsim"}, {"version", build::kVersion}, {"topic", topic_}}.dump());
+    if (simulation_) {
+      if (!queue_.empty() && !writing_) write_next();
+    } else {
+      ws_.text(true);
+      send(nlohmann::json{{"type", "hello"}, {"server", "socsim"}, {"version", build::kVersion}, {"topic", topic_}}.dump());
+    }
     read_loop();
   }
 
-  // Reads (and ignores) client frames so pings/close are handled; ends the session on error.
+  // Reads client frames so pings/close are handled (simulation viewers' frames are control
+  // commands); ends the session on error.
   void read_loop() {
     ws_.async_read(in_, [self = shared_from_this()](beast::error_code ec, std::size_t) {
       if (ec) return self->finish();
+      if (self->simulation_) self->on_command(beast::buffers_to_string(self->in_.data()));
       self->in_.consume(self->in_.size());
       self->read_loop();
     });
   }
 
+  // {"action": "pause"} etc.: the session tells every viewer the new status; a bad command is
+  // answered to this viewer only.
+  void on_command(const std::string& text) {
+    auto command = parse_json_untrusted(text);
+    Result<Json> done = command ? simulation_->control(*command) : Result<Json>(tl::unexpected(command.error()));
+    if (done) return;
+    Json problem = done.error().to_problem("/ws/simulations/" + simulation_->id());
+    problem["type"] = "error";
+    problem["problem"] = done.error().to_problem()["type"];
+    enqueue(text_message(problem));
+  }
+
   void write_next() {
-    if (queue_.empty() || closed_) {
+    if (closed_) return;
+    if (queue_.empty()) {
       writing_ = false;
+      if (close_after_) close();
       return;
     }
     writing_ = true;
     current_ = std::move(queue_.front());
     queue_.pop_front();
-    ws_.async_write(asio::buffer(current_), [self = shared_from_this()](beast::error_code ec, std::size_t) {
+    if (current_->last) close_after_ = true;
+    ws_.binary(current_->binary);
+    ws_.async_write(asio::buffer(current_->bytes), [self = shared_from_this()](beast::error_code ec, std::size_t) {
       if (ec) return self->finish();
+      if (self->counters_ && self->current_->frame) ++self->counters_->delivered;
       self->write_next();
     });
+  }
+
+  // After a simulation's "end": a normal close, then forget the session.
+  void close() {
+    queue_.clear();
+    ws_.async_close(websocket::close_code::normal, [self = shared_from_this()](beast::error_code) { self->finish(); });
   }
 
   // Forgets the session. The socket is not closed under a pending operation (Beast's stream
@@ -112,6 +279,7 @@ class Session : public std::enable_shared_from_this<Session> {
   void finish() {
     closed_ = true;
     queue_.clear();
+    lease_.reset();  // leaves the simulation's viewers
     shared_.sessions.erase(shared_from_this());
   }
 
@@ -120,23 +288,30 @@ class Session : public std::enable_shared_from_this<Session> {
   beast::flat_buffer buffer_;
   beast::flat_buffer in_;
   http::request<http::string_body> request_;
-  std::deque<std::string> queue_;
-  std::string current_;
+  std::deque<WirePtr> queue_;
+  WirePtr current_;
   std::string topic_;  // "cards" or "jobs", from the path
+  std::shared_ptr<SimulationSession> simulation_;  // set for /ws/simulations/{id}
+  std::unique_ptr<ViewerLease> lease_;
+  std::shared_ptr<ViewerCounters> counters_;
   bool writing_ = false;
   bool open_ = false;  // handshake done
   bool closed_ = false;
+  bool close_after_ = false;  // the simulation ended: close once its "end" is written
   std::size_t dropped_ = 0;
 
  public:
   [[nodiscard]] std::size_t dropped() const { return dropped_; }
   [[nodiscard]] std::size_t queued() const { return queue_.size(); }
+  [[nodiscard]] bool viewing() const { return lease_ != nullptr; }
+  // Leaves the simulation at once (the server is stopping; the socket closes later).
+  void leave() { lease_.reset(); }
 };
 
 }  // namespace
 
 struct WsServer::Impl {
-  Impl(WsOptions o, EventHub& e) : shared(std::move(o), e), acceptor(shared.io) {}
+  Impl(WsOptions o, EventHub& e, SimulationSessions* sims) : shared(std::move(o), e, sims), acceptor(shared.io) {}
   Shared shared;
   tcp::acceptor acceptor;
   std::thread thread;
@@ -156,7 +331,16 @@ struct WsServer::Impl {
   }
 };
 
-WsServer::WsServer(WsOptions options, EventHub& events) : impl_(std::make_unique<Impl>(std::move(options), events)) {}
+WsServer::WsServer(WsOptions options, EventHub& events, SimulationSessions* simulations)
+    : impl_(std::make_unique<Impl>(std::move(options), events, simulations)) {}
+
+WsServer::WsServer(WsOptions options, Services& services)
+    : WsServer(
+          [&] {
+            options.max_queued_simulation_frames = services.config.viewer_queue;
+            return std::move(options);
+          }(),
+          services.events, services.simulations.get()) {}
 
 WsServer::~WsServer() { stop(); }
 
@@ -186,6 +370,7 @@ WsStats WsServer::stats() {
     for (const auto& s : impl_->shared.sessions) {
       st.frames_dropped += s->dropped();
       st.frames_queued += s->queued();
+      st.simulation_viewers += s->viewing() ? 1 : 0;
     }
     p.set_value(st);
   });
@@ -207,6 +392,7 @@ void WsServer::start() {
 void WsServer::stop() {
   if (!impl_ || !impl_->thread.joinable()) return;
   impl_->shared.events.unsubscribe(impl_->subscription);
+  impl_->shared.gate->close();  // simulation threads stop posting here
   // Stopping the I/O context abandons every pending operation; destroying their handlers with
   // the context releases the sessions, whose destructors close the sockets.
   asio::post(impl_->shared.io, [impl = impl_.get()] {
@@ -215,6 +401,7 @@ void WsServer::stop() {
     impl->shared.io.stop();
   });
   impl_->thread.join();
+  for (const auto& s : impl_->shared.sessions) s->leave();
   impl_->shared.sessions.clear();
 }
 
