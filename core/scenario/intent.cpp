@@ -393,6 +393,11 @@ Intent parse_intent(std::string_view prompt) {
     std::size_t end = k;
     while (end < t.size() && end - k < 4 && t[end].clause == t[i].clause && !used[end] && !ends_place(t[end].text) &&
            preposition_at(t, end) == 0 && !t[end].number) {
+      std::size_t pn2 = 0;
+      if (place_phrase_at(t, end, pn2) != nullptr) {  // "nurse station" is a place, not a nurse
+        end = std::min(t.size(), end + pn2);
+        continue;
+      }
       std::size_t rn = 0;
       if (role_at(t, end, rn) != nullptr) break;
       ++end;
@@ -470,6 +475,9 @@ Intent parse_intent(std::string_view prompt) {
     }
     i += best_n - 1;
   }
+  for (Clause& c : intent.clauses)
+    std::stable_sort(c.places.begin(), c.places.end(),
+                     [](const PlaceMention& x, const PlaceMention& y) { return x.offset < y.offset; });
   for (auto& [c, s] : total) intent.categories.push_back(s);
   sort_scores(intent.categories);
   for (std::size_t c = 0; c < clauses; ++c) {
@@ -524,10 +532,15 @@ std::string_view to_string(ResolvedPlace::Kind kind) {
 }
 
 std::optional<ResolvedPlace> resolve_place(const PlaceMention& mention, const world::World& world) {
+  // Name words: the lexicon's curated ones and the mention's words without generic nouns
+  // ("room" alone would match every room).
+  static const std::set<std::string> kGeneric = {"room", "area", "zone", "place", "space", "spot", "side", "end",
+                                                 "part", "corner", "middle", "center", "centre", "building", "floor"};
   std::vector<std::string> words;
-  for (const std::string& w : mention.words) words.push_back(singular(w));
   if (mention.lexicon != nullptr)
     for (std::string_view w : mention.lexicon->name_words) words.push_back(singular(std::string(w)));
+  for (const std::string& w : mention.words)
+    if (kGeneric.count(singular(w)) == 0) words.push_back(singular(w));
   std::sort(words.begin(), words.end());
   words.erase(std::unique(words.begin(), words.end()), words.end());
 

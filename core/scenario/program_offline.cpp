@@ -382,7 +382,12 @@ std::vector<Activity> plan_activities(const Intent& intent, const world::World& 
       }
       continue;
     }
-    const CategoryScore& top = c.categories.front();
+    // An emergency said alongside another activity in one clause ("patients queue when the fire
+    // alarm sounds") is the alarm of that activity (applied to every tree), not a second crowd.
+    const CategoryScore* pick = &c.categories.front();
+    if (pick->category == Category::kEmergency && c.categories.size() > 1 && c.categories[1].score >= kAlarmWeight)
+      pick = &c.categories[1];
+    const CategoryScore& top = *pick;
     // A clause that repeats an activity without adding people or places joins it.
     auto same = std::find_if(out.begin(), out.end(), [&](const Activity& a) { return a.category == top.category; });
     if (same != out.end() && (c.roles.empty() || same->roles.empty()) && (places.empty() || same->places.empty())) {

@@ -135,5 +135,97 @@ TEST_F(ProgramOffline, CountsFromThePromptAreHonoured) {
   EXPECT_EQ(c.provenance["timing"]["alarm_s"], 10.0);
 }
 
+TEST_F(ProgramOffline, SameSeedSameJsonAndTwentySeedsAreValidAndVaried) {
+  const world::World& w = worlds_->plan("office");
+  const std::string prompt = "Visitors queue at the reception while colleagues have a coffee break";
+  const GeneratedProgram a = generate(w, prompt, 42);
+  const GeneratedProgram b = generate(w, prompt, 42);
+  EXPECT_EQ(canonical_json(a.program), canonical_json(b.program));
+  EXPECT_EQ(canonical_json(a.provenance), canonical_json(b.provenance));
+  std::set<std::string> distinct;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const GeneratedProgram g = generate(w, prompt, seed);
+    EXPECT_TRUE(check_program(g.program, w, ScenarioLimits{}).has_value()) << "seed " << seed;
+    distinct.insert(canonical_json(g.program));
+  }
+  EXPECT_GE(distinct.size(), 10u);
+}
+
+TEST_F(ProgramOffline, BadRequestsNameTheField) {
+  const world::World& w = worlds_->plan("office");
+  ProgramRequest r;
+  r.prompt = "   ";
+  auto e = generate_program_offline(w, worlds_->kb(), r, ScenarioLimits{});
+  ASSERT_FALSE(e.has_value());
+  EXPECT_EQ(e.error().code, ErrorCode::kBadRequest);
+  EXPECT_EQ(e.error().errors.at(0).pointer, "/prompt");
+  r.prompt = "a party";
+  r.duration_s = 4000;
+  r.agents = 0;
+  e = generate_program_offline(w, worlds_->kb(), r, ScenarioLimits{});
+  ASSERT_FALSE(e.has_value());
+  EXPECT_EQ(e.error().code, ErrorCode::kValidation);
+  ASSERT_EQ(e.error().errors.size(), 2u);
+  EXPECT_EQ(e.error().errors[0].pointer, "/duration_s");
+  EXPECT_EQ(e.error().errors[1].pointer, "/agents");
+}
+
+TEST_F(ProgramOffline, TotalsStayWithinTheLimitsAndTheRequestedBound) {
+  const world::World& w = worlds_->plan("warehouse");
+  ScenarioLimits limits;
+  limits.max_spotlight = 10;
+  limits.max_agents = 150;
+  ProgramRequest r;
+  r.prompt = "Fire alarm: a crowd of 400 workers evacuates";
+  auto g = generate_program_offline(w, worlds_->kb(), r, limits);
+  ASSERT_TRUE(g.has_value()) << g.error().message();
+  std::size_t spotlight = 0, total = 0;
+  for (const Json& a : g->program["agents"]) spotlight += a.value("count", 1u);
+  total = spotlight;
+  for (const Json& a : g->program["ambient_groups"]) total += a["size"].get<std::size_t>();
+  EXPECT_LE(spotlight, 10u);
+  EXPECT_LE(total, 150u);
+  EXPECT_THAT(g->provenance["notes"].dump(), HasSubstr("scaled down"));
+  r.agents = 20;
+  g = generate_program_offline(w, worlds_->kb(), r, limits);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_EQ(g->provenance["agents_total"], 20u);
+}
+
+TEST_F(ProgramOffline, MissingPlacesFallBackAndSaySo) {
+  // An office has no living room: the party moves to its largest room, with a note, and every
+  // name in the program is one of the office's.
+  const world::World& office = worlds_->plan("office");
+  const GeneratedProgram party = generate(office, "A house party in the living room");
+  EXPECT_THAT(party.provenance["notes"].dump(), HasSubstr("no living room"));
+  for (const std::string& name : places_of(party.program))
+    EXPECT_TRUE(office.find_roi(name) || office.find_entity(name) || office.find_zone(name) || office.find_door(name)) << name;
+  // No elevator anywhere: the mention stays unresolved in the provenance.
+  const GeneratedProgram lift = generate(office, "Visitors queue near the elevator");
+  bool unresolved = false;
+  for (const Json& m : lift.provenance["place_mentions"]) unresolved = unresolved || (m["phrase"] == "elevator" && m["resolved"].is_null());
+  EXPECT_TRUE(unresolved) << lift.provenance["place_mentions"].dump();
+  // A residential plan has no queue lane: people wait by a POI, with a note.
+  const GeneratedProgram queue = generate(worlds_->plan("residential"), "People queue");
+  EXPECT_THAT(queue.provenance["notes"].dump(), HasSubstr("no queue lane"));
+}
+
+TEST_F(ProgramOffline, AnAlarmReachesEveryTreeAndProvenanceNamesTheKnowledge) {
+  const world::World& w = worlds_->plan("hospital");
+  const GeneratedProgram g = generate(w, "Patients queue at the reception when the fire alarm sounds after 15 seconds");
+  EXPECT_THAT(g.categories, ::testing::Contains("emergency"));
+  for (const auto& [name, t] : g.program["behavior_trees"].items()) {
+    const std::string xml = t["xml"].get<std::string>();
+    EXPECT_THAT(xml, HasSubstr("Evacuate")) << name;
+    EXPECT_THAT(xml, HasSubstr("seconds=\"15\"")) << name;
+  }
+  const Json& k = g.provenance["knowledge"];
+  ASSERT_FALSE(k["queries"].empty());
+  EXPECT_FALSE(k["queries"][0]["hits"].empty());
+  bool join_queue = false;
+  for (const Json& n : k["nodes_used"]) join_queue = join_queue || n["name"] == "JoinQueue";
+  EXPECT_TRUE(join_queue);
+}
+
 }  // namespace
 }  // namespace socsim::scenario
