@@ -1,0 +1,153 @@
+// Text to scenario over HTTP: POST /api/v1/scenarios (a job whose result is a scenario card),
+// GET /api/v1/trajectories/{sha256} (a card's trajectory log), POST /api/v1/cards/{id}/replay.
+#include "core/knowledge/building_type.hpp"
+#include "core/scenario/pipeline.hpp"
+#include "core/scenario/trajectory_store.hpp"
+#include "core/world/world_document.hpp"
+#include "core/world/world_yaml.hpp"
+#include "server/http_util.hpp"
+#include "server/routes.hpp"
+#include "server/stored_worlds.hpp"
+
+namespace socsim::server {
+namespace {
+
+constexpr const char* kTrajectoryPath = R"(/api/v1/trajectories/([0-9a-f]{64}|[^/]+))";
+constexpr const char* kReplayPath = R"(/api/v1/cards/(crd_[0-9a-z]{20}|[^/]+)/replay)";
+
+scenario::ScenarioConfig scenario_config(const ServerConfig& config) {
+  scenario::ScenarioConfig c;
+  c.max_prompt_bytes = config.max_prompt_bytes;
+  return c;
+}
+
+// Errors of a nested document get the request field's pointer in front.
+Error nested(Error e, const std::string& prefix) {
+  for (auto& f : e.errors) f.pointer = prefix + f.pointer;
+  if (e.errors.empty()) e.errors.push_back({prefix, e.detail, "", 0, 0});
+  return e;
+}
+
+// The world the request names (inline or by id); nullopt when it is to be laid out.
+Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx, const scenario::ScenarioRequest& r) {
+  if (r.world) {
+    Result<world::World> w = r.world->is_string() ? world::world_from_yaml(r.world->get<std::string>())
+                                                  : world::world_from_document(*r.world);
+    if (!w) return tl::unexpected(nested(w.error(), "/world"));
+    std::vector<std::string> names;
+    for (const auto& z : w->zones()) names.push_back(z.name + " " + z.type);
+    std::string domain = r.domain ? *r.domain : knowledge::classify_building_type(names).type;
+    return scenario::ScenarioWorld{std::move(*w), domain, Json{{"source", "request"}}};
+  }
+  if (r.world_id) {
+    auto stored = stored_world_text(ctx.store, *r.world_id);
+    if (!stored) {
+      Error e = stored.error();
+      if (e.code == ErrorCode::kNotFound) {
+        e.code = ErrorCode::kValidation;
+        e.errors = {{"/world_id", "no world with this id", "", 0, 0}};
+      }
+      return tl::unexpected(e);
+    }
+    auto w = world::world_from_yaml(stored->world_yaml);
+    if (!w) return fail(ErrorCode::kInternal, "stored world '" + *r.world_id + "' no longer validates: " + w.error().message());
+    return scenario::ScenarioWorld{std::move(*w), r.domain.value_or(stored->domain),
+                                   Json{{"source", "world_id"}, {"world_id", *r.world_id}}};
+  }
+  return std::optional<scenario::ScenarioWorld>{};
+}
+
+void scenario_routes(httplib::Server& http, RouteContext& ctx) {
+  post_with_body(http, "/api/v1/scenarios", ctx.config.max_body_bytes,
+                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+    auto body = json_body(text);
+    if (!body) return reply_problem(res, body.error(), req.path);
+    const auto config = scenario_config(ctx.config);
+    auto request = scenario::scenario_request_from_json(*body, config);
+    if (!request) return reply_problem(res, request.error(), req.path);
+    if (request->generator == "llm" && !ctx.llm)
+      return reply_problem(res, Error(ErrorCode::kValidation,
+                                      "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
+                                      {{"/generator", "must be offline on this server", "", 0, 0}}), req.path);
+    auto world = given_world(ctx, *request);
+    if (!world) return reply_problem(res, world.error(), req.path);
+    const std::string author = ctx.author(req);
+    auto id = ctx.jobs.submit(
+        "scenario.generate", *body, author,
+        [&ctx, request = *request, world = std::move(*world), config, author](const JobContext& job) -> Result<Json> {
+          std::optional<llm::StructuredGenerator> gen;
+          if (ctx.llm) gen.emplace(*ctx.llm, &ctx.store);
+          scenario::ScenarioServices s{ctx.knowledge, gen ? &*gen : nullptr, config, job.id(), job.cancel_token(),
+                                       [&job](double f, const std::string& m) { job.progress(f, m); }};
+          auto outcome = scenario::run_scenario(request, world, s);
+          if (!outcome) return tl::unexpected(outcome.error());
+          if (auto saved = scenario::save_trajectory_log(ctx.store, outcome->log); !saved) return tl::unexpected(saved.error());
+          auto card = ctx.catalogue.create(outcome->card, author);
+          if (!card) return tl::unexpected(card.error());
+          ctx.events.publish("cards", {{"type", "card.created"}, {"card", cards::summary_json(*card)}});
+          return Json{{"card_id", card->id},
+                      {"location", "/api/v1/cards/" + card->id},
+                      {"title", card->content.title},
+                      {"categories", outcome->card.provenance.value("categories", Json::array())},
+                      {"trajectory_log", outcome->card.trajectory_log}};
+        });
+    if (!id) return reply_problem(res, id.error(), req.path);
+    auto job = ctx.jobs.get(*id);
+    if (!job) return reply_problem(res, job.error(), req.path);
+    res.set_header("Location", "/api/v1/jobs/" + *id);
+    reply_json(res, 202, *job);
+  });
+
+  http.Get(kTrajectoryPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+    const std::string sha = req.matches[1];
+    if (sha.size() != 64 || sha.find_first_not_of("0123456789abcdef") != std::string::npos)
+      return reply_problem(res, Error(ErrorCode::kNotFound, "no trajectory log '" + sha + "'"), req.path);
+    const std::string tag = "\"" + sha + "\"";
+    if (req.get_header_value("If-None-Match") == tag) {
+      res.status = 304;
+      res.set_header("ETag", tag);
+      return;
+    }
+    auto blob = scenario::load_trajectory_blob(ctx.store, sha);
+    if (!blob) return reply_problem(res, blob.error(), req.path);
+    res.set_header("ETag", tag);
+    res.set_header("Cache-Control", "public, max-age=31536000, immutable");
+    res.set_header("Content-Disposition", "attachment; filename=\"" + sha + ".socsim-traj\"");
+    res.set_content(*blob, "application/vnd.socsim.trajectory+zlib");
+  });
+
+  post_with_body(http, kReplayPath, ctx.config.max_body_bytes,
+                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string&) {
+    const std::string card_id = req.matches[1];
+    auto card = ctx.catalogue.get(card_id);
+    if (!card) return reply_problem(res, card.error(), req.path);
+    if (!card->content.trajectory_log.is_object())
+      return reply_problem(res, Error(ErrorCode::kValidation, "the card has no trajectory log to replay",
+                                      {{"/trajectory_log", "only scenario cards (POST /api/v1/scenarios) replay", "", 0, 0}}),
+                           req.path);
+    auto id = ctx.jobs.submit("scenario.replay", Json{{"card_id", card_id}}, ctx.author(req),
+                              [content = card->content, card_id](const JobContext& job) -> Result<Json> {
+                                auto out = scenario::replay_card(
+                                    content, [&job](double f, const std::string& m) { job.progress(f, m); },
+                                    job.cancel_token());
+                                if (!out) return tl::unexpected(out.error());
+                                const std::string expected = content.trajectory_log.value("sha256", "");
+                                return Json{{"card_id", card_id},
+                                            {"expected_sha256", expected},
+                                            {"sha256", out->log.sha256()},
+                                            {"identical", out->log.sha256() == expected},
+                                            {"frames", out->log.frame_count()}};
+                              });
+    if (!id) return reply_problem(res, id.error(), req.path);
+    auto job = ctx.jobs.get(*id);
+    if (!job) return reply_problem(res, job.error(), req.path);
+    res.set_header("Location", "/api/v1/jobs/" + *id);
+    reply_json(res, 202, *job);
+  });
+}
+
+}  // namespace
+
+SOCSIM_ROUTES("scenarios", scenario_routes);
+
+}  // namespace socsim::server
