@@ -62,7 +62,7 @@ function drawWorld(canvas, world, opts = {}) {
     const [px, py] = toPx(t, e.pose);
     ctx.fillStyle = '#343a40';
     ctx.fillRect(px - 3, py - 3, 6, 6);
-    if (opts.labels !== false) { ctx.fillStyle = '#495057'; ctx.fillText(e.name, px + 5, py - 4); }
+    if (opts.labels !== false && opts.entityLabels !== false) { ctx.fillStyle = '#495057'; ctx.fillText(e.name, px + 5, py - 4); }
   }
   if (opts.labels !== false) {
     ctx.fillStyle = '#212529';

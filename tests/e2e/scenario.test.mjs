@@ -1,0 +1,104 @@
+// Text to scenario in headless Debian Chromium, as a user does it: type a prompt, watch the
+// job's progress, see the card's world and its people move (the canvas changes between two
+// looks), pause stops them; open a scenario card from the catalogue and watch it there.
+// A screenshot per test lands in tests/e2e/artifacts/.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { existsSync, mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { startServer, repoRoot } from './server.mjs';
+
+const chromiumPath = '/usr/bin/chromium';
+const artifacts = join(repoRoot, 'tests', 'e2e', 'artifacts');
+const skip = !existsSync(chromiumPath) && 'Debian chromium is not installed (bash deploy/install-deps.sh --with-browser)';
+let server, browser;
+
+before(async () => {
+  if (skip) return;
+  const { chromium } = await import('playwright-core');
+  mkdirSync(artifacts, { recursive: true });
+  server = await startServer();
+  browser = await chromium.launch({
+    executablePath: chromiumPath,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
+      '--disable-sync', '--no-first-run', '--disable-quic'],
+  });
+});
+
+after(async () => {
+  await browser?.close();
+  await server?.stop();
+});
+
+// A fingerprint of the stage's pixels.
+const stagePixels = (page) => page.evaluate(() => {
+  const c = document.getElementById('stage');
+  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  let h = 0;
+  for (let i = 0; i < d.length; i += 4) h = (h * 31 + d[i] + 7 * d[i + 1] + 13 * d[i + 2]) >>> 0;
+  return h;
+});
+
+async function waitForPeople(page) {
+  await page.waitForFunction(() => /\d+ people/.test(document.getElementById('clock').textContent) &&
+    !/ 0 people/.test(document.getElementById('clock').textContent), null, { timeout: 30000 });
+}
+
+test('a prompt becomes a scenario whose people move', { skip }, async () => {
+  const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(server.base + '/scenario.html');
+  await page.fill('#prompt', 'About twenty patients queue at the reception desk while two nurses chat near the corridor');
+  await page.fill('#seed', '3');
+  await page.fill('#duration', '30');
+  await page.click('#generate');
+  await page.waitForFunction(() => document.getElementById('card-title').textContent !== 'No scenario open', null, { timeout: 120000 });
+  assert.equal(await page.textContent('#error'), '');
+  assert.match(page.url(), /#card=crd_/);
+  await waitForPeople(page);
+  const first = await stagePixels(page);
+  await page.waitForTimeout(800);
+  const second = await stagePixels(page);
+  assert.notEqual(first, second, 'the agents move between two looks at the canvas');
+  assert.match(await page.textContent('#metrics'), /mean speed/);
+  await page.screenshot({ path: join(artifacts, 'scenario-live.png'), fullPage: true });
+
+  await page.click('#play');  // pause
+  await page.waitForTimeout(400);
+  const paused = await stagePixels(page);
+  await page.waitForTimeout(600);
+  assert.equal(await stagePixels(page), paused, 'paused: the picture stands still');
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('a scenario card opens from the catalogue and plays', { skip }, async () => {
+  // A second scenario made through the API, then found in the catalogue like any card.
+  const job = await server.post('/api/v1/scenarios', { prompt: 'Fire alarm: everyone evacuates the office', seed: 2, duration_s: 20 });
+  assert.equal(job.status, 202);
+  let done;
+  for (let i = 0; i < 600; i++) {
+    done = await (await fetch(`${server.base}/api/v1/jobs/${job.body.id}`)).json();
+    if (done.status === 'succeeded' || done.status === 'failed') break;
+    await new Promise((r) => setTimeout(r, 200));
+  }
+  assert.equal(done.status, 'succeeded', JSON.stringify(done.error));
+
+  const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
+  await page.goto(server.base + '/');
+  await page.fill('#q', 'evacuates');
+  await page.click('#search button');
+  await page.waitForFunction(() => document.querySelectorAll('#cards li').length === 1);
+  await page.click('#cards li');
+  await page.waitForSelector('a.watch');
+  await page.click('a.watch');
+  await page.waitForURL(/scenario\.html#card=crd_/);
+  await waitForPeople(page);
+  assert.match(await page.textContent('#card-title'), /evacuates/);
+  const first = await stagePixels(page);
+  await page.waitForTimeout(800);
+  assert.notEqual(await stagePixels(page), first);
+  await page.screenshot({ path: join(artifacts, 'scenario-from-catalogue.png'), fullPage: true });
+  await page.close();
+});
