@@ -100,13 +100,8 @@ void card_routes(httplib::Server& http, RouteContext& ctx) {
     reply_card(res, 201, *card);
   });
 
-  http.Get(std::string(kCardPath) + "/export", [&ctx](const httplib::Request& req, httplib::Response& res) {
-    const std::string id = req.matches[1].str();
-    auto doc = ctx.catalogue.export_card(id);
-    if (!doc) return reply_problem(res, doc.error(), req.path);
-    res.set_header("Content-Disposition", "attachment; filename=\"" + id + ".card.json\"");
-    res.set_content(*doc, "application/json");
-  });
+  // GET /api/v1/cards/{id}/export (the card's own document, and the simulator formats) is served
+  // by routes_scenario_exports.cpp.
 
   post_with_body(http, "/api/v1/cards/import", max_body,
                  [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
