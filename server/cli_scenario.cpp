@@ -120,14 +120,20 @@ int replay_command(const std::vector<std::string>& args) {
   }
   auto text = read_text(a.words[0]);
   if (!text) return cli_report(text.error());
-  auto json = parse_json_untrusted(*text);
-  if (!json) return cli_report(json.error());
-  // A catalogue export (a whole card) or the content alone (scenario generate -o).
-  Json content = *json;
-  for (const char* server_field : {"id", "author", "version", "parent_id", "created_at", "content_hash", "links"})
-    content.erase(server_field);
-  auto card = cards::parse_card_content(content, cards::CardLimits{});
-  if (!card) return cli_report(card.error());
+  // A catalogue export document (`socsim card export`, GET /cards/{id}/export), or the content
+  // alone (`scenario generate -o`).
+  cards::CardContent content;
+  if (auto exported = cards::parse_export_document(*text, cards::CardLimits{})) {
+    content = exported->content;
+  } else {
+    auto json = parse_json_untrusted(*text);
+    if (!json) return cli_report(json.error());
+    if (json->contains("socsim_card_export")) return cli_report(exported.error());
+    auto parsed = cards::parse_card_content(*json, cards::CardLimits{});
+    if (!parsed) return cli_report(parsed.error());
+    content = std::move(*parsed);
+  }
+  const cards::CardContent* card = &content;
   auto out = scenario::replay_card(*card);
   if (!out) return cli_report(out.error());
   const std::string expected = card->trajectory_log.value("sha256", "");
