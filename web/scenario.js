@@ -12,10 +12,11 @@ const STATE_COLOURS = {
 };
 const ROLE_PALETTE = ['#1c7ed6', '#e8590c', '#2b8a3e', '#ae3ec9', '#e03131', '#0c8599', '#f59f00', '#5f3dc4', '#495057', '#c2255c'];
 const TRAIL = 24;  // frames of history drawn per agent
+const MAX_TRAILED = 3000;  // above this many people, no trails or heading ticks (keeps 10k agents smooth)
 
 const view = {
   card: null, world: null, base: null, transform: null, ws: null, wsBase: null, session: null,
-  prev: new Map(), curr: new Map(), currAt: 0, interval: 0.1, t: 0, paused: false, trails: new Map(),
+  prev: null, curr: null, prevIndex: new Map(), currIndex: new Map(), states: Object.keys(STATE_COLOURS), currAt: 0, interval: 0.1, t: 0, paused: false, trails: new Map(),
   roles: [], duration: 60, frames: 0, seeking: false,
 };
 
@@ -118,22 +119,27 @@ function wsUrl(session) {
 
 function connect(session) {
   view.session = session;
-  const ws = new WebSocket(wsUrl(session));
+  // Compact binary frames (schemas/simulation_binary_frame.md) decode straight into typed arrays;
+  // control and status messages stay JSON text.
+  const url = wsUrl(session);
+  const ws = new WebSocket(url + (url.includes('?') ? '&' : '?') + 'format=binary');
+  ws.binaryType = 'arraybuffer';
   view.ws = ws;
   $('stream-status').textContent = 'connecting…';
   ws.onopen = () => { $('stream-status').textContent = 'streaming'; $('play').disabled = false; };
   ws.onclose = () => { if (view.ws === ws) { $('stream-status').textContent = 'stream ended'; $('play').disabled = true; } };
   ws.onmessage = (m) => {
-    if (typeof m.data !== 'string') return;
+    if (typeof m.data !== 'string') { onFrame(decodeBinaryFrame(m.data)); return; }
     const msg = JSON.parse(m.data);
     if (msg.type === 'hello') {
       view.roles = msg.roles || [];
+      view.states = msg.states || Object.keys(STATE_COLOURS);
       if (msg.frame_hz) view.interval = 1 / msg.frame_hz;
       if (msg.duration_s) { view.duration = msg.duration_s; $('seek').max = String(msg.duration_s); }
       $('seek').disabled = !msg.seekable;
       legend();
     } else if (msg.type === 'frame') {
-      onFrame(msg);
+      onFrame(fromJsonFrame(msg));
     } else if (msg.type === 'status') {
       view.paused = !!msg.paused;
       $('play').textContent = view.paused ? 'Play' : 'Pause';
@@ -145,30 +151,68 @@ function connect(session) {
 
 function stopStream() {
   if (view.ws) { const ws = view.ws; view.ws = null; ws.close(); }
-  view.prev.clear(); view.curr.clear(); view.trails.clear();
+  view.prev = null; view.curr = null; view.prevIndex = new Map(); view.currIndex = new Map(); view.trails.clear();
 }
 
 function send(action, value) {
   if (view.ws && view.ws.readyState === WebSocket.OPEN) view.ws.send(JSON.stringify(value === undefined ? { action } : { action, value }));
 }
 
-function onFrame(msg) {
-  if (msg.t < view.t - 1e-6) { view.trails.clear(); view.prev.clear(); }  // a seek backwards
+// A frame as typed arrays: n agents with id, x, y, yaw, state index and role index.
+function makeFrame(n, t) {
+  return { t, n, id: new Uint32Array(n), x: new Float32Array(n), y: new Float32Array(n), yaw: new Float32Array(n),
+    state: new Uint8Array(n), role: new Uint8Array(n) };
+}
+
+// SSF1: 24-byte header (magic, u16 header size, u16 record size, u32 seq, f64 t, u32 count), then
+// per agent u32 id, f32 x y yaw vx vy, i32 group, u8 state, u8 role, u16 target (little-endian).
+function decodeBinaryFrame(buffer) {
+  const v = new DataView(buffer);
+  const header = v.getUint16(4, true), record = v.getUint16(6, true);
+  const n = v.getUint32(20, true);
+  const f = makeFrame(n, v.getFloat64(12, true));
+  for (let i = 0, at = header; i < n; i++, at += record) {
+    f.id[i] = v.getUint32(at, true);
+    f.x[i] = v.getFloat32(at + 4, true);
+    f.y[i] = v.getFloat32(at + 8, true);
+    f.yaw[i] = v.getFloat32(at + 12, true);
+    f.state[i] = v.getUint8(at + 28);
+    f.role[i] = v.getUint8(at + 29);
+  }
+  return f;
+}
+
+function fromJsonFrame(msg) {
+  const f = makeFrame(msg.agents.length, msg.t);
+  msg.agents.forEach((a, i) => {
+    f.id[i] = a.id; f.x[i] = a.x; f.y[i] = a.y; f.yaw[i] = a.yaw;
+    f.state[i] = Math.max(0, view.states.indexOf(a.state)); f.role[i] = Math.max(0, view.roles.indexOf(a.role));
+  });
+  return f;
+}
+
+function onFrame(f) {
+  if (f.t < view.t - 1e-6) { view.trails.clear(); view.curr = null; view.currIndex = new Map(); }  // a seek backwards
   view.prev = view.curr;
-  view.curr = new Map();
-  for (const a of msg.agents) {
-    view.curr.set(a.id, a);
-    let trail = view.trails.get(a.id);
-    if (!trail) { trail = []; view.trails.set(a.id, trail); }
-    trail.push(a.x, a.y);
+  view.prevIndex = view.currIndex;
+  view.curr = f;
+  view.currIndex = new Map();
+  const keepTrails = f.n <= MAX_TRAILED;
+  for (let i = 0; i < f.n; i++) {
+    view.currIndex.set(f.id[i], i);
+    if (!keepTrails) continue;
+    let trail = view.trails.get(f.id[i]);
+    if (!trail) { trail = []; view.trails.set(f.id[i], trail); }
+    trail.push(f.x[i], f.y[i]);
     if (trail.length > 2 * TRAIL) trail.splice(0, 2);
   }
-  for (const id of view.trails.keys()) if (!view.curr.has(id)) view.trails.delete(id);
+  if (!keepTrails) view.trails.clear();
+  for (const id of view.trails.keys()) if (!view.currIndex.has(id)) view.trails.delete(id);
   view.currAt = performance.now();
-  view.t = msg.t;
+  view.t = f.t;
   view.frames += 1;
-  if (!view.seeking) $('seek').value = String(msg.t);
-  $('clock').textContent = `${msg.t.toFixed(1)} s · ${view.curr.size} people`;
+  if (!view.seeking) $('seek').value = String(f.t);
+  $('clock').textContent = `${f.t.toFixed(1)} s · ${f.n} people`;
   liveCounts();
 }
 
@@ -182,12 +226,9 @@ function prepareStage() {
   view.transform = window.socsimWorld.drawWorld(view.base, view.world || {}, { entityLabels: false });
 }
 
-function colourOf(a) {
-  if ($('colour-by').value === 'role') {
-    const i = Math.max(0, view.roles.indexOf(a.role));
-    return ROLE_PALETTE[i % ROLE_PALETTE.length];
-  }
-  return STATE_COLOURS[a.state] || '#343a40';
+function colourAt(f, i) {
+  if ($('colour-by').value === 'role') return ROLE_PALETTE[f.role[i] % ROLE_PALETTE.length];
+  return STATE_COLOURS[view.states[f.state[i]]] || '#343a40';
 }
 
 function legend() {
@@ -208,31 +249,46 @@ function draw() {
   const alpha = view.paused ? 1 : Math.min(1, (performance.now() - view.currAt) / (1000 * view.interval / speed));
   const px = (x) => t.ox + x * t.scale;
   const py = (y) => t.oy - y * t.scale;
+  const f = view.curr;
+  if (!f) return;
   if ($('trails').checked) {
     ctx.lineWidth = 1;
     for (const [id, trail] of view.trails) {
       if (trail.length < 4) continue;
-      const a = view.curr.get(id);
-      ctx.strokeStyle = a ? colourOf(a) + '66' : '#adb5bd66';
+      const i = view.currIndex.get(id);
+      ctx.strokeStyle = (i === undefined ? '#adb5bd' : colourAt(f, i)) + '66';
       ctx.beginPath();
       ctx.moveTo(px(trail[0]), py(trail[1]));
-      for (let i = 2; i < trail.length; i += 2) ctx.lineTo(px(trail[i]), py(trail[i + 1]));
+      for (let k = 2; k < trail.length; k += 2) ctx.lineTo(px(trail[k]), py(trail[k + 1]));
       ctx.stroke();
     }
   }
-  const r = Math.max(2.5, 0.25 * t.scale);
-  for (const [id, a] of view.curr) {
-    const p = view.prev.get(id);
-    const x = p ? p.x + (a.x - p.x) * alpha : a.x;
-    const y = p ? p.y + (a.y - p.y) * alpha : a.y;
-    ctx.fillStyle = colourOf(a);
+  // Bodies batched by colour: one path per colour, not one per agent.
+  const r = Math.max(1.5, 0.25 * t.scale);
+  const byColour = new Map();
+  const p = view.prev, pi = view.prevIndex;
+  const headings = f.n <= MAX_TRAILED;
+  for (let i = 0; i < f.n; i++) {
+    const j = p ? pi.get(f.id[i]) : undefined;
+    const x = j === undefined ? f.x[i] : p.x[j] + (f.x[i] - p.x[j]) * alpha;
+    const y = j === undefined ? f.y[i] : p.y[j] + (f.y[i] - p.y[j]) * alpha;
+    const c = colourAt(f, i);
+    let list = byColour.get(c);
+    if (!list) { list = []; byColour.set(c, list); }
+    list.push(px(x), py(y), f.yaw[i]);
+  }
+  for (const [c, list] of byColour) {
+    ctx.fillStyle = c;
     ctx.beginPath();
-    ctx.arc(px(x), py(y), r, 0, 2 * Math.PI);
+    for (let k = 0; k < list.length; k += 3) { ctx.moveTo(list[k] + r, list[k + 1]); ctx.arc(list[k], list[k + 1], r, 0, 2 * Math.PI); }
     ctx.fill();
+    if (!headings) continue;
     ctx.strokeStyle = '#212529';
     ctx.beginPath();
-    ctx.moveTo(px(x), py(y));
-    ctx.lineTo(px(x) + Math.cos(a.yaw) * r * 1.6, py(y) - Math.sin(a.yaw) * r * 1.6);
+    for (let k = 0; k < list.length; k += 3) {
+      ctx.moveTo(list[k], list[k + 1]);
+      ctx.lineTo(list[k] + Math.cos(list[k + 2]) * r * 1.6, list[k + 1] - Math.sin(list[k + 2]) * r * 1.6);
+    }
     ctx.stroke();
   }
 }
@@ -254,7 +310,8 @@ function showMetrics(m) {
 
 function liveCounts() {
   const counts = {};
-  for (const a of view.curr.values()) counts[a.state] = (counts[a.state] || 0) + 1;
+  const f = view.curr;
+  for (let i = 0; i < f.n; i++) { const st = view.states[f.state[i]]; counts[st] = (counts[st] || 0) + 1; }
   const node = $('live-counts');
   if (node) node.textContent = 'now: ' + Object.entries(counts).map(([s, n]) => `${n} ${s}`).join(', ');
 }
