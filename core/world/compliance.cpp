@@ -146,6 +146,14 @@ class Checker {
       if (c.status == CheckStatus::kFail) report.passed = false;
       report.checks.push_back(std::move(c));
     }
+    // Number and separation of exits (IBC 2018 §1006.3.3, §1007.1.1): built into the checker, as
+    // the store has no entry for them; dwellings (IRC) need one egress door and are not checked.
+    if (!residential_) {
+      for (ComplianceCheck c : exit_checks()) {
+        if (c.status == CheckStatus::kFail) report.passed = false;
+        report.checks.push_back(std::move(c));
+      }
+    }
     return report;
   }
 
@@ -498,18 +506,95 @@ class Checker {
     c.detail = "total width of the exits against " + num(occupant_load_) + " occupants × the per-occupant width";
   }
 
-  void travel(ComplianceCheck& c) {
+  // IBC 2018 Table 1006.3.3(2), stories with one exit (first story above grade plane): the
+  // largest occupant load and exit access travel distance one exit may serve.
+  struct SingleExitLimit {
+    double occupants;
+    double travel_m;
+    const char* occupancy;
+  };
+  SingleExitLimit single_exit_limit() const {
+    if (building_type_ == "hospital") return {10, 22.86, "I-2"};           // H-4, H-5, I, R-1, R-2, R-4: 10, 75 ft
+    if (building_type_ == "warehouse") return {29, 30.48, "S"};           // S: 29, 100 ft
+    return {49, 22.86, "A, B, E, F, M, U"};                                // 49, 75 ft
+  }
+
+  std::vector<ComplianceCheck> exit_checks() {
+    auto base = [](std::string name, std::string unit, std::string section, std::string title) {
+      ComplianceCheck c;
+      c.name = std::move(name);
+      c.applies_to = "building";
+      c.type = "min";
+      c.unit = std::move(unit);
+      c.ref_id = "ibc2018_1006_1007_exits";
+      c.title = std::move(title);
+      c.section = std::move(section);
+      c.jurisdiction = "US";
+      c.confidence = 1.0;
+      return c;
+    };
+    const SingleExitLimit limit = single_exit_limit();
     const auto ex = exits();
-    if (ex.empty()) {
-      measure(c, {{"exits", std::numeric_limits<double>::infinity()}});
-      c.value.reset();
-      c.detail = "the plan has no door to the outside";
-      return;
+    std::string names;
+    for (auto i : ex) names += (names.empty() ? "" : ", ") + world_.doors()[i].name;
+    // The travel distance one exit alone would give: the best of the exits, each on its own.
+    std::optional<double> far;
+    for (auto i : ex) {
+      const double d = travel_distance({i}).first;
+      far = far ? std::min(*far, d) : d;
     }
-    if (!travel_) {
-      const auto grid = OccupancyGrid::rasterise(world_, {0.2, 0.0, 1'000'000});
+    const bool crowded = occupant_load_ > limit.occupants + kEps;
+    const bool distant = far && *far > limit.travel_m + kEps;
+
+    ComplianceCheck count = base("exit_count", "exits", "1006.3.3, Table 1006.3.3(2) Stories with one exit",
+                                 "IBC 2018 1006.3: number of exits from a story");
+    count.required = crowded || distant ? 2.0 : 1.0;
+    measure(count, {{names.empty() ? "exits" : names, static_cast<double>(ex.size())}});
+    count.detail = "doors to the outside against the single-exit limit of occupancy " + std::string(limit.occupancy) +
+                   " (" + num(limit.occupants) + " occupants, " + num2(limit.travel_m) + " m travel): " +
+                   num(occupant_load_) + " occupants" +
+                   (far ? ", " + num2(*far) + " m of travel to the best single exit" : std::string(", no exit")) +
+                   " (built-in rule; the knowledge store holds no entry for it)";
+
+    ComplianceCheck apart = base("exit_separation", "m", "1007.1.1 Two exits or exit access doorways",
+                                 "IBC 2018 1007.1.1: separation of two exits");
+    double diagonal = 0.0;
+    for (const auto& a : world_.zones())
+      for (const auto& b : world_.zones())
+        for (const Point& p : a.polygon.outer)
+          for (const Point& q : b.polygon.outer) diagonal = std::max(diagonal, geometry::distance(p, q));
+    apart.required = diagonal / 2.0;
+    if (count.required < 2.0 || ex.size() < 2) {
+      not_applicable(apart, count.required < 2.0 ? "one exit suffices" : "fewer than two exits to separate");
+    } else {
+      double best = -1.0;
+      std::string pair;
+      for (std::size_t a = 0; a < ex.size(); ++a)
+        for (std::size_t b = a + 1; b < ex.size(); ++b) {
+          const Door& da = world_.doors()[ex[a]];
+          const Door& db = world_.doors()[ex[b]];
+          const double d = geometry::distance(Point{da.pose.x, da.pose.y}, Point{db.pose.x, db.pose.y});
+          if (d > best) {
+            best = d;
+            pair = da.name + " and " + db.name;
+          }
+        }
+      measure(apart, {{pair, best}});
+      apart.detail = "straight line between the centres of the two exits farthest apart against half the building's "
+                     "overall diagonal (" + num2(diagonal) + " m; unsprinklered)";
+    }
+    return {std::move(count), std::move(apart)};
+  }
+
+  // Longest walking distance to the nearest of `through` (every exit when empty) and the zone
+  // where it is measured.
+  std::pair<double, std::string> travel_distance(const std::vector<std::size_t>& through = {}) {
+    auto& cached = travel_[through];
+    if (!cached) {
+      if (!grid_) grid_ = OccupancyGrid::rasterise(world_, {0.2, 0.0, 1'000'000});
+      const OccupancyGrid& grid = *grid_;
       std::vector<Point> sources;
-      for (auto i : ex) {
+      for (auto i : through.empty() ? exits() : through) {
         const Door& d = world_.doors()[i];
         const Point a = d.opening.a, b = d.opening.b;
         const Point mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
@@ -534,9 +619,20 @@ class Checker {
             where = grid.zone_of(cell);
           }
         }
-      travel_ = std::pair{worst, where ? world_.zone(*where).name : std::string("plan")};
+      cached = std::pair{worst, where ? world_.zone(*where).name : std::string("plan")};
     }
-    measure(c, {{travel_->second, travel_->first}});
+    return *cached;
+  }
+
+  void travel(ComplianceCheck& c) {
+    if (exits().empty()) {
+      measure(c, {{"exits", std::numeric_limits<double>::infinity()}});
+      c.value.reset();
+      c.detail = "the plan has no door to the outside";
+      return;
+    }
+    const auto [worst, where] = travel_distance();
+    measure(c, {{where, worst}});
     c.detail = "longest walking distance (geodesic, 0.2 m grid) from any point to the nearest exit";
   }
 
@@ -547,7 +643,8 @@ class Checker {
   bool residential_ = false;
   double occupant_load_ = 0.0;
   std::map<std::string, std::pair<double, double>> load_by_use_;  // use → (area, persons)
-  std::optional<std::pair<double, std::string>> travel_;
+  std::optional<OccupancyGrid> grid_;
+  std::map<std::vector<std::size_t>, std::optional<std::pair<double, std::string>>> travel_;
 };
 
 double round_micro(double v) { return std::isfinite(v) ? std::round(v * 1e6) / 1e6 : v; }

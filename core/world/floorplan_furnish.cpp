@@ -30,6 +30,7 @@ struct DoorAt {
   double width = 0.0;
   bool exterior = false;
   std::string other_type;  // type of the zone on the other side ("" outside)
+  std::string name;
 };
 
 bool axis_aligned_rectangle(const Polygon& p) {
@@ -446,22 +447,29 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
   Furnishing out;
   std::map<std::string, std::string> type_of;
   for (const auto& z : zones) type_of[z.name] = canonical_room_type(z.type);
+  const bool named_entrance =
+      std::any_of(doors.begin(), doors.end(), [](const DoorSpec& d) { return d.name == "main_entrance" && d.connects.size() == 1; });
   for (const auto& z : zones) {
     const std::string type = canonical_room_type(z.type);
     std::vector<DoorAt> here;
     for (const auto& d : doors) {
       const auto it = std::find(d.connects.begin(), d.connects.end(), z.name);
       if (it == d.connects.end()) continue;
-      DoorAt a{d.pose.position(), d.width, d.connects.size() == 1, ""};
+      DoorAt a{d.pose.position(), d.width, d.connects.size() == 1, "", d.name};
       if (!a.exterior) a.other_type = type_of[d.connects[it == d.connects.begin() ? 1 : 0]];
       here.push_back(std::move(a));
     }
     if (is_circulation_type(type) && !is_hall_type(type)) {
       out.rois.push_back({z.name + "_walk", "corridor", z.polygon});
     }
-    // Entrance ROI just inside every door to the outside.
+    // Entrance ROI just inside every door to the outside: "<zone>_entrance" for the main entrance
+    // (or, in a plan without one, the zone's first outside door), "<zone>_<door>" of kind exit
+    // for further exits.
+    bool has_entrance = named_entrance;
     for (const auto& d : here) {
       if (!d.exterior) continue;
+      const bool entrance = d.name == "main_entrance" || !has_entrance;
+      has_entrance = true;
       const auto ring = z.polygon.outer;
       double best = 1e18;
       Segment wall{};
@@ -478,7 +486,9 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
       Point n{-u.y, u.x};
       const Point c = geometry::closest_point(wall, d.centre);
       if (!geometry::contains(z.polygon, {c.x + n.x * 0.1, c.y + n.y * 0.1})) n = {-n.x, -n.y};
-      const double h = d.width / 2 + 0.2;
+      // Half as wide as the door plus 0.2 m each side, narrowed to the wall (a corridor's end).
+      const double h = std::min(d.width / 2 + 0.2, std::min(geometry::distance(c, wall.a), geometry::distance(c, wall.b)));
+      if (h < d.width / 2 - 1e-9) continue;
       std::vector<Point> r{{c.x - u.x * h, c.y - u.y * h}, {c.x + u.x * h, c.y + u.y * h},
                            {c.x + u.x * h + n.x * 1.0, c.y + u.y * h + n.y * 1.0},
                            {c.x - u.x * h + n.x * 1.0, c.y - u.y * h + n.y * 1.0}};
@@ -486,7 +496,8 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
       const Polygon poly{r, {}};
       bool inside = true;
       for (const auto& p : r) inside = inside && geometry::contains(z.polygon, p, 1e-6);
-      if (inside) out.rois.push_back({z.name + "_entrance", "entrance", poly});
+      if (inside)
+        out.rois.push_back({entrance ? z.name + "_entrance" : z.name + "_" + d.name, entrance ? "entrance" : "exit", poly});
     }
     if (!find_room_type(type) || is_corridor_type(type)) continue;
     const Box box = inner_box(z.polygon);

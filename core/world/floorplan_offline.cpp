@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -474,6 +475,77 @@ class Layout {
     }
   }
 
+  // A second door to the outside as far from the main entrance as the outside walls allow
+  // (IBC 1007.1.1 wants at least half the building's diagonal): circulation and public rooms
+  // first, then other rooms except toilets, bedrooms and stores; no randomness, so a plan that
+  // needs no second exit is unchanged. False when no outside wall takes one.
+  std::optional<std::string> add_exit() {
+    const auto main = std::find_if(doors_.begin(), doors_.end(), [](const DoorDraft& d) { return d.name == "main_entrance"; });
+    if (main == doors_.end()) return std::nullopt;
+    std::vector<Rect> rects;
+    for (const auto& r : rooms_) rects.push_back(r.rect);
+    double diagonal = 0.0;
+    for (const Rect& a : rects)
+      for (const Rect& b : rects)
+        for (auto [ax, ay] : {std::pair{a.x0, a.y0}, {a.x1, a.y0}, {a.x1, a.y1}, {a.x0, a.y1}})
+          for (auto [bx, by] : {std::pair{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}})
+            diagonal = std::max(diagonal, std::hypot(ax - bx, ay - by));
+    const int w = public_w_;
+    auto tier = [&](std::size_t r) {
+      const std::string& t = rooms_[r].type;
+      if (is_circulation_type(t)) return 0;
+      if (is_public(r) || t == "dining_hall" || t == "sales_floor" || t == "concourse" || t == "open_office" ||
+          t == "warehouse_floor" || t == "loading_bay")
+        return 1;
+      if (is_toilet_type(t) || is_bedroom_type(t) || t == "storage") return 3;
+      return 2;
+    };
+    struct Spot {
+      std::size_t room;
+      Wall wall;
+      int at;
+      double distance;
+    };
+    std::optional<Spot> best;
+    int best_tier = 4;
+    for (std::size_t r = 0; r < rooms_.size(); ++r) {
+      const int t = tier(r);
+      if (t == 3) continue;
+      for (const Wall& wall : outside_walls(rects, r)) {
+        const int lo = wall.lo + 15 + (w + 1) / 2, hi = wall.hi - 15 - (w + 1) / 2;
+        if (lo > hi) continue;
+        for (int at : {lo, (lo + hi) / 2 / 5 * 5, hi}) {
+          const int x = wall.vertical ? wall.c : at, y = wall.vertical ? at : wall.c;
+          bool clear = true;
+          for (const DoorDraft& d : doors_)
+            if (std::hypot(d.x - x, d.y - y) < (d.width + w) / 2.0 + 60.0) clear = false;
+          if (!clear) continue;
+          const double distance = std::hypot(main->x - x, main->y - y);
+          // A spot far enough apart in a better tier wins; within a tier, the farthest.
+          const bool enough = distance >= diagonal / 2.0;
+          const int rank = enough ? t : t + 4;
+          if (!best || rank < best_tier || (rank == best_tier && distance > best->distance)) {
+            best = Spot{r, wall, at, distance};
+            best_tier = rank;
+          }
+        }
+      }
+    }
+    if (!best) return std::nullopt;
+    DoorDraft d;
+    d.name = "emergency_exit";
+    d.vertical_wall = best->wall.vertical;
+    d.x = best->wall.vertical ? best->wall.c : best->at;
+    d.y = best->wall.vertical ? best->at : best->wall.c;
+    d.width = w;
+    d.connects = {rooms_[best->room].name};
+    doors_.push_back(std::move(d));
+    char metres[32];
+    std::snprintf(metres, sizeof metres, "%.1f", best->distance / 100.0);
+    return "added 'emergency_exit' from '" + rooms_[best->room].name + "', " + metres +
+           " m from the main entrance: the building code asks for a second exit";
+  }
+
   [[nodiscard]] const SceneGraph& graph() const { return graph_; }
   [[nodiscard]] const std::vector<std::string>& notes() const { return notes_; }
   [[nodiscard]] const PlanRequirement& plan() const { return plan_; }
@@ -565,27 +637,47 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       tried.push_back(*why);
       continue;
     }
-    WorldBuilder builder;
-    builder.set_name(layout.graph().domain + "_plan_" + std::to_string(options.seed));
-    builder.set_floor({floor_material(layout.graph().domain)});
-    std::vector<Zone> zones;
-    std::vector<DoorSpec> doors;
-    layout.emit(builder, zones, doors);
-    Rng furnishing_rng = rng.fork("furnish");
-    Furnishing f = furnish(zones, doors, rules, furnishing_rng);
-    for (auto& r : f.rois) builder.add_roi(std::move(r));
-    for (auto& e : f.entities) builder.add_entity(std::move(e));
-    auto world = builder.build(options.build);
+    const Rng furnishing_rng = rng.fork("furnish");
+    auto build = [&]() {
+      WorldBuilder builder;
+      builder.set_name(layout.graph().domain + "_plan_" + std::to_string(options.seed));
+      builder.set_floor({floor_material(layout.graph().domain)});
+      std::vector<Zone> zones;
+      std::vector<DoorSpec> doors;
+      layout.emit(builder, zones, doors);
+      Rng furnishing = furnishing_rng;
+      Furnishing f = furnish(zones, doors, rules, furnishing);
+      for (auto& r : f.rois) builder.add_roi(std::move(r));
+      for (auto& e : f.entities) builder.add_entity(std::move(e));
+      return builder.build(options.build);
+    };
+    auto world = build();
     if (!world) {
       tried.push_back("the world did not validate: " + world.error().message());
       last_error = world.error();
       continue;
     }
     ComplianceReport report = check_compliance(*world, layout.graph().domain, constraints);
+    // The occupant load or the travel distance asks for a second exit: add it and check again.
+    std::optional<std::string> exit_note;
+    const auto exit_count = std::find_if(report.checks.begin(), report.checks.end(),
+                                         [](const ComplianceCheck& c) { return c.name == "exit_count"; });
+    if (exit_count != report.checks.end() && exit_count->status == CheckStatus::kFail) {
+      exit_note = layout.add_exit();
+      if (exit_note) {
+        world = build();
+        if (!world) {
+          tried.push_back("the world with a second exit did not validate: " + world.error().message());
+          last_error = world.error();
+          continue;
+        }
+        report = check_compliance(*world, layout.graph().domain, constraints);
+      }
+    }
     if (!report.passed) {
       double grow = 1.1;
       for (const auto* c : report.failures())
-        if (c->value && *c->value > 0 && c->type == "min") grow = std::max(grow, c->required / *c->value * 1.02);
+        if (c->value && *c->value > 0 && c->type == "min" && c->name.rfind("exit_", 0) != 0) grow = std::max(grow, c->required / *c->value * 1.02);
       scale *= std::min(grow, 1.6);
       std::string what;
       for (const auto* c : report.failures()) what += (what.empty() ? "" : ", ") + c->name + " at " + c->element;
@@ -595,6 +687,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     }
     FloorPlan plan{std::move(*world), std::move(report), layout.graph(), Json::object()};
     Json notes = layout.notes();
+    if (exit_note) notes.push_back(*exit_note);
     plan.provenance = {{"generator", "offline"},
                        {"seed", options.seed},
                        {"domain", layout.graph().domain},

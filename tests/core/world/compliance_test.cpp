@@ -2,6 +2,8 @@
 // status and source; failures name the element; geometry of clear widths and inscribed circles.
 #include "core/world/compliance.hpp"
 
+#include <cmath>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -50,7 +52,10 @@ TEST_F(Compliance, EveryConstraintIsReportedOnceWithItsSource) {
   const World w = world_from_yaml(kClinic).value();
   const auto cs = constraints("hospital");
   const ComplianceReport r = check_compliance(w, "hospital", cs);
-  ASSERT_EQ(r.checks.size(), cs.size());
+  // One check per constraint, then the built-in number and separation of exits (IBC 1006.3, 1007.1.1).
+  ASSERT_EQ(r.checks.size(), cs.size() + 2);
+  EXPECT_EQ(r.checks[cs.size()].name, "exit_count");
+  EXPECT_EQ(r.checks[cs.size() + 1].name, "exit_separation");
   for (std::size_t i = 0; i < cs.size(); ++i) {
     EXPECT_EQ(r.checks[i].name, cs[i].constraint.name);
     EXPECT_EQ(r.checks[i].ref_id, cs[i].ref_id);
@@ -93,7 +98,7 @@ TEST_F(Compliance, EveryConstraintIsReportedOnceWithItsSource) {
   const Json j = to_json(r);
   EXPECT_EQ(j["passed"], false);
   EXPECT_EQ(j["summary"]["fail"].get<int>(), static_cast<int>(r.failures().size()));
-  EXPECT_EQ(j["checks"].size(), cs.size());
+  EXPECT_EQ(j["checks"].size(), cs.size() + 2);
 }
 
 TEST_F(Compliance, OccupantLoadDrivesTheEgressWidth) {
@@ -106,6 +111,52 @@ TEST_F(Compliance, OccupantLoadDrivesTheEgressWidth) {
   EXPECT_NEAR(egress.required, 52 * 0.00508, 1e-9);
   EXPECT_DOUBLE_EQ(*egress.value, 1.8);
   EXPECT_EQ(check(r, "occupant_load_factor_waiting").status, CheckStatus::kUsed);
+}
+
+TEST_F(Compliance, OccupantsAboveTheSingleExitLimitNeedTwoExitsHalfTheDiagonalApart) {
+  // The clinic's 52 occupants exceed the 10 an I-2 story may have with one exit.
+  const World one = world_from_yaml(kClinic).value();
+  const ComplianceReport r1 = check_compliance(one, "hospital", constraints("hospital"));
+  const auto& count = check(r1, "exit_count");
+  EXPECT_EQ(count.status, CheckStatus::kFail);
+  EXPECT_DOUBLE_EQ(count.required, 2.0);
+  EXPECT_DOUBLE_EQ(*count.value, 1.0);
+  EXPECT_EQ(count.element, "entrance");
+  EXPECT_THAT(count.section, HasSubstr("1006.3.3"));
+  EXPECT_EQ(check(r1, "exit_separation").status, CheckStatus::kNotApplicable);
+
+  // A second exit beside the first is too close: the plan's diagonal is 13 × 8 → 15.26 m.
+  const std::string near = std::string(kClinic) + "  - {name: \"side\", pose: [3, 0], width: 1.2, connects: [\"lobby\"]}\n";
+  const ComplianceReport r2 = check_compliance(world_from_yaml(near).value(), "hospital", constraints("hospital"));
+  EXPECT_EQ(check(r2, "exit_count").status, CheckStatus::kPass);
+  const auto& apart = check(r2, "exit_separation");
+  EXPECT_EQ(apart.status, CheckStatus::kFail);
+  EXPECT_NEAR(apart.required, std::hypot(13.0, 8.0) / 2, 1e-9);
+  EXPECT_NEAR(*apart.value, std::hypot(3.0, 4.0), 1e-9);
+  EXPECT_THAT(apart.section, HasSubstr("1007.1.1"));
+
+  // At the far end of room_b it is 13.0 m away: enough.
+  const std::string far = std::string(kClinic) + "  - {name: \"back\", pose: [13, 6], width: 1.2, connects: [\"room_b\"]}\n";
+  const ComplianceReport r3 = check_compliance(world_from_yaml(far).value(), "hospital", constraints("hospital"));
+  EXPECT_EQ(check(r3, "exit_count").status, CheckStatus::kPass);
+  EXPECT_EQ(check(r3, "exit_separation").status, CheckStatus::kPass);
+  EXPECT_NEAR(*check(r3, "exit_separation").value, std::hypot(13.0, 2.0), 1e-9);
+
+  // An 80 m² office holds a handful of business occupants (below 49) and its far corners are
+  // 11 m from the door (within 22.86 m): one exit is enough.
+  const char* small = R"(zones:
+  - {name: "office", type: "open_office", polygon: [[0, 0], [10, 0], [10, 8], [0, 8]]}
+doors:
+  - {name: "entrance", pose: [0, 4], width: 1.0, connects: ["office"]}
+)";
+  const ComplianceReport r4 = check_compliance(world_from_yaml(small).value(), "office", constraints("office"));
+  EXPECT_EQ(check(r4, "exit_count").status, CheckStatus::kPass);
+  EXPECT_DOUBLE_EQ(check(r4, "exit_count").required, 1.0);
+  EXPECT_EQ(check(r4, "exit_separation").status, CheckStatus::kNotApplicable);
+
+  // Dwellings are left to the IRC's single egress door.
+  const ComplianceReport home = check_compliance(one, "residential", constraints("residential"));
+  for (const auto& c : home.checks) EXPECT_NE(c.name, "exit_count");
 }
 
 TEST_F(Compliance, DwellingRulesUseBedroomsAndTheirSizes) {

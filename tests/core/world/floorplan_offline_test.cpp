@@ -215,6 +215,54 @@ TEST_F(FloorplanOffline, EveryBuildingTypeHasAProgrammeThatLaysOut) {
   }
 }
 
+// IBC 1006.3.3 / 1007.1.1: where the occupant load or the travel distance exceeds what one exit
+// may serve, the plan gets a second door to the outside at least half its diagonal from the
+// main entrance, with an exit ROI just inside it; where one exit suffices there is one.
+TEST_F(FloorplanOffline, PlansGetASecondExitFarFromTheFirstWhereTheCodeAsksForIt) {
+  std::map<std::string, int> two_exits;
+  for (const char* domain : {"office", "hospital", "canteen", "retail", "warehouse", "school", "airport", "residential"}) {
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+      const FloorPlan p = generate(domain, seed);
+      SCOPED_TRACE(std::string(domain) + " seed " + std::to_string(seed));
+      EXPECT_TRUE(p.compliance.passed) << to_json(p.compliance).dump();
+      std::vector<const Door*> exits;
+      for (const Door& d : p.world.doors())
+        if (!d.other) exits.push_back(&d);
+      const ComplianceCheck* count = nullptr;
+      for (const auto& c : p.compliance.checks)
+        if (c.name == "exit_count") count = &c;
+      if (std::string(domain) == "residential") {
+        EXPECT_EQ(count, nullptr);
+        EXPECT_EQ(exits.size(), 1u);
+        continue;
+      }
+      ASSERT_NE(count, nullptr);
+      EXPECT_GE(static_cast<double>(exits.size()), count->required);
+      if (exits.size() < 2) continue;
+      // Added only where the main entrance alone did not do (the added exit may be the better single one).
+      EXPECT_THAT(p.provenance["notes"].dump(), HasSubstr("emergency_exit"));
+      ++two_exits[domain];
+      EXPECT_EQ(exits[0]->name, "main_entrance");
+      EXPECT_EQ(exits[1]->name, "emergency_exit");
+      double diagonal = 0.0;
+      for (const Zone& a : p.world.zones())
+        for (const Zone& b : p.world.zones())
+          for (const Point& u : a.polygon.outer)
+            for (const Point& v : b.polygon.outer) diagonal = std::max(diagonal, geometry::distance(u, v));
+      EXPECT_GE(geometry::distance(Point{exits[0]->pose.x, exits[0]->pose.y}, Point{exits[1]->pose.x, exits[1]->pose.y}),
+                diagonal / 2 - 1e-6);
+      const std::string zone = p.world.zone(exits[1]->zone).name;
+      const auto roi = p.world.find_roi(zone + "_emergency_exit");
+      ASSERT_TRUE(roi.has_value()) << "exit ROI inside " << zone;
+      EXPECT_EQ(p.world.roi(*roi).kind, "exit");
+      expect_fully_reachable(p.world);
+    }
+  }
+  // Hospitals (I-2: 10 occupants) and canteens (dining at 1.39 m² each) always exceed one exit.
+  EXPECT_EQ(two_exits["hospital"], 6);
+  EXPECT_EQ(two_exits["canteen"], 6);
+}
+
 TEST_F(FloorplanOffline, PromptCountsAreHonoured) {
   auto derived = scene_graph_from_prompt("a clinic with six patient rooms and a waiting room");
   ASSERT_TRUE(derived) << derived.error().message();
