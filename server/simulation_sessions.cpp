@@ -751,7 +751,7 @@ void SimulationSessions::forget_ended_locked() {
 Result<std::shared_ptr<SimulationSession>> SimulationSessions::add(SessionInfo info,
                                                                    std::unique_ptr<FrameSource> source, double speed) {
   if (auto s = check_capacity(); !s) return tl::unexpected(s.error());
-  auto session = std::make_shared<SimulationSession>(random_id("sim"), std::move(info), std::move(source), limits_,
+  auto session = std::make_shared<SimulationSession>(random_id("sim_"), std::move(info), std::move(source), limits_,
                                                      speed);
   std::lock_guard<std::mutex> lock(mutex_);
   forget_ended_locked();
