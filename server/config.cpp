@@ -67,6 +67,10 @@ Status apply(ServerConfig& c, const std::string& flag, const std::string& value,
     std::size_t w = 0;
     if (auto s = size(w, 1); !s) return s;
     c.job_workers = static_cast<int>(std::min<std::size_t>(w, 64));
+  } else if (flag == "--max-scenario-agents") return size(c.max_scenario_agents, 1);
+  else if (flag == "--max-scenario-seconds") {
+    if (auto s = real(c.max_scenario_seconds); !s) return s;
+    if (c.max_scenario_seconds < 1.0 || c.max_scenario_seconds > 86400.0) return bad("must be between 1 and 86400");
   } else if (flag == "--max-simulations") return size(c.max_simulations, 1);
   else if (flag == "--max-viewers") return size(c.max_viewers, 1);
   else if (flag == "--max-sim-agents") return size(c.max_sim_agents, 1);
@@ -98,6 +102,8 @@ const std::vector<FlagSpec>& serve_flags() {
       {"--rate-burst", "SOCSIM_RATE_BURST", "burst size of the per-client rate limit (default 100)"},
       {"--api-keys", "SOCSIM_API_KEYS", "name:secret[,name:secret…]; when set, writes need a Bearer key"},
       {"--job-workers", "SOCSIM_JOB_WORKERS", "threads running generation jobs (default 2)"},
+      {"--max-scenario-agents", "SOCSIM_MAX_SCENARIO_AGENTS", "people in one generated scenario (default 2000)"},
+      {"--max-scenario-seconds", "SOCSIM_MAX_SCENARIO_SECONDS", "simulated seconds of one generated scenario (default 600)"},
       {"--max-simulations", "SOCSIM_MAX_SIMULATIONS", "live simulations running at once (default 4)"},
       {"--max-viewers", "SOCSIM_MAX_VIEWERS", "WebSocket viewers per live simulation (default 32)"},
       {"--max-sim-agents", "SOCSIM_MAX_SIM_AGENTS", "agents in one live simulation (default 10000)"},

@@ -34,6 +34,9 @@ struct ServerConfig {
   int write_timeout_s = 10;
   std::vector<ApiKey> api_keys;  // empty: writes are open (local use)
   int job_workers = 2;
+  // Text to scenario (/api/v1/scenarios): bounds on what one request may ask for.
+  std::size_t max_scenario_agents = 2000;  // people in one scenario (spotlight + ambient)
+  double max_scenario_seconds = 600.0;     // simulated seconds logged into a card
   // Live simulations (/api/v1/simulations, /ws/simulations/{id}).
   std::size_t max_simulations = 4;     // running at once
   std::size_t max_viewers = 32;        // per simulation

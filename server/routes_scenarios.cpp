@@ -18,6 +18,8 @@ constexpr const char* kReplayPath = R"(/api/v1/cards/(crd_[0-9a-z]{20}|[^/]+)/re
 scenario::ScenarioConfig scenario_config(const ServerConfig& config) {
   scenario::ScenarioConfig c;
   c.max_prompt_bytes = config.max_prompt_bytes;
+  c.limits.max_agents = config.max_scenario_agents;
+  c.limits.max_duration_s = config.max_scenario_seconds;
   return c;
 }
 

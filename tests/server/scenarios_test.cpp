@@ -93,6 +93,22 @@ TEST(Scenarios, BadRequestsNameTheirFields) {
   }
 }
 
+TEST(Scenarios, AgentCountsAndDurationsAreBoundedByConfig) {
+  ServerConfig config;
+  config.max_scenario_agents = 10;
+  config.max_scenario_seconds = 8;
+  TestServer s(config);
+  auto c = s.client();
+  auto r = post(c, "/api/v1/scenarios", {{"prompt", "a crowd of two hundred people walks through"}, {"agents", 11}, {"duration_s", 9}});
+  ASSERT_EQ(r->status, 422) << r->body;
+  EXPECT_THAT(r->body, HasSubstr("\"/agents\""));
+  EXPECT_THAT(r->body, HasSubstr("\"/duration_s\""));
+  // Within the bounds, a prompt asking for more people gets at most the configured number.
+  const Json job = finished_job(s, c, post(c, "/api/v1/scenarios", {{"prompt", "a crowd of two hundred people walks through"}, {"duration_s", 3}}));
+  ASSERT_EQ(job["status"], "succeeded") << job.dump();
+  EXPECT_LE(job["result"]["trajectory_log"]["agents"].get<int>(), 10);
+}
+
 TEST(Scenarios, AStoredWorldIsUsedByItsId) {
   TestServer s;
   auto c = s.client();
