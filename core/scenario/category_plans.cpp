@@ -168,11 +168,39 @@ void add_group(Draft& d, const std::vector<People>& slots, std::size_t at, std::
 
 // --- queue lanes -----------------------------------------------------------------------------
 
+// Machines people queue at for something to drink or eat (not counters with staff).
+bool is_poi_type(std::string_view type) {
+  return type == "water_dispenser" || type == "coffee_machine" || type == "vending_machine";
+}
+
 const QueueLane* pick_lane(Draft& d, const Activity& a, Rng& rng, Category c, std::string& why) {
   const auto& lanes = d.probe.queue_lanes();
   if (lanes.empty()) return nullptr;
   if (const ResolvedPlace* r = a.place()) {
     const crowd::Vec2 at = d.probe.point(r->name);
+    // A machine the prompt names ("for water", "at the coffee machine"): its own lane, else the
+    // nearest lane of a machine of its type; never the counter's lane nearby.
+    if (r->kind == ResolvedPlace::Kind::kEntity && is_poi_type(r->type)) {
+      const QueueLane* best = nullptr;
+      double best_d = std::numeric_limits<double>::infinity();
+      for (const QueueLane& l : lanes) {
+        if (l.counter.empty()) continue;
+        const auto served = d.probe.place(l.counter);
+        if (l.counter != r->name && (!served || served->type != r->type)) continue;
+        const double dd = l.counter == r->name ? 0.0 : d.probe.walking_distance(at, l.head);
+        if (dd < best_d) {
+          best_d = dd;
+          best = &l;
+        }
+      }
+      if (best != nullptr) {
+        why = best->counter == r->name ? "the prompt's place '" + r->name + "' has this lane"
+                                       : "the lane of '" + best->counter + "', the nearest " + r->type + " with a queue lane";
+        return best;
+      }
+      d.note("no " + r->type + " of the world has a queue lane: people wait by '" + r->name + "' without a strict order");
+      return nullptr;
+    }
     const QueueLane* best = nullptr;
     double best_d = 8.0;
     for (const QueueLane& l : lanes) {
@@ -196,15 +224,23 @@ const QueueLane* pick_lane(Draft& d, const Activity& a, Rng& rng, Category c, st
     }
     d.note("no queue lane within 8 m of '" + r->name + "'; " + std::string(to_string(c)) + " uses another lane");
   }
-  // Reception lanes first (a hospital or office queue forms at the front desk), then any lane.
-  std::vector<const QueueLane*> reception, other;
-  for (const QueueLane& l : lanes)
-    (l.name.find("reception") != std::string::npos || l.counter.find("reception") != std::string::npos ? reception : other)
-        .push_back(&l);
-  const auto& pool = reception.empty() ? other : reception;
+  // Reception lanes first (a hospital or office queue forms at the front desk), then lanes at
+  // other counters, then lanes at machines (a corridor world's water dispenser, Fig. 6).
+  std::vector<const QueueLane*> reception, counters, machines;
+  for (const QueueLane& l : lanes) {
+    const auto served = l.counter.empty() ? std::nullopt : d.probe.place(l.counter);
+    if (l.name.find("reception") != std::string::npos || l.counter.find("reception") != std::string::npos)
+      reception.push_back(&l);
+    else if (served && is_poi_type(served->type))
+      machines.push_back(&l);
+    else
+      counters.push_back(&l);
+  }
+  const auto& pool = !reception.empty() ? reception : !counters.empty() ? counters : machines;
   const QueueLane* pick = pool[rng.below(static_cast<std::uint32_t>(pool.size()))];
-  why = reception.empty() ? "a queue lane of the world (seeded pick among " + std::to_string(pool.size()) + ")"
-                          : "a reception queue lane (seeded pick among " + std::to_string(pool.size()) + ")";
+  const std::string kind = !reception.empty() ? "a reception queue lane" : !counters.empty() ? "a counter's queue lane"
+                                                                                              : "the queue lane of a machine";
+  why = kind + " (seeded pick among " + std::to_string(pool.size()) + ")";
   return pick;
 }
 

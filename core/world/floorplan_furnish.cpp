@@ -163,6 +163,32 @@ class Placer {
       if (geometry::distance(p, d.centre) < d.width / 2 + 0.6 + radius) return false;
     return true;
   }
+  // No furniture but entity `keep` within 0.5 m of the rectangle (1.3 m for serving furniture) and no area of the room but
+  // corridors and work areas overlapping it (ROIs since `first_roi`).
+  [[nodiscard]] bool lane_clear(double u0, double v0, double u1, double v1, std::size_t keep, std::size_t first_roi) const {
+    for (std::size_t k = 0; k < out_.entities.size(); ++k) {
+      if (k == keep) continue;
+      // Serving furniture farther off, so that the lane's head is taken to be at the machine.
+      const EntitySpec& e = out_.entities[k];
+      const bool serves = e.type == "counter" || e.type == "desk" || e.type == "reception" ||
+                          std::find(e.affordances.begin(), e.affordances.end(), "serve") != e.affordances.end() ||
+                          std::find(e.affordances.begin(), e.affordances.end(), "queue_target") != e.affordances.end();
+      const double m = serves ? 1.3 : 0.5;
+      const Point q = f_.local({e.pose.x, e.pose.y});
+      if (q.x > u0 - m && q.x < u1 + m && q.y > v0 - m && q.y < v1 + m) return false;
+    }
+    const Polygon r = f_.rect(u0, v0, u1, v1);
+    const Box b = geometry::bounds(r.outer);
+    for (std::size_t k = first_roi; k < out_.rois.size(); ++k) {
+      const Roi& o = out_.rois[k];
+      if (o.kind == "corridor" || o.kind == "work_area") continue;
+      const Box ob = geometry::bounds(o.polygon.outer);
+      if (ob.min.x < b.max.x - 1e-9 && b.min.x < ob.max.x - 1e-9 && ob.min.y < b.max.y - 1e-9 && b.min.y < ob.max.y - 1e-9)
+        return false;
+    }
+    return true;
+  }
+
   [[nodiscard]] bool inside(double u, double v, double margin) const {
     return u >= margin && v >= margin && u <= f_.len - margin && v <= f_.depth - margin;
   }
@@ -216,6 +242,44 @@ class Placer {
     if (u1 - u0 < 0.5 || v1 - v0 < 0.5) return std::nullopt;
     out_.rois.push_back({zone_.name + "_" + suffix, kind, f_.rect(u0, v0, u1, v1)});
     return Area{u0, v0, u1, v1};
+  }
+
+  // A queue lane in front of each water dispenser, coffee machine or vending machine furnished
+  // since `first` (entities) where there is room: `length` m straight out from it (its facing
+  // first, then sideways), clear of the other furniture, the doors and the room's areas; the
+  // machine then takes queue_target so the lane's head is at it.
+  void poi_lanes(std::size_t first, std::size_t first_roi, double width, double length) {
+    for (std::size_t k = first; k < out_.entities.size(); ++k) {
+      EntitySpec& poi = out_.entities[k];
+      if (poi.type != "water_dispenser" && poi.type != "coffee_machine" && poi.type != "vending_machine") continue;
+      const Point at = f_.local({poi.pose.x, poi.pose.y});
+      // Facing in room coordinates: the world yaw turned back by the frame's base heading.
+      const double local = wrap(poi.pose.yaw - f_.yaw(0.0)) + kPi / 2;
+      const int facing = static_cast<int>(std::lround(local / (kPi / 2))) & 3;  // 0 +u, 1 +v, 2 -u, 3 -v
+      for (int turn : {0, 1, 3}) {
+        const int dir = (facing + turn) & 3;
+        const double du = dir == 0 ? 1.0 : dir == 2 ? -1.0 : 0.0, dv = dir == 1 ? 1.0 : dir == 3 ? -1.0 : 0.0;
+        const double near = 0.55, far = near + length;
+        // Across the lane: centred on the machine, moved off the walls (the machine stays in it).
+        auto across = [&](double c, double extent) {
+          return std::clamp(c - width / 2, std::min(0.1, c - 0.05), std::max(0.1, std::min(extent - 0.1 - width, c + 0.05 - width)));
+        };
+        const double u0 = du != 0 ? std::min(at.x + du * near, at.x + du * far) : across(at.x, len());
+        const double u1 = du != 0 ? std::max(at.x + du * near, at.x + du * far) : u0 + width;
+        const double v0 = dv != 0 ? std::min(at.y + dv * near, at.y + dv * far) : across(at.y, depth());
+        const double v1 = dv != 0 ? std::max(at.y + dv * near, at.y + dv * far) : v0 + width;
+        if (!inside(u0, v0, 0.1) || !inside(u1, v1, 0.1)) continue;
+        if (!lane_clear(u0, v0, u1, v1, k, first_roi)) continue;
+        const auto lane = roi("queue_lane", poi.name.substr(zone_.name.size() + 1) + "_queue", u0, v0, u1, v1);
+        if (!lane) continue;
+        if ((lane->u1 - lane->u0) * (lane->v1 - lane->v0) < (u1 - u0) * (v1 - v0) - 1e-6) {
+          out_.rois.pop_back();  // cut by a door's swing: too short to queue in
+          continue;
+        }
+        poi.affordances.push_back("queue_target");
+        break;
+      }
+    }
   }
 
   // The same room seen from another side.
@@ -515,7 +579,9 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
     pick([](const DoorAt&) { return true; });
     const int side = main ? nearest_side(box, main->centre) : 0;
     Placer placer(z, Frame(box, side), here, out);
+    const std::size_t first_entity = out.entities.size(), first_roi = out.rois.size();
     furnish_room(placer, type, rules, rng, geometry::area(z.polygon));
+    placer.poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
   }
   return out;
 }

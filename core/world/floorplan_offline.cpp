@@ -518,7 +518,7 @@ class Layout {
           const int x = wall.vertical ? wall.c : at, y = wall.vertical ? at : wall.c;
           bool clear = true;
           for (const DoorDraft& d : doors_)
-            if (std::hypot(d.x - x, d.y - y) < (d.width + w) / 2.0 + 60.0) clear = false;
+            if (std::hypot(d.x - x, d.y - y) < (d.width + w) / 2.0 + 30.0) clear = false;
           if (!clear) continue;
           const double distance = std::hypot(main->x - x, main->y - y);
           // A spot far enough apart in a better tier wins; within a tier, the farthest.
