@@ -11,6 +11,9 @@ namespace socsim::crowd {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// m kept beyond the body's radius between the straight walk to a route waypoint and any wall, so
+// that door jambs stay beside the walking line (the obstacle force then steers without braking).
+constexpr double kRouteMargin = 0.05;
 
 double dist(Vec2 a, Vec2 b) {
   return std::hypot(a.x - b.x, a.y - b.y);
@@ -100,7 +103,7 @@ void BtEnvironment::apply() {
       if (sim_.current_goal(id)) (void)sim_.clear_goals(id);
     } else {
       const Vec2 p = sim_.position(id);
-      const Vec2 waypoint = cmd.routing == Routing::kPath ? route_waypoint(p, cmd.target) : cmd.target;
+      const Vec2 waypoint = cmd.routing == Routing::kPath ? route_waypoint(p, cmd.target, sim_.radius(id) + kRouteMargin) : cmd.target;
       const bool final_leg = waypoint == cmd.target;
       (void)sim_.set_goal(id, Goal{waypoint, final_leg ? cmd.radius : 0.05});
       const double speed = std::clamp(cmd.speed, 0.0, kMaxAgentSpeed);
@@ -355,9 +358,8 @@ std::optional<Vec2> descend(const world::GeodesicField& f, const world::Occupanc
 
 }  // namespace
 
-Vec2 BtEnvironment::route_waypoint(Vec2 from, Vec2 target) {
-  constexpr double kClearance = 0.2;  // m each side of the straight walk to a waypoint
-  if (!grid_ || line_of_sight(from, target, kClearance)) return target;
+Vec2 BtEnvironment::route_waypoint(Vec2 from, Vec2 target, double clearance) {
+  if (!grid_ || line_of_sight(from, target, clearance)) return target;
   const world::GeodesicField* f = route_field(target);
   if (f == nullptr || !f->has_source()) return target;
   const double step = std::max(0.1, 2.0 * grid_->resolution());
@@ -368,9 +370,9 @@ Vec2 BtEnvironment::route_waypoint(Vec2 from, Vec2 target) {
     const auto d = descend(*f, *grid_, q);
     if (!d) break;
     q = {q.x + d->x * step, q.y + d->y * step};
-    if (!line_of_sight(from, q, kClearance)) break;
+    if (!line_of_sight(from, q, clearance)) break;
     last_visible = q;
-    if (dist(q, target) < step) return line_of_sight(from, target, kClearance) ? target : q;
+    if (dist(q, target) < step) return line_of_sight(from, target, clearance) ? target : q;
   }
   if (last_visible == from) {
     const auto d = descend(*f, *grid_, from);

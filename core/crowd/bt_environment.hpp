@@ -191,7 +191,9 @@ class BtEnvironment {
     bool applied = false;
   };
   const world::GeodesicField* route_field(Vec2 target);
-  Vec2 route_waypoint(Vec2 from, Vec2 target);
+  // The intermediate goal towards `target`: the farthest point, up to `lookahead` along the route,
+  // reached by a straight walk that keeps `clearance` (the body's radius plus a margin) from walls.
+  Vec2 route_waypoint(Vec2 from, Vec2 target, double clearance);
   void build_exits();
 
   CrowdSimulation& sim_;

@@ -132,6 +132,21 @@ Vec2 guard_move(Vec2 p, Vec2 q, std::span<const std::uint32_t> near, const std::
   return first_blocking_wall(p, target, near, walls, &unused) < 0 ? target : safe;
 }
 
+// Whether a body of radius r walking straight from p along the unit direction e for `len` metres
+// stays at least r away from the wall [a, b]: the segments do not cross, and no end point of
+// either lies within r of the other.
+bool walk_clears(Vec2 p, Vec2 e, double len, Vec2 a, Vec2 b, double r) {
+  const Vec2 q{p.x + e.x * len, p.y + e.y * len};
+  const double o1 = orient(a, b, p);
+  const double o2 = orient(a, b, q);
+  const double o3 = orient(p, q, a);
+  const double o4 = orient(p, q, b);
+  if (((o1 < 0.0 && o2 > 0.0) || (o1 > 0.0 && o2 < 0.0)) && ((o3 < 0.0 && o4 > 0.0) || (o3 > 0.0 && o4 < 0.0)))
+    return false;
+  return point_segment_distance(a, p, q) >= r && point_segment_distance(b, p, q) >= r &&
+         point_segment_distance(p, a, b) >= r && point_segment_distance(q, a, b) >= r;
+}
+
 // Touching-pair forces (group repulsion, body force) are summed in 64-bit fixed point (2^-32 m/s²
 // resolution), like the quantised social forces: integer addition is associative, so the sum
 // does not depend on the order neighbours are visited in, and the cell-list step and the O(N²)
@@ -557,6 +572,15 @@ PedestrianState CrowdSimulation::state(AgentId id) const {
 void CrowdSimulation::prepare_step() {
   if (walls_dirty_) {
     wall_grid_ = WallGrid(walls_, config_.wall_cutoff);
+    wall_free_ends_.assign(walls_.size(), 0);
+    for (std::size_t w = 0; w < walls_.size(); ++w) {
+      const auto attached = [&](Vec2 end) {
+        for (std::uint32_t o : wall_grid_.near(end.x, end.y))
+          if (o != w && point_segment_distance(end, walls_[o].a, walls_[o].b) <= 1e-9) return true;
+        return false;
+      };
+      wall_free_ends_[w] = static_cast<std::uint8_t>((attached(walls_[w].a) ? 0 : 1) | (attached(walls_[w].b) ? 0 : 2));
+    }
     walls_dirty_ = false;
   }
   std::fill(group_cx_.begin(), group_cx_.end(), 0.0);
@@ -712,6 +736,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   // computeDesiredForce); brake with −v/τ when there is no goal or it is reached.
   double ex = 0.0;
   double ey = 0.0;
+  double goal_distance = 0.0;
   bool heading = false;
   if (has_goal_[i]) {
     const double dx = gx_[i] - x;
@@ -719,6 +744,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
     const double dist2 = dx * dx + dy * dy;
     if (dist2 > gr_[i] * gr_[i] && dist2 > kTiny2) {
       const double dist = std::sqrt(dist2);
+      goal_distance = dist;
       ex = dx / dist;
       ey = dy / dist;
       heading = true;
@@ -732,10 +758,14 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   }
 
   // Obstacle force: the nearest point of every wall within the cut-off pushes with
-  // A·exp(−(d − r)/σ). A vertex shared by two walls counts once.
+  // A·exp(−(d − r)/σ). A vertex shared by two walls counts once. When the nearest point is a
+  // free wall end (a door jamb) and the body clears that wall walking straight to its goal, the
+  // end only pushes across the walking direction: it steers, it does not brake (nor push from
+  // behind once passed). See docs/crowd.md, "doorways".
   const std::span<const std::uint32_t> near_walls = wall_grid_.near(x, y);
   {
     const double wc2 = config_.wall_cutoff * config_.wall_cutoff;
+    const double sweep = std::min(goal_distance, config_.wall_cutoff);
     std::array<Vec2, 8> vertices{};
     std::size_t vertex_count = 0;
     for (std::uint32_t w : near_walls) {
@@ -775,8 +805,16 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
         }
       }
       const double magnitude = fp.obstacle_factor * fast_exp(-(d - r) / fp.obstacle_sigma);
-      f.obstacle.x += magnitude * nx;
-      f.obstacle.y += magnitude * ny;
+      double fx = magnitude * nx;
+      double fy = magnitude * ny;
+      const double along = nx * ex + ny * ey;  // component along the walking direction (0 without a goal)
+      const bool free_end = (t == 0.0 && (wall_free_ends_[w] & 1u) != 0) || (t == 1.0 && (wall_free_ends_[w] & 2u) != 0);
+      if (free_end && along != 0.0 && walk_clears({x, y}, {ex, ey}, sweep, s.a, s.b, r)) {
+        fx -= magnitude * along * ex;
+        fy -= magnitude * along * ey;
+      }
+      f.obstacle.x += fx;
+      f.obstacle.y += fy;
     }
   }
 

@@ -135,6 +135,8 @@ class CrowdSimulation {
 
   std::vector<WallSegment> walls_;
   WallGrid wall_grid_;
+  // Per wall: bit 0 = end a, bit 1 = end b is free (touches no other wall), as at a door jamb.
+  std::vector<std::uint8_t> wall_free_ends_;
   bool walls_dirty_ = false;
 
   // Frozen state (read during a step) and the next state (written by it).

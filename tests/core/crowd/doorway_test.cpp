@@ -1,0 +1,187 @@
+// Slow pedestrians through doorways (issue 5): single agents at 0.3–1.34 m/s walk from one room
+// to the next through 0.9, 1.0 and 1.15 m doors (routed by the scenario runner, straight and
+// oblique approaches), and from every patient room of generated hospital plans to the lobby.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/crowd/program.hpp"
+#include "core/crowd/scenario_runner.hpp"
+#include "core/knowledge/knowledge_base.hpp"
+#include "core/store/store.hpp"
+#include "core/world/floorplan_offline.hpp"
+#include "core/world/floorplan_rooms.hpp"
+#include "core/world/world_yaml.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace socsim::crowd {
+namespace {
+
+constexpr double kSpeeds[] = {0.3, 0.5, 0.6, 0.8, 1.34};
+
+// Two 5 × 4 m rooms side by side, one door of `width` in the shared wall at y = `door_y`.
+std::string two_rooms(double width, double door_y) {
+  std::ostringstream s;
+  s << "name: \"two_rooms\"\n"
+    << "units: {length: m, angle: rad}\n"
+    << "zones:\n"
+    << "  - {name: \"west\", type: \"office\", polygon: [[0, 0], [5, 0], [5, 4], [0, 4]]}\n"
+    << "  - {name: \"east\", type: \"office\", polygon: [[5, 0], [10, 0], [10, 4], [5, 4]]}\n"
+    << "doors:\n"
+    << "  - {name: \"door\", pose: [5, " << door_y << "], width: " << width << ", connects: [\"west\", \"east\"]}\n";
+  return s.str();
+}
+
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// One agent of the given speed walking from `start` to `goal` (regular navigation, routed).
+std::string walk_program(Vec2 start, const std::string& goal_json, double speed) {
+  return std::string(R"({"version": 1, "name": "doorway", "dt": 0.05, "decision_period": 0.1, "agents": [)") +
+         R"({"name": "walker", "position": [)" + number(start.x) + ", " + number(start.y) +
+         R"(], "speed": )" + number(speed) + R"(, "goals": [)" + goal_json + R"(], "cyclic_goals": false}]})";
+}
+
+struct Walk {
+  bool reached = false;
+  double time = 0.0;          // s until within the goal radius
+  Vec2 last;                  // where the agent was at the end
+  double min_wall_gap = 1e9;  // closest body-to-wall distance seen
+};
+
+// Runs until the agent is within 0.3 m of the goal point or `limit` seconds have passed.
+Walk walk(const world::World& w, Vec2 start, Vec2 goal, double speed, double limit) {
+  const std::string text = walk_program(start, "[" + number(goal.x) + ", " + number(goal.y) + "]", speed);
+  auto program = program_from_text(text);
+  EXPECT_TRUE(program.has_value()) << (program ? "" : program.error().message());
+  if (!program) return {};
+  RunnerOptions options;
+  options.seed = 1;
+  auto runner = ScenarioRunner::create(&w, *program, options);
+  EXPECT_TRUE(runner.has_value()) << (runner ? "" : runner.error().message());
+  if (!runner) return {};
+  CrowdSimulation& sim = (*runner)->sim();
+  const AgentId id(0);
+  Walk out;
+  const auto steps = static_cast<int>(limit / sim.config().dt);
+  for (int k = 0; k < steps; ++k) {
+    (*runner)->step();
+    const Vec2 p = sim.position(id);
+    for (const WallSegment& s : sim.walls())
+      out.min_wall_gap = std::min(out.min_wall_gap, point_segment_distance(p, s.a, s.b) - sim.radius(id));
+    if (std::hypot(p.x - goal.x, p.y - goal.y) <= 0.3) {
+      out.reached = true;
+      out.time = (*runner)->time();
+      break;
+    }
+  }
+  out.last = sim.position(id);
+  return out;
+}
+
+// Time limit: twice the free walking time along `path` plus 10 s.
+double limit_for(double path, double speed) { return 2.0 * path / speed + 10.0; }
+
+struct DoorCase {
+  double width;
+  double door_y;
+  Vec2 start;
+  Vec2 goal;
+};
+
+TEST(Doorway, SlowAndFastAgentsPassTwoRoomDoors) {
+  // Straight approaches on the door's line and oblique ones from the corners of the rooms.
+  for (const double width : {0.9, 1.0, 1.15}) {
+    for (const DoorCase& c : {DoorCase{width, 2.0, {1.0, 2.0}, {9.0, 2.0}}, DoorCase{width, 2.0, {1.0, 0.8}, {9.0, 3.2}},
+                              DoorCase{width, 0.9, {4.2, 3.4}, {8.0, 0.8}}}) {
+      auto w = world::world_from_yaml(two_rooms(c.width, c.door_y));
+      ASSERT_TRUE(w.has_value()) << w.error().message();
+      for (const double v : kSpeeds) {
+        const double path = std::hypot(5.0 - c.start.x, c.door_y - c.start.y) + std::hypot(c.goal.x - 5.0, c.goal.y - c.door_y);
+        const Walk r = walk(*w, c.start, c.goal, v, limit_for(path, v));
+        EXPECT_TRUE(r.reached) << "door " << c.width << " m, speed " << v << " m/s, from (" << c.start.x << ", "
+                               << c.start.y << "): stuck at (" << r.last.x << ", " << r.last.y << ")";
+        EXPECT_GT(r.min_wall_gap, 0.0) << "door " << c.width << " m, speed " << v << ": body touched a wall";
+      }
+    }
+  }
+}
+
+// The generated hospital plans of the scenario generator: from the middle of every patient room
+// to the lobby, alone, at every speed.
+class DoorwayHospital : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new socsim::testing::TempDir();
+    store_ = store::Store::open(dir_->file("kb.db")).value().release();
+    kb_ = new knowledge::KnowledgeBase(*store_);
+  }
+  static void TearDownTestSuite() {
+    delete kb_;
+    delete store_;
+    delete dir_;
+  }
+  static socsim::testing::TempDir* dir_;
+  static store::Store* store_;
+  static knowledge::KnowledgeBase* kb_;
+};
+socsim::testing::TempDir* DoorwayHospital::dir_ = nullptr;
+store::Store* DoorwayHospital::store_ = nullptr;
+knowledge::KnowledgeBase* DoorwayHospital::kb_ = nullptr;
+
+Vec2 centroid(const geometry::Polygon& poly) {
+  std::size_t count = poly.outer.size();
+  if (count > 1 && poly.outer.front() == poly.outer.back()) --count;  // closed ring
+  double x = 0.0, y = 0.0;
+  for (std::size_t k = 0; k < count; ++k) {
+    x += poly.outer[k].x;
+    y += poly.outer[k].y;
+  }
+  const auto n = static_cast<double>(count);
+  return {x / n, y / n};
+}
+
+TEST_F(DoorwayHospital, PatientsWalkFromEveryPatientRoomToTheLobby) {
+  auto constraints = kb_->constraints_for("hospital");
+  ASSERT_TRUE(constraints.has_value());
+  // Seed 3 is the plan of the issue; a seed whose plan the generator cannot lay out is skipped
+  // (that is the floor-plan tests' concern), but at least three plans must be walked.
+  int plans = 0;
+  for (const std::uint64_t seed : {3u, 4u, 5u, 6u, 7u, 8u}) {
+    world::OfflineOptions options;
+    options.seed = seed;
+    auto plan = world::generate_floor_plan(world::room_program("hospital"), *constraints, options);
+    if (!plan) continue;
+    ++plans;
+    const world::World& w = plan->world;
+    std::optional<Vec2> lobby;
+    for (const world::Zone& z : w.zones())
+      if (z.type == "lobby") lobby = centroid(z.polygon);
+    ASSERT_TRUE(lobby.has_value()) << "seed " << seed << ": no lobby";
+    int rooms = 0;
+    for (const world::Zone& z : w.zones()) {
+      if (z.type != "patient_room") continue;
+      ++rooms;
+      const Vec2 start = centroid(z.polygon);
+      const double crow = std::hypot(lobby->x - start.x, lobby->y - start.y);
+      for (const double v : kSpeeds) {
+        const Walk r = walk(w, start, *lobby, v, limit_for(2.5 * crow, v));
+        EXPECT_TRUE(r.reached) << "seed " << seed << ", " << z.name << " → lobby at " << v << " m/s: stuck at ("
+                               << r.last.x << ", " << r.last.y << ")";
+      }
+    }
+    EXPECT_GT(rooms, 0) << "seed " << seed << ": no patient room";
+  }
+  EXPECT_GE(plans, 3) << "the generator laid out fewer than three hospital plans";
+}
+
+}  // namespace
+}  // namespace socsim::crowd
