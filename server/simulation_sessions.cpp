@@ -717,6 +717,10 @@ void SimulationSession::run() {
 
 Status SimulationSessions::check_capacity() {
   std::lock_guard<std::mutex> lock(mutex_);
+  return capacity_locked();
+}
+
+Status SimulationSessions::capacity_locked() const {
   if (closed_) return fail(ErrorCode::kInternal, "the server is shutting down");
   std::size_t live = 0;
   for (const auto& s : sessions_) live += s->ended() ? 0 : 1;
@@ -750,10 +754,10 @@ void SimulationSessions::forget_ended_locked() {
 
 Result<std::shared_ptr<SimulationSession>> SimulationSessions::add(SessionInfo info,
                                                                    std::unique_ptr<FrameSource> source, double speed) {
-  if (auto s = check_capacity(); !s) return tl::unexpected(s.error());
+  std::lock_guard<std::mutex> lock(mutex_);  // the check and the insertion at once
+  if (auto s = capacity_locked(); !s) return tl::unexpected(s.error());
   auto session = std::make_shared<SimulationSession>(random_id("sim_"), std::move(info), std::move(source), limits_,
                                                      speed);
-  std::lock_guard<std::mutex> lock(mutex_);
   forget_ended_locked();
   sessions_.push_back(session);
   session->start();

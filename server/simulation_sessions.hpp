@@ -239,6 +239,7 @@ class SimulationSessions {
  private:
   Result<std::shared_ptr<SimulationSession>> add(SessionInfo info, std::unique_ptr<FrameSource> source, double speed);
   void forget_ended_locked();
+  [[nodiscard]] Status capacity_locked() const;
 
   const SimulationLimits limits_;
   std::mutex mutex_;
