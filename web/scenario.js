@@ -142,6 +142,7 @@ function connect(session) {
       onFrame(fromJsonFrame(msg));
     } else if (msg.type === 'status') {
       view.paused = !!msg.paused;
+      $('stage').dataset.paused = view.paused ? '1' : '0';  // the server's word: no frames follow a pause
       $('play').textContent = view.paused ? 'Play' : 'Pause';
     } else if (msg.type === 'end') {
       $('stream-status').textContent = `ended (${msg.reason || 'done'})`;
