@@ -28,14 +28,17 @@ using tcp = asio::ip::tcp;
 class Session;
 
 // Hands work to the I/O thread until the server stops. Simulation threads post through it, so
-// nothing is posted into a context that is being destroyed.
+// nothing is posted into a context that is being destroyed. On the I/O thread itself the work
+// runs at once: asio keeps posts made from inside a handler in a thread-private queue until the
+// handler returns, so a post from there could land after a later post from a simulation thread
+// (a "status" after the frame it precedes).
 struct IoGate {
   std::mutex mutex;
   asio::io_context* io = nullptr;
   template <class F>
   void post(F&& f) {
     std::lock_guard<std::mutex> lock(mutex);
-    if (io) asio::post(*io, std::forward<F>(f));
+    if (io) asio::dispatch(*io, std::forward<F>(f));
   }
   void close() {
     std::lock_guard<std::mutex> lock(mutex);
