@@ -103,7 +103,9 @@ void BtEnvironment::apply() {
       if (sim_.current_goal(id)) (void)sim_.clear_goals(id);
     } else {
       const Vec2 p = sim_.position(id);
-      const Vec2 waypoint = cmd.routing == Routing::kPath ? route_waypoint(p, cmd.target, sim_.radius(id) + kRouteMargin) : cmd.target;
+      const Vec2 waypoint = cmd.routing == Routing::kPath
+                                ? route_waypoint(p, cmd.target, sim_.radius(id) + kRouteMargin)
+                                : cmd.target;
       const bool final_leg = waypoint == cmd.target;
       (void)sim_.set_goal(id, Goal{waypoint, final_leg ? cmd.radius : 0.05});
       const double speed = std::clamp(cmd.speed, 0.0, kMaxAgentSpeed);

@@ -579,7 +579,8 @@ void CrowdSimulation::prepare_step() {
           if (o != w && point_segment_distance(end, walls_[o].a, walls_[o].b) <= 1e-9) return true;
         return false;
       };
-      wall_free_ends_[w] = static_cast<std::uint8_t>((attached(walls_[w].a) ? 0 : 1) | (attached(walls_[w].b) ? 0 : 2));
+      wall_free_ends_[w] =
+          static_cast<std::uint8_t>((attached(walls_[w].a) ? 0 : 1) | (attached(walls_[w].b) ? 0 : 2));
     }
     walls_dirty_ = false;
   }
@@ -808,7 +809,8 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
       double fx = magnitude * nx;
       double fy = magnitude * ny;
       const double along = nx * ex + ny * ey;  // component along the walking direction (0 without a goal)
-      const bool free_end = (t == 0.0 && (wall_free_ends_[w] & 1u) != 0) || (t == 1.0 && (wall_free_ends_[w] & 2u) != 0);
+      const unsigned end_bit = t == 0.0 ? 1u : (t == 1.0 ? 2u : 0u);  // nearest point at an end
+      const bool free_end = (wall_free_ends_[w] & end_bit) != 0;
       if (free_end && along != 0.0 && walk_clears({x, y}, {ex, ey}, sweep, s.a, s.b, r)) {
         fx -= magnitude * along * ex;
         fy -= magnitude * along * ey;

@@ -3,6 +3,7 @@
 // oblique approaches), and from every patient room of generated hospital plans to the lobby.
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -32,7 +33,8 @@ std::string two_rooms(double width, double door_y) {
     << "  - {name: \"west\", type: \"office\", polygon: [[0, 0], [5, 0], [5, 4], [0, 4]]}\n"
     << "  - {name: \"east\", type: \"office\", polygon: [[5, 0], [10, 0], [10, 4], [5, 4]]}\n"
     << "doors:\n"
-    << "  - {name: \"door\", pose: [5, " << door_y << "], width: " << width << ", connects: [\"west\", \"east\"]}\n";
+    << "  - {name: \"door\", pose: [5, " << door_y << "], width: " << width
+    << ", connects: [\"west\", \"east\"]}\n";
   return s.str();
 }
 
@@ -88,7 +90,9 @@ Walk walk(const world::World& w, Vec2 start, Vec2 goal, double speed, double lim
 }
 
 // Time limit: twice the free walking time along `path` plus 10 s.
-double limit_for(double path, double speed) { return 2.0 * path / speed + 10.0; }
+double limit_for(double path, double speed) {
+  return 2.0 * path / speed + 10.0;
+}
 
 struct DoorCase {
   double width;
@@ -100,15 +104,17 @@ struct DoorCase {
 TEST(Doorway, SlowAndFastAgentsPassTwoRoomDoors) {
   // Straight approaches on the door's line and oblique ones from the corners of the rooms.
   for (const double width : {0.9, 1.0, 1.15}) {
-    for (const DoorCase& c : {DoorCase{width, 2.0, {1.0, 2.0}, {9.0, 2.0}}, DoorCase{width, 2.0, {1.0, 0.8}, {9.0, 3.2}},
-                              DoorCase{width, 0.9, {4.2, 3.4}, {8.0, 0.8}}}) {
+    for (const DoorCase& c :
+         {DoorCase{width, 2.0, {1.0, 2.0}, {9.0, 2.0}}, DoorCase{width, 2.0, {1.0, 0.8}, {9.0, 3.2}},
+          DoorCase{width, 0.9, {4.2, 3.4}, {8.0, 0.8}}}) {
       auto w = world::world_from_yaml(two_rooms(c.width, c.door_y));
       ASSERT_TRUE(w.has_value()) << w.error().message();
       for (const double v : kSpeeds) {
-        const double path = std::hypot(5.0 - c.start.x, c.door_y - c.start.y) + std::hypot(c.goal.x - 5.0, c.goal.y - c.door_y);
+        const double path = std::hypot(5.0 - c.start.x, c.door_y - c.start.y) +
+                            std::hypot(c.goal.x - 5.0, c.goal.y - c.door_y);
         const Walk r = walk(*w, c.start, c.goal, v, limit_for(path, v));
-        EXPECT_TRUE(r.reached) << "door " << c.width << " m, speed " << v << " m/s, from (" << c.start.x << ", "
-                               << c.start.y << "): stuck at (" << r.last.x << ", " << r.last.y << ")";
+        EXPECT_TRUE(r.reached) << "door " << c.width << " m, speed " << v << " m/s, from (" << c.start.x
+                               << ", " << c.start.y << "): stuck at (" << r.last.x << ", " << r.last.y << ")";
         EXPECT_GT(r.min_wall_gap, 0.0) << "door " << c.width << " m, speed " << v << ": body touched a wall";
       }
     }
@@ -174,12 +180,13 @@ TEST_F(DoorwayHospital, PatientsWalkFromEveryPatientRoomToTheLobby) {
       const double crow = std::hypot(lobby->x - start.x, lobby->y - start.y);
       for (const double v : kSpeeds) {
         const Walk r = walk(w, start, *lobby, v, limit_for(2.5 * crow, v));
-        EXPECT_TRUE(r.reached) << "seed " << seed << ", " << z.name << " → lobby at " << v << " m/s: stuck at ("
-                               << r.last.x << ", " << r.last.y << ")";
+        EXPECT_TRUE(r.reached) << "seed " << seed << ", " << z.name << " → lobby at " << v
+                               << " m/s: stuck at (" << r.last.x << ", " << r.last.y << ")";
       }
     }
     EXPECT_GT(rooms, 0) << "seed " << seed << ": no patient room";
   }
+  std::cout << "walked " << plans << " hospital plans\n";
   EXPECT_GE(plans, 3) << "the generator laid out fewer than three hospital plans";
 }
 
