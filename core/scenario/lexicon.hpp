@@ -49,8 +49,6 @@ struct RoleProfile {
 };
 std::optional<RoleProfile> role_profile(std::string_view role);
 bool is_builtin_role(std::string_view role);
-// Lowest desired speed the generator gives any role, built-in ones included (m/s).
-inline constexpr double kMinDesiredSpeed = 0.75;
 
 // Count words: "two" → 2, "a dozen" → 12, "a few" → 3, "several" → 5 (approximate ones flagged).
 struct CountWord {

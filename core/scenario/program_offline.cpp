@@ -311,12 +311,8 @@ void Draft::fit(std::size_t bound) {
 
 Json Draft::program(const std::string& name) const {
   Json roles = Json::object();
-  for (const std::string& r : roles_) {
-    if (!is_builtin_role(r))
-      roles[r] = role_json(r);
-    else if (r == "adult" || r == "elderly" || r == "stroller_pusher")  // built-in minimum is below it
-      roles[r] = Json{{"speed", {{"min", kMinDesiredSpeed}}}};
-  }
+  for (const std::string& r : roles_)
+    if (!is_builtin_role(r)) roles[r] = role_json(r);
   Json trees = Json::object();
   for (const auto& [n, xml] : trees_) trees[n] = Json{{"xml", xml}};
   for (const AmbientEntry& a : ambient_)
