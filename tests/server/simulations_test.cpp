@@ -194,6 +194,36 @@ TEST(Simulations, ProgramSessionStreamsHelloAndJsonFrames) {
   EXPECT_GE(status["frames_sent"].get<int>(), 10);
 }
 
+TEST(Simulations, ProgramInAStoredOrInlineWorld) {
+  Daemon d;
+  const Json world = d.post("/api/v1/worlds", {{"prompt", "a clinic with six patient rooms"}, {"seed", 4}}, 201);
+  ASSERT_TRUE(world.contains("id"));
+  const std::string world_id = world["id"];
+  const Json document = d.get("/api/v1/worlds/" + world_id)["world"];
+  ASSERT_GE(document["zones"].size(), 2u);
+  const std::string from = document["zones"][0]["name"], to = document["zones"][1]["name"];
+  const Json program = {{"agents", {{{"name", "visitor"}, {"spawn", from}, {"count", 3}, {"goals", {to}}}}}};
+
+  const Json stored = d.post("/api/v1/simulations", {{"program", program}, {"world_id", world_id}, {"seed", 1}}, 201);
+  EXPECT_EQ(stored["world_id"], world_id);
+  Viewer v(d.ws_port, stored["ws_url"].get<std::string>());
+  EXPECT_EQ(v.read()->json()["world_id"], world_id);
+  auto frame = v.next("frame");
+  ASSERT_TRUE(frame);
+  EXPECT_EQ(frame->json()["agents"].size(), 3u);
+
+  const Json inline_world = d.post("/api/v1/simulations", {{"program", program}, {"world", document}, {"seed", 1}}, 201);
+  EXPECT_EQ(inline_world["agents"], 3);
+  Json unknown_place = program;
+  unknown_place["agents"][0]["goals"][0] = "no_such_room";
+  const Json p = d.post("/api/v1/simulations", {{"program", unknown_place}, {"world_id", world_id}}, 422);
+  EXPECT_EQ(p["errors"][0]["pointer"], "/program/agents/0/goals/0") << p.dump();
+  Json broken_world = document;
+  broken_world["zones"][0]["polygon"] = "square";
+  const Json w = d.post("/api/v1/simulations", {{"program", program}, {"world", broken_world}}, 422);
+  EXPECT_EQ(w["errors"][0]["pointer"].get<std::string>().rfind("/world/zones/0", 0), 0u) << w.dump();
+}
+
 TEST(Simulations, BinaryFramesCarryTheSameStatesAsJson) {
   Daemon d;
   const std::string id = d.start({{"program", walkers(3)}, {"seed", 11}});
