@@ -19,14 +19,15 @@ Error under_pointer(Error e, const std::string& prefix) {
   return e;
 }
 
-Error field_error(ErrorCode code, const std::string& detail, const std::string& pointer, const std::string& message) {
+Error field_error(ErrorCode code, const std::string& detail, const std::string& pointer,
+                  const std::string& message) {
   return Error(code, detail, {FieldError{pointer, message, {}, 0, 0}});
 }
 
 Json with_urls(RouteContext& ctx, const httplib::Request& req, Json status) {
   status["ws_port"] = ctx.config.ws_port;
-  status["websocket_url"] =
-      "ws://" + ctx.public_host(req) + ":" + std::to_string(ctx.config.ws_port) + status["ws_url"].get<std::string>();
+  status["websocket_url"] = "ws://" + ctx.public_host(req) + ":" + std::to_string(ctx.config.ws_port) +
+                            status["ws_url"].get<std::string>();
   status["links"] = {{"self", "/api/v1/simulations/" + status["id"].get<std::string>()},
                      {"control", "/api/v1/simulations/" + status["id"].get<std::string>() + "/control"}};
   return status;
@@ -50,7 +51,9 @@ Result<std::shared_ptr<const world::World>> session_world(RouteContext& ctx, con
       return tl::unexpected(field_error(ErrorCode::kNotFound, "no world with id '" + id + "'", "/world_id",
                                         "names no stored world (see GET /api/v1/worlds)"));
     auto w = world::world_from_yaml(**yaml);
-    if (!w) return fail(ErrorCode::kInternal, "stored world '" + id + "' no longer validates: " + w.error().message());
+    if (!w)
+      return fail(ErrorCode::kInternal,
+                  "stored world '" + id + "' no longer validates: " + w.error().message());
     return std::make_shared<const world::World>(std::move(*w));
   }
   if (!body.contains("world")) return std::shared_ptr<const world::World>();
@@ -66,7 +69,10 @@ Status no_tree_files(const crowd::Program& p) {
   auto check = [&](const std::optional<crowd::ProgramTree>& t) {
     if (t && !t->file.empty())
       errors.push_back({"/program" + t->pointer + "/file",
-                        "the server reads no files; give the behaviour tree inline as 'xml'", {}, 0, 0});
+                        "the server reads no files; give the behaviour tree inline as 'xml'",
+                        {},
+                        0,
+                        0});
   };
   for (const auto& [name, tree] : p.behavior_trees) check(tree);
   for (const auto& a : p.agents) check(a.behavior);
@@ -78,7 +84,8 @@ Status no_tree_files(const crowd::Program& p) {
 Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, const Json& body,
                                                          const std::string& author) {
   if (!body.is_object())
-    return tl::unexpected(field_error(ErrorCode::kValidation, "the body is an object", "", "must be an object"));
+    return tl::unexpected(
+        field_error(ErrorCode::kValidation, "the body is an object", "", "must be an object"));
   std::vector<FieldError> errors;
   auto add = [&](const std::string& pointer, const std::string& message) {
     errors.push_back({pointer, message, {}, 0, 0});
@@ -94,12 +101,14 @@ Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, cons
   if (card)
     for (const char* k : {"world", "world_id", "seed", "duration_s"})
       if (body.contains(k)) add(std::string("/") + k, "not used when playing a card (the card has its own)");
-  if (body.contains("world") && body.contains("world_id")) add("/world_id", "give 'world' or 'world_id', not both");
+  if (body.contains("world") && body.contains("world_id"))
+    add("/world_id", "give 'world' or 'world_id', not both");
   if (body.contains("world") && !body["world"].is_object() && !body["world"].is_string())
     add("/world", "must be a world document (object) or world.yaml text (string)");
   if (body.contains("world_id") && !body["world_id"].is_string()) add("/world_id", "must be a string");
   if (card && !body["card_id"].is_string()) add("/card_id", "must be a string");
-  if (body.contains("program") && !body["program"].is_object()) add("/program", "must be a scenario program object");
+  if (body.contains("program") && !body["program"].is_object())
+    add("/program", "must be a scenario program object");
   if (body.contains("speed") && !body["speed"].is_number()) add("/speed", "must be a number");
   if (body.contains("duration_s") && !body["duration_s"].is_number()) add("/duration_s", "must be a number");
   if (body.contains("seed") && !body["seed"].is_number_unsigned()) add("/seed", "must be a whole number ≥ 0");
@@ -121,13 +130,14 @@ Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, cons
     }
     const Json& recorded = c->content.trajectory_log;
     if (!recorded.is_object() || !recorded.contains("sha256") || !recorded["sha256"].is_string())
-      return tl::unexpected(field_error(ErrorCode::kValidation, "the card has no trajectory log to play", "/card_id",
-                                        "card '" + id + "' records no trajectories"));
+      return tl::unexpected(field_error(ErrorCode::kValidation, "the card has no trajectory log to play",
+                                        "/card_id", "card '" + id + "' records no trajectories"));
     auto log = scenario::load_trajectory_log(ctx.store, recorded["sha256"].get<std::string>());
     if (!log) {
       if (log.error().code == ErrorCode::kNotFound)
-        return tl::unexpected(field_error(ErrorCode::kNotFound, "the card's trajectory log is not stored here",
-                                          "/card_id", "its log " + recorded["sha256"].get<std::string>() + " is missing"));
+        return tl::unexpected(
+            field_error(ErrorCode::kNotFound, "the card's trajectory log is not stored here", "/card_id",
+                        "its log " + recorded["sha256"].get<std::string>() + " is missing"));
       return tl::unexpected(log.error());
     }
     RecordingSessionRequest r;
@@ -212,7 +222,8 @@ void simulation_routes(httplib::Server& http, RouteContext& ctx) {
                  [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
                    auto s = ctx.services.simulations->find(req.matches[1].str());
                    if (!s) return reply_problem(res, s.error(), req.path);
-                   if (auto ok = may_change(ctx, req, **s); !ok) return reply_problem(res, ok.error(), req.path);
+                   if (auto ok = may_change(ctx, req, **s); !ok)
+                     return reply_problem(res, ok.error(), req.path);
                    auto body = json_body(text);
                    if (!body) return reply_problem(res, body.error(), req.path);
                    auto st = (*s)->control(*body);
@@ -224,7 +235,8 @@ void simulation_routes(httplib::Server& http, RouteContext& ctx) {
     auto s = ctx.services.simulations->find(req.matches[1].str());
     if (!s) return reply_problem(res, s.error(), req.path);
     if (auto ok = may_change(ctx, req, **s); !ok) return reply_problem(res, ok.error(), req.path);
-    if (auto ok = ctx.services.simulations->remove((*s)->id()); !ok) return reply_problem(res, ok.error(), req.path);
+    if (auto ok = ctx.services.simulations->remove((*s)->id()); !ok)
+      return reply_problem(res, ok.error(), req.path);
     reply_json(res, 200, with_urls(ctx, req, (*s)->status()));
   });
 }

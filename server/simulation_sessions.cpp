@@ -61,31 +61,39 @@ void le_u32(std::string& out, std::uint32_t v) {
 void le_u64(std::string& out, std::uint64_t v) {
   for (int i = 0; i < 8; ++i) out += static_cast<char>((v >> (8 * i)) & 0xffu);
 }
-void le_f32(std::string& out, float v) { le_u32(out, std::bit_cast<std::uint32_t>(v)); }
+void le_f32(std::string& out, float v) {
+  le_u32(out, std::bit_cast<std::uint32_t>(v));
+}
 
 std::uint64_t read_le(std::string_view b, std::size_t at, int bytes) {
   std::uint64_t v = 0;
   for (int i = 0; i < bytes; ++i)
-    v |= static_cast<std::uint64_t>(static_cast<unsigned char>(b[at + static_cast<std::size_t>(i)])) << (8 * i);
+    v |= static_cast<std::uint64_t>(static_cast<unsigned char>(b[at + static_cast<std::size_t>(i)]))
+         << (8 * i);
   return v;
 }
 
 constexpr char kMagic[4] = {'S', 'S', 'F', '1'};
 
 // Simulated times on the wire: microseconds are plenty and keep 0.15000000000000002 readable.
-double wire_time(double t) { return std::round(t * 1e6) / 1e6; }
+double wire_time(double t) {
+  return std::round(t * 1e6) / 1e6;
+}
 
 }  // namespace
 
 std::string encode_frame_json(std::uint32_t seq, double t, std::span<const FrameAgent> agents,
-                              const std::vector<std::string>& roles, const std::vector<std::string>& targets) {
+                              const std::vector<std::string>& roles,
+                              const std::vector<std::string>& targets) {
   std::vector<std::string> quoted_roles;
   quoted_roles.reserve(roles.size());
-  for (const auto& r : roles) quoted_roles.push_back(Json(r).dump(-1, ' ', false, Json::error_handler_t::replace));
+  for (const auto& r : roles)
+    quoted_roles.push_back(Json(r).dump(-1, ' ', false, Json::error_handler_t::replace));
   std::vector<std::string> quoted_targets;
   quoted_targets.reserve(targets.size());
   for (const auto& s : targets)
-    quoted_targets.push_back(s.empty() ? "null" : Json(s).dump(-1, ' ', false, Json::error_handler_t::replace));
+    quoted_targets.push_back(s.empty() ? "null"
+                                       : Json(s).dump(-1, ' ', false, Json::error_handler_t::replace));
   const auto& states = quoted_states();
 
   std::string out;
@@ -161,8 +169,8 @@ Result<BinaryFrame> decode_frame_binary(std::string_view b) {
   f.t = std::bit_cast<double>(read_le(b, 12, 8));
   const std::size_t count = read_le(b, 20, 4);
   if (b.size() < header || (b.size() - header) / record != count || (b.size() - header) % record != 0)
-    return fail(ErrorCode::kBadRequest, "binary frame of " + std::to_string(b.size()) + " bytes does not hold " +
-                                            std::to_string(count) + " agents");
+    return fail(ErrorCode::kBadRequest, "binary frame of " + std::to_string(b.size()) +
+                                            " bytes does not hold " + std::to_string(count) + " agents");
   f.agents.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
     const std::size_t at = header + i * record;
@@ -291,8 +299,10 @@ class RecordingSource final : public FrameSource {
     std::size_t lo = 0, hi = log_.frame_count() - 1;
     while (lo < hi) {
       const std::size_t mid = (lo + hi + 1) / 2;
-      if (log_.frame_time(mid) <= t + 1e-9) lo = mid;
-      else hi = mid - 1;
+      if (log_.frame_time(mid) <= t + 1e-9)
+        lo = mid;
+      else
+        hi = mid - 1;
     }
     frame_ = lo;
   }
@@ -347,7 +357,9 @@ Status check_speed(double speed, const SimulationLimits& limits, const std::stri
 ViewerLease::ViewerLease(std::shared_ptr<SimulationSession> session, std::uint64_t viewer)
     : session_(std::move(session)), viewer_(viewer) {}
 
-ViewerLease::~ViewerLease() { session_->detach(viewer_); }
+ViewerLease::~ViewerLease() {
+  session_->detach(viewer_);
+}
 
 // ---------------------------------------------------------------------------------------------
 // Session
@@ -458,9 +470,11 @@ Result<std::unique_ptr<ViewerLease>> SimulationSession::attach(std::shared_ptr<S
                                                                std::shared_ptr<ViewerCounters> counters) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (end_reason_ || stop_reason_)
-    return fail(ErrorCode::kConflict, "simulation '" + id_ + "' has ended (" + end_reason_.value_or("stopping") + ")");
+    return fail(ErrorCode::kConflict,
+                "simulation '" + id_ + "' has ended (" + end_reason_.value_or("stopping") + ")");
   if (viewers_.size() >= limits_.max_viewers) {
-    Error e(ErrorCode::kRateLimited, "simulation '" + id_ + "' already has " + std::to_string(viewers_.size()) +
+    Error e(ErrorCode::kRateLimited, "simulation '" + id_ + "' already has " +
+                                         std::to_string(viewers_.size()) +
                                          " viewers, the most this server allows (--max-viewers)");
     e.retry_after_s = 5;
     return tl::unexpected(e);
@@ -468,24 +482,25 @@ Result<std::unique_ptr<ViewerLease>> SimulationSession::attach(std::shared_ptr<S
   Json roles = roles_;
   Json states = Json::array();
   for (std::string_view n : crowd::activity_names()) states.push_back(std::string(n));
-  Json hello = {{"type", "hello"},
-                {"session", id_},
-                {"kind", info_.kind},
-                {"format", format == WireFormat::kBinary ? "binary" : "json"},
-                {"world_id", info_.world_id ? Json(*info_.world_id) : Json(nullptr)},
-                {"card_id", info_.card_id ? Json(*info_.card_id) : Json(nullptr)},
-                {"roles", roles},
-                {"states", states},
-                {"targets", targets_},
-                {"frame_hz", frame_hz_locked()},
-                {"speed", speed_},
-                {"paused", paused_},
-                {"seekable", source_->seekable()},
-                {"t", wire_time(time_)},
-                {"start_t", wire_time(start_time_)},
-                {"duration_s", info_.duration_s},
-                {"binary_layout",
-                 {{"magic", "SSF1"}, {"header_bytes", kBinaryHeaderBytes}, {"agent_bytes", kBinaryAgentBytes}}}};
+  Json hello = {
+      {"type", "hello"},
+      {"session", id_},
+      {"kind", info_.kind},
+      {"format", format == WireFormat::kBinary ? "binary" : "json"},
+      {"world_id", info_.world_id ? Json(*info_.world_id) : Json(nullptr)},
+      {"card_id", info_.card_id ? Json(*info_.card_id) : Json(nullptr)},
+      {"roles", roles},
+      {"states", states},
+      {"targets", targets_},
+      {"frame_hz", frame_hz_locked()},
+      {"speed", speed_},
+      {"paused", paused_},
+      {"seekable", source_->seekable()},
+      {"t", wire_time(time_)},
+      {"start_t", wire_time(start_time_)},
+      {"duration_s", info_.duration_s},
+      {"binary_layout",
+       {{"magic", "SSF1"}, {"header_bytes", kBinaryHeaderBytes}, {"agent_bytes", kBinaryAgentBytes}}}};
   sink(text_locked(hello));
   if (WirePtr last = encoded_last_locked(format)) sink(last);
   const std::uint64_t vid = next_viewer_++;
@@ -522,17 +537,23 @@ Result<Json> SimulationSession::control(const Json& command) {
     action = command["action"].get<std::string>();
   std::optional<double> value;
   if (command.contains("value")) {
-    if (command["value"].is_number()) value = command["value"].get<double>();
-    else errors.push_back({"/value", "must be a number", {}, 0, 0});
+    if (command["value"].is_number())
+      value = command["value"].get<double>();
+    else
+      errors.push_back({"/value", "must be a number", {}, 0, 0});
   }
   if ((action == "speed" || action == "seek") && !value && errors.empty())
-    errors.push_back({"/value", action == "speed" ? "the new speed factor is needed" : "the time to seek to is needed",
-                      {}, 0, 0});
+    errors.push_back({"/value",
+                      action == "speed" ? "the new speed factor is needed" : "the time to seek to is needed",
+                      {},
+                      0,
+                      0});
   if (!errors.empty()) return fail(ErrorCode::kValidation, "bad control command", std::move(errors));
 
   std::unique_lock<std::mutex> lock(mutex_);
   if (end_reason_ || stop_reason_)
-    return fail(ErrorCode::kConflict, "simulation '" + id_ + "' has ended (" + end_reason_.value_or("stopping") + ")");
+    return fail(ErrorCode::kConflict,
+                "simulation '" + id_ + "' has ended (" + end_reason_.value_or("stopping") + ")");
   if (action == "pause") {
     paused_ = true;
   } else if (action == "resume") {
@@ -544,13 +565,16 @@ Result<Json> SimulationSession::control(const Json& command) {
     anchor_locked();
   } else if (action == "seek") {
     if (!source_->seekable())
-      return fail(ErrorCode::kValidation, "seek works only in recorded (card) sessions",
-                  {FieldError{"/action", "this session runs a program live; only a card's recording can seek", {}, 0, 0}});
+      return fail(
+          ErrorCode::kValidation, "seek works only in recorded (card) sessions",
+          {FieldError{
+              "/action", "this session runs a program live; only a card's recording can seek", {}, 0, 0}});
     const double end = info_.duration_s + start_time_;
     if (!std::isfinite(*value) || *value < start_time_ || *value > end) {
       std::ostringstream why;
       why << "must be a time between " << start_time_ << " and " << end << " s";
-      return fail(ErrorCode::kValidation, "seek time out of range", {FieldError{"/value", why.str(), {}, 0, 0}});
+      return fail(ErrorCode::kValidation, "seek time out of range",
+                  {FieldError{"/value", why.str(), {}, 0, 0}});
     }
     seek_to_ = *value;
   } else if (action == "stop") {
@@ -581,8 +605,9 @@ void SimulationSession::finish(const std::string& reason) {
   end_reason_ = reason;
   paused_ = false;
   auto end = std::make_shared<WireMessage>();
-  end->bytes = Json{{"type", "end"}, {"reason", reason}, {"t", wire_time(time_)}, {"frames_sent", frames_sent_}}.dump(
-      -1, ' ', false, Json::error_handler_t::replace);
+  end->bytes =
+      Json{{"type", "end"}, {"reason", reason}, {"t", wire_time(time_)}, {"frames_sent", frames_sent_}}.dump(
+          -1, ' ', false, Json::error_handler_t::replace);
   end->last = true;
   broadcast_locked(end);
   wake_.notify_all();
@@ -642,7 +667,8 @@ void SimulationSession::run() {
   std::unique_lock<std::mutex> lock(mutex_);
   anchor_locked();
   const double end_time = start_time_ + info_.duration_s;
-  const auto idle = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits_.idle_s));
+  const auto idle =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits_.idle_s));
   std::size_t since_emit = 0;
   std::string reason;
   for (;;) {
@@ -690,7 +716,8 @@ void SimulationSession::run() {
       anchor_wall_ = now;
       anchor_sim_ = time_;
     }
-    const auto every = static_cast<std::size_t>(std::max(1.0, std::ceil(speed_ / (limits_.stream_hz * dt) - 1e-9)));
+    const auto every =
+        static_cast<std::size_t>(std::max(1.0, std::ceil(speed_ / (limits_.stream_hz * dt) - 1e-9)));
     lock.unlock();
     const bool more = source_->advance();
     const double t = source_->time();
@@ -725,9 +752,10 @@ Status SimulationSessions::capacity_locked() const {
   std::size_t live = 0;
   for (const auto& s : sessions_) live += s->ended() ? 0 : 1;
   if (live < limits_.max_sessions) return {};
-  Error e(ErrorCode::kRateLimited, std::to_string(live) +
-                                       " simulations are running, the most this server allows (--max-simulations); "
-                                       "stop one or retry later");
+  Error e(ErrorCode::kRateLimited,
+          std::to_string(live) +
+              " simulations are running, the most this server allows (--max-simulations); "
+              "stop one or retry later");
   e.retry_after_s = 10;
   return tl::unexpected(e);
 }
@@ -753,11 +781,12 @@ void SimulationSessions::forget_ended_locked() {
 }
 
 Result<std::shared_ptr<SimulationSession>> SimulationSessions::add(SessionInfo info,
-                                                                   std::unique_ptr<FrameSource> source, double speed) {
+                                                                   std::unique_ptr<FrameSource> source,
+                                                                   double speed) {
   std::lock_guard<std::mutex> lock(mutex_);  // the check and the insertion at once
   if (auto s = capacity_locked(); !s) return tl::unexpected(s.error());
-  auto session = std::make_shared<SimulationSession>(random_id("sim_"), std::move(info), std::move(source), limits_,
-                                                     speed);
+  auto session = std::make_shared<SimulationSession>(random_id("sim_"), std::move(info), std::move(source),
+                                                     limits_, speed);
   forget_ended_locked();
   sessions_.push_back(session);
   session->start();
@@ -769,16 +798,22 @@ Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_program(Pro
   if (auto s = check_speed(request.speed, limits_, "/speed"); !s) return tl::unexpected(s.error());
   const double duration = request.duration_s.value_or(limits_.max_duration_s);
   if (!std::isfinite(duration) || duration <= 0 || duration > limits_.max_duration_s)
-    return fail(ErrorCode::kValidation, "duration out of range",
-                {FieldError{"/duration_s",
-                            "must be more than 0 and at most " + std::to_string(limits_.max_duration_s) + " s",
-                            {}, 0, 0}});
+    return fail(
+        ErrorCode::kValidation, "duration out of range",
+        {FieldError{"/duration_s",
+                    "must be more than 0 and at most " + std::to_string(limits_.max_duration_s) + " s",
+                    {},
+                    0,
+                    0}});
   const std::size_t agents = program_agent_count(request.program);
   if (agents > limits_.max_agents)
     return fail(ErrorCode::kValidation, "too many agents for a live simulation",
-                {FieldError{"/program", "has " + std::to_string(agents) + " agents; this server simulates at most " +
-                                            std::to_string(limits_.max_agents) + " live (--max-sim-agents)",
-                            {}, 0, 0}});
+                {FieldError{"/program",
+                            "has " + std::to_string(agents) + " agents; this server simulates at most " +
+                                std::to_string(limits_.max_agents) + " live (--max-sim-agents)",
+                            {},
+                            0,
+                            0}});
   crowd::RunnerOptions options;
   options.seed = request.seed;
   options.threads = 1;
@@ -795,17 +830,21 @@ Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_program(Pro
   return add(std::move(info), std::move(source), request.speed);
 }
 
-Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_recording(RecordingSessionRequest request) {
+Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_recording(
+    RecordingSessionRequest request) {
   if (auto s = check_speed(request.speed, limits_, "/speed"); !s) return tl::unexpected(s.error());
   if (request.log.frame_count() == 0)
     return fail(ErrorCode::kValidation, "the card's trajectory log has no frames",
                 {FieldError{"/card_id", "its recording is empty", {}, 0, 0}});
   if (request.log.agent_count() > limits_.max_agents)
     return fail(ErrorCode::kValidation, "too many agents for a live simulation",
-                {FieldError{"/card_id", "the recording has " + std::to_string(request.log.agent_count()) +
-                                            " agents; this server streams at most " +
-                                            std::to_string(limits_.max_agents) + " (--max-sim-agents)",
-                            {}, 0, 0}});
+                {FieldError{"/card_id",
+                            "the recording has " + std::to_string(request.log.agent_count()) +
+                                " agents; this server streams at most " + std::to_string(limits_.max_agents) +
+                                " (--max-sim-agents)",
+                            {},
+                            0,
+                            0}});
   if (request.log.roles().size() > 255)
     return fail(ErrorCode::kValidation, "the recording names more roles than the wire format carries",
                 {FieldError{"/card_id", "more than 255 roles", {}, 0, 0}});

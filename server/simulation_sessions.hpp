@@ -237,7 +237,8 @@ class SimulationSessions {
   void shutdown();
 
  private:
-  Result<std::shared_ptr<SimulationSession>> add(SessionInfo info, std::unique_ptr<FrameSource> source, double speed);
+  Result<std::shared_ptr<SimulationSession>> add(SessionInfo info, std::unique_ptr<FrameSource> source,
+                                                 double speed);
   void forget_ended_locked();
   [[nodiscard]] Status capacity_locked() const;
 

@@ -60,7 +60,8 @@ std::optional<std::uint32_t> frame_seq(const beast::flat_buffer& buf, bool binar
   if (binary) {
     if (n < socsim::server::kBinaryHeaderBytes) return std::nullopt;
     std::uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(p[8 + i])) << (8 * i);
+    for (int i = 0; i < 4; ++i)
+      v |= static_cast<std::uint32_t>(static_cast<unsigned char>(p[8 + i])) << (8 * i);
     return v;
   }
   const std::string_view head(p, std::min<std::size_t>(n, 64));
@@ -118,7 +119,8 @@ int run(const Args& a) {
   const double warmup = a.number("warmup", 1.0);
   const double speed = a.number("speed", 1.0);
   const bool binary = a.has("binary");
-  const auto dir = std::filesystem::temp_directory_path() / ("socsim-bench-stream-" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("socsim-bench-stream-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
 
@@ -153,14 +155,15 @@ int run(const Args& a) {
   httplib::Client http("127.0.0.1", port);
   http.set_read_timeout(60, 0);
   const auto t_create = Clock::now();
-  auto created = http.Post("/api/v1/simulations",
-                           nlohmann::json{{"program", lanes_program(agents)}, {"seed", 1}, {"speed", speed}}.dump(),
-                           "application/json");
+  auto created =
+      http.Post("/api/v1/simulations",
+                nlohmann::json{{"program", lanes_program(agents)}, {"seed", 1}, {"speed", speed}}.dump(),
+                "application/json");
   const double create_s = socsim::bench::seconds_since(t_create);
   if (!created || created->status != 201) {
     std::cout.clear();
-    std::cerr << "socsim-bench stream: creating the session failed: " << (created ? created->body : "no answer")
-              << "\n";
+    std::cerr << "socsim-bench stream: creating the session failed: "
+              << (created ? created->body : "no answer") << "\n";
     return 1;
   }
   const auto session = nlohmann::json::parse(created->body);
@@ -172,7 +175,8 @@ int run(const Args& a) {
   std::vector<ViewerResult> results(static_cast<std::size_t>(viewers));
   std::vector<std::thread> threads;
   for (int v = 0; v < viewers; ++v)
-    threads.emplace_back([&, v] { watch(ws_port, path, binary, from, to, results[static_cast<std::size_t>(v)]); });
+    threads.emplace_back(
+        [&, v] { watch(ws_port, path, binary, from, to, results[static_cast<std::size_t>(v)]); });
 
   std::this_thread::sleep_until(from);
   auto before = http.Get(("/api/v1/simulations/" + id).c_str());
@@ -225,9 +229,10 @@ int run(const Args& a) {
   return failed == 0 ? 0 : 1;
 }
 
-SOCSIM_BENCH("stream",
-             "live simulation streaming over WebSocket [--viewers 20] [--agents 2000] [--seconds 10] [--binary] "
-             "[--speed 1] [--warmup 1]",
-             run);
+SOCSIM_BENCH(
+    "stream",
+    "live simulation streaming over WebSocket [--viewers 20] [--agents 2000] [--seconds 10] [--binary] "
+    "[--speed 1] [--warmup 1]",
+    run);
 
 }  // namespace

@@ -31,7 +31,8 @@ Json walkers(int pairs = 1) {
   Json agents = Json::array();
   for (int i = 0; i < pairs; ++i) {
     const double y = 1.5 * i;
-    agents.push_back({{"name", "east" + std::to_string(i)}, {"position", {0.0, y}}, {"goals", {{10.0, y}, {0.0, y}}}});
+    agents.push_back(
+        {{"name", "east" + std::to_string(i)}, {"position", {0.0, y}}, {"goals", {{10.0, y}, {0.0, y}}}});
     agents.push_back({{"name", "west" + std::to_string(i)},
                       {"role", "staff"},
                       {"position", {10.0, y + 0.5}},
@@ -102,7 +103,8 @@ struct Viewer {
   Viewer(int port, const std::string& path, const std::string& offer = "", int receive_buffer = 0) {
     tcp::resolver resolver(io);
     ws.next_layer().open(tcp::v4());
-    if (receive_buffer > 0) ws.next_layer().set_option(asio::socket_base::receive_buffer_size(receive_buffer));
+    if (receive_buffer > 0)
+      ws.next_layer().set_option(asio::socket_base::receive_buffer_size(receive_buffer));
     ws.next_layer().connect(*resolver.resolve("127.0.0.1", std::to_string(port)).begin());
     if (!offer.empty())
       ws.set_option(websocket::stream_base::decorator(
@@ -136,7 +138,8 @@ struct Viewer {
   std::optional<Message> next(const std::string& type, std::chrono::milliseconds timeout = 5000ms) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     while (std::chrono::steady_clock::now() < deadline) {
-      auto m = read(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
+      auto m = read(
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
       if (!m) return std::nullopt;
       if (m->type() == type) return m;
     }
@@ -148,7 +151,9 @@ struct Viewer {
   }
 };
 
-std::string ws_path(const std::string& id, const std::string& query = "") { return "/ws/simulations/" + id + query; }
+std::string ws_path(const std::string& id, const std::string& query = "") {
+  return "/ws/simulations/" + id + query;
+}
 
 TEST(Simulations, ProgramSessionStreamsHelloAndJsonFrames) {
   Daemon d;
@@ -157,8 +162,8 @@ TEST(Simulations, ProgramSessionStreamsHelloAndJsonFrames) {
   EXPECT_EQ(created["status"], "running");
   EXPECT_EQ(created["kind"], "program");
   EXPECT_EQ(created["ws_url"], "/ws/simulations/" + created["id"].get<std::string>());
-  EXPECT_EQ(created["websocket_url"],
-            "ws://127.0.0.1:" + std::to_string(d.ws_port) + "/ws/simulations/" + created["id"].get<std::string>());
+  EXPECT_EQ(created["websocket_url"], "ws://127.0.0.1:" + std::to_string(d.ws_port) + "/ws/simulations/" +
+                                          created["id"].get<std::string>());
   EXPECT_DOUBLE_EQ(created["frame_hz"], 20.0);
 
   Viewer v(d.ws_port, created["ws_url"].get<std::string>());
@@ -196,7 +201,8 @@ TEST(Simulations, ProgramSessionStreamsHelloAndJsonFrames) {
 
 TEST(Simulations, ProgramInAStoredOrInlineWorld) {
   Daemon d;
-  const Json world = d.post("/api/v1/worlds", {{"prompt", "a clinic with six patient rooms"}, {"seed", 4}}, 201);
+  const Json world =
+      d.post("/api/v1/worlds", {{"prompt", "a clinic with six patient rooms"}, {"seed", 4}}, 201);
   ASSERT_TRUE(world.contains("id"));
   const std::string world_id = world["id"];
   const Json document = d.get("/api/v1/worlds/" + world_id)["world"];
@@ -204,7 +210,8 @@ TEST(Simulations, ProgramInAStoredOrInlineWorld) {
   const std::string from = document["zones"][0]["name"], to = document["zones"][1]["name"];
   const Json program = {{"agents", {{{"name", "visitor"}, {"spawn", from}, {"count", 3}, {"goals", {to}}}}}};
 
-  const Json stored = d.post("/api/v1/simulations", {{"program", program}, {"world_id", world_id}, {"seed", 1}}, 201);
+  const Json stored =
+      d.post("/api/v1/simulations", {{"program", program}, {"world_id", world_id}, {"seed", 1}}, 201);
   EXPECT_EQ(stored["world_id"], world_id);
   Viewer v(d.ws_port, stored["ws_url"].get<std::string>());
   EXPECT_EQ(v.read()->json()["world_id"], world_id);
@@ -212,7 +219,8 @@ TEST(Simulations, ProgramInAStoredOrInlineWorld) {
   ASSERT_TRUE(frame);
   EXPECT_EQ(frame->json()["agents"].size(), 3u);
 
-  const Json inline_world = d.post("/api/v1/simulations", {{"program", program}, {"world", document}, {"seed", 1}}, 201);
+  const Json inline_world =
+      d.post("/api/v1/simulations", {{"program", program}, {"world", document}, {"seed", 1}}, 201);
   EXPECT_EQ(inline_world["agents"], 3);
   Json unknown_place = program;
   unknown_place["agents"][0]["goals"][0] = "no_such_room";
@@ -389,7 +397,8 @@ TEST(Simulations, LimitsOnSessionsViewersAndAgents) {
   Daemon d(config);
   const std::string a = d.start({{"program", walkers()}});
   d.start({{"program", walkers()}});
-  auto r = d.http.client().Post("/api/v1/simulations", Json{{"program", walkers()}}.dump(), "application/json");
+  auto r =
+      d.http.client().Post("/api/v1/simulations", Json{{"program", walkers()}}.dump(), "application/json");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 429);
   EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json");
@@ -412,23 +421,31 @@ TEST(Simulations, LimitsOnSessionsViewersAndAgents) {
 
 TEST(Simulations, BadRequestsAreProblemsWithPointers) {
   Daemon d;
-  auto first_pointer = [](const Json& p) { return p["errors"].empty() ? std::string("?") : p["errors"][0]["pointer"].get<std::string>(); };
+  auto first_pointer = [](const Json& p) {
+    return p["errors"].empty() ? std::string("?") : p["errors"][0]["pointer"].get<std::string>();
+  };
   EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", Json::object(), 422)), "");
-  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"card_id", "crd_00000000000000000000"}}, 404)), "/card_id");
-  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"program", walkers()}, {"world_id", "wld_nope"}}, 404)),
-            "/world_id");
-  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"program", walkers()}, {"speed", 100}}, 422)), "/speed");
-  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"program", walkers()}, {"colour", "red"}}, 422)), "/colour");
+  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"card_id", "crd_00000000000000000000"}}, 404)),
+            "/card_id");
+  EXPECT_EQ(
+      first_pointer(d.post("/api/v1/simulations", {{"program", walkers()}, {"world_id", "wld_nope"}}, 404)),
+      "/world_id");
+  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"program", walkers()}, {"speed", 100}}, 422)),
+            "/speed");
+  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"program", walkers()}, {"colour", "red"}}, 422)),
+            "/colour");
   Json bad = walkers();
   bad["agents"][1]["goals"][0] = "reception_desk";  // a place, but there is no world
   const Json p = d.post("/api/v1/simulations", {{"program", bad}}, 422);
   EXPECT_EQ(first_pointer(p).rfind("/program/agents/1", 0), 0u) << p.dump();
   Json typo = walkers();
   typo["agents"][0]["speeed"] = 1;
-  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"program", typo}}, 422)), "/program/agents/0/speeed");
+  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"program", typo}}, 422)),
+            "/program/agents/0/speeed");
   Json file_tree = walkers();
   file_tree["agents"][0]["behavior"] = {{"file", "/etc/passwd"}};
-  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"program", file_tree}}, 422)), "/program/agents/0/behavior/file");
+  EXPECT_EQ(first_pointer(d.post("/api/v1/simulations", {{"program", file_tree}}, 422)),
+            "/program/agents/0/behavior/file");
 
   const std::string id = d.start({{"program", walkers()}});
   const std::string control = "/api/v1/simulations/" + id + "/control";
@@ -491,7 +508,8 @@ std::string recorded_card(testing::TestServer& s, double seconds, std::string* s
   o.seed = 9;
   auto runner = crowd::ScenarioRunner::create(nullptr, program, o).value();
   scenario::TrajectoryRecorder recorder(0.1);
-  runner->run(seconds, [&](double t, std::span<const crowd::PedestrianState> st) { recorder.add(t, st); }, 2);
+  runner->run(
+      seconds, [&](double t, std::span<const crowd::PedestrianState> st) { recorder.add(t, st); }, 2);
   scenario::TrajectoryLog log = std::move(recorder).finish();
   EXPECT_TRUE(scenario::save_trajectory_log(s.store(), log));
   *sha = log.sha256();
