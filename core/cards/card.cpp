@@ -15,7 +15,8 @@ constexpr int kExportFormat = 1;
 bool valid_tag(const std::string& t) {
   if (t.empty() || t.size() > 64) return false;
   for (char c : t) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.' || c == ':';
+    const bool ok =
+        (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.' || c == ':';
     if (!ok) return false;
   }
   return true;
@@ -33,9 +34,11 @@ bool valid_generator_name(const std::string& g) {
 }
 
 // Reads every client field present in `body` into `out`; `required` marks a POST (title needed).
-void read_content(JsonChecker& c, const Json& body, const CardLimits& limits, bool required, CardContent& out) {
+void read_content(JsonChecker& c, const Json& body, const CardLimits& limits, bool required,
+                  CardContent& out) {
   if (auto v = c.string(body, "", "title", required, 1, limits.max_title_bytes)) out.title = *v;
-  if (auto v = c.string(body, "", "description", false, 0, limits.max_description_bytes)) out.description = *v;
+  if (auto v = c.string(body, "", "description", false, 0, limits.max_description_bytes))
+    out.description = *v;
   if (auto v = c.string(body, "", "prompt", false, 0, limits.max_prompt_bytes)) out.prompt = *v;
   if (const Json* tags = c.array(body, "", "tags", false, limits.max_tags)) {
     out.tags.clear();
@@ -89,7 +92,8 @@ void read_content(JsonChecker& c, const Json& body, const CardLimits& limits, bo
       (std::string_view(key) == "world" ? out.world : out.program) = v;
   }
   for (const char* key : {"metrics", "provenance"}) {
-    if (const Json* o = c.object(body, "", key, false)) (std::string_view(key) == "metrics" ? out.metrics : out.provenance) = *o;
+    if (const Json* o = c.object(body, "", key, false))
+      (std::string_view(key) == "metrics" ? out.metrics : out.provenance) = *o;
   }
   if (body.contains("trajectory_log")) {
     const Json& t = body["trajectory_log"];
@@ -98,7 +102,8 @@ void read_content(JsonChecker& c, const Json& body, const CardLimits& limits, bo
     } else if (!t.is_object()) {
       c.add("/trajectory_log", "must be an object or null");
     } else {
-      c.only_keys(t, "/trajectory_log", {"uri", "format", "frames", "rate_hz", "agents", "duration_s", "sha256"});
+      c.only_keys(t, "/trajectory_log",
+                  {"uri", "format", "frames", "rate_hz", "agents", "duration_s", "sha256"});
       c.string(t, "/trajectory_log", "uri", true, 1, 2048);
       c.string(t, "/trajectory_log", "format", true, 1, 64);
       c.integer(t, "/trajectory_log", "frames", false, 0);
@@ -114,13 +119,15 @@ void read_content(JsonChecker& c, const Json& body, const CardLimits& limits, bo
 }
 
 constexpr std::array<std::string_view, 12> kContentKeys = {
-    "title", "description", "tags", "prompt", "seed", "generator", "domain",
-    "world", "program", "metrics", "trajectory_log", "provenance"};
+    "title",  "description", "tags",    "prompt",  "seed",           "generator",
+    "domain", "world",       "program", "metrics", "trajectory_log", "provenance"};
 
 }  // namespace
 
 Result<CardContent> parse_card_content(const Json& body, const CardLimits& limits) {
-  if (!body.is_object()) return fail(ErrorCode::kValidation, "the card must be a JSON object", {{"", "must be an object", "", 0, 0}});
+  if (!body.is_object())
+    return fail(ErrorCode::kValidation, "the card must be a JSON object",
+                {{"", "must be an object", "", 0, 0}});
   JsonChecker c;
   c.only_keys(body, "", kContentKeys);
   CardContent out;
@@ -130,7 +137,9 @@ Result<CardContent> parse_card_content(const Json& body, const CardLimits& limit
 }
 
 Result<CardContent> merge_card_content(const CardContent& base, const Json& patch, const CardLimits& limits) {
-  if (!patch.is_object()) return fail(ErrorCode::kValidation, "the new version must be a JSON object", {{"", "must be an object", "", 0, 0}});
+  if (!patch.is_object())
+    return fail(ErrorCode::kValidation, "the new version must be a JSON object",
+                {{"", "must be an object", "", 0, 0}});
   JsonChecker c;
   c.only_keys(patch, "", kContentKeys);
   CardContent out = base;
@@ -156,7 +165,8 @@ Json content_to_json(const CardContent& c) {
               {"provenance", c.provenance}};
 }
 
-std::string content_hash(const CardContent& content, std::int64_t version, const std::optional<std::string>& parent) {
+std::string content_hash(const CardContent& content, std::int64_t version,
+                         const std::optional<std::string>& parent) {
   Json j = content_to_json(content);
   j["version"] = version;
   j["parent_id"] = parent ? Json(*parent) : Json(nullptr);
@@ -181,20 +191,27 @@ Json summary_json(const Card& card) {
 }
 
 Result<Card> parse_card(const Json& json, const CardLimits& limits) {
-  if (!json.is_object()) return fail(ErrorCode::kValidation, "a card must be a JSON object", {{"", "must be an object", "", 0, 0}});
+  if (!json.is_object())
+    return fail(ErrorCode::kValidation, "a card must be a JSON object",
+                {{"", "must be an object", "", 0, 0}});
   JsonChecker c;
-  c.only_keys(json, "", {"title", "description", "tags", "prompt", "seed", "generator", "domain", "world", "program",
-                         "metrics", "trajectory_log", "provenance", "id", "author", "version", "parent_id",
-                         "created_at", "content_hash"});
+  c.only_keys(
+      json, "",
+      {"title", "description", "tags", "prompt", "seed", "generator", "domain", "world", "program", "metrics",
+       "trajectory_log", "provenance", "id", "author", "version", "parent_id", "created_at", "content_hash"});
   Card card;
   read_content(c, json, limits, true, card.content);
-  if (auto v = c.string(json, "", "id", true); v && !is_card_id(*v)) c.add("/id", "not a card id (crd_ + 20 base32 characters)");
-  else if (v) card.id = *v;
+  if (auto v = c.string(json, "", "id", true); v && !is_card_id(*v))
+    c.add("/id", "not a card id (crd_ + 20 base32 characters)");
+  else if (v)
+    card.id = *v;
   if (auto v = c.string(json, "", "author", true, 1, 200)) card.author = *v;
   if (auto v = c.integer(json, "", "version", true, 1)) card.version = *v;
   if (auto v = c.string(json, "", "parent_id", false)) {
-    if (is_card_id(*v)) card.parent_id = *v;
-    else c.add("/parent_id", "not a card id");
+    if (is_card_id(*v))
+      card.parent_id = *v;
+    else
+      c.add("/parent_id", "not a card id");
   }
   if (auto v = c.string(json, "", "created_at", true, 20, 40)) card.created_at = *v;
   auto hash = c.string(json, "", "content_hash", true, 64, 64);
@@ -207,9 +224,13 @@ Result<Card> parse_card(const Json& json, const CardLimits& limits) {
   return card;
 }
 
-std::string new_card_id() { return random_id("crd_"); }
+std::string new_card_id() {
+  return random_id("crd_");
+}
 
-bool is_card_id(std::string_view s) { return is_random_id(s, "crd_"); }
+bool is_card_id(std::string_view s) {
+  return is_random_id(s, "crd_");
+}
 
 std::string export_document(const Card& card) {
   return canonical_json(Json{{"socsim_card_export", kExportFormat}, {"card", to_json(card)}}) + "\n";
@@ -219,7 +240,8 @@ Result<Card> parse_export_document(std::string_view text, const CardLimits& limi
   auto doc = parse_json_untrusted(text);
   if (!doc) return tl::unexpected(doc.error());
   if (!doc->is_object() || !doc->contains("socsim_card_export") || !doc->contains("card"))
-    return fail(ErrorCode::kValidation, "not a socsim card export (expected {\"socsim_card_export\": 1, \"card\": {...}})",
+    return fail(ErrorCode::kValidation,
+                "not a socsim card export (expected {\"socsim_card_export\": 1, \"card\": {...}})",
                 {{"", "missing socsim_card_export or card", "", 0, 0}});
   if ((*doc)["socsim_card_export"] != kExportFormat)
     return fail(ErrorCode::kValidation, "unsupported export format",

@@ -26,8 +26,8 @@ struct CardContent {
   std::uint64_t seed = 0;
   Generator generator;
   std::optional<std::string> domain;
-  Json world;           // object or null
-  Json program;         // object or null
+  Json world;    // object or null
+  Json program;  // object or null
   Json metrics = Json::object();
   Json trajectory_log;  // {uri, format, frames, sha256} or null
   Json provenance = Json::object();
@@ -63,7 +63,8 @@ Json summary_json(const Card& card);  // without world, program, metrics, proven
 
 // SHA-256 of the canonical JSON of the content plus lineage (version, parent_id). Server-assigned
 // identity (id, author, created_at) is not part of it, so a card keeps its hash across catalogues.
-std::string content_hash(const CardContent& content, std::int64_t version, const std::optional<std::string>& parent);
+std::string content_hash(const CardContent& content, std::int64_t version,
+                         const std::optional<std::string>& parent);
 
 // "crd_" + 20 characters of Crockford base32 (100 random bits).
 std::string new_card_id();

@@ -58,7 +58,9 @@ Result<std::optional<Card>> find(Database& db, const std::string& id) {
   return std::optional<Card>(std::move(*c));
 }
 
-Error not_found(const std::string& id) { return Error(ErrorCode::kNotFound, "no card with id '" + id + "'"); }
+Error not_found(const std::string& id) {
+  return Error(ErrorCode::kNotFound, "no card with id '" + id + "'");
+}
 
 constexpr std::string_view kCursorPrefix = "s1.";
 
@@ -108,7 +110,8 @@ Result<Card> CardCatalogue::create(const CardContent& content, const std::string
   });
 }
 
-Result<Card> CardCatalogue::create_version(const std::string& parent_id, const Json& patch, const std::string& author) {
+Result<Card> CardCatalogue::create_version(const std::string& parent_id, const Json& patch,
+                                           const std::string& author) {
   return store_.write([&](Database& db) -> Result<Card> {
     auto parent = find(db, parent_id);
     if (!parent) return tl::unexpected(parent.error());
@@ -149,7 +152,9 @@ Result<CardPage> CardCatalogue::list(const CardQuery& q) {
   std::string match;
   if (q.text) {
     match = fts_query(*q.text);
-    if (match.empty()) return fail(ErrorCode::kBadRequest, "the search text has no words", {{"", "no searchable words", "q", 0, 0}});
+    if (match.empty())
+      return fail(ErrorCode::kBadRequest, "the search text has no words",
+                  {{"", "no searchable words", "q", 0, 0}});
   }
   std::string sql = "SELECT c.seq, c.body FROM cards c WHERE 1";
   if (before) sql += " AND c.seq < :before";
@@ -226,7 +231,8 @@ Result<ImportOutcome> CardCatalogue::import_card(const Card& card) {
     if (!existing) return tl::unexpected(existing.error());
     if (*existing) {
       if ((*existing)->content_hash == card.content_hash) return ImportOutcome{std::move(**existing), false};
-      return fail(ErrorCode::kConflict, "a different card with id '" + card.id + "' is already in the catalogue",
+      return fail(ErrorCode::kConflict,
+                  "a different card with id '" + card.id + "' is already in the catalogue",
                   {{"/card/id", "already used by a card with another content hash", "", 0, 0}});
     }
     if (auto s = insert_card(db, card); !s) return tl::unexpected(s.error());

@@ -13,23 +13,23 @@
 namespace socsim {
 
 enum class ErrorCode {
-  kBadRequest,          // malformed syntax (JSON, YAML, query)
-  kValidation,          // well-formed but violates the schema or a rule
+  kBadRequest,  // malformed syntax (JSON, YAML, query)
+  kValidation,  // well-formed but violates the schema or a rule
   kNotFound,
   kMethodNotAllowed,
-  kConflict,            // id exists with other content, version clash
-  kUnauthorized,        // no or unknown API key
-  kForbidden,           // key known but not allowed (e.g. not the author)
+  kConflict,      // id exists with other content, version clash
+  kUnauthorized,  // no or unknown API key
+  kForbidden,     // key known but not allowed (e.g. not the author)
   kPayloadTooLarge,
   kRateLimited,
   kPreconditionFailed,
   kUnsupportedMediaType,
-  kStoreBusy,           // database locked past busy_timeout
-  kStoreSchemaTooNew,   // database migrated by a newer build
-  kStore,               // other database failure
-  kUpstream,            // LLM endpoint failed or answered badly
+  kStoreBusy,          // database locked past busy_timeout
+  kStoreSchemaTooNew,  // database migrated by a newer build
+  kStore,              // other database failure
+  kUpstream,           // LLM endpoint failed or answered badly
   kUpstreamTimeout,
-  kCancelled,           // the job was cancelled by its owner
+  kCancelled,  // the job was cancelled by its owner
   kInternal,
 };
 

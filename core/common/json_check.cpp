@@ -4,7 +4,9 @@
 
 namespace socsim {
 namespace {
-std::string type_name(const Json& j) { return j.type_name(); }
+std::string type_name(const Json& j) {
+  return j.type_name();
+}
 }  // namespace
 
 void JsonChecker::only_keys(const Json& obj, const std::string& ptr,
@@ -38,18 +40,21 @@ std::optional<std::string> JsonChecker::string(const Json& obj, const std::strin
   }
   const auto& s = v->get_ref<const std::string&>();
   if (s.size() < min_len) {
-    add(child(ptr, key), min_len == 1 ? "must not be empty" : "must be at least " + std::to_string(min_len) + " characters");
+    add(child(ptr, key),
+        min_len == 1 ? "must not be empty" : "must be at least " + std::to_string(min_len) + " characters");
     return std::nullopt;
   }
   if (s.size() > max_len) {
-    add(child(ptr, key), "must be at most " + std::to_string(max_len) + " bytes (got " + std::to_string(s.size()) + ")");
+    add(child(ptr, key),
+        "must be at most " + std::to_string(max_len) + " bytes (got " + std::to_string(s.size()) + ")");
     return std::nullopt;
   }
   return s;
 }
 
-std::optional<std::int64_t> JsonChecker::integer(const Json& obj, const std::string& ptr, std::string_view key,
-                                                 bool required, std::int64_t min, std::int64_t max) {
+std::optional<std::int64_t> JsonChecker::integer(const Json& obj, const std::string& ptr,
+                                                 std::string_view key, bool required, std::int64_t min,
+                                                 std::int64_t max) {
   const Json* v = find(obj, ptr, key, required);
   if (!v) return std::nullopt;
   std::int64_t value = 0;
@@ -83,7 +88,8 @@ std::optional<double> JsonChecker::number(const Json& obj, const std::string& pt
   }
   const double d = v->get<double>();
   if (!std::isfinite(d) || d < min || d > max) {
-    add(child(ptr, key), "must be a finite number between " + std::to_string(min) + " and " + std::to_string(max));
+    add(child(ptr, key),
+        "must be a finite number between " + std::to_string(min) + " and " + std::to_string(max));
     return std::nullopt;
   }
   return d;
@@ -100,7 +106,8 @@ std::optional<bool> JsonChecker::boolean(const Json& obj, const std::string& ptr
   return v->get<bool>();
 }
 
-const Json* JsonChecker::object(const Json& obj, const std::string& ptr, std::string_view key, bool required) {
+const Json* JsonChecker::object(const Json& obj, const std::string& ptr, std::string_view key,
+                                bool required) {
   const Json* v = find(obj, ptr, key, required);
   if (!v) return nullptr;
   if (!v->is_object()) {

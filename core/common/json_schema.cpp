@@ -11,11 +11,24 @@ namespace {
 constexpr int kMaxSchemaDepth = 200;  // nested subschemas + $ref hops on one evaluation path
 
 const std::set<std::string_view>& unsupported_keywords() {
-  static const std::set<std::string_view> k = {
-      "prefixItems", "contains", "minContains", "maxContains", "additionalItems",
-      "if", "then", "else", "dependentRequired", "dependentSchemas", "dependencies",
-      "propertyNames", "unevaluatedProperties", "unevaluatedItems", "$dynamicRef",
-      "$dynamicAnchor", "$recursiveRef", "$recursiveAnchor"};
+  static const std::set<std::string_view> k = {"prefixItems",
+                                               "contains",
+                                               "minContains",
+                                               "maxContains",
+                                               "additionalItems",
+                                               "if",
+                                               "then",
+                                               "else",
+                                               "dependentRequired",
+                                               "dependentSchemas",
+                                               "dependencies",
+                                               "propertyNames",
+                                               "unevaluatedProperties",
+                                               "unevaluatedItems",
+                                               "$dynamicRef",
+                                               "$dynamicAnchor",
+                                               "$recursiveRef",
+                                               "$recursiveAnchor"};
   return k;
 }
 
@@ -32,15 +45,23 @@ std::string short_json(const Json& v, std::size_t limit = 80) {
 
 std::string type_of(const Json& v) {
   switch (v.type()) {
-    case Json::value_t::null: return "null";
-    case Json::value_t::boolean: return "boolean";
-    case Json::value_t::object: return "object";
-    case Json::value_t::array: return "array";
-    case Json::value_t::string: return "string";
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::boolean:
+      return "boolean";
+    case Json::value_t::object:
+      return "object";
+    case Json::value_t::array:
+      return "array";
+    case Json::value_t::string:
+      return "string";
     case Json::value_t::number_integer:
-    case Json::value_t::number_unsigned: return "integer";
-    case Json::value_t::number_float: return "number";
-    default: return "unknown";
+    case Json::value_t::number_unsigned:
+      return "integer";
+    case Json::value_t::number_float:
+      return "number";
+    default:
+      return "unknown";
   }
 }
 
@@ -81,13 +102,18 @@ const Json* resolve_ref(const Json& root, const std::string& ref) {
   }
 }
 
-std::string child(const std::string& ptr, std::string_view key) { return ptr + "/" + json_pointer_token(key); }
-std::string child(const std::string& ptr, std::size_t i) { return ptr + "/" + std::to_string(i); }
+std::string child(const std::string& ptr, std::string_view key) {
+  return ptr + "/" + json_pointer_token(key);
+}
+std::string child(const std::string& ptr, std::size_t i) {
+  return ptr + "/" + std::to_string(i);
+}
 
 // ---- compile-time checks of the schema document ----
 class SchemaCompiler {
  public:
-  SchemaCompiler(const Json& root, std::map<std::string, std::regex>& regexes) : root_(root), regexes_(regexes) {}
+  SchemaCompiler(const Json& root, std::map<std::string, std::regex>& regexes)
+      : root_(root), regexes_(regexes) {}
 
   void schema(const Json& s, const std::string& ptr, int depth) {
     if (depth > kMaxSchemaDepth) return add(ptr, "schema nested too deeply");
@@ -127,13 +153,15 @@ class SchemaCompiler {
         }
         for (const Json& r : value)
           if (!r.is_string()) add(p, "must contain only strings");
-      } else if (key == "minimum" || key == "maximum" || key == "exclusiveMinimum" || key == "exclusiveMaximum") {
+      } else if (key == "minimum" || key == "maximum" || key == "exclusiveMinimum" ||
+                 key == "exclusiveMaximum") {
         if (!value.is_number()) add(p, "must be a number");
       } else if (key == "multipleOf") {
         if (!value.is_number() || value.get<double>() <= 0) add(p, "must be a number > 0");
       } else if (key == "minLength" || key == "maxLength" || key == "minItems" || key == "maxItems" ||
                  key == "minProperties" || key == "maxProperties") {
-        if (!value.is_number_integer() || value.get<std::int64_t>() < 0) add(p, "must be a non-negative integer");
+        if (!value.is_number_integer() || value.get<std::int64_t>() < 0)
+          add(p, "must be a non-negative integer");
       } else if (key == "uniqueItems") {
         if (!value.is_boolean()) add(p, "must be a boolean");
       } else if (key == "pattern") {
@@ -154,7 +182,9 @@ class SchemaCompiler {
   std::vector<FieldError> errors;
 
  private:
-  void add(const std::string& ptr, std::string msg) { errors.push_back(FieldError{ptr, std::move(msg), {}, 0, 0}); }
+  void add(const std::string& ptr, std::string msg) {
+    errors.push_back(FieldError{ptr, std::move(msg), {}, 0, 0});
+  }
 
   void type(const Json& v, const std::string& ptr) {
     if (v.is_string()) {
@@ -215,7 +245,8 @@ class SchemaValidation {
 };
 
 void SchemaValidation::run(const Json& s, const Json& inst, const std::string& ptr, int depth) {
-  if (depth > kMaxSchemaDepth) return add(ptr, "schema recursion deeper than " + std::to_string(kMaxSchemaDepth) + " levels");
+  if (depth > kMaxSchemaDepth)
+    return add(ptr, "schema recursion deeper than " + std::to_string(kMaxSchemaDepth) + " levels");
   if (s.is_boolean()) {
     if (!s.get<bool>()) add(ptr, "is not allowed here");
     return;
@@ -223,7 +254,8 @@ void SchemaValidation::run(const Json& s, const Json& inst, const std::string& p
   if (!s.is_object()) return;
 
   if (auto it = s.find("$ref"); it != s.end() && it->is_string()) {
-    if (const Json* target = resolve_ref(schema_.document(), it->get<std::string>())) run(*target, inst, ptr, depth + 1);
+    if (const Json* target = resolve_ref(schema_.document(), it->get<std::string>()))
+      run(*target, inst, ptr, depth + 1);
   }
   if (auto it = s.find("type"); it != s.end()) {
     bool ok = false;
@@ -260,11 +292,14 @@ void SchemaValidation::run(const Json& s, const Json& inst, const std::string& p
 void SchemaValidation::object_keywords(const Json& s, const Json& inst, const std::string& ptr, int depth) {
   if (auto it = s.find("required"); it != s.end() && it->is_array()) {
     for (const Json& name : *it)
-      if (name.is_string() && !inst.contains(name.get<std::string>())) add(child(ptr, name.get<std::string>()), "is required");
+      if (name.is_string() && !inst.contains(name.get<std::string>()))
+        add(child(ptr, name.get<std::string>()), "is required");
   }
-  if (auto it = s.find("minProperties"); it != s.end() && it->is_number_integer() && inst.size() < it->get<std::size_t>())
+  if (auto it = s.find("minProperties");
+      it != s.end() && it->is_number_integer() && inst.size() < it->get<std::size_t>())
     add(ptr, "must have at least " + it->dump() + " properties, got " + std::to_string(inst.size()));
-  if (auto it = s.find("maxProperties"); it != s.end() && it->is_number_integer() && inst.size() > it->get<std::size_t>())
+  if (auto it = s.find("maxProperties");
+      it != s.end() && it->is_number_integer() && inst.size() > it->get<std::size_t>())
     add(ptr, "must have at most " + it->dump() + " properties, got " + std::to_string(inst.size()));
 
   const auto props = s.find("properties");
@@ -303,7 +338,8 @@ void SchemaValidation::object_keywords(const Json& s, const Json& inst, const st
             allowed += (allowed.empty() ? "" : ", ") + name;
           }
         }
-        add(p, "is not an allowed property" + (allowed.empty() ? std::string() : " (allowed: " + allowed + ")"));
+        add(p,
+            "is not an allowed property" + (allowed.empty() ? std::string() : " (allowed: " + allowed + ")"));
       } else {
         run(*additional, value, p, depth + 1);
       }
@@ -312,16 +348,19 @@ void SchemaValidation::object_keywords(const Json& s, const Json& inst, const st
 }
 
 void SchemaValidation::array_keywords(const Json& s, const Json& inst, const std::string& ptr, int depth) {
-  if (auto it = s.find("minItems"); it != s.end() && it->is_number_integer() && inst.size() < it->get<std::size_t>())
+  if (auto it = s.find("minItems");
+      it != s.end() && it->is_number_integer() && inst.size() < it->get<std::size_t>())
     add(ptr, "must have at least " + it->dump() + " items, got " + std::to_string(inst.size()));
-  if (auto it = s.find("maxItems"); it != s.end() && it->is_number_integer() && inst.size() > it->get<std::size_t>())
+  if (auto it = s.find("maxItems");
+      it != s.end() && it->is_number_integer() && inst.size() > it->get<std::size_t>())
     add(ptr, "must have at most " + it->dump() + " items, got " + std::to_string(inst.size()));
   if (auto it = s.find("uniqueItems"); it != s.end() && it->is_boolean() && it->get<bool>()) {
     bool reported = false;
     for (std::size_t i = 0; i < inst.size() && !reported; ++i)
       for (std::size_t j = i + 1; j < inst.size(); ++j)
         if (inst[i] == inst[j]) {
-          add(ptr, "items " + std::to_string(i) + " and " + std::to_string(j) + " are equal; items must be unique");
+          add(ptr, "items " + std::to_string(i) + " and " + std::to_string(j) +
+                       " are equal; items must be unique");
           reported = true;
           break;
         }
@@ -366,7 +405,8 @@ void SchemaValidation::string_keywords(const Json& s, const Json& inst, const st
     auto rx = schema_.regexes_->find(it->get<std::string>());
     if (rx == schema_.regexes_->end()) return;
     if (str.size() > JsonSchema::kMaxPatternSubjectBytes)
-      add(ptr, "is too long (" + std::to_string(str.size()) + " bytes) to check against the pattern " + it->get<std::string>());
+      add(ptr, "is too long (" + std::to_string(str.size()) + " bytes) to check against the pattern " +
+                   it->get<std::string>());
     else if (!std::regex_search(str, rx->second))
       add(ptr, "must match the pattern " + it->get<std::string>() + ", got " + short_json(inst));
   }
@@ -392,8 +432,8 @@ void SchemaValidation::combinators(const Json& s, const Json& inst, const std::s
       }
     }
     if (matches.empty()) {
-      add(ptr, "matches none of the " + std::to_string(list.size()) + " alternatives of " + std::string(keyword) +
-                   (have_closest ? "; closest alternative's problems follow" : ""));
+      add(ptr, "matches none of the " + std::to_string(list.size()) + " alternatives of " +
+                   std::string(keyword) + (have_closest ? "; closest alternative's problems follow" : ""));
       for (auto& e : closest) add(e.pointer, std::move(e.message));
     }
     return matches;
@@ -416,7 +456,8 @@ Result<JsonSchema> JsonSchema::compile(Json schema) {
   SchemaCompiler compiler(*out.document_, *regexes);
   compiler.schema(*out.document_, "", 0);
   if (!compiler.errors.empty()) {
-    std::string detail = "invalid JSON Schema: " + compiler.errors.front().pointer + ": " + compiler.errors.front().message;
+    std::string detail =
+        "invalid JSON Schema: " + compiler.errors.front().pointer + ": " + compiler.errors.front().message;
     return fail(ErrorCode::kValidation, std::move(detail), std::move(compiler.errors));
   }
   out.regexes_ = std::move(regexes);
@@ -426,7 +467,8 @@ Result<JsonSchema> JsonSchema::compile(Json schema) {
 std::vector<FieldError> JsonSchema::validate(const Json& instance, std::size_t max_errors) const {
   SchemaValidation v(*this, std::max<std::size_t>(1, max_errors));
   v.run(*document_, instance, "", 0);
-  if (v.dropped > 0) v.errors.push_back(FieldError{"", "… and " + std::to_string(v.dropped) + " more problems", {}, 0, 0});
+  if (v.dropped > 0)
+    v.errors.push_back(FieldError{"", "… and " + std::to_string(v.dropped) + " more problems", {}, 0, 0});
   return std::move(v.errors);
 }
 
@@ -435,8 +477,8 @@ Status JsonSchema::check(const Json& instance, const std::string& what) const {
   if (errors.empty()) return {};
   std::string detail = what + " does not match its schema: ";
   for (std::size_t i = 0; i < errors.size() && i < 3; ++i)
-    detail += (i ? "; " : "") + (errors[i].pointer.empty() ? std::string("(root)") : errors[i].pointer) + " " +
-              errors[i].message;
+    detail += (i ? "; " : "") + (errors[i].pointer.empty() ? std::string("(root)") : errors[i].pointer) +
+              " " + errors[i].message;
   if (errors.size() > 3) detail += "; (" + std::to_string(errors.size() - 3) + " more)";
   return fail(ErrorCode::kValidation, std::move(detail), std::move(errors));
 }

@@ -43,7 +43,9 @@ class Rng {
   }
 
   // An independent generator for a named purpose; the parent's sequence is not consumed.
-  [[nodiscard]] Rng fork(std::string_view label) const { return Rng(state_ ^ fnv1a64(label), inc_ ^ fnv1a64(label)); }
+  [[nodiscard]] Rng fork(std::string_view label) const {
+    return Rng(state_ ^ fnv1a64(label), inc_ ^ fnv1a64(label));
+  }
 
   constexpr std::uint32_t next_u32() {
     const std::uint64_t old = state_;

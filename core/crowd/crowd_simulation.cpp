@@ -46,7 +46,9 @@ constexpr std::uint32_t kNoCell = UINT32_MAX;
 constexpr double kMaxCoordinate = 1.0e6;  // m; keeps every product far from overflow
 constexpr double kTiny2 = 1e-18;          // squared lengths below this count as zero
 
-bool finite_in_range(double v, double limit) { return std::isfinite(v) && std::abs(v) <= limit; }
+bool finite_in_range(double v, double limit) {
+  return std::isfinite(v) && std::abs(v) <= limit;
+}
 
 FieldError field(std::string pointer, std::string message) {
   return FieldError{std::move(pointer), std::move(message), {}, 0, 0};
@@ -75,7 +77,9 @@ Vec2 tie_break_direction(std::uint32_t i, std::uint32_t j) {
   return i < j ? u : Vec2{-u.x, -u.y};
 }
 
-double orient(Vec2 a, Vec2 b, Vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+double orient(Vec2 a, Vec2 b, Vec2 c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
 
 // Where along from→to the move meets the wall's line (0..1).
 double hit_parameter(Vec2 from, Vec2 to, const WallSegment& w) {
@@ -141,7 +145,8 @@ bool walk_clears(Vec2 p, Vec2 e, double len, Vec2 a, Vec2 b, double r) {
   const double o2 = orient(a, b, q);
   const double o3 = orient(p, q, a);
   const double o4 = orient(p, q, b);
-  if (((o1 < 0.0 && o2 > 0.0) || (o1 > 0.0 && o2 < 0.0)) && ((o3 < 0.0 && o4 > 0.0) || (o3 > 0.0 && o4 < 0.0)))
+  if (((o1 < 0.0 && o2 > 0.0) || (o1 > 0.0 && o2 < 0.0)) &&
+      ((o3 < 0.0 && o4 > 0.0) || (o3 > 0.0 && o4 < 0.0)))
     return false;
   return point_segment_distance(a, p, q) >= r && point_segment_distance(b, p, q) >= r &&
          point_segment_distance(p, a, b) >= r && point_segment_distance(q, a, b) >= r;
@@ -168,8 +173,8 @@ class FixedSum {
 struct NeighbourArrays {
   const double *x, *y, *vx, *vy, *r;
   const std::int32_t* group;
-  const std::uint32_t* id;      // agent index of each entry (nullptr: the entry index is the agent)
-  const std::uint8_t* active;   // nullptr: all entries are active
+  const std::uint32_t* id;     // agent index of each entry (nullptr: the entry index is the agent)
+  const std::uint8_t* active;  // nullptr: all entries are active
 };
 
 // Collects the neighbours of one agent within the cut-off, runs the kernel batch by batch and
@@ -190,9 +195,9 @@ class NeighbourSums {
         cutoff2_(cutoff * cutoff),
         repulsion_factor_(fp.group_repulsion_factor),
         body_stiffness_(body_stiffness),
-        params_{static_cast<float>(fp.lambda),  static_cast<float>(fp.gamma),
+        params_{static_cast<float>(fp.lambda),      static_cast<float>(fp.gamma),
                 static_cast<float>(1.0 / fp.gamma), static_cast<float>(fp.n),
-                static_cast<float>(fp.n_prime), static_cast<float>(fp.social_factor)} {}
+                static_cast<float>(fp.n_prime),     static_cast<float>(fp.social_factor)} {}
 
   [[nodiscard]] std::uint32_t id() const { return id_; }
 
@@ -341,10 +346,12 @@ Status validate(const SimulationConfig& c) {
     errors.push_back(field("/wall_cutoff", "must be in [0.5, 20] m"));
   if (c.threads < 1 || c.threads > 256) errors.push_back(field("/threads", "must be in [1, 256]"));
   if (!(std::isfinite(c.body_stiffness) && c.body_stiffness >= 0.0 && c.body_stiffness <= 1000.0))
-    errors.push_back(field("/body_stiffness", "must be in [0, 1000] 1/s² (stiffer contact is unstable at this dt)"));
+    errors.push_back(
+        field("/body_stiffness", "must be in [0, 1000] 1/s² (stiffer contact is unstable at this dt)"));
   if (errors.empty() && kMaxAgentSpeed * c.dt >= c.wall_cutoff)
     errors.push_back(field("/dt", "the fastest agent must move less than wall_cutoff in one step"));
-  if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid simulation configuration", std::move(errors));
+  if (!errors.empty())
+    return fail(ErrorCode::kValidation, "invalid simulation configuration", std::move(errors));
   return {};
 }
 
@@ -361,7 +368,8 @@ CrowdSimulation::~CrowdSimulation() = default;
 Result<CrowdSimulation> CrowdSimulation::create(const SimulationConfig& config, RoleTable roles) {
   if (auto ok = validate(config); !ok) return tl::unexpected(ok.error());
   if (!roles.index_of("adult"))
-    return fail(ErrorCode::kValidation, "role table has no 'adult' role", {field("/roles", "needs an 'adult' role")});
+    return fail(ErrorCode::kValidation, "role table has no 'adult' role",
+                {field("/roles", "needs an 'adult' role")});
   return CrowdSimulation(config, std::move(roles));
 }
 
@@ -399,15 +407,18 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
   AgentMeta meta;
   meta.seed = config_.seed ^ fnv1a64("agent:" + std::to_string(index));
   Rng rng(meta.seed);
-  double v0 = spec.desired_speed ? *spec.desired_speed
-                                 : std::clamp(rng.normal(role.speed.mean, role.speed.sd), role.speed.min, role.speed.max);
+  double v0 = spec.desired_speed
+                  ? *spec.desired_speed
+                  : std::clamp(rng.normal(role.speed.mean, role.speed.sd), role.speed.min, role.speed.max);
   const double vmax = v0 * role.max_speed_factor;
   if (vmax * config_.dt >= config_.wall_cutoff)
-    return fail(ErrorCode::kValidation, "invalid agent", {field("/desired_speed", "too fast for dt and wall_cutoff")});
+    return fail(ErrorCode::kValidation, "invalid agent",
+                {field("/desired_speed", "too fast for dt and wall_cutoff")});
 
   std::int32_t group = -1;
   if (spec.group_id >= 0) {
-    auto [it, inserted] = group_index_.try_emplace(spec.group_id, static_cast<std::int32_t>(group_ids_.size()));
+    auto [it, inserted] =
+        group_index_.try_emplace(spec.group_id, static_cast<std::int32_t>(group_ids_.size()));
     if (inserted) {
       group_ids_.push_back(spec.group_id);
       group_cx_.push_back(0.0);
@@ -485,7 +496,8 @@ Status CrowdSimulation::set_goals(AgentId id, std::vector<Goal> goals, bool cycl
   for (std::size_t k = 0; k < goals.size(); ++k) {
     const Goal& g = goals[k];
     if (!finite_in_range(g.position.x, kMaxCoordinate) || !finite_in_range(g.position.y, kMaxCoordinate))
-      errors.push_back(field("/goals/" + std::to_string(k) + "/position", "must be finite and within ±1e6 m"));
+      errors.push_back(
+          field("/goals/" + std::to_string(k) + "/position", "must be finite and within ±1e6 m"));
     if (!(std::isfinite(g.radius) && g.radius >= 0.0 && g.radius <= 1000.0))
       errors.push_back(field("/goals/" + std::to_string(k) + "/radius", "must be in [0, 1000] m"));
   }
@@ -510,7 +522,8 @@ Status CrowdSimulation::set_desired_speed(AgentId id, double speed) {
   const double factor = roles_.at(role_[id.value()]).max_speed_factor;
   if (!(std::isfinite(speed) && speed >= 0.0 && speed <= kMaxAgentSpeed) ||
       speed * factor * config_.dt >= config_.wall_cutoff)
-    return fail(ErrorCode::kValidation, "invalid desired speed", {field("/desired_speed", "must be in [0, 8] m/s")});
+    return fail(ErrorCode::kValidation, "invalid desired speed",
+                {field("/desired_speed", "must be in [0, 8] m/s")});
   v0_[id.value()] = speed;
   vmax_[id.value()] = speed * factor;
   return {};
@@ -722,7 +735,8 @@ struct FullScan {
 }  // namespace
 
 template <class Neighbours>
-void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbours, ForceBreakdown* breakdown) {
+void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbours,
+                                    ForceBreakdown* breakdown) {
   const RoleParameters& role = roles_.at(role_[i]);
   const ForceParameters& fp = role.forces;
   const double x = px_[i];
@@ -931,17 +945,17 @@ void CrowdSimulation::step() {
   prepare_step();
   build_cells();
   const CellIndex& c = *cells_;
-  const GridScan scan{c.start,
-                      c.cell_of,
-                      c.origin_x,
-                      c.origin_y,
-                      c.cell,
-                      c.inv_cell,
-                      config_.neighbor_cutoff,
-                      c.nx,
-                      c.ny,
-                      {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.group.data(), c.id.data(),
-                       nullptr}};
+  const GridScan scan{
+      c.start,
+      c.cell_of,
+      c.origin_x,
+      c.origin_y,
+      c.cell,
+      c.inv_cell,
+      config_.neighbor_cutoff,
+      c.nx,
+      c.ny,
+      {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.group.data(), c.id.data(), nullptr}};
   pool_->parallel_for(c.order.size(), 128, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) advance_agent(c.order[k], scan, nullptr);
   });

@@ -19,11 +19,11 @@
 namespace socsim::crowd {
 
 struct SimulationConfig {
-  double dt = 0.05;               // s, fixed step
-  double neighbor_cutoff = 3.0;   // m, agents farther apart do not interact
-  double wall_cutoff = 2.0;       // m, walls farther away exert no force
-  unsigned threads = 1;           // compute threads, including the caller
-  std::uint64_t seed = 0;         // drives the sampled desired speeds
+  double dt = 0.05;              // s, fixed step
+  double neighbor_cutoff = 3.0;  // m, agents farther apart do not interact
+  double wall_cutoff = 2.0;      // m, walls farther away exert no force
+  unsigned threads = 1;          // compute threads, including the caller
+  std::uint64_t seed = 0;        // drives the sampled desired speeds
   // Body contact force k·overlap between touching agents (1/s²; Helbing, Farkas & Vicsek 2000,
   // k/m = 1.2e5/80 there, softened for dt = 0.05 s). LightSFM has none, and without it bodies
   // interpenetrate in crowds: a 1 m door then passes 6.4 persons/s instead of the observed 1–2.
@@ -40,7 +40,7 @@ struct Goal {
 struct AgentSpec {
   Vec2 position;
   Vec2 velocity;
-  std::optional<double> yaw;            // default: direction of velocity, else 0
+  std::optional<double> yaw;  // default: direction of velocity, else 0
   std::string role = "adult";
   std::optional<double> desired_speed;  // default: sampled from the role's distribution
   std::optional<double> radius;         // default: the role's radius
@@ -58,13 +58,15 @@ struct ForceBreakdown {
   Vec2 group;  // gaze + coherence + repulsion
   Vec2 body;
   [[nodiscard]] Vec2 total() const {
-    return {desired.x + obstacle.x + social.x + group.x + body.x, desired.y + obstacle.y + social.y + group.y + body.y};
+    return {desired.x + obstacle.x + social.x + group.x + body.x,
+            desired.y + obstacle.y + social.y + group.y + body.y};
   }
 };
 
 class CrowdSimulation {
  public:
-  static Result<CrowdSimulation> create(const SimulationConfig& config, RoleTable roles = RoleTable::defaults());
+  static Result<CrowdSimulation> create(const SimulationConfig& config,
+                                        RoleTable roles = RoleTable::defaults());
 
   CrowdSimulation(CrowdSimulation&&) noexcept;
   CrowdSimulation& operator=(CrowdSimulation&&) noexcept;

@@ -21,15 +21,17 @@ std::string join_names() {
   return out;
 }
 
-double read_number(JsonChecker& check, const Json& obj, const std::string& ptr, std::string_view key, double fallback,
-                   bool required, double lo = -1e300, double hi = 1e300) {
+double read_number(JsonChecker& check, const Json& obj, const std::string& ptr, std::string_view key,
+                   double fallback, bool required, double lo = -1e300, double hi = 1e300) {
   auto v = check.number(obj, ptr, key, required, lo, hi);
   return v ? *v : fallback;
 }
 
 }  // namespace
 
-std::string_view activity_name(Activity a) { return kActivityNames.at(static_cast<std::size_t>(a)); }
+std::string_view activity_name(Activity a) {
+  return kActivityNames.at(static_cast<std::size_t>(a));
+}
 
 std::optional<Activity> activity_from_name(std::string_view name) {
   for (std::size_t i = 0; i < kActivityNames.size(); ++i)
@@ -69,7 +71,8 @@ Result<PedestrianState> pedestrian_state_from_json(const Json& j, const std::str
   }
   check.only_keys(j, pointer,
                   {"id", "pose", "twist", "state", "role", "intent", "group_id", "proxemics", "metadata"});
-  if (auto id = check.integer(j, pointer, "id", true, 0, UINT32_MAX)) s.id = AgentId(static_cast<std::uint32_t>(*id));
+  if (auto id = check.integer(j, pointer, "id", true, 0, UINT32_MAX))
+    s.id = AgentId(static_cast<std::uint32_t>(*id));
 
   if (const Json* pose = check.object(j, pointer, "pose", true)) {
     const std::string p = JsonChecker::child(pointer, "pose");
@@ -89,7 +92,8 @@ Result<PedestrianState> pedestrian_state_from_json(const Json& j, const std::str
     if (auto a = activity_from_name(*state)) {
       s.activity = *a;
     } else {
-      check.add(JsonChecker::child(pointer, "state"), "unknown state '" + *state + "' (one of: " + join_names() + ")");
+      check.add(JsonChecker::child(pointer, "state"),
+                "unknown state '" + *state + "' (one of: " + join_names() + ")");
     }
   }
   if (auto role = check.string(j, pointer, "role", false, 1, 64)) s.role = *role;
@@ -103,9 +107,12 @@ Result<PedestrianState> pedestrian_state_from_json(const Json& j, const std::str
   if (const Json* prox = check.object(j, pointer, "proxemics", false)) {
     const std::string p = JsonChecker::child(pointer, "proxemics");
     check.only_keys(*prox, p, {"intimate_radius", "comfort_radius", "social_radius", "compliance"});
-    s.proxemics.intimate_radius = read_number(check, *prox, p, "intimate_radius", s.proxemics.intimate_radius, false, 0, 100);
-    s.proxemics.comfort_radius = read_number(check, *prox, p, "comfort_radius", s.proxemics.comfort_radius, false, 0, 100);
-    s.proxemics.social_radius = read_number(check, *prox, p, "social_radius", s.proxemics.social_radius, false, 0, 100);
+    s.proxemics.intimate_radius =
+        read_number(check, *prox, p, "intimate_radius", s.proxemics.intimate_radius, false, 0, 100);
+    s.proxemics.comfort_radius =
+        read_number(check, *prox, p, "comfort_radius", s.proxemics.comfort_radius, false, 0, 100);
+    s.proxemics.social_radius =
+        read_number(check, *prox, p, "social_radius", s.proxemics.social_radius, false, 0, 100);
     s.proxemics.compliance = read_number(check, *prox, p, "compliance", s.proxemics.compliance, false, 0, 1);
     if (s.proxemics.intimate_radius > s.proxemics.comfort_radius ||
         s.proxemics.comfort_radius > s.proxemics.social_radius)

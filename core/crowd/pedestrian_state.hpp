@@ -59,7 +59,7 @@ struct Twist2 {
 
 // Where the pedestrian is heading in the semantic world (Table I `intent`).
 struct Intent {
-  std::string target;        // ROI/POI id from world.yaml; empty when none
+  std::string target;         // ROI/POI id from world.yaml; empty when none
   std::int64_t goal_id = -1;  // index of the current goal; -1 when none
   friend bool operator==(const Intent&, const Intent&) = default;
 };
@@ -74,8 +74,8 @@ struct Proxemics {
 };
 
 struct StateMetadata {
-  std::uint64_t seed = 0;          // seed of this agent's random stream
-  std::string bt_node;             // behaviour-tree node running now; empty when none
+  std::uint64_t seed = 0;  // seed of this agent's random stream
+  std::string bt_node;     // behaviour-tree node running now; empty when none
   std::vector<std::string> tags;
   friend bool operator==(const StateMetadata&, const StateMetadata&) = default;
 };

@@ -17,7 +17,8 @@ struct Range {
 
 void check_ranges(JsonChecker& check, const std::string& base, std::initializer_list<Range> ranges) {
   for (const Range& r : ranges) {
-    const bool ok = std::isfinite(r.value) && (r.lo_open ? r.value > r.lo : r.value >= r.lo) && r.value <= r.hi;
+    const bool ok =
+        std::isfinite(r.value) && (r.lo_open ? r.value > r.lo : r.value >= r.lo) && r.value <= r.hi;
     if (!ok)
       check.add(base + r.pointer, "must be a finite number in " + std::string(r.lo_open ? "(" : "[") +
                                       std::to_string(r.lo) + ", " + std::to_string(r.hi) + "]");
@@ -69,8 +70,8 @@ Status validate(const RoleParameters& r, const std::string& p) {
                });
   if (r.speed.min > r.speed.max) check.add(p + "/speed/min", "must not exceed speed.max");
   if (r.speed.max * r.max_speed_factor > kMaxAgentSpeed)
-    check.add(p + "/max_speed_factor", "speed.max × max_speed_factor must not exceed " +
-                                           std::to_string(kMaxAgentSpeed) + " m/s");
+    check.add(p + "/max_speed_factor",
+              "speed.max × max_speed_factor must not exceed " + std::to_string(kMaxAgentSpeed) + " m/s");
   if (!(r.proxemics.intimate_radius <= r.proxemics.comfort_radius &&
         r.proxemics.comfort_radius <= r.proxemics.social_radius))
     check.add(p + "/proxemics", "radii must satisfy intimate_radius <= comfort_radius <= social_radius");
@@ -106,7 +107,8 @@ Json to_json(const RoleParameters& r) {
   };
 }
 
-Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParameters& base, const std::string& p) {
+Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParameters& base,
+                                                 const std::string& p) {
   JsonChecker check;
   RoleParameters r = base;
   if (!j.is_object()) {
@@ -128,9 +130,9 @@ Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParame
   if (const Json* f = check.object(j, p, "forces", false)) {
     const std::string fp = JsonChecker::child(p, "forces");
     check.only_keys(*f, fp,
-                    {"desired_factor", "obstacle_factor", "obstacle_sigma", "social_factor", "group_gaze_factor",
-                     "group_coherence_factor", "group_repulsion_factor", "lambda", "gamma", "n", "n_prime",
-                     "relaxation_time"});
+                    {"desired_factor", "obstacle_factor", "obstacle_sigma", "social_factor",
+                     "group_gaze_factor", "group_coherence_factor", "group_repulsion_factor", "lambda",
+                     "gamma", "n", "n_prime", "relaxation_time"});
     ForceParameters& x = r.forces;
     read(check, *f, fp, "desired_factor", x.desired_factor);
     read(check, *f, fp, "obstacle_factor", x.obstacle_factor);

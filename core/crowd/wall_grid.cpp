@@ -6,7 +6,9 @@
 namespace socsim::crowd {
 namespace {
 
-double orient(Vec2 a, Vec2 b, Vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+double orient(Vec2 a, Vec2 b, Vec2 c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
 
 bool segments_intersect(Vec2 p, Vec2 q, Vec2 a, Vec2 b) {
   const double o1 = orient(p, q, a);
@@ -125,9 +127,9 @@ std::span<const std::uint32_t> WallGrid::near(double x, double y) const {
   const double fx = (x - origin_x_) / cell_;
   const double fy = (y - origin_y_) / cell_;
   if (!(fx >= 0.0 && fy >= 0.0 && fx < static_cast<double>(nx_) && fy < static_cast<double>(ny_))) return {};
-  const auto c = static_cast<std::size_t>(static_cast<std::int64_t>(fy) * nx_ + static_cast<std::int64_t>(fx));
+  const auto c =
+      static_cast<std::size_t>(static_cast<std::int64_t>(fy) * nx_ + static_cast<std::int64_t>(fx));
   return {items_.data() + start_[c], items_.data() + start_[c + 1]};
 }
 
 }  // namespace socsim::crowd
-

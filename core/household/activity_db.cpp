@@ -11,8 +11,8 @@ namespace socsim::household {
 namespace {
 
 bool is_storage(std::string_view r) {
-  for (std::string_view s : {"ShelvingUnit", "Dresser", "Fridge", "TowelHolder", "HandTowelHolder", "ToiletPaperHanger",
-                             "LaundryHamper", "Sink", "GarbageCan", "StoveBurner"})
+  for (std::string_view s : {"ShelvingUnit", "Dresser", "Fridge", "TowelHolder", "HandTowelHolder",
+                             "ToiletPaperHanger", "LaundryHamper", "Sink", "GarbageCan", "StoveBurner"})
     if (r == s) return true;
   return false;
 }
@@ -24,7 +24,8 @@ const ActivitySpec* curated_for(const HouseholdKnowledge& k, const std::string& 
     std::set<std::string> w;
     std::string cur;
     for (char c : std::string(s) + " ") {
-      if (std::isalpha(static_cast<unsigned char>(c))) cur += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (std::isalpha(static_cast<unsigned char>(c)))
+        cur += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       else {
         if (cur.size() > 3) w.insert(cur);
         cur.clear();
@@ -40,7 +41,9 @@ const ActivitySpec* curated_for(const HouseholdKnowledge& k, const std::string& 
     const auto w = words(a.name);
     std::size_t common = 0;
     for (const auto& x : target) common += w.count(x);
-    const double score = common == 0 ? 0.0 : static_cast<double>(common) / static_cast<double>(target.size() + w.size() - common);
+    const double score =
+        common == 0 ? 0.0
+                    : static_cast<double>(common) / static_cast<double>(target.size() + w.size() - common);
     if (score > best_score) {
       best_score = score;
       best = &a;
@@ -63,8 +66,9 @@ std::vector<std::string> primaries_of(const Schedule& schedule) {
   return {s.begin(), s.end()};
 }
 
-Result<ActivityDatabase> OfflineActivityDatabaseGenerator::generate(const Persona& persona, std::span<const std::string> primaries,
-                                                                     std::uint64_t seed) {
+Result<ActivityDatabase> OfflineActivityDatabaseGenerator::generate(const Persona& persona,
+                                                                    std::span<const std::string> primaries,
+                                                                    std::uint64_t seed) {
   const PersonaTraits traits = infer_traits(persona);
   ActivityDatabase db;
   db.persona_id = persona_id(persona);
@@ -126,7 +130,8 @@ Result<ActivityDatabase> OfflineActivityDatabaseGenerator::generate(const Person
     // Renormalise after dropping nothing (rooms with p = 0 are simply absent).
     db.activities.push_back(std::move(prior));
   }
-  std::sort(db.activities.begin(), db.activities.end(), [](const auto& a, const auto& b) { return a.activity < b.activity; });
+  std::sort(db.activities.begin(), db.activities.end(),
+            [](const auto& a, const auto& b) { return a.activity < b.activity; });
   if (auto v = validate_activity_db(db, knowledge_); !v) return tl::unexpected(v.error());
   return db;
 }
@@ -162,8 +167,10 @@ Status validate_impl(const ActivityDatabase& db, const HouseholdKnowledge& k, bo
           const auto& [r, p] = o.receptacles[n];
           const std::string pr = po + "/receptacles/" + std::to_string(n);
           const auto* spec = k.receptacle(r);
-          if (!spec) check.add(pr, "unknown receptacle type '" + r + "'");
-          else if (!spec->allowed_in(l.room)) check.add(pr, "'" + r + "' does not stand in a " + std::string(room_type_name(l.room)));
+          if (!spec)
+            check.add(pr, "unknown receptacle type '" + r + "'");
+          else if (!spec->allowed_in(l.room))
+            check.add(pr, "'" + r + "' does not stand in a " + std::string(room_type_name(l.room)));
           if (!(p >= 0.0 && p <= 1.0)) check.add(pr, "p(r|o,a,l) must be in [0, 1]");
           rs += p;
         }
@@ -171,14 +178,18 @@ Status validate_impl(const ActivityDatabase& db, const HouseholdKnowledge& k, bo
           check.add(po + "/receptacles", "p(r|o,a,l) must sum to 1 (sums to " + std::to_string(rs) + ")");
       }
     }
-    if (std::abs(sum - 1.0) > 1e-6) check.add(pa + "/locations", "p(l|a) must sum to 1 (sums to " + std::to_string(sum) + ")");
+    if (std::abs(sum - 1.0) > 1e-6)
+      check.add(pa + "/locations", "p(l|a) must sum to 1 (sums to " + std::to_string(sum) + ")");
   }
-  if (!check.ok()) return tl::unexpected(check.error("invalid activity database for '" + db.persona_id + "'"));
+  if (!check.ok())
+    return tl::unexpected(check.error("invalid activity database for '" + db.persona_id + "'"));
   return {};
 }
 }  // namespace
 
-Status validate_activity_db(const ActivityDatabase& db, const HouseholdKnowledge& k) { return validate_impl(db, k, true); }
+Status validate_activity_db(const ActivityDatabase& db, const HouseholdKnowledge& k) {
+  return validate_impl(db, k, true);
+}
 
 Json to_json(const ActivityDatabase& db) {
   Json acts = Json::array();
@@ -214,8 +225,10 @@ Result<ActivityDatabase> activity_db_from_json(const Json& json, const Household
           const std::string pl = pa + "/locations/" + std::to_string(j);
           LocationPrior lp;
           if (auto r = check.string(l, pl, "room", true, 1, 20)) {
-            if (auto rt = parse_room_type(*r)) lp.room = *rt;
-            else check.add(pl + "/room", "must be Bedroom, Bathroom, LivingRoom or Kitchen");
+            if (auto rt = parse_room_type(*r))
+              lp.room = *rt;
+            else
+              check.add(pl + "/room", "must be Bedroom, Bathroom, LivingRoom or Kitchen");
           }
           if (auto p = check.number(l, pl, "p", true, 0.0, 1.0)) lp.p = *p;
           if (const Json* objs = check.array(l, pl, "objects", true, 200))
@@ -227,8 +240,10 @@ Result<ActivityDatabase> activity_db_from_json(const Json& json, const Household
               if (auto p = check.number(o, po, "p", true, 0.0, 1.0)) op.p = *p;
               if (const Json* rec = check.object(o, po, "receptacles", true))
                 for (const auto& [r, p] : rec->items()) {
-                  if (!p.is_number()) check.add(po + "/receptacles/" + json_pointer_token(r), "must be a number");
-                  else op.receptacles.emplace_back(r, p.get<double>());
+                  if (!p.is_number())
+                    check.add(po + "/receptacles/" + json_pointer_token(r), "must be a number");
+                  else
+                    op.receptacles.emplace_back(r, p.get<double>());
                 }
               lp.objects.push_back(std::move(op));
             }
@@ -238,7 +253,8 @@ Result<ActivityDatabase> activity_db_from_json(const Json& json, const Household
     }
   if (!check.ok()) return tl::unexpected(check.error("invalid activity database"));
   if (auto v = validate_impl(db, k, false); !v) return tl::unexpected(v.error());  // pointers in input order
-  std::sort(db.activities.begin(), db.activities.end(), [](const auto& a, const auto& b) { return a.activity < b.activity; });
+  std::sort(db.activities.begin(), db.activities.end(),
+            [](const auto& a, const auto& b) { return a.activity < b.activity; });
   return db;
 }
 

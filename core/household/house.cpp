@@ -18,7 +18,9 @@ struct Rect {
   [[nodiscard]] double d() const { return z1 - z0; }
 };
 
-double round_cm(double v) { return std::round(v * 100.0) / 100.0; }
+double round_cm(double v) {
+  return std::round(v * 100.0) / 100.0;
+}
 
 std::string fmt2(double v) {
   char buf[32];
@@ -29,7 +31,9 @@ std::string fmt2(double v) {
 // Shared edge of two rectangles as a segment, when they touch along ≥ `min_len` metres.
 std::optional<std::pair<FloorPoint, FloorPoint>> shared_edge(const Rect& a, const Rect& b, double min_len) {
   constexpr double eps = 1e-6;
-  auto overlap = [&](double a0, double a1, double b0, double b1) { return std::pair{std::max(a0, b0), std::min(a1, b1)}; };
+  auto overlap = [&](double a0, double a1, double b0, double b1) {
+    return std::pair{std::max(a0, b0), std::min(a1, b1)};
+  };
   if (std::abs(a.x1 - b.x0) < eps || std::abs(b.x1 - a.x0) < eps) {
     const double x = std::abs(a.x1 - b.x0) < eps ? a.x1 : a.x0;
     auto [lo, hi] = overlap(a.z0, a.z1, b.z0, b.z1);
@@ -43,7 +47,8 @@ std::optional<std::pair<FloorPoint, FloorPoint>> shared_edge(const Rect& a, cons
   return std::nullopt;
 }
 
-void guillotine(const std::vector<int>& ids, const std::vector<double>& area, Rect r, std::vector<Rect>& out, Rng& rng) {
+void guillotine(const std::vector<int>& ids, const std::vector<double>& area, Rect r, std::vector<Rect>& out,
+                Rng& rng) {
   if (ids.size() == 1) {
     out[static_cast<std::size_t>(ids[0])] = r;
     return;
@@ -76,8 +81,13 @@ void guillotine(const std::vector<int>& ids, const std::vector<double>& area, Re
 }
 
 std::vector<RoomType> room_program(int n, std::optional<int> bedrooms, Rng& rng) {
-  int bed = n <= 4 ? 1 : n == 5 ? 2 : n == 6 ? 2 + static_cast<int>(rng.chance(0.4)) : n == 7 ? 3 : n == 8 ? 3 + static_cast<int>(rng.chance(0.4))
-          : n == 9 ? 4 : 4 + static_cast<int>(rng.chance(0.4));
+  int bed = n <= 4   ? 1
+            : n == 5 ? 2
+            : n == 6 ? 2 + static_cast<int>(rng.chance(0.4))
+            : n == 7 ? 3
+            : n == 8 ? 3 + static_cast<int>(rng.chance(0.4))
+            : n == 9 ? 4
+                     : 4 + static_cast<int>(rng.chance(0.4));
   int bath = n < 3 ? 0 : n < 6 ? 1 : n < 10 ? 2 : 2 + static_cast<int>(rng.chance(0.4));
   const int kitchen = n >= 2 ? 1 : 0;
   if (bedrooms) bed = *bedrooms;
@@ -100,7 +110,9 @@ std::string room_number(const Room& r) {
 struct Placed {
   double x0, z0, x1, z1;
 };
-bool overlaps(const Placed& a, const Placed& b) { return a.x0 < b.x1 && b.x0 < a.x1 && a.z0 < b.z1 && b.z0 < a.z1; }
+bool overlaps(const Placed& a, const Placed& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.z0 < b.z1 && b.z0 < a.z1;
+}
 
 }  // namespace
 
@@ -117,7 +129,8 @@ double polygon_area(const std::vector<FloorPoint>& p) {
 bool point_in_polygon(const std::vector<FloorPoint>& p, double x, double z) {
   bool inside = false;
   for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
-    if ((p[i].z > z) != (p[j].z > z) && x < (p[j].x - p[i].x) * (z - p[i].z) / (p[j].z - p[i].z) + p[i].x) inside = !inside;
+    if ((p[i].z > z) != (p[j].z > z) && x < (p[j].x - p[i].x) * (z - p[i].z) / (p[j].z - p[i].z) + p[i].x)
+      inside = !inside;
   }
   return inside;
 }
@@ -161,7 +174,8 @@ std::vector<std::pair<int, int>> House::room_links() const {
     if (!walls[i].empty) continue;
     for (std::size_t j = i + 1; j < walls.size(); ++j) {
       if (!walls[j].empty || walls[j].room_id == walls[i].room_id) continue;
-      const bool same = (walls[i].a == walls[j].a && walls[i].b == walls[j].b) || (walls[i].a == walls[j].b && walls[i].b == walls[j].a);
+      const bool same = (walls[i].a == walls[j].a && walls[i].b == walls[j].b) ||
+                        (walls[i].a == walls[j].b && walls[i].b == walls[j].a);
       const int a = room_index(walls[i].room_id), b = room_index(walls[j].room_id);
       if (same && a >= 0 && b >= 0) links.emplace_back(std::min(a, b), std::max(a, b));
     }
@@ -197,7 +211,8 @@ bool House::connected() const {
 
 Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& k) {
   if (req.rooms < 1 || req.rooms > 10)
-    return fail(ErrorCode::kValidation, "a house has 1 to 10 rooms", {FieldError{"/rooms", "must be between 1 and 10", {}, 0, 0}});
+    return fail(ErrorCode::kValidation, "a house has 1 to 10 rooms",
+                {FieldError{"/rooms", "must be between 1 and 10", {}, 0, 0}});
   if (req.bedrooms && (*req.bedrooms < 1 || *req.bedrooms > req.rooms - (req.rooms >= 2 ? 1 : 0)))
     return fail(ErrorCode::kValidation, "bedrooms do not fit the rooms",
                 {FieldError{"/bedrooms", "must be between 1 and rooms − 1 (the kitchen)", {}, 0, 0}});
@@ -232,7 +247,8 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
     const double width = round_cm(std::sqrt(total * aspect)), depth = round_cm(total / width);
     guillotine(order, area, {0, 0, width, depth}, rects, rng);
     ok = true;
-    for (const auto& r : rects) ok = ok && std::min(r.w(), r.d()) >= 1.9 && std::max(r.w(), r.d()) / std::min(r.w(), r.d()) <= 3.2;
+    for (const auto& r : rects)
+      ok = ok && std::min(r.w(), r.d()) >= 1.9 && std::max(r.w(), r.d()) / std::min(r.w(), r.d()) <= 3.2;
     adj.assign(n, {});
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = i + 1; j < n; ++j)
@@ -253,7 +269,9 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
     }
     ok = ok && c == n;
   }
-  if (!ok) return fail(ErrorCode::kInternal, "could not lay out " + std::to_string(n) + " rooms (seed " + std::to_string(req.seed) + ")");
+  if (!ok)
+    return fail(ErrorCode::kInternal,
+                "could not lay out " + std::to_string(n) + " rooms (seed " + std::to_string(req.seed) + ")");
 
   House h;
   h.id = "house-" + std::to_string(req.seed) + "-" + std::to_string(req.rooms);
@@ -269,7 +287,8 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
 
   // Walls: each room edge split wherever another room's corner lies on it.
   constexpr double kHeight = 2.6;
-  std::map<std::pair<std::size_t, int>, std::vector<std::pair<FloorPoint, FloorPoint>>> segments;  // (room, edge) → segments
+  std::map<std::pair<std::size_t, int>, std::vector<std::pair<FloorPoint, FloorPoint>>>
+      segments;  // (room, edge) → segments
   for (std::size_t i = 0; i < n; ++i) {
     const auto& f = h.rooms[i].floor;
     for (int e = 0; e < 4; ++e) {
@@ -278,8 +297,10 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
       std::set<double> cuts = {vertical ? a.z : a.x, vertical ? b.z : b.x};
       for (std::size_t j = 0; j < n; ++j)
         for (const auto& p : h.rooms[j].floor) {
-          const double along = vertical ? p.z : p.x, across = vertical ? p.x : p.z, line = vertical ? a.x : a.z;
-          if (std::abs(across - line) < 1e-9 && along > std::min(vertical ? a.z : a.x, vertical ? b.z : b.x) &&
+          const double along = vertical ? p.z : p.x, across = vertical ? p.x : p.z,
+                       line = vertical ? a.x : a.z;
+          if (std::abs(across - line) < 1e-9 &&
+              along > std::min(vertical ? a.z : a.x, vertical ? b.z : b.x) &&
               along < std::max(vertical ? a.z : a.x, vertical ? b.z : b.x))
             cuts.insert(along);
         }
@@ -306,7 +327,8 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
   for (const auto& [key, segs] : segments) {
     const Room& room = h.rooms[key.first];
     for (const auto& [p0, p1] : segs) {
-      h.walls.push_back({wall_id(room_number(room), p0, p1), room.id, p0, p1, kHeight, false, Json::object()});
+      h.walls.push_back(
+          {wall_id(room_number(room), p0, p1), room.id, p0, p1, kHeight, false, Json::object()});
       const FloorPoint mid{(p0.x + p1.x) / 2, (p0.z + p1.z) / 2};
       bool shared = false;
       for (std::size_t j = 0; j < n && !shared; ++j) {
@@ -314,7 +336,8 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
         const auto& f = h.rooms[j].floor;
         for (std::size_t e = 0; e < 4 && !shared; ++e) shared = on_segment(mid, f[e], f[(e + 1) % 4]);
       }
-      if (!shared) exterior.push_back({wall_id("exterior", p0, p1), room.id, p1, p0, kHeight, false, Json::object()});
+      if (!shared)
+        exterior.push_back({wall_id("exterior", p0, p1), room.id, p1, p0, kHeight, false, Json::object()});
     }
   }
   h.walls.insert(h.walls.end(), exterior.begin(), exterior.end());
@@ -336,7 +359,9 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
     } else if (types[i] == RoomType::kKitchen && types[hub] != RoomType::kKitchen) {
       hub = i;
     }
-  auto is_private = [&](std::size_t r) { return types[r] == RoomType::kBedroom || types[r] == RoomType::kBathroom; };
+  auto is_private = [&](std::size_t r) {
+    return types[r] == RoomType::kBedroom || types[r] == RoomType::kBathroom;
+  };
   using Edge = std::tuple<double, std::size_t, std::size_t>;
   std::priority_queue<Edge, std::vector<Edge>, std::greater<>> frontier;
   std::vector<bool> in(n, false);
@@ -419,7 +444,8 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
           if (w.id != *wid || w.room_id != room.id) continue;
           const double len = std::hypot(w.b.x - w.a.x, w.b.z - w.a.z);
           const double ux = (w.b.x - w.a.x) / len, uz = (w.b.z - w.a.z) / len;
-          const double cx = w.a.x + ux * (d.hole_min.x + d.hole_max.x) / 2, cz = w.a.z + uz * (d.hole_min.x + d.hole_max.x) / 2;
+          const double cx = w.a.x + ux * (d.hole_min.x + d.hole_max.x) / 2,
+                       cz = w.a.z + uz * (d.hole_min.x + d.hole_max.x) / 2;
           blocked.push_back({cx - 0.9, cz - 0.9, cx + 0.9, cz + 0.9});  // keep the doorway and its swing free
         }
       }
@@ -450,7 +476,9 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
               cx = side == 1 ? q.x0 + sx / 2 + 0.02 : q.x1 - sx / 2 - 0.02;
             }
           }
-          if (!(cx - sx / 2 >= q.x0 - 1e-9 && cx + sx / 2 <= q.x1 + 1e-9 && cz - sz / 2 >= q.z0 - 1e-9 && cz + sz / 2 <= q.z1 + 1e-9)) continue;
+          if (!(cx - sx / 2 >= q.x0 - 1e-9 && cx + sx / 2 <= q.x1 + 1e-9 && cz - sz / 2 >= q.z0 - 1e-9 &&
+                cz + sz / 2 <= q.z1 + 1e-9))
+            continue;
           const Placed box{cx - sx / 2, cz - sz / 2, cx + sx / 2, cz + sz / 2};
           // Keep 0.5 m of free floor around furniture so every piece stays reachable.
           const Placed halo{box.x0 - 0.25, box.z0 - 0.25, box.x1 + 0.25, box.z1 + 0.25};
@@ -490,11 +518,13 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
       Entity o;
       o.kind = EntityKind::kObject;
       o.type = type;
-      o.id = type + "|surface|" + room_number(h.rooms[static_cast<std::size_t>(rec.room)]) + "|" + std::to_string(per_room_counter[rec.room]++);
+      o.id = type + "|surface|" + room_number(h.rooms[static_cast<std::size_t>(rec.room)]) + "|" +
+             std::to_string(per_room_counter[rec.room]++);
       o.asset_id = "socsim/" + type;
       o.room = rec.room;
       o.parent = static_cast<int>(r);
-      o.position = {round_cm(rec.position.x + rng.uniform(-0.35, 0.35) * rec.size_x), round_cm(spec->height + 0.05),
+      o.position = {round_cm(rec.position.x + rng.uniform(-0.35, 0.35) * rec.size_x),
+                    round_cm(spec->height + 0.05),
                     round_cm(rec.position.z + rng.uniform(-0.35, 0.35) * rec.size_z)};
       o.size_x = o.size_z = 0.15;
       h.entities.push_back(std::move(o));

@@ -36,7 +36,7 @@ struct Wall {
   std::string room_id;  // "exterior" faces have the outside as their room
   FloorPoint a, b;
   double height = 2.5;
-  bool empty = false;   // an open connection between rooms
+  bool empty = false;  // an open connection between rooms
   Json extra = Json::object();
   friend bool operator==(const Wall&, const Wall&) = default;
 };
@@ -56,11 +56,11 @@ enum class EntityKind : std::uint8_t { kReceptacle, kObject, kFixture };
 // Anything placed in the house: receptacles (furniture), movable objects, fixtures.
 struct Entity {
   std::string id;
-  std::string type;      // AI2-THOR object type
+  std::string type;  // AI2-THOR object type
   std::string asset_id;
   EntityKind kind = EntityKind::kFixture;
-  int room = -1;         // index into House::rooms
-  int parent = -1;       // index into House::entities (the receptacle it rests on), -1 on the floor
+  int room = -1;    // index into House::rooms
+  int parent = -1;  // index into House::entities (the receptacle it rests on), -1 on the floor
   Vec3 position;
   Vec3 rotation;
   double size_x = 0.3, size_z = 0.3;  // footprint (receptacles), metres
@@ -92,8 +92,9 @@ struct House {
   [[nodiscard]] std::vector<std::pair<int, int>> room_links() const;
 
   friend bool operator==(const House& a, const House& b) {
-    return a.id == b.id && a.rooms == b.rooms && a.walls == b.walls && a.doors == b.doors && a.entities == b.entities &&
-           a.windows == b.windows && a.metadata == b.metadata && a.procedural == b.procedural;
+    return a.id == b.id && a.rooms == b.rooms && a.walls == b.walls && a.doors == b.doors &&
+           a.entities == b.entities && a.windows == b.windows && a.metadata == b.metadata &&
+           a.procedural == b.procedural;
   }
 };
 
@@ -101,8 +102,8 @@ double polygon_area(const std::vector<FloorPoint>& polygon);
 bool point_in_polygon(const std::vector<FloorPoint>& polygon, double x, double z);
 
 struct HouseRequest {
-  int rooms = 4;                 // 1 … 10
-  std::optional<int> bedrooms;   // default: from the room count
+  int rooms = 4;                // 1 … 10
+  std::optional<int> bedrooms;  // default: from the room count
   std::uint64_t seed = 0;
 };
 

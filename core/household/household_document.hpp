@@ -16,15 +16,15 @@
 namespace socsim::household {
 
 struct HouseholdRequest {
-  int rooms = 0;                            // procedural house of 1 … 10 rooms, or
-  std::optional<Json> house;                // a ProcTHOR house (exactly one of the two)
-  int resident_count = 0;                   // 0: 1 … min(4, bedrooms) at random
-  std::vector<std::string> resident_ids;    // or these personas (built-in or stored), ≤ bedrooms
-  int days = 5;                             // 1 … 28
+  int rooms = 0;                          // procedural house of 1 … 10 rooms, or
+  std::optional<Json> house;              // a ProcTHOR house (exactly one of the two)
+  int resident_count = 0;                 // 0: 1 … min(4, bedrooms) at random
+  std::vector<std::string> resident_ids;  // or these personas (built-in or stored), ≤ bedrooms
+  int days = 5;                           // 1 … 28
   Weekday start_weekday = Weekday::kWednesday;
   std::uint64_t seed = 0;
-  std::string generator = "offline";        // offline | llm
-  std::optional<std::string> model;         // llm only
+  std::string generator = "offline";  // offline | llm
+  std::optional<std::string> model;   // llm only
 };
 
 // Reads {rooms | house, residents: count | [persona ids], days, start_weekday, seed, generator, model}.
@@ -51,12 +51,15 @@ using HouseholdProgress = std::function<void(double fraction, const std::string&
 
 // Chooses the residents (by id from `personas`, else at random from the built-in ones by the
 // number of bedrooms), generates their profiles and checks that the scene configures.
-Result<HouseholdDocument> generate_household(const HouseholdRequest& request, const HouseholdKnowledge& knowledge,
-                                             std::span<const Persona> personas, const ProfileGenerators& generators,
+Result<HouseholdDocument> generate_household(const HouseholdRequest& request,
+                                             const HouseholdKnowledge& knowledge,
+                                             std::span<const Persona> personas,
+                                             const ProfileGenerators& generators,
                                              const HouseholdProgress& progress, const std::string& id);
 
 // Rebuilds the house and configures the scene (same document → identical events).
-Result<DynamicScene> instantiate_household(const HouseholdDocument& document, const HouseholdKnowledge& knowledge);
+Result<DynamicScene> instantiate_household(const HouseholdDocument& document,
+                                           const HouseholdKnowledge& knowledge);
 
 Json to_json(const HouseholdDocument& document);
 Result<HouseholdDocument> household_document_from_json(const Json& json, const HouseholdKnowledge& knowledge);
@@ -80,9 +83,10 @@ struct HouseholdRow {
   std::optional<std::string> job_id;
   Json summary;
 };
-Status store_household(store::Store& store, const HouseholdDocument& document, const Json& summary, const std::string& author,
-                       const std::optional<std::string>& job_id);
+Status store_household(store::Store& store, const HouseholdDocument& document, const Json& summary,
+                       const std::string& author, const std::optional<std::string>& job_id);
 Result<Json> load_household_document(store::Store& store, const std::string& id);  // kNotFound when unknown
-Result<std::vector<HouseholdRow>> list_households(store::Store& store, std::size_t limit, const std::optional<std::string>& after_id);
+Result<std::vector<HouseholdRow>> list_households(store::Store& store, std::size_t limit,
+                                                  const std::optional<std::string>& after_id);
 
 }  // namespace socsim::household

@@ -44,15 +44,18 @@ constexpr std::array<std::pair<ActivityRole, std::string_view>, 34> kRoleNames =
     {ActivityRole::kLeaveHome, "leave_home"},
 }};
 
-Result<std::vector<std::pair<std::string, double>>> weight_map(const Json& obj, const std::string& ptr, JsonChecker& check) {
+Result<std::vector<std::pair<std::string, double>>> weight_map(const Json& obj, const std::string& ptr,
+                                                               JsonChecker& check) {
   std::vector<std::pair<std::string, double>> out;
   if (!obj.is_object()) {
     check.add(ptr, "must be an object of weights");
     return out;
   }
   for (const auto& [k, v] : obj.items()) {
-    if (!v.is_number() || v.get<double>() < 0.0) check.add(JsonChecker::child(ptr, k), "must be a non-negative number");
-    else if (v.get<double>() > 0.0) out.emplace_back(k, v.get<double>());
+    if (!v.is_number() || v.get<double>() < 0.0)
+      check.add(JsonChecker::child(ptr, k), "must be a non-negative number");
+    else if (v.get<double>() > 0.0)
+      out.emplace_back(k, v.get<double>());
   }
   return out;
 }
@@ -102,7 +105,9 @@ bool ActivitySpec::in_window(int minute_of_day) const {
   return false;
 }
 
-bool ReceptacleSpec::allowed_in(RoomType room) const { return std::find(rooms.begin(), rooms.end(), room) != rooms.end(); }
+bool ReceptacleSpec::allowed_in(RoomType room) const {
+  return std::find(rooms.begin(), rooms.end(), room) != rooms.end();
+}
 
 const ActivitySpec* HouseholdKnowledge::activity(std::string_view primary_name) const {
   const int i = activity_index(primary_name);
@@ -135,9 +140,12 @@ void HouseholdKnowledge::index() {
   activity_by_name_.clear();
   receptacle_by_type_.clear();
   persona_by_id_.clear();
-  for (std::size_t i = 0; i < activities.size(); ++i) activity_by_name_[activities[i].name] = static_cast<int>(i);
-  for (std::size_t i = 0; i < receptacles.size(); ++i) receptacle_by_type_[receptacles[i].type] = static_cast<int>(i);
-  for (std::size_t i = 0; i < personas.size(); ++i) persona_by_id_.emplace(persona_id(personas[i]), static_cast<int>(i));
+  for (std::size_t i = 0; i < activities.size(); ++i)
+    activity_by_name_[activities[i].name] = static_cast<int>(i);
+  for (std::size_t i = 0; i < receptacles.size(); ++i)
+    receptacle_by_type_[receptacles[i].type] = static_cast<int>(i);
+  for (std::size_t i = 0; i < personas.size(); ++i)
+    persona_by_id_.emplace(persona_id(personas[i]), static_cast<int>(i));
   std::sort(movable_types.begin(), movable_types.end());
   std::sort(fixture_types.begin(), fixture_types.end());
 }
@@ -146,16 +154,20 @@ Result<ActivitySpec> activity_from_json(const std::string& name, const std::stri
   JsonChecker check;
   ActivitySpec a;
   a.name = name;
-  if (auto r = parse_activity_role(role)) a.role = *r;
-  else check.add("/role", "unknown activity role '" + role + "'");
+  if (auto r = parse_activity_role(role))
+    a.role = *r;
+  else
+    check.add("/role", "unknown activity role '" + role + "'");
   if (const Json* syn = check.array(body, "", "synonyms", true))
     for (std::size_t i = 0; i < syn->size(); ++i) {
-      if ((*syn)[i].is_string()) a.synonyms.push_back((*syn)[i].get<std::string>());
-      else check.add("/synonyms/" + std::to_string(i), "must be a string");
+      if ((*syn)[i].is_string())
+        a.synonyms.push_back((*syn)[i].get<std::string>());
+      else
+        check.add("/synonyms/" + std::to_string(i), "must be a string");
     }
   if (const Json* d = check.array(body, "", "duration", true)) {
-    if (d->size() != 2 || !(*d)[0].is_number_integer() || !(*d)[1].is_number_integer() || (*d)[0].get<int>() < 1 ||
-        (*d)[1].get<int>() < (*d)[0].get<int>())
+    if (d->size() != 2 || !(*d)[0].is_number_integer() || !(*d)[1].is_number_integer() ||
+        (*d)[0].get<int>() < 1 || (*d)[1].get<int>() < (*d)[0].get<int>())
       check.add("/duration", "must be [min, max] minutes with 1 ≤ min ≤ max");
     else {
       a.min_minutes = (*d)[0].get<int>();
@@ -166,7 +178,8 @@ Result<ActivitySpec> activity_from_json(const std::string& name, const std::stri
     for (std::size_t i = 0; i < w->size(); ++i) {
       const Json& win = (*w)[i];
       if (!win.is_array() || win.size() != 2 || !win[0].is_number() || !win[1].is_number() ||
-          win[1].get<double>() <= win[0].get<double>() || win[0].get<double>() < 0 || win[1].get<double>() > 48)
+          win[1].get<double>() <= win[0].get<double>() || win[0].get<double>() < 0 ||
+          win[1].get<double>() > 48)
         check.add("/windows/" + std::to_string(i), "must be [start hour, end hour] with start < end ≤ 48");
       else
         a.windows.emplace_back(win[0].get<double>(), win[1].get<double>());
@@ -182,9 +195,12 @@ Result<ActivitySpec> activity_from_json(const std::string& name, const std::stri
     if (const Json* rooms = check.object(*eff, "/effects", "rooms", true)) {
       for (const auto& [room, w] : rooms->items()) {
         auto rt = parse_room_type(room);
-        if (!rt) check.add("/effects/rooms/" + json_pointer_token(room), "unknown room type");
-        else if (!w.is_number() || w.get<double>() < 0) check.add("/effects/rooms/" + json_pointer_token(room), "must be ≥ 0");
-        else a.effects.rooms[index_of(*rt)] = w.get<double>();
+        if (!rt)
+          check.add("/effects/rooms/" + json_pointer_token(room), "unknown room type");
+        else if (!w.is_number() || w.get<double>() < 0)
+          check.add("/effects/rooms/" + json_pointer_token(room), "must be ≥ 0");
+        else
+          a.effects.rooms[index_of(*rt)] = w.get<double>();
       }
     }
     if (const Json* objs = check.array(*eff, "/effects", "objects", true))
@@ -197,7 +213,8 @@ Result<ActivitySpec> activity_from_json(const std::string& name, const std::stri
         if (const Json* r = check.object(o, ptr, "receptacles", true)) {
           auto m = weight_map(*r, ptr + "/receptacles", check);
           if (m) e.receptacles = std::move(*m);
-          if (e.receptacles.empty()) check.add(ptr + "/receptacles", "must name at least one receptacle with weight > 0");
+          if (e.receptacles.empty())
+            check.add(ptr + "/receptacles", "must name at least one receptacle with weight > 0");
         }
         a.effects.objects.push_back(std::move(e));
       }
@@ -209,71 +226,83 @@ Result<ActivitySpec> activity_from_json(const std::string& name, const std::stri
 Result<HouseholdKnowledge> load_household_knowledge(store::Store& store) {
   return store.read([](store::Database& db) -> Result<HouseholdKnowledge> {
     HouseholdKnowledge k;
-    auto s = for_rows(db, "SELECT id, body FROM household_personas ORDER BY builtin DESC, rowid", [&](store::Statement& st) -> Status {
-      auto body = parse_body(st.text(1), "household_personas/" + st.text(0));
-      if (!body) return tl::unexpected(body.error());
-      auto p = persona_from_json(*body);
-      if (!p) return fail(ErrorCode::kStore, "stored persona '" + st.text(0) + "' is invalid: " + p.error().message());
-      k.personas.push_back(std::move(*p));
-      return {};
-    });
+    auto s = for_rows(db, "SELECT id, body FROM household_personas ORDER BY builtin DESC, rowid",
+                      [&](store::Statement& st) -> Status {
+                        auto body = parse_body(st.text(1), "household_personas/" + st.text(0));
+                        if (!body) return tl::unexpected(body.error());
+                        auto p = persona_from_json(*body);
+                        if (!p)
+                          return fail(ErrorCode::kStore, "stored persona '" + st.text(0) +
+                                                             "' is invalid: " + p.error().message());
+                        k.personas.push_back(std::move(*p));
+                        return {};
+                      });
     if (!s) return tl::unexpected(s.error());
-    s = for_rows(db, "SELECT name, role, body FROM household_activities ORDER BY name", [&](store::Statement& st) -> Status {
-      auto body = parse_body(st.text(2), "household_activities/" + st.text(0));
-      if (!body) return tl::unexpected(body.error());
-      auto a = activity_from_json(st.text(0), st.text(1), *body);
-      if (!a) return fail(ErrorCode::kStore, a.error().message());
-      k.activities.push_back(std::move(*a));
-      return {};
-    });
+    s = for_rows(db, "SELECT name, role, body FROM household_activities ORDER BY name",
+                 [&](store::Statement& st) -> Status {
+                   auto body = parse_body(st.text(2), "household_activities/" + st.text(0));
+                   if (!body) return tl::unexpected(body.error());
+                   auto a = activity_from_json(st.text(0), st.text(1), *body);
+                   if (!a) return fail(ErrorCode::kStore, a.error().message());
+                   k.activities.push_back(std::move(*a));
+                   return {};
+                 });
     if (!s) return tl::unexpected(s.error());
-    s = for_rows(db, "SELECT type, kind FROM household_object_types ORDER BY type", [&](store::Statement& st) -> Status {
-      (st.text(1) == "movable" ? k.movable_types : k.fixture_types).push_back(st.text(0));
-      return {};
-    });
+    s = for_rows(db, "SELECT type, kind FROM household_object_types ORDER BY type",
+                 [&](store::Statement& st) -> Status {
+                   (st.text(1) == "movable" ? k.movable_types : k.fixture_types).push_back(st.text(0));
+                   return {};
+                 });
     if (!s) return tl::unexpected(s.error());
-    s = for_rows(db, "SELECT type, body FROM household_receptacle_types ORDER BY type", [&](store::Statement& st) -> Status {
-      auto body = parse_body(st.text(1), "household_receptacle_types/" + st.text(0));
-      if (!body) return tl::unexpected(body.error());
-      ReceptacleSpec r;
-      r.type = st.text(0);
-      const Json& b = *body;
-      try {
-        for (const auto& room : b.at("rooms"))
-          if (auto rt = parse_room_type(room.get<std::string>())) r.rooms.push_back(*rt);
-        r.size_x = b.at("size").at(0).get<double>();
-        r.size_z = b.at("size").at(1).get<double>();
-        r.height = b.at("height").get<double>();
-        r.middle = b.at("placement").get<std::string>() == "middle";
-        r.mean_objects = b.at("mean_objects").get<double>();
-        for (const auto& [obj, w] : b.at("contents").items()) r.contents.emplace_back(obj, w.get<double>());
-      } catch (const Json::exception& e) {
-        return fail(ErrorCode::kStore, "receptacle type '" + r.type + "' has a malformed body: " + e.what());
-      }
-      k.receptacles.push_back(std::move(r));
-      return {};
-    });
+    s = for_rows(db, "SELECT type, body FROM household_receptacle_types ORDER BY type",
+                 [&](store::Statement& st) -> Status {
+                   auto body = parse_body(st.text(1), "household_receptacle_types/" + st.text(0));
+                   if (!body) return tl::unexpected(body.error());
+                   ReceptacleSpec r;
+                   r.type = st.text(0);
+                   const Json& b = *body;
+                   try {
+                     for (const auto& room : b.at("rooms"))
+                       if (auto rt = parse_room_type(room.get<std::string>())) r.rooms.push_back(*rt);
+                     r.size_x = b.at("size").at(0).get<double>();
+                     r.size_z = b.at("size").at(1).get<double>();
+                     r.height = b.at("height").get<double>();
+                     r.middle = b.at("placement").get<std::string>() == "middle";
+                     r.mean_objects = b.at("mean_objects").get<double>();
+                     for (const auto& [obj, w] : b.at("contents").items())
+                       r.contents.emplace_back(obj, w.get<double>());
+                   } catch (const Json::exception& e) {
+                     return fail(ErrorCode::kStore,
+                                 "receptacle type '" + r.type + "' has a malformed body: " + e.what());
+                   }
+                   k.receptacles.push_back(std::move(r));
+                   return {};
+                 });
     if (!s) return tl::unexpected(s.error());
-    s = for_rows(db, "SELECT room_type, body FROM household_room_programs", [&](store::Statement& st) -> Status {
-      auto rt = parse_room_type(st.text(0));
-      auto body = parse_body(st.text(1), "household_room_programs/" + st.text(0));
-      if (!body) return tl::unexpected(body.error());
-      if (!rt) return fail(ErrorCode::kStore, "unknown room type in household_room_programs: " + st.text(0));
-      RoomProgram prog;
-      try {
-        prog.min_area = body->at("area").at(0).get<double>();
-        prog.max_area = body->at("area").at(1).get<double>();
-        for (const auto& f : body->at("furniture"))
-          prog.furniture.push_back({f.at("type").get<std::string>(), f.at("p").get<double>(), f.at("max").get<int>()});
-      } catch (const Json::exception& e) {
-        return fail(ErrorCode::kStore, "room program '" + st.text(0) + "' is malformed: " + e.what());
-      }
-      k.room_programs[index_of(*rt)] = std::move(prog);
-      return {};
-    });
+    s = for_rows(
+        db, "SELECT room_type, body FROM household_room_programs", [&](store::Statement& st) -> Status {
+          auto rt = parse_room_type(st.text(0));
+          auto body = parse_body(st.text(1), "household_room_programs/" + st.text(0));
+          if (!body) return tl::unexpected(body.error());
+          if (!rt)
+            return fail(ErrorCode::kStore, "unknown room type in household_room_programs: " + st.text(0));
+          RoomProgram prog;
+          try {
+            prog.min_area = body->at("area").at(0).get<double>();
+            prog.max_area = body->at("area").at(1).get<double>();
+            for (const auto& f : body->at("furniture"))
+              prog.furniture.push_back(
+                  {f.at("type").get<std::string>(), f.at("p").get<double>(), f.at("max").get<int>()});
+          } catch (const Json::exception& e) {
+            return fail(ErrorCode::kStore, "room program '" + st.text(0) + "' is malformed: " + e.what());
+          }
+          k.room_programs[index_of(*rt)] = std::move(prog);
+          return {};
+        });
     if (!s) return tl::unexpected(s.error());
     if (k.activities.empty() || k.receptacles.empty())
-      return fail(ErrorCode::kStore, "household knowledge tables are empty: the store is missing migrations 0020–0023");
+      return fail(ErrorCode::kStore,
+                  "household knowledge tables are empty: the store is missing migrations 0020–0023");
     k.index();
     return k;
   });
@@ -301,16 +330,18 @@ Status store_persona(store::Store& store, const Persona& persona) {
 Result<std::vector<Persona>> list_stored_personas(store::Store& store, bool include_builtin) {
   return store.read([&](store::Database& db) -> Result<std::vector<Persona>> {
     std::vector<Persona> out;
-    auto s = for_rows(db, include_builtin ? "SELECT id, body FROM household_personas ORDER BY builtin DESC, rowid"
-                                          : "SELECT id, body FROM household_personas WHERE builtin = 0 ORDER BY rowid",
-                      [&](store::Statement& st) -> Status {
-                        auto body = parse_body(st.text(1), "household_personas/" + st.text(0));
-                        if (!body) return tl::unexpected(body.error());
-                        auto p = persona_from_json(*body);
-                        if (!p) return fail(ErrorCode::kStore, p.error().message());
-                        out.push_back(std::move(*p));
-                        return {};
-                      });
+    auto s =
+        for_rows(db,
+                 include_builtin ? "SELECT id, body FROM household_personas ORDER BY builtin DESC, rowid"
+                                 : "SELECT id, body FROM household_personas WHERE builtin = 0 ORDER BY rowid",
+                 [&](store::Statement& st) -> Status {
+                   auto body = parse_body(st.text(1), "household_personas/" + st.text(0));
+                   if (!body) return tl::unexpected(body.error());
+                   auto p = persona_from_json(*body);
+                   if (!p) return fail(ErrorCode::kStore, p.error().message());
+                   out.push_back(std::move(*p));
+                   return {};
+                 });
     if (!s) return tl::unexpected(s.error());
     return out;
   });

@@ -31,9 +31,39 @@ struct ActivityEffects {
 
 // How an activity fits into a day.
 enum class ActivityRole : std::uint8_t {
-  kSleep, kNap, kWake, kMorningHygiene, kEveningHygiene, kDress, kToilet, kBreakfastPrep, kBreakfast, kLunchPrep,
-  kLunch, kDinnerPrep, kDinner, kMealSetup, kSnack, kHotDrink, kDishCleanup, kChore, kLaundry, kArrive, kDepart, kBedtime,
-  kLeisure, kHobby, kExercise, kWork, kStudy, kChildcare, kPet, kMedication, kSocialCall, kSocial, kPrayer,
+  kSleep,
+  kNap,
+  kWake,
+  kMorningHygiene,
+  kEveningHygiene,
+  kDress,
+  kToilet,
+  kBreakfastPrep,
+  kBreakfast,
+  kLunchPrep,
+  kLunch,
+  kDinnerPrep,
+  kDinner,
+  kMealSetup,
+  kSnack,
+  kHotDrink,
+  kDishCleanup,
+  kChore,
+  kLaundry,
+  kArrive,
+  kDepart,
+  kBedtime,
+  kLeisure,
+  kHobby,
+  kExercise,
+  kWork,
+  kStudy,
+  kChildcare,
+  kPet,
+  kMedication,
+  kSocialCall,
+  kSocial,
+  kPrayer,
   kLeaveHome,
 };
 std::optional<ActivityRole> parse_activity_role(std::string_view name);
@@ -77,12 +107,12 @@ struct RoomProgram {
 };
 
 struct HouseholdKnowledge {
-  std::vector<Persona> personas;                 // built-in first, then posted ones
+  std::vector<Persona> personas;  // built-in first, then posted ones
   std::vector<ActivitySpec> activities;
   std::vector<ReceptacleSpec> receptacles;
   std::array<RoomProgram, kRoomTypeCount> room_programs;
-  std::vector<std::string> movable_types;         // sorted
-  std::vector<std::string> fixture_types;         // sorted
+  std::vector<std::string> movable_types;  // sorted
+  std::vector<std::string> fixture_types;  // sorted
 
   [[nodiscard]] const ActivitySpec* activity(std::string_view primary_name) const;
   [[nodiscard]] int activity_index(std::string_view primary_name) const;  // -1 when unknown

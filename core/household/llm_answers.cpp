@@ -21,7 +21,8 @@ Json inline_refs(const Json& node, const Json& document, int depth = 0) {
   if (node.is_object()) {
     if (auto it = node.find("$ref"); it != node.end() && it->is_string()) {
       const std::string ref = it->get<std::string>();
-      if (ref.rfind("#/", 0) != 0) throw std::runtime_error("household schema: only local $ref is supported: " + ref);
+      if (ref.rfind("#/", 0) != 0)
+        throw std::runtime_error("household schema: only local $ref is supported: " + ref);
       return inline_refs(document.at(Json::json_pointer(ref.substr(1))), document, depth + 1);
     }
     Json out = Json::object();
@@ -41,8 +42,8 @@ const std::map<std::string, JsonSchema, std::less<>>& answer_schemas() {
   static const std::map<std::string, JsonSchema, std::less<>> all = [] {
     const auto& files = embedded_household_schemas();
     auto doc = [&](const char* name) { return Json::parse(files.at(name)); };
-    const Json persona = doc("persona.schema.json"), schedule = doc("schedule.schema.json"), db = doc("activity_db.schema.json"),
-               hint = doc("hint.schema.json");
+    const Json persona = doc("persona.schema.json"), schedule = doc("schedule.schema.json"),
+               db = doc("activity_db.schema.json"), hint = doc("hint.schema.json");
     const std::vector<std::pair<std::string, Json>> parts = {
         {"persona", inline_refs(persona, persona)},
         {"day_plan", inline_refs(schedule.at("/$defs/day_plan"_json_pointer), schedule)},
@@ -54,7 +55,8 @@ const std::map<std::string, JsonSchema, std::less<>>& answer_schemas() {
     std::map<std::string, JsonSchema, std::less<>> out;
     for (const auto& [name, schema] : parts) {
       auto compiled = JsonSchema::compile(schema);
-      if (!compiled) throw std::runtime_error("household answer schema '" + name + "': " + compiled.error().message());
+      if (!compiled)
+        throw std::runtime_error("household answer schema '" + name + "': " + compiled.error().message());
       out.emplace(name, std::move(*compiled));
     }
     return out;
@@ -65,7 +67,8 @@ const std::map<std::string, JsonSchema, std::less<>>& answer_schemas() {
 std::string lower_trim(std::string_view s) {
   std::string out;
   for (char c : s) out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  while (!out.empty() && (std::isspace(static_cast<unsigned char>(out.back())) || out.back() == '.')) out.pop_back();
+  while (!out.empty() && (std::isspace(static_cast<unsigned char>(out.back())) || out.back() == '.'))
+    out.pop_back();
   std::size_t i = 0;
   while (i < out.size() && std::isspace(static_cast<unsigned char>(out[i]))) ++i;
   return out.substr(i);
@@ -95,11 +98,13 @@ int parse_clock(std::string_view text) {
 Result<const JsonSchema*> answer_schema(std::string_view artifact) {
   const auto& all = answer_schemas();
   auto it = all.find(artifact);
-  if (it == all.end()) return fail(ErrorCode::kInternal, "no answer schema for '" + std::string(artifact) + "'");
+  if (it == all.end())
+    return fail(ErrorCode::kInternal, "no answer schema for '" + std::string(artifact) + "'");
   return &it->second;
 }
 
-Status check_persona_answer(const Json& answer, const PersonaConstraints& c, std::span<const Persona> existing) {
+Status check_persona_answer(const Json& answer, const PersonaConstraints& c,
+                            std::span<const Persona> existing) {
   JsonChecker check;
   auto p = persona_from_json(answer);
   if (!p) return tl::unexpected(p.error());
@@ -108,12 +113,15 @@ Status check_persona_answer(const Json& answer, const PersonaConstraints& c, std
   if (c.gender && lower_trim(p->gender) != *c.gender) check.add("/gender", "must be " + *c.gender);
   if (c.occupation) {
     const std::string occ = lower_trim(p->occupation), want = lower_trim(*c.occupation);
-    if (occ.find(want) == std::string::npos) check.add("/occupation", "must name the occupation '" + *c.occupation + "'");
+    if (occ.find(want) == std::string::npos)
+      check.add("/occupation", "must name the occupation '" + *c.occupation + "'");
   }
   for (const auto& q : existing)
     if (near_duplicate(*p, q)) {
-      check.add("/name", persona_id(*p) == persona_id(q) ? "'" + q.name + "' already exists: choose another name"
-                                                         : "too similar to the existing persona '" + q.name + "': vary occupation, routine and lifestyle");
+      check.add("/name", persona_id(*p) == persona_id(q)
+                             ? "'" + q.name + "' already exists: choose another name"
+                             : "too similar to the existing persona '" + q.name +
+                                   "': vary occupation, routine and lifestyle");
       break;
     }
   return with_errors(check, "persona does not fit");
@@ -124,7 +132,8 @@ Status check_day_plan_answer(const Json& answer, const DayPlanContext& ctx) {
   auto plan = day_plan_from_json(answer);
   if (!plan) return tl::unexpected(plan.error());
   if (plan->day != ctx.day) check.add("/day", "must be " + std::to_string(ctx.day));
-  if (plan->weekday != ctx.weekday) check.add("/weekday", "must be " + std::string(weekday_name(ctx.weekday)));
+  if (plan->weekday != ctx.weekday)
+    check.add("/weekday", "must be " + std::string(weekday_name(ctx.weekday)));
   int sleep = 0;
   for (const auto& b : plan->blocks)
     if (b.kind == BlockKind::kSleep) sleep += b.end - b.start;
@@ -132,7 +141,8 @@ Status check_day_plan_answer(const Json& answer, const DayPlanContext& ctx) {
   return with_errors(check, "day plan does not fit");
 }
 
-Status check_day_activities_answer(const Json& answer, const DayPlan& plan, const ActivityVocabulary& vocabulary,
+Status check_day_activities_answer(const Json& answer, const DayPlan& plan,
+                                   const ActivityVocabulary& vocabulary,
                                    const HouseholdKnowledge& knowledge) {
   JsonChecker check;
   const Json* acts = check.array(answer, "", "activities", true, 300);
@@ -151,23 +161,28 @@ Status check_day_activities_answer(const Json& answer, const DayPlan& plan, cons
     if (start < 0) check.add(ptr + "/start", "must be HH:MM");
     if (end < 0) check.add(ptr + "/end", "must be HH:MM");
     if (start < 0 || end < 0) continue;
-    if (start != cursor) check.add(ptr + "/start", "must be " + format_minutes(cursor) + " (no gaps or overlaps)");
+    if (start != cursor)
+      check.add(ptr + "/start", "must be " + format_minutes(cursor) + " (no gaps or overlaps)");
     if (end <= start) check.add(ptr + "/end", "must be after start");
     cursor = std::max(cursor, end);
     items.push_back({start, end, lower_trim(name)});
     if (auto r = vocabulary.resolve(name); r && r->activity >= 0) {
       const ActivitySpec& spec = knowledge.activities[static_cast<std::size_t>(r->activity)];
       if (is_meal(spec.role) && !spec.in_window(start))
-        check.add(ptr + "/start", "'" + name + "' at " + format_minutes(start) + " is outside its plausible hours");
+        check.add(ptr + "/start",
+                  "'" + name + "' at " + format_minutes(start) + " is outside its plausible hours");
     }
   }
-  if (check.ok() && cursor != 1440) check.add("/activities", "must end at 24:00, not " + format_minutes(cursor));
+  if (check.ok() && cursor != 1440)
+    check.add("/activities", "must end at 24:00, not " + format_minutes(cursor));
   for (const auto& b : plan.blocks) {
     if (b.kind != BlockKind::kAway) continue;
-    const bool whole = std::any_of(items.begin(), items.end(),
-                                   [&](const Item& it) { return it.name == "leave home" && it.start == b.start && it.end == b.end; });
+    const bool whole = std::any_of(items.begin(), items.end(), [&](const Item& it) {
+      return it.name == "leave home" && it.start == b.start && it.end == b.end;
+    });
     if (!whole)
-      check.add("/activities", "the plan's 'leave home' block " + format_minutes(b.start) + "-" + format_minutes(b.end) +
+      check.add("/activities", "the plan's 'leave home' block " + format_minutes(b.start) + "-" +
+                                   format_minutes(b.end) +
                                    " must be one activity \"leave home\" with the same start and end");
   }
   for (std::size_t i = 0; i < items.size(); ++i) {
@@ -175,23 +190,29 @@ Status check_day_activities_answer(const Json& answer, const DayPlan& plan, cons
     const bool planned = std::any_of(plan.blocks.begin(), plan.blocks.end(), [&](const PlanBlock& b) {
       return b.kind == BlockKind::kAway && b.start == items[i].start && b.end == items[i].end;
     });
-    if (!planned) check.add("/activities/" + std::to_string(i) + "/activity", "\"leave home\" only for the plan's blocks away from home");
+    if (!planned)
+      check.add("/activities/" + std::to_string(i) + "/activity",
+                "\"leave home\" only for the plan's blocks away from home");
   }
   return with_errors(check, "schedule does not fit");
 }
 
-Status check_activity_db_answer(const Json& answer, std::span<const std::string> requested, const HouseholdKnowledge& knowledge) {
+Status check_activity_db_answer(const Json& answer, std::span<const std::string> requested,
+                                const HouseholdKnowledge& knowledge) {
   JsonChecker check;
   Json db = answer;
   db["persona_id"] = "answer";
   if (auto parsed = activity_db_from_json(db, knowledge); !parsed) copy_errors(check, parsed.error());
   std::set<std::string> wanted(requested.begin(), requested.end()), seen;
-  if (const Json* acts = answer.contains("activities") && answer["activities"].is_array() ? &answer["activities"] : nullptr)
+  if (const Json* acts =
+          answer.contains("activities") && answer["activities"].is_array() ? &answer["activities"] : nullptr)
     for (std::size_t i = 0; i < acts->size(); ++i) {
       const std::string name = (*acts)[i].value("activity", "");
       const std::string ptr = "/activities/" + std::to_string(i) + "/activity";
-      if (!wanted.count(name)) check.add(ptr, "'" + name + "' was not asked for; use the names of the list exactly");
-      else if (!seen.insert(name).second) check.add(ptr, "'" + name + "' is listed twice");
+      if (!wanted.count(name))
+        check.add(ptr, "'" + name + "' was not asked for; use the names of the list exactly");
+      else if (!seen.insert(name).second)
+        check.add(ptr, "'" + name + "' is listed twice");
     }
   for (const auto& w : wanted)
     if (!seen.count(w)) check.add("/activities", "missing the activity '" + w + "'");
@@ -203,8 +224,10 @@ Status check_hint_answer(const Json& answer, std::span<const std::string> memory
   const std::string activity = lower_trim(answer.value("activity", ""));
   const bool used = answer.value("used_recently", false);
   if (!activity.empty()) {
-    const bool known = std::any_of(memory.begin(), memory.end(), [&](const std::string& m) { return lower_trim(m) == activity; });
-    if (!known) check.add("/activity", "must be one of the activities in the memory, written as there, or empty");
+    const bool known = std::any_of(memory.begin(), memory.end(),
+                                   [&](const std::string& m) { return lower_trim(m) == activity; });
+    if (!known)
+      check.add("/activity", "must be one of the activities in the memory, written as there, or empty");
   } else if (used) {
     check.add("/activity", "name the activity of the memory in which the object was used");
   }
@@ -220,11 +243,14 @@ Status check_hint_interpretation_answer(const Json& answer, const House& house) 
     for (std::size_t i = 0; i < recs->size(); ++i) {
       const std::string ptr = "/receptacles/" + std::to_string(i);
       const std::string id = (*recs)[i].value("receptacle_id", "");
-      if (!ids.count(id)) check.add(ptr + "/receptacle_id", "'" + id + "' is not a receptacle of this home");
-      else if (!seen.insert(id).second) check.add(ptr + "/receptacle_id", "'" + id + "' is listed twice");
+      if (!ids.count(id))
+        check.add(ptr + "/receptacle_id", "'" + id + "' is not a receptacle of this home");
+      else if (!seen.insert(id).second)
+        check.add(ptr + "/receptacle_id", "'" + id + "' is listed twice");
       sum += (*recs)[i].value("p", 0.0);
     }
-  if (check.ok() && std::abs(sum - 1.0) > 0.02) check.add("/receptacles", "probabilities must sum to 1, not " + std::to_string(sum));
+  if (check.ok() && std::abs(sum - 1.0) > 0.02)
+    check.add("/receptacles", "probabilities must sum to 1, not " + std::to_string(sum));
   return with_errors(check, "hint interpretation does not fit");
 }
 

@@ -21,18 +21,20 @@ struct LlmSettings {
   llm::StructuredGenerator* generator = nullptr;  // required
   std::optional<std::string> model;               // per-request model name (checked by the client)
   double temperature = 0.7;
-  std::optional<std::string> job_id;              // for the call log
+  std::optional<std::string> job_id;  // for the call log
   llm::CancelToken cancel;
 };
 
 // Personas from the LLM: each answer must be a valid persona inside the constraints and no
 // near-duplicate of `existing` or of the ones before it.
-Result<std::vector<Persona>> generate_personas_llm(const PersonaRequest& request, std::span<const Persona> existing,
+Result<std::vector<Persona>> generate_personas_llm(const PersonaRequest& request,
+                                                   std::span<const Persona> existing,
                                                    const LlmSettings& settings);
 
 class LlmDayPlanner final : public DayPlanGenerator {
  public:
-  LlmDayPlanner(const HouseholdKnowledge& knowledge, LlmSettings settings) : knowledge_(knowledge), settings_(std::move(settings)) {}
+  LlmDayPlanner(const HouseholdKnowledge& knowledge, LlmSettings settings)
+      : knowledge_(knowledge), settings_(std::move(settings)) {}
   Result<DayPlan> plan_day(const Persona& persona, const DayPlanContext& context) override;
 
  private:
@@ -44,7 +46,8 @@ class LlmDayPlanner final : public DayPlanGenerator {
 // blocks must come back whole, meals at plausible hours. New names grow the vocabulary.
 class LlmDecomposer final : public ScheduleDecomposer {
  public:
-  LlmDecomposer(const HouseholdKnowledge& knowledge, LlmSettings settings) : knowledge_(knowledge), settings_(std::move(settings)) {}
+  LlmDecomposer(const HouseholdKnowledge& knowledge, LlmSettings settings)
+      : knowledge_(knowledge), settings_(std::move(settings)) {}
   Result<std::vector<ScheduleEntry>> decompose(const Persona& persona, const DayPlan& filtered_plan,
                                                ActivityVocabulary& vocabulary, std::uint64_t seed) override;
 
@@ -57,9 +60,11 @@ class LlmDecomposer final : public ScheduleDecomposer {
 // receptacle types and which go together) in the prompt; validated by validate_activity_db.
 class LlmActivityDatabaseGenerator final : public ActivityDatabaseGenerator {
  public:
-  LlmActivityDatabaseGenerator(const HouseholdKnowledge& knowledge, LlmSettings settings, std::size_t batch = 12)
+  LlmActivityDatabaseGenerator(const HouseholdKnowledge& knowledge, LlmSettings settings,
+                               std::size_t batch = 12)
       : knowledge_(knowledge), settings_(std::move(settings)), batch_(batch) {}
-  Result<ActivityDatabase> generate(const Persona& persona, std::span<const std::string> primaries, std::uint64_t seed) override;
+  Result<ActivityDatabase> generate(const Persona& persona, std::span<const std::string> primaries,
+                                    std::uint64_t seed) override;
 
  private:
   const HouseholdKnowledge& knowledge_;

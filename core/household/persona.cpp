@@ -15,7 +15,9 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; }
+bool is_word_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0;
+}
 
 bool contains_phrase(std::string_view text, std::string_view phrase) {
   if (phrase.empty()) return false;
@@ -29,11 +31,13 @@ bool contains_phrase(std::string_view text, std::string_view phrase) {
 }
 
 bool any_of_phrases(std::string_view text, std::initializer_list<std::string_view> phrases) {
-  return std::any_of(phrases.begin(), phrases.end(), [&](std::string_view p) { return contains_phrase(text, p); });
+  return std::any_of(phrases.begin(), phrases.end(),
+                     [&](std::string_view p) { return contains_phrase(text, p); });
 }
 
 int count_phrases(std::string_view text, std::initializer_list<std::string_view> phrases) {
-  return static_cast<int>(std::count_if(phrases.begin(), phrases.end(), [&](std::string_view p) { return contains_phrase(text, p); }));
+  return static_cast<int>(std::count_if(phrases.begin(), phrases.end(),
+                                        [&](std::string_view p) { return contains_phrase(text, p); }));
 }
 
 // ---- clock times in free text ("7 am", "12:30 am", "midnight", "noon") ----
@@ -54,7 +58,8 @@ std::vector<Token> tokenize(std::string_view text) {
     if (std::isdigit(static_cast<unsigned char>(text[i]))) {
       int h = 0, m = 0;
       std::size_t j = i;
-      while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) h = h * 10 + (text[j++] - '0');
+      while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j])))
+        h = h * 10 + (text[j++] - '0');
       bool colon = false;
       if (j + 2 < text.size() && text[j] == ':' && std::isdigit(static_cast<unsigned char>(text[j + 1])) &&
           std::isdigit(static_cast<unsigned char>(text[j + 2]))) {
@@ -76,8 +81,10 @@ std::vector<Token> tokenize(std::string_view text) {
       } else if (colon) {
         minutes = h * 60 + m;
       }
-      if (minutes >= 0 && h <= 24 && m < 60) out.push_back({"", minutes});
-      else out.push_back({std::string(text.substr(i, j - i)), -1});
+      if (minutes >= 0 && h <= 24 && m < 60)
+        out.push_back({"", minutes});
+      else
+        out.push_back({std::string(text.substr(i, j - i)), -1});
       i = next;
       continue;
     }
@@ -85,9 +92,12 @@ std::vector<Token> tokenize(std::string_view text) {
     while (j < text.size() && !std::isspace(static_cast<unsigned char>(text[j]))) ++j;
     std::string word(text.substr(i, j - i));
     while (!word.empty() && !std::isalnum(static_cast<unsigned char>(word.back()))) word.pop_back();
-    if (word == "midnight") out.push_back({word, 1440});
-    else if (word == "noon" || word == "midday") out.push_back({word, 720});
-    else out.push_back({word, -1});
+    if (word == "midnight")
+      out.push_back({word, 1440});
+    else if (word == "noon" || word == "midday")
+      out.push_back({word, 720});
+    else
+      out.push_back({word, -1});
     i = j;
   }
   return out;
@@ -126,10 +136,12 @@ struct RoutineTimes {
 RoutineTimes parse_routine(const std::string& routine_lower) {
   RoutineTimes r;
   for (const std::string& clause : split_clauses(routine_lower)) {
-    const bool free = any_of_phrases(clause, {"weekend", "weekends", "free day", "free days", "nights off", "days off",
-                                              "night off", "day off", "saturday", "sunday", "saturdays", "sundays"});
-    const bool work = !free && any_of_phrases(clause, {"work day", "work days", "workday", "workdays", "school",
-                                                       "shift", "work", "school days", "class", "classes"});
+    const bool free =
+        any_of_phrases(clause, {"weekend", "weekends", "free day", "free days", "nights off", "days off",
+                                "night off", "day off", "saturday", "sunday", "saturdays", "sundays"});
+    const bool work =
+        !free && any_of_phrases(clause, {"work day", "work days", "workday", "workdays", "school", "shift",
+                                         "work", "school days", "class", "classes"});
     const auto tokens = tokenize(clause);
     Label last = Label::kNone;
     Label prev_time_label = Label::kNone;
@@ -137,7 +149,8 @@ RoutineTimes parse_routine(const std::string& routine_lower) {
       const auto& t = tokens[i];
       if (t.minutes < 0) {
         const std::string& w = t.word;
-        if (w == "bed" || w == "asleep" || w == "sleep" || w == "sleeps" || w == "sleeping") last = Label::kBed;
+        if (w == "bed" || w == "asleep" || w == "sleep" || w == "sleeps" || w == "sleeping")
+          last = Label::kBed;
         else if ((w == "stay" || w == "stays") && i + 1 < tokens.size() && tokens[i + 1].word == "up") {
           last = Label::kBedLate;
           ++i;
@@ -156,8 +169,10 @@ RoutineTimes parse_routine(const std::string& routine_lower) {
       prev_time_label = label;
       int* bed = free ? &r.free_bed : work ? &r.work_bed : &r.general_bed;
       int* wake = free ? &r.free_wake : work ? &r.work_wake : &r.general_wake;
-      if (label == Label::kWake) *wake = t.minutes % 1440;
-      else *bed = t.minutes;
+      if (label == Label::kWake)
+        *wake = t.minutes % 1440;
+      else
+        *bed = t.minutes;
     }
   }
   return r;
@@ -231,10 +246,13 @@ std::array<bool, 7> days_after(std::string_view text, std::string_view marker) {
 Result<Persona> persona_from_json(const Json& json, const std::string& pointer) {
   JsonChecker check;
   if (!json.is_object()) {
-    check.add(pointer, "must be an object with name, age, gender, routine, personality, occupation, thoughts, lifestyle");
+    check.add(
+        pointer,
+        "must be an object with name, age, gender, routine, personality, occupation, thoughts, lifestyle");
     return tl::unexpected(check.error("invalid persona"));
   }
-  check.only_keys(json, pointer, {"name", "age", "gender", "routine", "personality", "occupation", "thoughts", "lifestyle"});
+  check.only_keys(json, pointer,
+                  {"name", "age", "gender", "routine", "personality", "occupation", "thoughts", "lifestyle"});
   Persona p;
   if (auto v = check.string(json, pointer, "name", true, 1, 80)) p.name = *v;
   if (auto v = check.integer(json, pointer, "age", true, 0, 120)) p.age = static_cast<int>(*v);
@@ -248,14 +266,16 @@ Result<Persona> persona_from_json(const Json& json, const std::string& pointer) 
     if (arr->empty()) check.add(ptr, "must list at least one trait");
     for (std::size_t i = 0; i < arr->size(); ++i) {
       const Json& item = (*arr)[i];
-      if (!item.is_string() || item.get_ref<const std::string&>().empty() || item.get_ref<const std::string&>().size() > 60)
+      if (!item.is_string() || item.get_ref<const std::string&>().empty() ||
+          item.get_ref<const std::string&>().size() > 60)
         check.add(JsonChecker::child(ptr, i), "must be a non-empty string of at most 60 bytes");
       else
         p.personality.push_back(item.get<std::string>());
     }
   }
   if (!p.name.empty()) {
-    const bool has_letter = std::any_of(p.name.begin(), p.name.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
+    const bool has_letter = std::any_of(p.name.begin(), p.name.end(),
+                                        [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
     if (!has_letter) check.add(JsonChecker::child(pointer, "name"), "must contain a letter");
   }
   if (!check.ok()) return tl::unexpected(check.error("invalid persona"));
@@ -263,17 +283,24 @@ Result<Persona> persona_from_json(const Json& json, const std::string& pointer) 
 }
 
 Json to_json(const Persona& p) {
-  return Json{{"name", p.name},          {"age", p.age},           {"gender", p.gender},
-              {"routine", p.routine},    {"personality", p.personality}, {"occupation", p.occupation},
-              {"thoughts", p.thoughts},  {"lifestyle", p.lifestyle}};
+  return Json{{"name", p.name},
+              {"age", p.age},
+              {"gender", p.gender},
+              {"routine", p.routine},
+              {"personality", p.personality},
+              {"occupation", p.occupation},
+              {"thoughts", p.thoughts},
+              {"lifestyle", p.lifestyle}};
 }
 
 std::string persona_id(const Persona& persona) {
   std::string id;
   for (char c : persona.name) {
     const auto u = static_cast<unsigned char>(c);
-    if (std::isalnum(u)) id += static_cast<char>(std::tolower(u));
-    else if (!id.empty() && id.back() != '-') id += '-';
+    if (std::isalnum(u))
+      id += static_cast<char>(std::tolower(u));
+    else if (!id.empty() && id.back() != '-')
+      id += '-';
   }
   while (!id.empty() && id.back() == '-') id.pop_back();
   if (id.empty()) id = "persona";
@@ -282,48 +309,77 @@ std::string persona_id(const Persona& persona) {
 
 std::string_view work_pattern_name(WorkPattern pattern) {
   switch (pattern) {
-    case WorkPattern::kCommute: return "commute";
-    case WorkPattern::kRemote: return "remote";
-    case WorkPattern::kHybrid: return "hybrid";
-    case WorkPattern::kNightShift: return "night_shift";
-    case WorkPattern::kEveningShift: return "evening_shift";
-    case WorkPattern::kSplitShift: return "split_shift";
-    case WorkPattern::kCollege: return "college";
-    case WorkPattern::kSchool: return "school";
-    case WorkPattern::kPreschool: return "preschool";
-    case WorkPattern::kRetired: return "retired";
-    case WorkPattern::kHomemaker: return "homemaker";
-    case WorkPattern::kFreelance: return "freelance";
-    case WorkPattern::kJobSeeker: return "job_seeker";
+    case WorkPattern::kCommute:
+      return "commute";
+    case WorkPattern::kRemote:
+      return "remote";
+    case WorkPattern::kHybrid:
+      return "hybrid";
+    case WorkPattern::kNightShift:
+      return "night_shift";
+    case WorkPattern::kEveningShift:
+      return "evening_shift";
+    case WorkPattern::kSplitShift:
+      return "split_shift";
+    case WorkPattern::kCollege:
+      return "college";
+    case WorkPattern::kSchool:
+      return "school";
+    case WorkPattern::kPreschool:
+      return "preschool";
+    case WorkPattern::kRetired:
+      return "retired";
+    case WorkPattern::kHomemaker:
+      return "homemaker";
+    case WorkPattern::kFreelance:
+      return "freelance";
+    case WorkPattern::kJobSeeker:
+      return "job_seeker";
   }
   return "commute";
 }
 
-bool mentions(const PersonaTraits& traits, std::string_view phrase) { return contains_phrase(traits.text, lower(phrase)); }
+bool mentions(const PersonaTraits& traits, std::string_view phrase) {
+  return contains_phrase(traits.text, lower(phrase));
+}
 
 PersonaTraits infer_traits(const Persona& p) {
   PersonaTraits t;
   std::string personality;
   for (const auto& s : p.personality) personality += s + ", ";
-  t.text = lower(p.gender + " | " + p.routine + " | " + p.occupation + " | " + p.thoughts + " | " + p.lifestyle + " | " + personality);
+  t.text = lower(p.gender + " | " + p.routine + " | " + p.occupation + " | " + p.thoughts + " | " +
+                 p.lifestyle + " | " + personality);
   const std::string occ = lower(p.occupation);
   const std::string life = lower(p.lifestyle);
   t.child = p.age < 13;
 
   // Work pattern, from the occupation first.
-  if (p.age < 6) t.work = WorkPattern::kPreschool;
-  else if (p.age < 18 && any_of_phrases(occ, {"school", "grader", "grade", "student", "kindergarten"})) t.work = WorkPattern::kSchool;
-  else if (any_of_phrases(occ, {"night shift", "overnight", "nights"})) t.work = WorkPattern::kNightShift;
-  else if (any_of_phrases(occ, {"evening shift", "late shift"})) t.work = WorkPattern::kEveningShift;
-  else if (any_of_phrases(occ, {"split shift"})) t.work = WorkPattern::kSplitShift;
-  else if (any_of_phrases(occ, {"hybrid"})) t.work = WorkPattern::kHybrid;
-  else if (any_of_phrases(occ, {"stay-at-home", "homemaker", "housewife", "househusband"})) t.work = WorkPattern::kHomemaker;
-  else if (any_of_phrases(occ, {"retired", "retiree", "pensioner"})) t.work = WorkPattern::kRetired;
-  else if (any_of_phrases(occ, {"between jobs", "looking for work", "unemployed", "job seeker"})) t.work = WorkPattern::kJobSeeker;
-  else if (any_of_phrases(occ, {"freelance", "freelancer", "self-employed"})) t.work = WorkPattern::kFreelance;
-  else if (any_of_phrases(occ, {"works from home", "remotely", "remote", "from home", "home office"})) t.work = WorkPattern::kRemote;
-  else if (any_of_phrases(occ, {"student", "phd", "university", "academy", "college"})) t.work = WorkPattern::kCollege;
-  else if (p.age >= 67 && !any_of_phrases(occ, {"works", "driver", "owns"})) t.work = WorkPattern::kRetired;
+  if (p.age < 6)
+    t.work = WorkPattern::kPreschool;
+  else if (p.age < 18 && any_of_phrases(occ, {"school", "grader", "grade", "student", "kindergarten"}))
+    t.work = WorkPattern::kSchool;
+  else if (any_of_phrases(occ, {"night shift", "overnight", "nights"}))
+    t.work = WorkPattern::kNightShift;
+  else if (any_of_phrases(occ, {"evening shift", "late shift"}))
+    t.work = WorkPattern::kEveningShift;
+  else if (any_of_phrases(occ, {"split shift"}))
+    t.work = WorkPattern::kSplitShift;
+  else if (any_of_phrases(occ, {"hybrid"}))
+    t.work = WorkPattern::kHybrid;
+  else if (any_of_phrases(occ, {"stay-at-home", "homemaker", "housewife", "househusband"}))
+    t.work = WorkPattern::kHomemaker;
+  else if (any_of_phrases(occ, {"retired", "retiree", "pensioner"}))
+    t.work = WorkPattern::kRetired;
+  else if (any_of_phrases(occ, {"between jobs", "looking for work", "unemployed", "job seeker"}))
+    t.work = WorkPattern::kJobSeeker;
+  else if (any_of_phrases(occ, {"freelance", "freelancer", "self-employed"}))
+    t.work = WorkPattern::kFreelance;
+  else if (any_of_phrases(occ, {"works from home", "remotely", "remote", "from home", "home office"}))
+    t.work = WorkPattern::kRemote;
+  else if (any_of_phrases(occ, {"student", "phd", "university", "academy", "college"}))
+    t.work = WorkPattern::kCollege;
+  else if (p.age >= 67 && !any_of_phrases(occ, {"works", "driver", "owns"}))
+    t.work = WorkPattern::kRetired;
 
   // Sleep times from the routine; defaults by age and pattern.
   const RoutineTimes rt = parse_routine(lower(p.routine));
@@ -342,12 +398,13 @@ PersonaTraits infer_traits(const Persona& p) {
     t.work_night.bed = norm_bed(pick(rt.work_bed, rt.general_bed, def_bed));
     t.work_night.wake = pick(rt.work_wake, rt.general_wake, def_wake);
     t.free_night.bed = norm_bed(pick(rt.free_bed, rt.general_bed, t.work_night.bed));
-    const bool sleeps_in = p.age < 65 && t.work != WorkPattern::kRetired && t.work != WorkPattern::kPreschool &&
-                           t.work != WorkPattern::kHomemaker;
+    const bool sleeps_in = p.age < 65 && t.work != WorkPattern::kRetired &&
+                           t.work != WorkPattern::kPreschool && t.work != WorkPattern::kHomemaker;
     t.free_night.wake = pick(rt.free_wake, -1, t.work_night.wake + (sleeps_in ? 75 : 0));
     if (t.free_night.wake >= 14 * 60) t.free_night.wake = 13 * 60;
   }
-  t.naps = any_of_phrases(t.text, {"nap", "naps", "napping", "dozes", "doze", "siesta"}) || p.age < 5 || p.age >= 80;
+  t.naps = any_of_phrases(t.text, {"nap", "naps", "napping", "dozes", "doze", "siesta"}) || p.age < 5 ||
+           p.age >= 80;
 
   // Work hours and days.
   bool days_found = false;
@@ -355,12 +412,32 @@ PersonaTraits infer_traits(const Persona& p) {
   const auto ranges = parse_ranges(occ);
   const int wake = t.work_night.wake;
   switch (t.work) {
-    case WorkPattern::kSchool: t.work_start = std::max(wake + 50, 7 * 60 + 30); t.work_end = 15 * 60 + 30; break;
-    case WorkPattern::kPreschool: t.work_start = 8 * 60 + 30; t.work_end = 12 * 60 + 30; break;
-    case WorkPattern::kCollege: t.work_start = std::max(9 * 60, wake + 60); t.work_end = t.work_start + 6 * 60; break;
-    case WorkPattern::kNightShift: t.work_start = 22 * 60; t.work_end = 30 * 60; break;
-    case WorkPattern::kEveningShift: t.work_start = 15 * 60; t.work_end = 23 * 60 + 30; break;
-    case WorkPattern::kSplitShift: t.work_start = 6 * 60; t.work_end = 10 * 60; t.second_start = 17 * 60; t.second_end = 20 * 60; break;
+    case WorkPattern::kSchool:
+      t.work_start = std::max(wake + 50, 7 * 60 + 30);
+      t.work_end = 15 * 60 + 30;
+      break;
+    case WorkPattern::kPreschool:
+      t.work_start = 8 * 60 + 30;
+      t.work_end = 12 * 60 + 30;
+      break;
+    case WorkPattern::kCollege:
+      t.work_start = std::max(9 * 60, wake + 60);
+      t.work_end = t.work_start + 6 * 60;
+      break;
+    case WorkPattern::kNightShift:
+      t.work_start = 22 * 60;
+      t.work_end = 30 * 60;
+      break;
+    case WorkPattern::kEveningShift:
+      t.work_start = 15 * 60;
+      t.work_end = 23 * 60 + 30;
+      break;
+    case WorkPattern::kSplitShift:
+      t.work_start = 6 * 60;
+      t.work_end = 10 * 60;
+      t.second_start = 17 * 60;
+      t.second_end = 20 * 60;
+      break;
     default:
       t.work_start = wake < 5 * 60 + 30 ? wake + 45 : std::min(wake + 120, 9 * 60);
       t.work_end = t.work_start + 9 * 60;
@@ -389,23 +466,31 @@ PersonaTraits infer_traits(const Persona& p) {
       for (int k = 0; k < n; ++k) t.work_days[static_cast<std::size_t>((first + k * 7 / n) % 7)] = true;
     }
   }
-  if (t.work == WorkPattern::kRetired || t.work == WorkPattern::kHomemaker || t.work == WorkPattern::kJobSeeker) t.work_days = {};
+  if (t.work == WorkPattern::kRetired || t.work == WorkPattern::kHomemaker ||
+      t.work == WorkPattern::kJobSeeker)
+    t.work_days = {};
   if (t.work == WorkPattern::kHybrid) t.home_work_days = days_after(occ, "from home on");
   if (t.work == WorkPattern::kRemote || t.work == WorkPattern::kFreelance) t.home_work_days = t.work_days;
 
   // Character.
-  const int tidy = count_phrases(t.text, {"meticulous", "organized", "organised", "tidy", "neat", "orderly", "disciplined", "precise",
-                                          "methodical", "perfectionist", "spotless", "minimalist", "efficient", "punctual",
-                                          "diligent", "conscientious", "tidies"});
-  const int messy = count_phrases(t.text, {"messy", "disorganized", "scatterbrained", "forgetful", "laid-back", "carefree",
-                                           "spontaneous", "impulsive", "chaotic", "pile up", "leaves", "restless", "clumsy"});
+  const int tidy =
+      count_phrases(t.text, {"meticulous", "organized", "organised", "tidy", "neat", "orderly", "disciplined",
+                             "precise", "methodical", "perfectionist", "spotless", "minimalist", "efficient",
+                             "punctual", "diligent", "conscientious", "tidies"});
+  const int messy = count_phrases(
+      t.text, {"messy", "disorganized", "scatterbrained", "forgetful", "laid-back", "carefree", "spontaneous",
+               "impulsive", "chaotic", "pile up", "leaves", "restless", "clumsy"});
   t.tidiness = std::clamp(0.5 + 0.15 * (tidy - messy), 0.05, 0.95);
-  const int social = count_phrases(t.text, {"sociable", "outgoing", "talkative", "chatty", "hospitable", "friends", "charismatic",
-                                            "bubbly", "cheerful", "friendly", "hosts"});
-  const int solitary = count_phrases(t.text, {"introverted", "reserved", "shy", "solitary", "quiet", "quietly"});
+  const int social =
+      count_phrases(t.text, {"sociable", "outgoing", "talkative", "chatty", "hospitable", "friends",
+                             "charismatic", "bubbly", "cheerful", "friendly", "hosts"});
+  const int solitary =
+      count_phrases(t.text, {"introverted", "reserved", "shy", "solitary", "quiet", "quietly"});
   t.sociability = std::clamp(0.5 + 0.15 * (social - solitary), 0.05, 0.95);
-  if (any_of_phrases(t.text, {"five times a day"})) t.prayers_per_day = 5;
-  else if (any_of_phrases(t.text, {"prays", "morning prayer", "devout"})) t.prayers_per_day = 1;
+  if (any_of_phrases(t.text, {"five times a day"}))
+    t.prayers_per_day = 5;
+  else if (any_of_phrases(t.text, {"prays", "morning prayer", "devout"}))
+    t.prayers_per_day = 1;
   (void)life;
   return t;
 }

@@ -42,8 +42,8 @@ enum class WorkPattern : std::uint8_t {
   kSchool,        // school child
   kPreschool,     // kindergarten or at home, naps
   kRetired,
-  kHomemaker,     // stay-at-home parent or homemaker
-  kFreelance,     // works at home, irregular
+  kHomemaker,  // stay-at-home parent or homemaker
+  kFreelance,  // works at home, irregular
   kJobSeeker,
 };
 std::string_view work_pattern_name(WorkPattern pattern);
@@ -56,19 +56,19 @@ struct SleepTimes {
 
 struct PersonaTraits {
   WorkPattern work = WorkPattern::kCommute;
-  std::array<bool, 7> work_days{};        // Monday first
-  std::array<bool, 7> home_work_days{};   // hybrid: days worked at home
-  int work_start = 9 * 60;                // minutes after 00:00 of the work day
-  int work_end = 17 * 60;                 // may pass 1440 (night and evening shifts)
-  int second_start = -1, second_end = -1; // split shift
-  SleepTimes work_night;                  // before a work/school day (or, day sleepers: the day sleep)
-  SleepTimes free_night;                  // before a free day
+  std::array<bool, 7> work_days{};         // Monday first
+  std::array<bool, 7> home_work_days{};    // hybrid: days worked at home
+  int work_start = 9 * 60;                 // minutes after 00:00 of the work day
+  int work_end = 17 * 60;                  // may pass 1440 (night and evening shifts)
+  int second_start = -1, second_end = -1;  // split shift
+  SleepTimes work_night;                   // before a work/school day (or, day sleepers: the day sleep)
+  SleepTimes free_night;                   // before a free day
   bool naps = false;
-  bool child = false;                     // under 13: does not cook
-  double tidiness = 0.5;                  // 0 messy … 1 meticulous
+  bool child = false;     // under 13: does not cook
+  double tidiness = 0.5;  // 0 messy … 1 meticulous
   double sociability = 0.5;
   int prayers_per_day = 0;
-  std::string text;                       // lower-case fields, for keyword matching
+  std::string text;  // lower-case fields, for keyword matching
 };
 
 // Reads the traits from the persona's text (deterministic; no randomness).

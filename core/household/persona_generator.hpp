@@ -20,10 +20,10 @@ std::string_view household_role_name(HouseholdRole role);  // "single", "partner
 std::optional<HouseholdRole> parse_household_role(std::string_view name);
 
 struct PersonaConstraints {
-  std::optional<int> min_age, max_age;          // inclusive, 0 … 120
-  std::optional<std::string> occupation;        // matched against the curated occupations ("nurse", "retired")
+  std::optional<int> min_age, max_age;    // inclusive, 0 … 120
+  std::optional<std::string> occupation;  // matched against the curated occupations ("nurse", "retired")
   std::optional<HouseholdRole> household_role;
-  std::optional<std::string> gender;            // "female" | "male"
+  std::optional<std::string> gender;  // "female" | "male"
 };
 
 struct PersonaRequest {
@@ -47,6 +47,7 @@ std::vector<std::string> known_occupations();
 
 // `count` personas fitting the constraints, none a near-duplicate of `existing` or of each other.
 // Deterministic in the seed. kValidation naming /constraints/... when no persona can fit.
-Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& request, std::span<const Persona> existing);
+Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& request,
+                                                       std::span<const Persona> existing);
 
 }  // namespace socsim::household

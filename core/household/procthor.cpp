@@ -13,13 +13,16 @@ std::vector<std::string> asset_tokens(std::string_view asset) {
   std::vector<std::string> out;
   std::string cur;
   auto flush = [&] {
-    const bool has_digit = std::any_of(cur.begin(), cur.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    const bool has_digit = std::any_of(cur.begin(), cur.end(),
+                                       [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
     if (!cur.empty() && !has_digit && cur != "v" && !(out.empty() && cur == "robothor")) out.push_back(cur);
     cur.clear();
   };
   for (char c : asset) {
-    if (c == '_' || c == '-' || c == ' ') flush();
-    else cur += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (c == '_' || c == '-' || c == ' ')
+      flush();
+    else
+      cur += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   }
   flush();
   return out;
@@ -27,23 +30,57 @@ std::vector<std::string> asset_tokens(std::string_view asset) {
 
 // Asset-name phrases → AI2-THOR types, longest and most specific first.
 constexpr std::pair<std::string_view, std::string_view> kAssetPhrases[] = {
-    {"alarm clock", "AlarmClock"},   {"dining table", "DiningTable"}, {"coffee table", "CoffeeTable"},
-    {"side table", "SideTable"},     {"tv stand", "TVStand"},         {"shelving unit", "ShelvingUnit"},
-    {"desk lamp", "DeskLamp"},       {"floor lamp", "FloorLamp"},     {"office chair", "Chair"},
-    {"wall decor", "Painting"},      {"dog bed", "DogBed"},           {"garbagebag", "GarbageBag"},
-    {"garbage bag", "GarbageBag"},   {"washing machine", "WashingMachine"}, {"clothes dryer", "ClothesDryer"},
-    {"coffee machine", "CoffeeMachine"}, {"soap bar", "SoapBar"},    {"soap bottle", "SoapBottle"},
-    {"spray bottle", "SprayBottle"}, {"wine bottle", "WineBottle"},   {"pepper", "PepperShaker"},
-    {"salt shaker", "SaltShaker"},   {"tissue box", "TissueBox"},     {"teddy bear", "TeddyBear"},
-    {"tennis racquet", "TennisRacket"}, {"tennis racket", "TennisRacket"}, {"toilet paper", "ToiletPaper"},
-    {"paper towel", "PaperTowelRoll"}, {"dish sponge", "DishSponge"}, {"butter knife", "ButterKnife"},
-    {"butterknife", "ButterKnife"},  {"baseball bat", "BaseballBat"}, {"baseballbat", "BaseballBat"},
-    {"credit card", "CreditCard"},   {"creditcard", "CreditCard"},   {"faucet", "Faucet"},
-    {"statue", "Statue"},            {"decorativebox", "Box"},        {"countertop", "CounterTop"},
-    {"armchair", "ArmChair"},        {"bin", "GarbageCan"},           {"remote", "RemoteControl"},
-    {"cellphone", "CellPhone"},      {"keychain", "KeyChain"},        {"houseplant", "HousePlant"},
-    {"basketball", "BasketBall"},    {"television", "Television"},    {"cd", "CD"},
-    {"laundry hamper", "LaundryHamper"}, {"towel holder", "TowelHolder"}, {"watering can", "WateringCan"},
+    {"alarm clock", "AlarmClock"},
+    {"dining table", "DiningTable"},
+    {"coffee table", "CoffeeTable"},
+    {"side table", "SideTable"},
+    {"tv stand", "TVStand"},
+    {"shelving unit", "ShelvingUnit"},
+    {"desk lamp", "DeskLamp"},
+    {"floor lamp", "FloorLamp"},
+    {"office chair", "Chair"},
+    {"wall decor", "Painting"},
+    {"dog bed", "DogBed"},
+    {"garbagebag", "GarbageBag"},
+    {"garbage bag", "GarbageBag"},
+    {"washing machine", "WashingMachine"},
+    {"clothes dryer", "ClothesDryer"},
+    {"coffee machine", "CoffeeMachine"},
+    {"soap bar", "SoapBar"},
+    {"soap bottle", "SoapBottle"},
+    {"spray bottle", "SprayBottle"},
+    {"wine bottle", "WineBottle"},
+    {"pepper", "PepperShaker"},
+    {"salt shaker", "SaltShaker"},
+    {"tissue box", "TissueBox"},
+    {"teddy bear", "TeddyBear"},
+    {"tennis racquet", "TennisRacket"},
+    {"tennis racket", "TennisRacket"},
+    {"toilet paper", "ToiletPaper"},
+    {"paper towel", "PaperTowelRoll"},
+    {"dish sponge", "DishSponge"},
+    {"butter knife", "ButterKnife"},
+    {"butterknife", "ButterKnife"},
+    {"baseball bat", "BaseballBat"},
+    {"baseballbat", "BaseballBat"},
+    {"credit card", "CreditCard"},
+    {"creditcard", "CreditCard"},
+    {"faucet", "Faucet"},
+    {"statue", "Statue"},
+    {"decorativebox", "Box"},
+    {"countertop", "CounterTop"},
+    {"armchair", "ArmChair"},
+    {"bin", "GarbageCan"},
+    {"remote", "RemoteControl"},
+    {"cellphone", "CellPhone"},
+    {"keychain", "KeyChain"},
+    {"houseplant", "HousePlant"},
+    {"basketball", "BasketBall"},
+    {"television", "Television"},
+    {"cd", "CD"},
+    {"laundry hamper", "LaundryHamper"},
+    {"towel holder", "TowelHolder"},
+    {"watering can", "WateringCan"},
 };
 
 bool has_phrase(const std::string& joined, std::string_view phrase) {
@@ -59,7 +96,9 @@ bool known_type(const HouseholdKnowledge& k, std::string_view t) {
   return k.is_movable(t) || k.is_fixture(t) || k.receptacle(t) != nullptr;
 }
 
-Json point_json(double x, double y, double z) { return Json{{"x", x}, {"y", y}, {"z", z}}; }
+Json point_json(double x, double y, double z) {
+  return Json{{"x", x}, {"y", y}, {"z", z}};
+}
 
 struct Importer {
   const HouseholdKnowledge& k;
@@ -70,7 +109,8 @@ struct Importer {
     const Json* v = check.object(obj, ptr, key, required);
     if (!v) return std::nullopt;
     const std::string p = JsonChecker::child(ptr, key);
-    auto x = check.number(*v, p, "x", true), y = check.number(*v, p, "y", false), z = check.number(*v, p, "z", true);
+    auto x = check.number(*v, p, "x", true), y = check.number(*v, p, "y", false),
+         z = check.number(*v, p, "z", true);
     if (!x || !z) return std::nullopt;
     return Vec3{*x, y.value_or(0.0), *z};
   }
@@ -100,7 +140,9 @@ struct Importer {
       if (auto rot = vec(o, p, "rotation", false)) e.rotation = *rot;
       const std::string prefix = e.id.substr(0, e.id.find('|'));
       e.type = known_type(k, prefix) ? prefix : object_type_from_asset(e.asset_id, k);
-      e.kind = k.receptacle(e.type) ? EntityKind::kReceptacle : k.is_movable(e.type) ? EntityKind::kObject : EntityKind::kFixture;
+      e.kind = k.receptacle(e.type)   ? EntityKind::kReceptacle
+               : k.is_movable(e.type) ? EntityKind::kObject
+                                      : EntityKind::kFixture;
       if (const auto* spec = k.receptacle(e.type)) {
         const bool turned = std::fmod(std::abs(e.rotation.y) + 45.0, 180.0) > 90.0;
         e.size_x = turned ? spec->size_z : spec->size_x;
@@ -114,7 +156,8 @@ struct Importer {
       e.extra = without(o, {"id", "assetId", "position", "rotation", "children"});
       h.entities.push_back(std::move(e));
       const int self = static_cast<int>(h.entities.size() - 1);
-      if (const Json* children = check.array(o, p, "children", false, 1000)) objects(*children, JsonChecker::child(p, "children"), self, depth + 1);
+      if (const Json* children = check.array(o, p, "children", false, 1000))
+        objects(*children, JsonChecker::child(p, "children"), self, depth + 1);
     }
   }
 
@@ -188,8 +231,10 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
       Room room;
       if (auto rid = check.string(r, p, "id", true, 1, 100)) room.id = *rid;
       if (auto t = check.string(r, p, "roomType", true, 1, 40)) {
-        if (auto rt = parse_room_type(*t)) room.type = *rt;
-        else check.add(p + "/roomType", "must be Bedroom, Bathroom, LivingRoom or Kitchen (got '" + *t + "')");
+        if (auto rt = parse_room_type(*t))
+          room.type = *rt;
+        else
+          check.add(p + "/roomType", "must be Bedroom, Bathroom, LivingRoom or Kitchen (got '" + *t + "')");
       }
       if (const Json* poly = check.array(r, p, "floorPolygon", true, 1000)) {
         if (poly->size() < 3) check.add(p + "/floorPolygon", "needs at least 3 points");
@@ -198,7 +243,8 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
           auto x = check.number((*poly)[j], pp, "x", true), z = check.number((*poly)[j], pp, "z", true);
           if (x && z) room.floor.push_back({*x, *z});
         }
-        if (room.floor.size() >= 3 && polygon_area(room.floor) <= 0.0) check.add(p + "/floorPolygon", "has no area");
+        if (room.floor.size() >= 3 && polygon_area(room.floor) <= 0.0)
+          check.add(p + "/floorPolygon", "has no area");
       }
       room.extra = Importer::without(r, {"id", "roomType", "floorPolygon"});
       h.rooms.push_back(std::move(room));
@@ -248,12 +294,14 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
       if (auto v = check.string(d, p, "wall1", true, 1, 200)) door.wall1 = *v;
       if (auto v = check.string(d, p, "assetId", false, 1, 200)) door.asset_id = *v;
       if (const Json* hole = check.array(d, p, "holePolygon", true, 2)) {
-        if (hole->size() != 2) check.add(p + "/holePolygon", "must hold the two corners of the opening");
+        if (hole->size() != 2)
+          check.add(p + "/holePolygon", "must hold the two corners of the opening");
         else {
           const Json& h0 = (*hole)[0];
           const Json& h1 = (*hole)[1];
           auto rd = [&](const Json& o, const std::string& pp, Vec3& out) {
-            auto x = check.number(o, pp, "x", true), y = check.number(o, pp, "y", true), z = check.number(o, pp, "z", false);
+            auto x = check.number(o, pp, "x", true), y = check.number(o, pp, "y", true),
+                 z = check.number(o, pp, "z", false);
             if (x && y) out = {*x, *y, z.value_or(0.0)};
           };
           rd(h0, p + "/holePolygon/0", door.hole_min);
@@ -263,8 +311,8 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
       if (auto ap = im.vec(d, p, "assetPosition", false)) door.asset_position = *ap;
       if (auto v = check.boolean(d, p, "openable", false)) door.openable = *v;
       if (auto v = check.number(d, p, "openness", false, 0.0, 1.0)) door.openness = *v;
-      door.extra = Importer::without(d, {"id", "room0", "room1", "wall0", "wall1", "assetId", "holePolygon", "assetPosition",
-                                         "openable", "openness"});
+      door.extra = Importer::without(d, {"id", "room0", "room1", "wall0", "wall1", "assetId", "holePolygon",
+                                         "assetPosition", "openable", "openness"});
       h.doors.push_back(std::move(door));
     }
   if (const Json* w = check.array(json, "", "windows", false, 1000)) h.windows = *w;
@@ -295,8 +343,8 @@ Json export_procthor(const House& h, const std::vector<int>* placement) {
     j["id"] = w.id;
     j["roomId"] = w.room_id;
     if (!j.contains("polygon"))
-      j["polygon"] = Json::array({point_json(w.a.x, 0, w.a.z), point_json(w.b.x, 0, w.b.z), point_json(w.a.x, w.height, w.a.z),
-                                  point_json(w.b.x, w.height, w.b.z)});
+      j["polygon"] = Json::array({point_json(w.a.x, 0, w.a.z), point_json(w.b.x, 0, w.b.z),
+                                  point_json(w.a.x, w.height, w.a.z), point_json(w.b.x, w.height, w.b.z)});
     if (w.empty) j["empty"] = true;
     walls.push_back(std::move(j));
   }
@@ -309,7 +357,8 @@ Json export_procthor(const House& h, const std::vector<int>* placement) {
     j["wall0"] = d.wall0;
     j["wall1"] = d.wall1;
     if (!d.asset_id.empty()) j["assetId"] = d.asset_id;
-    j["holePolygon"] = Json::array({point_json(d.hole_min.x, d.hole_min.y, d.hole_min.z), point_json(d.hole_max.x, d.hole_max.y, d.hole_max.z)});
+    j["holePolygon"] = Json::array({point_json(d.hole_min.x, d.hole_min.y, d.hole_min.z),
+                                    point_json(d.hole_max.x, d.hole_max.y, d.hole_max.z)});
     j["assetPosition"] = point_json(d.asset_position.x, d.asset_position.y, d.asset_position.z);
     j["openable"] = d.openable;
     j["openness"] = d.openness;
@@ -336,8 +385,10 @@ Json export_procthor(const House& h, const std::vector<int>* placement) {
   for (std::size_t i = 0; i < h.entities.size(); ++i) {
     if (h.entities[i].synthetic) continue;
     const int p = parent[i];
-    if (p < 0 || h.entities[static_cast<std::size_t>(p)].synthetic) top.push_back(i);
-    else children[static_cast<std::size_t>(p)].push_back(i);
+    if (p < 0 || h.entities[static_cast<std::size_t>(p)].synthetic)
+      top.push_back(i);
+    else
+      children[static_cast<std::size_t>(p)].push_back(i);
   }
   auto build = [&](auto&& self, std::size_t i) -> Json {
     const Entity& e = h.entities[i];

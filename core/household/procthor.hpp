@@ -12,7 +12,8 @@
 namespace socsim::household {
 
 // Reads a house; every problem is reported with its JSON pointer. `id` names the house.
-Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowledge, const std::string& id = "procthor");
+Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowledge,
+                              const std::string& id = "procthor");
 
 // Writes ProcTHOR JSON. With `placement` (one receptacle entity index per House::objects entry),
 // movable objects are written on those receptacles instead of where the house put them.

@@ -34,10 +34,13 @@ std::string spaced_lower(std::string_view camel) {
 
 }  // namespace
 
-std::string object_words(std::string_view type) { return spaced_lower(type); }
+std::string object_words(std::string_view type) {
+  return spaced_lower(type);
+}
 
 Result<ResidentProfile> make_resident_offline(const Persona& persona, const HouseholdKnowledge& knowledge,
-                                              const ScheduleRequest& request, ActivityVocabulary& vocabulary) {
+                                              const ScheduleRequest& request,
+                                              ActivityVocabulary& vocabulary) {
   auto schedule = generate_schedule_offline(persona, knowledge, request, vocabulary);
   if (!schedule) return tl::unexpected(schedule.error());
   OfflineActivityDatabaseGenerator gen(knowledge);
@@ -48,7 +51,8 @@ Result<ResidentProfile> make_resident_offline(const Persona& persona, const Hous
 }
 
 const ScheduleEntry& DynamicScene::entry(const SceneEvent& e) const {
-  return residents_[static_cast<std::size_t>(e.resident)].profile->schedule.entries[static_cast<std::size_t>(e.entry)];
+  return residents_[static_cast<std::size_t>(e.resident)]
+      .profile->schedule.entries[static_cast<std::size_t>(e.entry)];
 }
 
 int DynamicScene::receptacle_at(int object, Seconds t) const {
@@ -67,15 +71,18 @@ std::vector<int> DynamicScene::placement_at(Seconds t) const {
 }
 
 std::span<const Relocation> DynamicScene::relocations_between(Seconds t1, Seconds t2) const {
-  auto lo = std::lower_bound(relocations_.begin(), relocations_.end(), t1, [](const Relocation& r, Seconds t) { return r.time < t; });
-  auto hi = std::lower_bound(lo, relocations_.end(), t2, [](const Relocation& r, Seconds t) { return r.time < t; });
+  auto lo = std::lower_bound(relocations_.begin(), relocations_.end(), t1,
+                             [](const Relocation& r, Seconds t) { return r.time < t; });
+  auto hi =
+      std::lower_bound(lo, relocations_.end(), t2, [](const Relocation& r, Seconds t) { return r.time < t; });
   if (t2 <= t1) hi = lo;
   return {relocations_.data() + (lo - relocations_.begin()), static_cast<std::size_t>(hi - lo)};
 }
 
 std::vector<int> DynamicScene::events_between(Seconds t1, Seconds t2) const {
   std::vector<int> out;
-  const auto last = std::lower_bound(events_.begin(), events_.end(), t2, [](const SceneEvent& e, Seconds t) { return e.start < t; });
+  const auto last = std::lower_bound(events_.begin(), events_.end(), t2,
+                                     [](const SceneEvent& e, Seconds t) { return e.start < t; });
   for (auto it = events_.begin(); it != last; ++it)
     if (it->end > t1) out.push_back(static_cast<int>(it - events_.begin()));
   return out;
@@ -97,7 +104,8 @@ Hint DynamicScene::hint(int resident, std::string_view object, Seconds t, Second
     if (e.end < t - lookback) break;
     for (std::uint32_t k = e.first_relocation; k < e.first_relocation + e.relocation_count; ++k) {
       const Relocation& r = relocations_[event_relocations_[k]];
-      const Entity& obj = house_->entities[static_cast<std::size_t>(house_->objects[static_cast<std::size_t>(r.object)])];
+      const Entity& obj =
+          house_->entities[static_cast<std::size_t>(house_->objects[static_cast<std::size_t>(r.object)])];
       if (by_id ? obj.id != object : obj.type != object) continue;
       const Entity& rec = house_->entities[static_cast<std::size_t>(r.to)];
       h.used = true;
@@ -107,13 +115,16 @@ Hint DynamicScene::hint(int resident, std::string_view object, Seconds t, Second
       h.when = r.time;
       h.room_id = house_->rooms[static_cast<std::size_t>(rec.room)].id;
       h.receptacle_id = rec.id;
-      const std::string room_words = object_words(room_type_name(house_->rooms[static_cast<std::size_t>(rec.room)].type));
-      h.text = "Yes, I used the " + object_words(obj.type) + " while " + h.activity + " " + time_phrase(r.time, t, first_day_) +
-               " and left it on the " + object_words(rec.type) + " in the " + room_words + ".";
+      const std::string room_words =
+          object_words(room_type_name(house_->rooms[static_cast<std::size_t>(rec.room)].type));
+      h.text = "Yes, I used the " + object_words(obj.type) + " while " + h.activity + " " +
+               time_phrase(r.time, t, first_day_) + " and left it on the " + object_words(rec.type) +
+               " in the " + room_words + ".";
       return h;
     }
   }
-  const std::string what = by_id ? object_words(std::string(object.substr(0, object.find('|')))) : object_words(object);
+  const std::string what =
+      by_id ? object_words(std::string(object.substr(0, object.find('|')))) : object_words(object);
   h.text = "No, I don't think I've used the " + what + " recently.";
   return h;
 }
@@ -121,11 +132,13 @@ Hint DynamicScene::hint(int resident, std::string_view object, Seconds t, Second
 Result<Hint> OfflineHintGenerator::hint(const HintQuery& q) {
   if (!q.scene) return fail(ErrorCode::kValidation, "a hint needs a scene");
   if (q.resident < 0 || q.resident >= static_cast<int>(q.scene->residents().size()))
-    return fail(ErrorCode::kValidation, "no such resident", {FieldError{"/resident", "must name a resident of the scene", {}, 0, 0}});
+    return fail(ErrorCode::kValidation, "no such resident",
+                {FieldError{"/resident", "must name a resident of the scene", {}, 0, 0}});
   return q.scene->hint(q.resident, q.object, q.time, q.lookback);
 }
 
-Result<DynamicScene> configure_scene(std::shared_ptr<const House> house, std::span<const std::shared_ptr<const ResidentProfile>> pool,
+Result<DynamicScene> configure_scene(std::shared_ptr<const House> house,
+                                     std::span<const std::shared_ptr<const ResidentProfile>> pool,
                                      const SceneRequest& request, const HouseholdKnowledge& knowledge) {
   if (!house || house->rooms.empty()) return fail(ErrorCode::kValidation, "a scene needs a house with rooms");
   if (pool.empty()) return fail(ErrorCode::kValidation, "no residents to choose from");
@@ -133,10 +146,15 @@ Result<DynamicScene> configure_scene(std::shared_ptr<const House> house, std::sp
   Rng rng(request.seed, fnv1a64("scene"));
   const auto bedrooms = h.rooms_of(RoomType::kBedroom);
   const auto bathrooms = h.rooms_of(RoomType::kBathroom);
-  const int most = std::max(1, std::min<int>({4, static_cast<int>(bedrooms.size()), static_cast<int>(pool.size())}));
+  const int most =
+      std::max(1, std::min<int>({4, static_cast<int>(bedrooms.size()), static_cast<int>(pool.size())}));
   if (request.residents < 0 || request.residents > most)
     return fail(ErrorCode::kValidation, "this house has room for 1 to " + std::to_string(most) + " residents",
-                {FieldError{"/residents", "must be between 1 and " + std::to_string(most) + " (one bedroom each), or 0", {}, 0, 0}});
+                {FieldError{"/residents",
+                            "must be between 1 and " + std::to_string(most) + " (one bedroom each), or 0",
+                            {},
+                            0,
+                            0}});
   const int n = request.residents > 0 ? request.residents : static_cast<int>(rng.between(1, most));
 
   DynamicScene s;
@@ -172,18 +190,22 @@ Result<DynamicScene> configure_scene(std::shared_ptr<const House> house, std::sp
     if (e.room >= 0 && !e.synthetic) receptacles_in[static_cast<std::size_t>(e.room)][e.type].push_back(idx);
   }
   std::map<std::string, std::vector<int>, std::less<>> objects_of;
-  for (std::size_t o = 0; o < h.objects.size(); ++o) objects_of[h.entities[static_cast<std::size_t>(h.objects[o])].type].push_back(static_cast<int>(o));
+  for (std::size_t o = 0; o < h.objects.size(); ++o)
+    objects_of[h.entities[static_cast<std::size_t>(h.objects[o])].type].push_back(static_cast<int>(o));
   std::vector<int> current(h.objects.size());
-  for (std::size_t o = 0; o < h.objects.size(); ++o) current[o] = h.entities[static_cast<std::size_t>(h.objects[o])].parent;
+  for (std::size_t o = 0; o < h.objects.size(); ++o)
+    current[o] = h.entities[static_cast<std::size_t>(h.objects[o])].parent;
   std::vector<int> owner_of_room(h.rooms.size(), -1);
   for (std::size_t r = 0; r < s.residents_.size(); ++r)
-    if (s.residents_[r].bedroom >= 0) owner_of_room[static_cast<std::size_t>(s.residents_[r].bedroom)] = static_cast<int>(r);
+    if (s.residents_[r].bedroom >= 0)
+      owner_of_room[static_cast<std::size_t>(s.residents_[r].bedroom)] = static_cast<int>(r);
 
   // Events of all residents, processed in the order their effects happen (their end).
   for (std::size_t r = 0; r < s.residents_.size(); ++r) {
     const auto& entries = s.residents_[r].profile->schedule.entries;
     for (std::size_t e = 0; e < entries.size(); ++e)
-      s.events_.push_back({static_cast<int>(r), static_cast<int>(e), entries[e].start * Seconds{60}, entries[e].end * Seconds{60}, -1, 0, 0});
+      s.events_.push_back({static_cast<int>(r), static_cast<int>(e), entries[e].start * Seconds{60},
+                           entries[e].end * Seconds{60}, -1, 0, 0});
   }
   std::stable_sort(s.events_.begin(), s.events_.end(), [](const SceneEvent& a, const SceneEvent& b) {
     return a.start != b.start ? a.start < b.start : a.resident < b.resident;
@@ -211,8 +233,10 @@ Result<DynamicScene> configure_scene(std::shared_ptr<const House> house, std::sp
     if (std::all_of(w.begin(), w.end(), [](double x) { return x <= 0.0; })) continue;
     const LocationPrior& loc = prior->locations[er.weighted(w)];
     int room = -1;
-    if (loc.room == RoomType::kBedroom && res.bedroom >= 0) room = res.bedroom;
-    else if (loc.room == RoomType::kBathroom && res.bathroom >= 0) room = res.bathroom;
+    if (loc.room == RoomType::kBedroom && res.bedroom >= 0)
+      room = res.bedroom;
+    else if (loc.room == RoomType::kBathroom && res.bathroom >= 0)
+      room = res.bathroom;
     else {
       const auto candidates = h.rooms_of(loc.room);
       room = candidates[er.below(static_cast<std::uint32_t>(candidates.size()))];
@@ -240,7 +264,8 @@ Result<DynamicScene> configure_scene(std::shared_ptr<const House> house, std::sp
       const int object = found->second[er.weighted(w)];
       if (current[static_cast<std::size_t>(object)] == target) continue;
       per_event[idx].push_back(static_cast<std::uint32_t>(s.relocations_.size()));
-      s.relocations_.push_back({ev.end, object, current[static_cast<std::size_t>(object)], target, static_cast<int>(idx)});
+      s.relocations_.push_back(
+          {ev.end, object, current[static_cast<std::size_t>(object)], target, static_cast<int>(idx)});
       current[static_cast<std::size_t>(object)] = target;
     }
   }
@@ -262,7 +287,8 @@ Result<DynamicScene> configure_scene(std::shared_ptr<const House> house, std::sp
     s.object_receptacles_[at] = r.to;
   }
   s.resident_events_.assign(s.residents_.size(), {});
-  for (std::size_t e = 0; e < s.events_.size(); ++e) s.resident_events_[static_cast<std::size_t>(s.events_[e].resident)].push_back(static_cast<int>(e));
+  for (std::size_t e = 0; e < s.events_.size(); ++e)
+    s.resident_events_[static_cast<std::size_t>(s.events_[e].resident)].push_back(static_cast<int>(e));
   (void)knowledge;
   return s;
 }
@@ -271,17 +297,19 @@ Json DynamicScene::to_json() const {
   const House& h = *house_;
   Json residents = Json::array();
   for (const auto& r : residents_)
-    residents.push_back({{"persona_id", persona_id(r.profile->persona)},
-                         {"name", r.profile->persona.name},
-                         {"bedroom", r.bedroom >= 0 ? Json(h.rooms[static_cast<std::size_t>(r.bedroom)].id) : Json()},
-                         {"bathroom", r.bathroom >= 0 ? Json(h.rooms[static_cast<std::size_t>(r.bathroom)].id) : Json()}});
+    residents.push_back(
+        {{"persona_id", persona_id(r.profile->persona)},
+         {"name", r.profile->persona.name},
+         {"bedroom", r.bedroom >= 0 ? Json(h.rooms[static_cast<std::size_t>(r.bedroom)].id) : Json()},
+         {"bathroom", r.bathroom >= 0 ? Json(h.rooms[static_cast<std::size_t>(r.bathroom)].id) : Json()}});
   Json events = Json::array();
   for (const auto& e : events_) {
     Json moves = Json::array();
     for (std::uint32_t k = e.first_relocation; k < e.first_relocation + e.relocation_count; ++k) {
       const auto& r = relocations_[event_relocations_[k]];
-      moves.push_back({{"object", h.entities[static_cast<std::size_t>(h.objects[static_cast<std::size_t>(r.object)])].id},
-                       {"receptacle", h.entities[static_cast<std::size_t>(r.to)].id}});
+      moves.push_back(
+          {{"object", h.entities[static_cast<std::size_t>(h.objects[static_cast<std::size_t>(r.object)])].id},
+           {"receptacle", h.entities[static_cast<std::size_t>(r.to)].id}});
     }
     const auto& en = entry(e);
     events.push_back({{"resident", e.resident},
@@ -297,17 +325,23 @@ Json DynamicScene::to_json() const {
     const Entity& e = h.entities[static_cast<std::size_t>(o)];
     initial[e.id] = h.entities[static_cast<std::size_t>(e.parent)].id;
   }
-  return {{"house_id", h.id},      {"seed", seed_},  {"first_day", weekday_name(first_day_)}, {"start", 0}, {"end", end_},
-          {"residents", residents}, {"initial", initial}, {"events", events}};
+  return {{"house_id", h.id},   {"seed", seed_},   {"first_day", weekday_name(first_day_)},
+          {"start", 0},         {"end", end_},     {"residents", residents},
+          {"initial", initial}, {"events", events}};
 }
 
 Json to_json(const ResidentProfile& profile) {
-  return {{"persona", to_json(profile.persona)}, {"schedule", to_json(profile.schedule)}, {"activity_db", to_json(profile.activity_db)}};
+  return {{"persona", to_json(profile.persona)},
+          {"schedule", to_json(profile.schedule)},
+          {"activity_db", to_json(profile.activity_db)}};
 }
 
-Result<ResidentProfile> resident_profile_from_json(const Json& json, const HouseholdKnowledge& knowledge, const std::string& pointer) {
-  if (!json.is_object() || !json.contains("persona") || !json.contains("schedule") || !json.contains("activity_db"))
-    return fail(ErrorCode::kValidation, "invalid resident profile", {FieldError{pointer, "must have persona, schedule and activity_db", {}, 0, 0}});
+Result<ResidentProfile> resident_profile_from_json(const Json& json, const HouseholdKnowledge& knowledge,
+                                                   const std::string& pointer) {
+  if (!json.is_object() || !json.contains("persona") || !json.contains("schedule") ||
+      !json.contains("activity_db"))
+    return fail(ErrorCode::kValidation, "invalid resident profile",
+                {FieldError{pointer, "must have persona, schedule and activity_db", {}, 0, 0}});
   auto persona = persona_from_json(json["persona"], pointer + "/persona");
   if (!persona) return tl::unexpected(persona.error());
   auto schedule = schedule_from_json(json["schedule"], knowledge, pointer + "/schedule");
@@ -322,4 +356,3 @@ Result<ResidentProfile> resident_profile_from_json(const Json& json, const House
 }
 
 }  // namespace socsim::household
-

@@ -35,32 +35,32 @@ struct Resident {
 
 struct SceneEvent {
   int resident = 0;
-  int entry = 0;            // index into the resident's schedule entries
+  int entry = 0;  // index into the resident's schedule entries
   Seconds start = 0, end = 0;
-  int room = -1;            // room index, -1 when away or nowhere to go in this house
+  int room = -1;  // room index, -1 when away or nowhere to go in this house
   std::uint32_t first_relocation = 0, relocation_count = 0;  // into relocations() in event order
 };
 
 struct Relocation {
-  Seconds time = 0;  // the end of the event that moved the object
-  int object = 0;    // index into House::objects
+  Seconds time = 0;      // the end of the event that moved the object
+  int object = 0;        // index into House::objects
   int from = 0, to = 0;  // receptacle entity indices
-  int event = 0;     // index into events()
+  int event = 0;         // index into events()
 };
 
 // What a resident answers when asked whether they used an object recently.
 struct Hint {
   bool used = false;
-  int object = -1;          // index into House::objects when used
+  int object = -1;  // index into House::objects when used
   int event = -1;
-  std::string activity;     // as the resident calls it
+  std::string activity;  // as the resident calls it
   std::string room_id, receptacle_id;
   Seconds when = 0;
   std::string text;
 };
 
 struct SceneRequest {
-  int residents = 0;       // 0: between 1 and min(4, bedrooms), at random
+  int residents = 0;  // 0: between 1 and min(4, bedrooms), at random
   std::uint64_t seed = 0;
 };
 
@@ -68,7 +68,7 @@ class DynamicScene {
  public:
   [[nodiscard]] const House& house() const { return *house_; }
   [[nodiscard]] const std::vector<Resident>& residents() const { return residents_; }
-  [[nodiscard]] const std::vector<SceneEvent>& events() const { return events_; }         // by start time
+  [[nodiscard]] const std::vector<SceneEvent>& events() const { return events_; }            // by start time
   [[nodiscard]] const std::vector<Relocation>& relocations() const { return relocations_; }  // by time
   [[nodiscard]] Seconds end() const { return end_; }
   [[nodiscard]] Weekday first_day() const { return first_day_; }
@@ -85,19 +85,21 @@ class DynamicScene {
   [[nodiscard]] std::span<const int> events_of(int resident) const;
   // Offline hint: the resident's own most recent use of an object of this type (or this object
   // id) within `lookback` before t.
-  [[nodiscard]] Hint hint(int resident, std::string_view object_type_or_id, Seconds t, Seconds lookback = kSecondsPerDay) const;
+  [[nodiscard]] Hint hint(int resident, std::string_view object_type_or_id, Seconds t,
+                          Seconds lookback = kSecondsPerDay) const;
 
   [[nodiscard]] Json to_json() const;
 
  private:
-  friend Result<DynamicScene> configure_scene(std::shared_ptr<const House>, std::span<const std::shared_ptr<const ResidentProfile>>,
+  friend Result<DynamicScene> configure_scene(std::shared_ptr<const House>,
+                                              std::span<const std::shared_ptr<const ResidentProfile>>,
                                               const SceneRequest&, const HouseholdKnowledge&);
   std::shared_ptr<const House> house_;
   std::vector<Resident> residents_;
   std::vector<SceneEvent> events_;
-  std::vector<Relocation> relocations_;            // sorted by (time, processing order)
-  std::vector<std::uint32_t> event_relocations_;   // indices into relocations_, grouped by event
-  std::vector<std::uint32_t> object_offsets_;      // CSR over House::objects
+  std::vector<Relocation> relocations_;           // sorted by (time, processing order)
+  std::vector<std::uint32_t> event_relocations_;  // indices into relocations_, grouped by event
+  std::vector<std::uint32_t> object_offsets_;     // CSR over House::objects
   std::vector<Seconds> object_times_;
   std::vector<int> object_receptacles_;
   std::vector<std::vector<int>> resident_events_;
@@ -108,7 +110,8 @@ class DynamicScene {
 
 // Samples residents from `pool` by the number of bedrooms, assigns bedrooms and bathrooms, and
 // samples every event's effects. All profiles must cover the same days.
-Result<DynamicScene> configure_scene(std::shared_ptr<const House> house, std::span<const std::shared_ptr<const ResidentProfile>> pool,
+Result<DynamicScene> configure_scene(std::shared_ptr<const House> house,
+                                     std::span<const std::shared_ptr<const ResidentProfile>> pool,
                                      const SceneRequest& request, const HouseholdKnowledge& knowledge);
 
 // The hint a resident gives; offline answers from the scene's events, an LLM one from a coarse

@@ -12,7 +12,9 @@
 namespace socsim::household {
 namespace {
 
-int round5(double minutes) { return static_cast<int>(std::lround(minutes / 5.0)) * 5; }
+int round5(double minutes) {
+  return static_cast<int>(std::lround(minutes / 5.0)) * 5;
+}
 
 Rng rng_for(std::uint64_t seed, const std::string& persona, std::string_view label, int day) {
   return Rng(seed ^ fnv1a64(persona), fnv1a64(label) + static_cast<std::uint64_t>(day + 10));
@@ -42,34 +44,166 @@ struct Habit {
 };
 
 constexpr std::uint8_t kWeekdays = 0x1f, kWeekend = 0x60, kEveryDay = 0x7f;
-constexpr std::uint8_t day_bit(Weekday d) { return static_cast<std::uint8_t>(1u << static_cast<unsigned>(d)); }
+constexpr std::uint8_t day_bit(Weekday d) {
+  return static_cast<std::uint8_t>(1u << static_cast<unsigned>(d));
+}
 
 const std::vector<Habit>& habits() {
   static const std::vector<Habit> h = {
-      {{"runs", "running", "half marathon"}, 14, 80, kEveryDay, 0.8, 5.5, 7.5, 30, 60, "going for a run", false},
+      {{"runs", "running", "half marathon"},
+       14,
+       80,
+       kEveryDay,
+       0.8,
+       5.5,
+       7.5,
+       30,
+       60,
+       "going for a run",
+       false},
       {{"swim", "swims"}, 10, 90, kWeekdays, 0.8, 5.5, 7.0, 45, 60, "swimming laps at the pool", false},
       {{"dog", "beagle"}, 8, 95, kEveryDay, 0.95, 6.0, 8.5, 20, 40, "walking the dog", false},
       {{"dog", "beagle"}, 8, 95, kEveryDay, 0.8, 18.5, 21.0, 20, 35, "an evening walk with the dog", false},
       {{"church"}, 0, 120, day_bit(Weekday::kSunday), 0.95, 9.0, 10.5, 90, 150, "attending church", false},
       {{"choir"}, 0, 120, day_bit(Weekday::kThursday), 0.9, 18.5, 19.5, 100, 130, "choir rehearsal", false},
-      {{"gym", "bouldering", "lifts weights", "climbs"}, 14, 75, kWeekdays, 0.45, 17.5, 20.0, 60, 120, "training at the gym", false},
-      {{"fishing"}, 12, 90, day_bit(Weekday::kSaturday), 0.8, 5.5, 8.0, 240, 360, "fishing at the lake", false},
-      {{"rugby"}, 10, 60, day_bit(Weekday::kSunday), 0.9, 9.5, 11.0, 150, 210, "playing rugby with the club", false},
+      {{"gym", "bouldering", "lifts weights", "climbs"},
+       14,
+       75,
+       kWeekdays,
+       0.45,
+       17.5,
+       20.0,
+       60,
+       120,
+       "training at the gym",
+       false},
+      {{"fishing"},
+       12,
+       90,
+       day_bit(Weekday::kSaturday),
+       0.8,
+       5.5,
+       8.0,
+       240,
+       360,
+       "fishing at the lake",
+       false},
+      {{"rugby"},
+       10,
+       60,
+       day_bit(Weekday::kSunday),
+       0.9,
+       9.5,
+       11.0,
+       150,
+       210,
+       "playing rugby with the club",
+       false},
       {{"tennis"}, 10, 85, day_bit(Weekday::kFriday), 0.9, 10.0, 16.0, 80, 110, "playing tennis", false},
       {{"football"}, 6, 16, kWeekdays, 0.5, 15.75, 17.0, 60, 90, "playing football in the park", false},
-      {{"football on monday", "football on monday mornings"}, 17, 70, day_bit(Weekday::kMonday), 0.9, 9.5, 11.0, 90, 120, "playing football with friends", false},
+      {{"football on monday", "football on monday mornings"},
+       17,
+       70,
+       day_bit(Weekday::kMonday),
+       0.9,
+       9.5,
+       11.0,
+       90,
+       120,
+       "playing football with friends",
+       false},
       {{"basketball"}, 10, 18, kWeekdays, 0.5, 16.0, 18.0, 60, 120, "basketball practice", false},
-      {{"basketball"}, 10, 18, day_bit(Weekday::kSaturday), 0.9, 10.0, 14.0, 150, 180, "a basketball game", false},
-      {{"birdwatching"}, 10, 95, kWeekend, 0.8, 6.0, 9.0, 150, 240, "birdwatching in the nature reserve", false},
-      {{"backgammon at the cafe", "cafe"}, 50, 100, kEveryDay, 0.5, 15.0, 17.0, 90, 150, "playing backgammon at the cafe", false},
-      {{"walk", "long walk", "walks"}, 60, 100, kEveryDay, 0.8, 9.5, 16.0, 45, 90, "taking a long walk", false},
+      {{"basketball"},
+       10,
+       18,
+       day_bit(Weekday::kSaturday),
+       0.9,
+       10.0,
+       14.0,
+       150,
+       180,
+       "a basketball game",
+       false},
+      {{"birdwatching"},
+       10,
+       95,
+       kWeekend,
+       0.8,
+       6.0,
+       9.0,
+       150,
+       240,
+       "birdwatching in the nature reserve",
+       false},
+      {{"backgammon at the cafe", "cafe"},
+       50,
+       100,
+       kEveryDay,
+       0.5,
+       15.0,
+       17.0,
+       90,
+       150,
+       "playing backgammon at the cafe",
+       false},
+      {{"walk", "long walk", "walks"},
+       60,
+       100,
+       kEveryDay,
+       0.8,
+       9.5,
+       16.0,
+       45,
+       90,
+       "taking a long walk",
+       false},
       {{"pram"}, 18, 90, kEveryDay, 0.9, 10.0, 15.0, 60, 90, "walking the baby in the pram", false},
       {{"twins"}, 18, 90, kEveryDay, 0.7, 9.5, 11.0, 60, 90, "at the playground with the twins", false},
-      {{"weddings"}, 18, 90, day_bit(Weekday::kSaturday), 0.9, 11.0, 13.0, 480, 600, "photographing a wedding", false},
-      {{"saturday mornings"}, 14, 90, day_bit(Weekday::kSaturday), 1.0, 8.25, 8.75, 240, 270, "working the Saturday shift", false},
-      {{"evening classes"}, 18, 90, day_bit(Weekday::kTuesday) | day_bit(Weekday::kThursday), 0.95, 17.5, 18.0, 110, 130, "teaching an evening class", false},
+      {{"weddings"},
+       18,
+       90,
+       day_bit(Weekday::kSaturday),
+       0.9,
+       11.0,
+       13.0,
+       480,
+       600,
+       "photographing a wedding",
+       false},
+      {{"saturday mornings"},
+       14,
+       90,
+       day_bit(Weekday::kSaturday),
+       1.0,
+       8.25,
+       8.75,
+       240,
+       270,
+       "working the Saturday shift",
+       false},
+      {{"evening classes"},
+       18,
+       90,
+       day_bit(Weekday::kTuesday) | day_bit(Weekday::kThursday),
+       0.95,
+       17.5,
+       18.0,
+       110,
+       130,
+       "teaching an evening class",
+       false},
       {{"thrifts", "thrift"}, 14, 90, kWeekend, 0.4, 11.0, 15.0, 90, 150, "thrift shopping", false},
-      {{"ginger beer", "jazz records"}, 18, 90, day_bit(Weekday::kSaturday), 0.0, 12.0, 14.0, 60, 90, "record shopping", false},
+      {{"ginger beer", "jazz records"},
+       18,
+       90,
+       day_bit(Weekday::kSaturday),
+       0.0,
+       12.0,
+       14.0,
+       60,
+       90,
+       "record shopping",
+       false},
   };
   return h;
 }
@@ -88,9 +222,12 @@ struct PersonaContext {
     if (!works(d)) return false;
     switch (traits.work) {
       case WorkPattern::kRemote:
-      case WorkPattern::kFreelance: return false;
-      case WorkPattern::kHybrid: return !traits.home_work_days[static_cast<std::size_t>(d)];
-      default: return true;
+      case WorkPattern::kFreelance:
+        return false;
+      case WorkPattern::kHybrid:
+        return !traits.home_work_days[static_cast<std::size_t>(d)];
+      default:
+        return true;
     }
   }
   [[nodiscard]] bool works_home(Weekday d) const {
@@ -100,7 +237,8 @@ struct PersonaContext {
 
 class DayTimes {
  public:
-  DayTimes(const PersonaContext& pc, std::uint64_t seed, Weekday first) : pc_(pc), seed_(seed), first_(first) {}
+  DayTimes(const PersonaContext& pc, std::uint64_t seed, Weekday first)
+      : pc_(pc), seed_(seed), first_(first) {}
 
   [[nodiscard]] Weekday weekday(int d) const { return weekday_after(first_, d); }
 
@@ -153,7 +291,8 @@ class DayTimes {
         const int leave = std::max(t.work_start - pc_.commute, day_start + 30);
         out.push_back({leave, t.work_end + pc_.commute + jitter_end, BlockKind::kAway, work_description()});
         if (t.second_start >= 0)
-          out.push_back({t.second_start - pc_.commute, t.second_end + pc_.commute, BlockKind::kAway, work_description()});
+          out.push_back({t.second_start - pc_.commute, t.second_end + pc_.commute, BlockKind::kAway,
+                         work_description()});
       } else if (pc_.works_home(wd)) {
         const int start = std::max(t.work_start, day_start + 45);
         const int end = std::max(start + 120, t.work_end + jitter_end);
@@ -165,7 +304,8 @@ class DayTimes {
         if (nr.chance(0.8)) {
           const int start = 13 * 60 + 30 + round5(nr.uniform(0, 60));
           const int len = round5(nr.uniform(30, pc_.persona.age < 6 ? 100 : 70));
-          if (fits(out, start, start + len, day_start, 0)) out.push_back({start, start + len, BlockKind::kNap, "an afternoon nap"});
+          if (fits(out, start, start + len, day_start, 0))
+            out.push_back({start, start + len, BlockKind::kNap, "an afternoon nap"});
         }
       }
     }
@@ -200,29 +340,39 @@ class DayTimes {
     for (const Habit& h : habits()) {
       if (age < h.min_age || age > h.max_age || (h.days & day_bit(wd)) == 0) continue;
       if (h.free_days_only && pc_.works(wd)) continue;
-      if (!std::any_of(h.keywords.begin(), h.keywords.end(), [&](std::string_view k) { return mentions(pc_.traits, k); })) continue;
+      if (!std::any_of(h.keywords.begin(), h.keywords.end(),
+                       [&](std::string_view k) { return mentions(pc_.traits, k); }))
+        continue;
       if (!r.chance(h.p)) continue;
       try_place(h.window_lo, h.window_hi, h.min_minutes, h.max_minutes, h.description);
     }
     if (age >= 16) {  // everyday errands
       const bool free = !pc_.works(wd);
-      if (r.chance(free ? 0.45 : 0.25)) try_place(free ? 9.5 : 17.5, free ? 17.0 : 19.0, 40, 90, "grocery shopping");
-      if (wd == Weekday::kSaturday && r.chance(0.4)) try_place(10.0, 16.0, 60, 150, "running errands in town");
+      if (r.chance(free ? 0.45 : 0.25))
+        try_place(free ? 9.5 : 17.5, free ? 17.0 : 19.0, 40, 90, "grocery shopping");
+      if (wd == Weekday::kSaturday && r.chance(0.4))
+        try_place(10.0, 16.0, 60, 150, "running errands in town");
       if (wd == Weekday::kSunday && r.chance(0.3)) try_place(12.0, 15.0, 150, 240, "visiting family");
       const bool weekend_night = wd == Weekday::kFriday || wd == Weekday::kSaturday;
       if (weekend_night && age <= 45 && pc_.traits.sociability >= 0.6 && r.chance(0.6))
         try_place(19.0, 20.5, 150, 220, "going out with friends");
-      if (free && age >= 60 && pc_.traits.sociability >= 0.6 && r.chance(0.35)) try_place(10.0, 15.0, 90, 150, "meeting friends in town");
+      if (free && age >= 60 && pc_.traits.sociability >= 0.6 && r.chance(0.35))
+        try_place(10.0, 15.0, 90, 150, "meeting friends in town");
     }
   }
 
   [[nodiscard]] std::string work_description() const {
     switch (pc_.traits.work) {
-      case WorkPattern::kSchool: return "at school";
-      case WorkPattern::kPreschool: return "at kindergarten";
-      case WorkPattern::kCollege: return "classes and study on campus";
-      case WorkPattern::kNightShift: return "working the night shift";
-      default: break;
+      case WorkPattern::kSchool:
+        return "at school";
+      case WorkPattern::kPreschool:
+        return "at kindergarten";
+      case WorkPattern::kCollege:
+        return "classes and study on campus";
+      case WorkPattern::kNightShift:
+        return "working the night shift";
+      default:
+        break;
     }
     std::string occ = pc_.persona.occupation;
     for (std::string_view marker : {" is an ", " is a ", " works as an ", " works as a "}) {
@@ -240,9 +390,12 @@ class DayTimes {
 
   [[nodiscard]] std::string home_work_description() const {
     switch (pc_.traits.work) {
-      case WorkPattern::kJobSeeker: return "looking for jobs from home";
-      case WorkPattern::kFreelance: return "working on commissions at home";
-      default: return "working from home";
+      case WorkPattern::kJobSeeker:
+        return "looking for jobs from home";
+      case WorkPattern::kFreelance:
+        return "working on commissions at home";
+      default:
+        return "working from home";
     }
   }
 
@@ -274,8 +427,8 @@ struct Item {
 
 class DayDecomposition {
  public:
-  DayDecomposition(const HouseholdKnowledge& k, const PersonaContext& pc, const DayPlan& plan, ActivityVocabulary& vocab,
-                   std::uint64_t seed)
+  DayDecomposition(const HouseholdKnowledge& k, const PersonaContext& pc, const DayPlan& plan,
+                   ActivityVocabulary& vocab, std::uint64_t seed)
       : k_(k), pc_(pc), plan_(plan), vocab_(vocab), rng_(rng_for(seed, pc.id, "decompose", plan.day)) {
     build_pool();
     morning_shower_ = rng_.chance(0.35 + 0.3 * pc_.traits.tidiness);
@@ -289,12 +442,20 @@ class DayDecomposition {
       const BlockKind next = i + 1 < blocks.size() ? blocks[i + 1].kind : BlockKind::kHome;
       const bool at_day_start = i == 0;
       switch (b.kind) {
-        case BlockKind::kSleep: emit(find("sleeping"), b.start, b.end); break;
-        case BlockKind::kNap: emit(find("taking a nap"), b.start, b.end); break;
-        case BlockKind::kAway: emit(find("leave home"), b.start, b.end); break;
+        case BlockKind::kSleep:
+          emit(find("sleeping"), b.start, b.end);
+          break;
+        case BlockKind::kNap:
+          emit(find("taking a nap"), b.start, b.end);
+          break;
+        case BlockKind::kAway:
+          emit(find("leave home"), b.start, b.end);
+          break;
         case BlockKind::kHome:
-        case BlockKind::kWorkAtHome: home_block(b, at_day_start ? BlockKind::kHome : prev, i + 1 < blocks.size() ? next : BlockKind::kHome,
-                                                at_day_start); break;
+        case BlockKind::kWorkAtHome:
+          home_block(b, at_day_start ? BlockKind::kHome : prev,
+                     i + 1 < blocks.size() ? next : BlockKind::kHome, at_day_start);
+          break;
       }
     }
     return std::move(out_);
@@ -310,7 +471,8 @@ class DayDecomposition {
     const int age = pc_.persona.age;
     if (age < a.min_age || age > a.max_age) return false;
     if (a.keywords.empty()) return true;
-    return std::any_of(a.keywords.begin(), a.keywords.end(), [&](const std::string& kw) { return mentions(pc_.traits, kw); });
+    return std::any_of(a.keywords.begin(), a.keywords.end(),
+                       [&](const std::string& kw) { return mentions(pc_.traits, kw); });
   }
   const ActivitySpec* eligible_named(std::string_view name) const {
     const ActivitySpec* a = find(name);
@@ -326,43 +488,67 @@ class DayDecomposition {
       const bool matched = !a.keywords.empty();
       double w = a.weight * (matched ? 2.5 : 1.0);
       switch (a.role) {
-        case ActivityRole::kLeisure: break;
-        case ActivityRole::kHobby: w *= matched ? 1.4 : 0.6; break;
+        case ActivityRole::kLeisure:
+          break;
+        case ActivityRole::kHobby:
+          w *= matched ? 1.4 : 0.6;
+          break;
         case ActivityRole::kChore:
         case ActivityRole::kLaundry:
           if (t.child && a.name != "tidying the bedroom" && a.name != "tidying the living room") continue;
           w *= (0.5 + t.tidiness) * (weekend ? 1.5 : 1.0) * 0.8;
           break;
-        case ActivityRole::kExercise: w *= 0.8; break;
-        case ActivityRole::kSocialCall: w *= 0.5 + 0.5 * t.sociability; break;
-        case ActivityRole::kSocial: w *= (weekend ? 1.0 : 0.3) * t.sociability; break;
-        case ActivityRole::kStudy: w *= student ? (weekend ? 1.2 : 2.5) : 0.6; break;
+        case ActivityRole::kExercise:
+          w *= 0.8;
+          break;
+        case ActivityRole::kSocialCall:
+          w *= 0.5 + 0.5 * t.sociability;
+          break;
+        case ActivityRole::kSocial:
+          w *= (weekend ? 1.0 : 0.3) * t.sociability;
+          break;
+        case ActivityRole::kStudy:
+          w *= student ? (weekend ? 1.2 : 2.5) : 0.6;
+          break;
         case ActivityRole::kWork:
           if (!matched) continue;
           w *= weekend ? 0.3 : 1.0;
           break;
-        case ActivityRole::kChildcare: w *= 2.0; break;
-        case ActivityRole::kSnack: w *= 0.6; break;
-        case ActivityRole::kHotDrink: w *= t.child ? 0.0 : 0.3; break;
-        default: continue;  // anchored roles are placed by rules, not as fillers
+        case ActivityRole::kChildcare:
+          w *= 2.0;
+          break;
+        case ActivityRole::kSnack:
+          w *= 0.6;
+          break;
+        case ActivityRole::kHotDrink:
+          w *= t.child ? 0.0 : 0.3;
+          break;
+        default:
+          continue;  // anchored roles are placed by rules, not as fillers
       }
       if (w > 0.0) pool_.push_back({&a, w});
     }
     for (const auto& a : k_.activities)
-      if (a.role == ActivityRole::kWork && eligible(a)) work_pool_.push_back({&a, a.keywords.empty() ? 1.0 : 2.5});
+      if (a.role == ActivityRole::kWork && eligible(a))
+        work_pool_.push_back({&a, a.keywords.empty() ? 1.0 : 2.5});
     if (t.work != WorkPattern::kRemote && t.work != WorkPattern::kHybrid)
       std::erase_if(work_pool_, [](const auto& p) { return p.first->name == "attending a video meeting"; });
     if (t.work == WorkPattern::kJobSeeker)
-      std::erase_if(work_pool_, [](const auto& p) { return p.first->keywords.empty() && p.first->name != "answering work emails"; });
+      std::erase_if(work_pool_, [](const auto& p) {
+        return p.first->keywords.empty() && p.first->name != "answering work emails";
+      });
   }
 
   std::string phrase(const ActivitySpec& a) {
     std::vector<const std::string*> names = {&a.name};
     for (const auto& s : a.synonyms) names.push_back(&s);
     const std::uint64_t h = fnv1a64(pc_.id + "|" + a.name);
-    std::size_t preferred = (h % 100) < 55 ? 0 : 1 + static_cast<std::size_t>((h >> 8) % std::max<std::size_t>(1, names.size() - 1));
+    std::size_t preferred =
+        (h % 100) < 55 ? 0
+                       : 1 + static_cast<std::size_t>((h >> 8) % std::max<std::size_t>(1, names.size() - 1));
     if (preferred >= names.size()) preferred = 0;
-    if (names.size() > 1 && rng_.chance(0.15)) preferred = rng_.below(static_cast<std::uint32_t>(names.size()));
+    if (names.size() > 1 && rng_.chance(0.15))
+      preferred = rng_.below(static_cast<std::uint32_t>(names.size()));
     return *names[preferred];
   }
 
@@ -385,7 +571,9 @@ class DayDecomposition {
     ++used_[spec];
   }
 
-  int sample_minutes(const ActivitySpec& a) { return std::max(a.min_minutes, round5(rng_.uniform(a.min_minutes, a.max_minutes))); }
+  int sample_minutes(const ActivitySpec& a) {
+    return std::max(a.min_minutes, round5(rng_.uniform(a.min_minutes, a.max_minutes)));
+  }
 
   void add(std::vector<Item>& items, const ActivitySpec* spec, int priority, double p = 1.0) {
     if (!spec || !rng_.chance(p)) return;
@@ -402,7 +590,8 @@ class DayDecomposition {
   // minimum and finally squeezes them, until the items fit in `budget` minutes.
   static void fit(std::vector<Item>& items, int budget) {
     while (total(items) > budget) {
-      auto lowest = std::min_element(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.priority < b.priority; });
+      auto lowest = std::min_element(items.begin(), items.end(),
+                                     [](const Item& a, const Item& b) { return a.priority < b.priority; });
       if (lowest == items.end() || lowest->priority >= 3) break;
       items.erase(lowest);
     }
@@ -441,15 +630,19 @@ class DayDecomposition {
       for (const char* n : {"washing face", "shaving", "doing a skincare routine", "doing hair"})
         if (const auto* a = eligible_named(n)) add(front, a, 0, 0.35);
       if (age >= 3) add(front, find("getting dressed"), 2, is_weekend(plan_.weekday) ? 0.75 : 0.95);
-      if (const auto* yoga = eligible_named("doing yoga"); yoga && (mentions(t, "every morning") || mentions(t, "starts each day") || mentions(t, "daily")))
+      if (const auto* yoga = eligible_named("doing yoga");
+          yoga && (mentions(t, "every morning") || mentions(t, "starts each day") || mentions(t, "daily")))
         add(front, yoga, 1, 0.8);
-      if (const auto* st = eligible_named("stretching with a foam roller"); st && mentions(t, "stretches every morning")) add(front, st, 1, 0.8);
+      if (const auto* st = eligible_named("stretching with a foam roller");
+          st && mentions(t, "stretches every morning"))
+        add(front, st, 1, 0.8);
       add(front, find("making the bed"), 0, t.child ? 0.3 : t.tidiness);
       // Breakfast only when it falls in its plausible hours and the morning is long enough.
       const ActivitySpec* breakfast = find("having breakfast");
       std::vector<Item> chain;
       if (!t.child && age >= 12) {
-        add(chain, eligible_named(mentions(t, "tea") || mentions(t, "chai") ? "making tea" : "making coffee"), 1, 0.55);
+        add(chain, eligible_named(mentions(t, "tea") || mentions(t, "chai") ? "making tea" : "making coffee"),
+            1, 0.55);
         add(chain, eligible_named("making breakfast"), 1, 0.6);
       }
       const int breakfast_at = b.start + total(front) + total(chain);
@@ -470,12 +663,15 @@ class DayDecomposition {
 
     if (before_away) {
       if (after_sleep || b.start < 11 * 60)
-        if (const auto* lunch = eligible_named("packing a lunch box"); lunch && pc_.works_away(plan_.weekday)) add(back, lunch, 0, 0.3);
+        if (const auto* lunch = eligible_named("packing a lunch box"); lunch && pc_.works_away(plan_.weekday))
+          add(back, lunch, 0, 0.3);
       add(back, find("using the toilet"), 0, 0.3);
       add(back, find("getting ready to leave"), 3, 0.95);
     } else if (before_sleep) {
-      if (age < 10) add(back, find("taking a bath"), 1, 0.7);
-      else if (!morning_shower_) add(back, rng_.chance(0.2) ? eligible_named("taking a bath") : find("taking a shower"), 1, 0.65);
+      if (age < 10)
+        add(back, find("taking a bath"), 1, 0.7);
+      else if (!morning_shower_)
+        add(back, rng_.chance(0.2) ? eligible_named("taking a bath") : find("taking a shower"), 1, 0.65);
       if (const auto* d = eligible_named("doing a skincare routine")) add(back, d, 0, 0.3);
       if (const auto* j = eligible_named("writing in a journal")) add(back, j, 0, 0.6);
       add(back, find("brushing teeth"), 2, 0.95);
@@ -521,7 +717,8 @@ class DayDecomposition {
     const int age = pc_.persona.age;
     const std::uint64_t h = fnv1a64(pc_.id + ":meals");
     const int lunch_at = 12 * 60 + static_cast<int>(h % 7) * 10 - 20 + round5(rng_.normal(0, 10));
-    int dinner_at = (age < 13 || age >= 65 ? 18 * 60 : 18 * 60 + 30 + static_cast<int>((h >> 8) % 7) * 10) + round5(rng_.normal(0, 12));
+    int dinner_at = (age < 13 || age >= 65 ? 18 * 60 : 18 * 60 + 30 + static_cast<int>((h >> 8) % 7) * 10) +
+                    round5(rng_.normal(0, 12));
     auto meal_chain = [&](const char* prep, const char* meal, double p_prep, ActivityRole role) {
       Anchor a;
       a.meal = role;
@@ -531,23 +728,30 @@ class DayDecomposition {
       if (role == ActivityRole::kDinner) {
         if (const auto* med = eligible_named("taking medication")) add(a.chain, med, 2);
       }
-      if (age >= 6) add(a.chain, eligible_named(rng_.chance(0.5) ? "washing dishes" : "clearing the table"), 0, 0.3 + 0.5 * t.tidiness);
+      if (age >= 6)
+        add(a.chain, eligible_named(rng_.chance(0.5) ? "washing dishes" : "clearing the table"), 0,
+            0.3 + 0.5 * t.tidiness);
       return a;
     };
     int lunch_when = lunch_at;
-    if (lunch_when < from + 10 && from + 10 <= 14 * 60) lunch_when = from + 10;  // got up late or came home: eat soon
+    if (lunch_when < from + 10 && from + 10 <= 14 * 60)
+      lunch_when = from + 10;  // got up late or came home: eat soon
     lunch_when = std::min(lunch_when, to - 40);
-    if (!had_.count(ActivityRole::kLunch) && lunch_when >= from && lunch_when >= 11 * 60 && lunch_when + 20 <= to) {
+    if (!had_.count(ActivityRole::kLunch) && lunch_when >= from && lunch_when >= 11 * 60 &&
+        lunch_when + 20 <= to) {
       Anchor a = meal_chain("cooking lunch", "having lunch", 0.55, ActivityRole::kLunch);
       a.target = lunch_when - minutes_before(a.chain, ActivityRole::kLunch);
       out.push_back(std::move(a));
     }
     if (!had_.count(ActivityRole::kDinner) && !work_block) {
-      if (dinner_at < from + 20 && from + 20 <= 21 * 60 + 15) dinner_at = from + 25;  // came home late: eat soon
-      dinner_at = std::max(std::min(dinner_at, to - 50), 17 * 60 + 10);                 // early to bed or out: eat earlier
+      if (dinner_at < from + 20 && from + 20 <= 21 * 60 + 15)
+        dinner_at = from + 25;                                           // came home late: eat soon
+      dinner_at = std::max(std::min(dinner_at, to - 50), 17 * 60 + 10);  // early to bed or out: eat earlier
       if (dinner_at >= from && dinner_at < to - 20 && dinner_at <= 21 * 60 + 30) {
-        const bool feast = is_weekend(plan_.weekday) && eligible_named("cooking a family feast") && rng_.chance(0.5);
-        Anchor a = meal_chain(feast ? "cooking a family feast" : "cooking dinner", "having dinner", feast ? 1.0 : 0.85, ActivityRole::kDinner);
+        const bool feast =
+            is_weekend(plan_.weekday) && eligible_named("cooking a family feast") && rng_.chance(0.5);
+        Anchor a = meal_chain(feast ? "cooking a family feast" : "cooking dinner", "having dinner",
+                              feast ? 1.0 : 0.85, ActivityRole::kDinner);
         a.target = std::max(from, dinner_at - minutes_before(a.chain, ActivityRole::kDinner));
         out.push_back(std::move(a));
       }
@@ -574,7 +778,8 @@ class DayDecomposition {
           a.target = at;
           out.push_back(std::move(a));
         }
-    if (const auto* bath = eligible_named("bathing the children"); bath && 19 * 60 >= from && 19 * 60 < to - 30) {
+    if (const auto* bath = eligible_named("bathing the children");
+        bath && 19 * 60 >= from && 19 * 60 < to - 30) {
       Anchor a;
       add(a.chain, bath, 2, 0.8);
       a.target = 19 * 60;
@@ -624,27 +829,34 @@ class DayDecomposition {
     switch (a.role) {
       case ActivityRole::kChore:
       case ActivityRole::kSocial:
-      case ActivityRole::kExercise: return 1;
+      case ActivityRole::kExercise:
+        return 1;
       case ActivityRole::kLaundry:
       case ActivityRole::kHobby:
       case ActivityRole::kStudy:
-      case ActivityRole::kSocialCall: return 2;
-      case ActivityRole::kWork: return 6;
-      default: return 3;
+      case ActivityRole::kSocialCall:
+        return 2;
+      case ActivityRole::kWork:
+        return 6;
+      default:
+        return 3;
     }
   }
 
-  const ActivitySpec* choose(const std::vector<std::pair<const ActivitySpec*, double>>& pool, int at, int remaining,
-                             const ActivitySpec* last) {
+  const ActivitySpec* choose(const std::vector<std::pair<const ActivitySpec*, double>>& pool, int at,
+                             int remaining, const ActivitySpec* last) {
     std::vector<double> w;
     w.reserve(pool.size());
     const int minute = at % 1440;
     bool any = false;
     for (const auto& [a, weight] : pool) {
       double x = weight;
-      if (a == last || !a->in_window(minute) || a->min_minutes > remaining) x = 0.0;
-      else if (used_.count(a) && used_.at(a) >= max_per_day(*a)) x = 0.0;
-      if (a->role == ActivityRole::kNap) x *= pc_.traits.naps && minute >= 12 * 60 && minute <= 17 * 60 ? 3.0 : 0.0;
+      if (a == last || !a->in_window(minute) || a->min_minutes > remaining)
+        x = 0.0;
+      else if (used_.count(a) && used_.at(a) >= max_per_day(*a))
+        x = 0.0;
+      if (a->role == ActivityRole::kNap)
+        x *= pc_.traits.naps && minute >= 12 * 60 && minute <= 17 * 60 ? 3.0 : 0.0;
       any = any || x > 0.0;
       w.push_back(x);
     }
@@ -659,12 +871,14 @@ class DayDecomposition {
     while (to - cursor > 0) {
       const int remaining = to - cursor;
       const ActivitySpec* pick = nullptr;
-      if (work_block && work_turn && !work_pool_.empty()) pick = choose(work_pool_, cursor, remaining, nullptr);
+      if (work_block && work_turn && !work_pool_.empty())
+        pick = choose(work_pool_, cursor, remaining, nullptr);
       if (!pick && remaining >= 5) {
         pick = choose(pool_, cursor, remaining, last);
         if (work_block && pick && pick->max_minutes > 20 && pick->role != ActivityRole::kWork) {
           // Breaks during work are short.
-          for (const char* n : {"making coffee", "browsing on the phone", "having a snack", "using the toilet"})
+          for (const char* n :
+               {"making coffee", "browsing on the phone", "having a snack", "using the toilet"})
             if (const auto* brk = eligible_named(n); brk && brk->in_window(cursor % 1440)) {
               pick = brk;
               break;
@@ -677,7 +891,8 @@ class DayDecomposition {
           return;
         }
         // Nothing typical fits this hour: a quiet pause at home.
-        pick = eligible_named(pc_.persona.age >= 11 && remaining <= 40 ? "browsing on the phone" : "relaxing on the sofa");
+        pick = eligible_named(pc_.persona.age >= 11 && remaining <= 40 ? "browsing on the phone"
+                                                                       : "relaxing on the sofa");
         if (!pick) pick = find("relaxing on the sofa");
         if (!pick) return;
         const int len = remaining < 55 ? remaining : 45;
@@ -713,11 +928,16 @@ class DayDecomposition {
 
 std::string_view block_kind_name(BlockKind kind) {
   switch (kind) {
-    case BlockKind::kSleep: return "sleep";
-    case BlockKind::kNap: return "nap";
-    case BlockKind::kHome: return "home";
-    case BlockKind::kWorkAtHome: return "work_at_home";
-    case BlockKind::kAway: return "away";
+    case BlockKind::kSleep:
+      return "sleep";
+    case BlockKind::kNap:
+      return "nap";
+    case BlockKind::kHome:
+      return "home";
+    case BlockKind::kWorkAtHome:
+      return "work_at_home";
+    case BlockKind::kAway:
+      return "away";
   }
   return "home";
 }
@@ -747,7 +967,8 @@ Result<DayPlan> OfflineDayPlanner::plan_day(const Persona& persona, const DayPla
     s = std::max(s, 0);
     e = std::min(e, 1440);
     if (e <= s) return;
-    if (!plan.blocks.empty() && plan.blocks.back().kind == kind && plan.blocks.back().end == s && kind == BlockKind::kHome) {
+    if (!plan.blocks.empty() && plan.blocks.back().kind == kind && plan.blocks.back().end == s &&
+        kind == BlockKind::kHome) {
       plan.blocks.back().end = e;
       return;
     }
@@ -773,7 +994,8 @@ Result<DayPlan> OfflineDayPlanner::plan_day(const Persona& persona, const DayPla
 }
 
 Result<std::vector<ScheduleEntry>> OfflineDecomposer::decompose(const Persona& persona, const DayPlan& plan,
-                                                                ActivityVocabulary& vocabulary, std::uint64_t seed) {
+                                                                ActivityVocabulary& vocabulary,
+                                                                std::uint64_t seed) {
   const PersonaContext pc(persona);
   DayDecomposition d(knowledge_, pc, plan, vocabulary, seed);
   return d.run();
@@ -793,7 +1015,8 @@ Status validate_day_plan(const DayPlan& plan) {
   for (std::size_t i = 0; i < plan.blocks.size(); ++i) {
     const auto& b = plan.blocks[i];
     const std::string ptr = "/blocks/" + std::to_string(i);
-    if (b.start != cursor) check.add(ptr + "/start", "must be " + format_minutes(cursor) + " (blocks are contiguous)");
+    if (b.start != cursor)
+      check.add(ptr + "/start", "must be " + format_minutes(cursor) + " (blocks are contiguous)");
     if (b.end <= b.start || b.end > 1440) check.add(ptr + "/end", "must be after start and at most 24:00");
     cursor = b.end;
   }
@@ -802,16 +1025,19 @@ Status validate_day_plan(const DayPlan& plan) {
   return {};
 }
 
-Result<Schedule> generate_schedule(const Persona& persona, const ScheduleRequest& request, DayPlanGenerator& planner,
-                                   ScheduleDecomposer& decomposer, ActivityVocabulary& vocabulary) {
+Result<Schedule> generate_schedule(const Persona& persona, const ScheduleRequest& request,
+                                   DayPlanGenerator& planner, ScheduleDecomposer& decomposer,
+                                   ActivityVocabulary& vocabulary) {
   if (request.days < 1 || request.days > 366)
-    return fail(ErrorCode::kValidation, "days must be between 1 and 366", {FieldError{"/days", "must be between 1 and 366", {}, 0, 0}});
+    return fail(ErrorCode::kValidation, "days must be between 1 and 366",
+                {FieldError{"/days", "must be between 1 and 366", {}, 0, 0}});
   Schedule s;
   s.persona_id = persona_id(persona);
   s.first_day = request.first_day;
   s.days = request.days;
   for (int d = 0; d < request.days; ++d) {
-    DayPlanContext ctx{d, weekday_after(request.first_day, d), request.seed, s.plans.empty() ? nullptr : &s.plans.back()};
+    DayPlanContext ctx{d, weekday_after(request.first_day, d), request.seed,
+                       s.plans.empty() ? nullptr : &s.plans.back()};
     auto plan = planner.plan_day(persona, ctx);
     if (!plan) return tl::unexpected(plan.error());
     if (auto v = validate_day_plan(*plan); !v) return tl::unexpected(v.error());
@@ -822,12 +1048,18 @@ Result<Schedule> generate_schedule(const Persona& persona, const ScheduleRequest
     for (std::size_t i = 0; i < entries->size(); ++i) {
       const auto& e = (*entries)[i];
       if (e.start != cursor || e.end <= e.start || e.end > 1440)
-        return fail(ErrorCode::kValidation, "the schedule of day " + std::to_string(d) + " is not contiguous",
-                    {FieldError{"/entries/" + std::to_string(i), "starts at " + format_minutes(e.start) + ", expected " + format_minutes(cursor), {}, 0, 0}});
+        return fail(
+            ErrorCode::kValidation, "the schedule of day " + std::to_string(d) + " is not contiguous",
+            {FieldError{"/entries/" + std::to_string(i),
+                        "starts at " + format_minutes(e.start) + ", expected " + format_minutes(cursor),
+                        {},
+                        0,
+                        0}});
       cursor = e.end;
     }
     if (cursor != 1440)
-      return fail(ErrorCode::kValidation, "the schedule of day " + std::to_string(d) + " does not reach 24:00",
+      return fail(ErrorCode::kValidation,
+                  "the schedule of day " + std::to_string(d) + " does not reach 24:00",
                   {FieldError{"/entries", "ends at " + format_minutes(cursor), {}, 0, 0}});
     for (auto e : *entries) {
       e.start += d * 1440;
@@ -851,22 +1083,28 @@ Result<Schedule> generate_schedule_offline(const Persona& persona, const Househo
   return generate_schedule(persona, request, planner, decomposer, vocabulary);
 }
 
-std::vector<ScheduleIssue> check_schedule(const Schedule& s, const Persona& persona, const HouseholdKnowledge& knowledge) {
+std::vector<ScheduleIssue> check_schedule(const Schedule& s, const Persona& persona,
+                                          const HouseholdKnowledge& knowledge) {
   std::vector<ScheduleIssue> issues;
   const int span = s.days * 1440;
   if (s.entries.empty()) {
     issues.push_back({"coverage", 0, "no activities"});
     return issues;
   }
-  if (s.entries.front().start != 0) issues.push_back({"coverage", s.entries.front().start, "does not start at 00:00 of day 0"});
-  if (s.entries.back().end != span) issues.push_back({"coverage", s.entries.back().end, "does not end at 24:00 of the last day"});
+  if (s.entries.front().start != 0)
+    issues.push_back({"coverage", s.entries.front().start, "does not start at 00:00 of day 0"});
+  if (s.entries.back().end != span)
+    issues.push_back({"coverage", s.entries.back().end, "does not end at 24:00 of the last day"});
   for (std::size_t i = 0; i < s.entries.size(); ++i) {
     const auto& e = s.entries[i];
-    if (e.end <= e.start) issues.push_back({"duration", e.start, "'" + e.name + "' has no positive duration"});
+    if (e.end <= e.start)
+      issues.push_back({"duration", e.start, "'" + e.name + "' has no positive duration"});
     if (i + 1 < s.entries.size()) {
       const auto& n = s.entries[i + 1];
-      if (n.start < e.end) issues.push_back({"overlap", n.start, "'" + n.name + "' starts before '" + e.name + "' ends"});
-      if (n.start > e.end) issues.push_back({"gap", e.end, "nothing scheduled until " + std::to_string(n.start)});
+      if (n.start < e.end)
+        issues.push_back({"overlap", n.start, "'" + n.name + "' starts before '" + e.name + "' ends"});
+      if (n.start > e.end)
+        issues.push_back({"gap", e.end, "nothing scheduled until " + std::to_string(n.start)});
     }
   }
   const PersonaTraits traits = infer_traits(persona);
@@ -874,12 +1112,14 @@ std::vector<ScheduleIssue> check_schedule(const Schedule& s, const Persona& pers
   auto overlap = [&](int a, int b, ActivityRole role, int min_len) {
     int total = 0;
     for (const auto& e : s.entries)
-      if (e.role == role && e.end - e.start >= min_len) total += std::max(0, std::min(b, e.end) - std::max(a, e.start));
+      if (e.role == role && e.end - e.start >= min_len)
+        total += std::max(0, std::min(b, e.end) - std::max(a, e.start));
     return total;
   };
   for (int d = 1; d < s.days; ++d) {
     const int night = overlap(d * 1440 + 60, d * 1440 + 300, ActivityRole::kSleep, 180);
-    const bool worked_night = day_sleeper && traits.work_days[static_cast<std::size_t>(weekday_after(s.first_day, d - 1))];
+    const bool worked_night =
+        day_sleeper && traits.work_days[static_cast<std::size_t>(weekday_after(s.first_day, d - 1))];
     if (worked_night) {
       const int by_day = overlap(d * 1440 + 300, d * 1440 + 1080, ActivityRole::kSleep, 240);
       if (by_day < 240) issues.push_back({"sleep", d * 1440, "no day sleep after the night shift"});
@@ -887,14 +1127,18 @@ std::vector<ScheduleIssue> check_schedule(const Schedule& s, const Persona& pers
       issues.push_back({"sleep", d * 1440 + 60, "not asleep between 01:00 and 05:00"});
     }
   }
-  std::vector<int> meals(static_cast<std::size_t>(s.days), 0), home_awake(static_cast<std::size_t>(s.days), 0);
+  std::vector<int> meals(static_cast<std::size_t>(s.days), 0),
+      home_awake(static_cast<std::size_t>(s.days), 0);
   for (const auto& e : s.entries) {
     const auto day = static_cast<std::size_t>(e.start / 1440);
     if (is_meal(e.role)) {
       ++meals[day];
-      const ActivitySpec* spec = e.activity >= 0 ? &knowledge.activities[static_cast<std::size_t>(e.activity)] : nullptr;
+      const ActivitySpec* spec =
+          e.activity >= 0 ? &knowledge.activities[static_cast<std::size_t>(e.activity)] : nullptr;
       if (spec && !spec->in_window(e.start % 1440))
-        issues.push_back({"meal", e.start, "'" + e.name + "' at " + format_minutes(e.start % 1440) + " is outside its plausible hours"});
+        issues.push_back(
+            {"meal", e.start,
+             "'" + e.name + "' at " + format_minutes(e.start % 1440) + " is outside its plausible hours"});
     }
     if (e.role != ActivityRole::kSleep && e.role != ActivityRole::kNap && e.role != ActivityRole::kLeaveHome)
       for (std::size_t d = 0; d < meals.size(); ++d) {
@@ -904,14 +1148,18 @@ std::vector<ScheduleIssue> check_schedule(const Schedule& s, const Persona& pers
   }
   for (std::size_t d = 0; d < meals.size(); ++d)
     if (home_awake[d] >= 240 && meals[d] == 0)
-      issues.push_back({"meal", static_cast<int>(d) * 1440, "no meal at home on a day with " + std::to_string(home_awake[d] / 60) + " waking hours at home"});
+      issues.push_back(
+          {"meal", static_cast<int>(d) * 1440,
+           "no meal at home on a day with " + std::to_string(home_awake[d] / 60) + " waking hours at home"});
   return issues;
 }
 
 Json to_json(const DayPlan& plan) {
   Json blocks = Json::array();
   for (const auto& b : plan.blocks)
-    blocks.push_back({{"start", format_minutes(b.start)}, {"end", format_minutes(b.end)}, {"kind", block_kind_name(b.kind)},
+    blocks.push_back({{"start", format_minutes(b.start)},
+                      {"end", format_minutes(b.end)},
+                      {"kind", block_kind_name(b.kind)},
                       {"description", b.description}});
   return {{"day", plan.day}, {"weekday", weekday_name(plan.weekday)}, {"blocks", blocks}};
 }
@@ -919,17 +1167,22 @@ Json to_json(const DayPlan& plan) {
 Json to_json(const Schedule& s) {
   Json entries = Json::array();
   for (const auto& e : s.entries)
-    entries.push_back({{"start", e.start * 60},
-                       {"end", e.end * 60},
-                       {"day", e.start / 1440},
-                       {"clock", format_minutes(e.start % 1440) + "-" + format_minutes(e.end % 1440 == 0 && e.end > e.start ? 1440 : e.end % 1440)},
-                       {"activity", e.name},
-                       {"primary", e.primary},
-                       {"role", activity_role_name(e.role)}});
+    entries.push_back(
+        {{"start", e.start * 60},
+         {"end", e.end * 60},
+         {"day", e.start / 1440},
+         {"clock", format_minutes(e.start % 1440) + "-" +
+                       format_minutes(e.end % 1440 == 0 && e.end > e.start ? 1440 : e.end % 1440)},
+         {"activity", e.name},
+         {"primary", e.primary},
+         {"role", activity_role_name(e.role)}});
   Json plans = Json::array();
   for (const auto& p : s.plans) plans.push_back(to_json(p));
-  return {{"persona_id", s.persona_id}, {"first_day", weekday_name(s.first_day)}, {"days", s.days},
-          {"plans", plans}, {"entries", entries}};
+  return {{"persona_id", s.persona_id},
+          {"first_day", weekday_name(s.first_day)},
+          {"days", s.days},
+          {"plans", plans},
+          {"entries", entries}};
 }
 
 Result<DayPlan> day_plan_from_json(const Json& json, const std::string& pointer) {
@@ -941,14 +1194,17 @@ Result<DayPlan> day_plan_from_json(const Json& json, const std::string& pointer)
   }
   if (auto d = check.integer(json, pointer, "day", true, 0, 365)) plan.day = static_cast<int>(*d);
   if (auto w = check.string(json, pointer, "weekday", true, 3, 12)) {
-    if (auto wd = parse_weekday(*w)) plan.weekday = *wd;
-    else check.add(JsonChecker::child(pointer, "weekday"), "must be a weekday name");
+    if (auto wd = parse_weekday(*w))
+      plan.weekday = *wd;
+    else
+      check.add(JsonChecker::child(pointer, "weekday"), "must be a weekday name");
   }
   auto parse_clock = [&](const Json& obj, const std::string& ptr, std::string_view key) -> int {
     auto s = check.string(obj, ptr, key, true, 4, 5);
     if (!s) return -1;
     int h = -1, m = -1;
-    if (std::sscanf(s->c_str(), "%d:%d", &h, &m) != 2 || h < 0 || h > 24 || m < 0 || m > 59 || (h == 24 && m != 0)) {
+    if (std::sscanf(s->c_str(), "%d:%d", &h, &m) != 2 || h < 0 || h > 24 || m < 0 || m > 59 ||
+        (h == 24 && m != 0)) {
       check.add(JsonChecker::child(ptr, key), "must be HH:MM between 00:00 and 24:00");
       return -1;
     }
@@ -964,12 +1220,14 @@ Result<DayPlan> day_plan_from_json(const Json& json, const std::string& pointer)
       if (auto d = check.string(b, ptr, "description", true, 1, 200)) pb.description = *d;
       if (auto k = check.string(b, ptr, "kind", true, 1, 20)) {
         bool ok = false;
-        for (BlockKind kind : {BlockKind::kSleep, BlockKind::kNap, BlockKind::kHome, BlockKind::kWorkAtHome, BlockKind::kAway})
+        for (BlockKind kind :
+             {BlockKind::kSleep, BlockKind::kNap, BlockKind::kHome, BlockKind::kWorkAtHome, BlockKind::kAway})
           if (block_kind_name(kind) == *k) {
             pb.kind = kind;
             ok = true;
           }
-        if (!ok) check.add(JsonChecker::child(ptr, "kind"), "must be one of sleep, nap, home, work_at_home, away");
+        if (!ok)
+          check.add(JsonChecker::child(ptr, "kind"), "must be one of sleep, nap, home, work_at_home, away");
       }
       plan.blocks.push_back(std::move(pb));
     }
@@ -982,7 +1240,8 @@ Result<DayPlan> day_plan_from_json(const Json& json, const std::string& pointer)
   return plan;
 }
 
-Result<Schedule> schedule_from_json(const Json& json, const HouseholdKnowledge& knowledge, const std::string& pointer) {
+Result<Schedule> schedule_from_json(const Json& json, const HouseholdKnowledge& knowledge,
+                                    const std::string& pointer) {
   JsonChecker check;
   Schedule s;
   if (!json.is_object()) {
@@ -991,13 +1250,16 @@ Result<Schedule> schedule_from_json(const Json& json, const HouseholdKnowledge& 
   }
   if (auto v = check.string(json, pointer, "persona_id", true, 1, 80)) s.persona_id = *v;
   if (auto v = check.string(json, pointer, "first_day", true, 3, 12)) {
-    if (auto wd = parse_weekday(*v)) s.first_day = *wd;
-    else check.add(JsonChecker::child(pointer, "first_day"), "must be a weekday name");
+    if (auto wd = parse_weekday(*v))
+      s.first_day = *wd;
+    else
+      check.add(JsonChecker::child(pointer, "first_day"), "must be a weekday name");
   }
   if (auto v = check.integer(json, pointer, "days", true, 1, 366)) s.days = static_cast<int>(*v);
   if (const Json* plans = check.array(json, pointer, "plans", true, 366))
     for (std::size_t i = 0; i < plans->size(); ++i) {
-      auto plan = day_plan_from_json((*plans)[i], JsonChecker::child(JsonChecker::child(pointer, "plans"), i));
+      auto plan =
+          day_plan_from_json((*plans)[i], JsonChecker::child(JsonChecker::child(pointer, "plans"), i));
       if (!plan) {
         for (const auto& f : plan.error().errors) check.add(f.pointer, f.message);
         continue;
@@ -1016,21 +1278,26 @@ Result<Schedule> schedule_from_json(const Json& json, const HouseholdKnowledge& 
         if (*start % 60 != 0 || *end % 60 != 0) check.add(ptr, "start and end must be whole minutes");
         en.start = static_cast<int>(*start / 60);
         en.end = static_cast<int>(*end / 60);
-        if (en.start != cursor) check.add(JsonChecker::child(ptr, "start"), "must be " + std::to_string(cursor * 60) + " (entries are contiguous)");
+        if (en.start != cursor)
+          check.add(JsonChecker::child(ptr, "start"),
+                    "must be " + std::to_string(cursor * 60) + " (entries are contiguous)");
         if (en.end <= en.start) check.add(JsonChecker::child(ptr, "end"), "must be after start");
         cursor = en.end;
       }
       if (auto v = check.string(e, ptr, "activity", true, 1, 120)) en.name = *v;
       if (auto v = check.string(e, ptr, "primary", true, 1, 120)) en.primary = *v;
       if (auto v = check.string(e, ptr, "role", true, 1, 40)) {
-        if (auto role = parse_activity_role(*v)) en.role = *role;
-        else check.add(JsonChecker::child(ptr, "role"), "unknown activity role");
+        if (auto role = parse_activity_role(*v))
+          en.role = *role;
+        else
+          check.add(JsonChecker::child(ptr, "role"), "unknown activity role");
       }
       en.activity = knowledge.activity_index(en.primary);
       s.entries.push_back(std::move(en));
     }
   if (check.ok() && cursor != s.days * 1440)
-    check.add(JsonChecker::child(pointer, "entries"), "must end at " + std::to_string(s.days * 86400) + " (the end of the last day)");
+    check.add(JsonChecker::child(pointer, "entries"),
+              "must end at " + std::to_string(s.days * 86400) + " (the end of the last day)");
   if (!check.ok()) return tl::unexpected(check.error("invalid schedule"));
   return s;
 }

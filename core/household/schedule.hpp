@@ -39,9 +39,9 @@ struct DayPlan {
 struct ScheduleEntry {
   int start = 0;
   int end = 0;
-  std::string name;            // as written ("eating breakfast")
-  std::string primary;         // after synonym merging ("having breakfast")
-  int activity = -1;           // index into HouseholdKnowledge::activities, -1 when not curated
+  std::string name;     // as written ("eating breakfast")
+  std::string primary;  // after synonym merging ("having breakfast")
+  int activity = -1;    // index into HouseholdKnowledge::activities, -1 when not curated
   ActivityRole role = ActivityRole::kLeisure;
   friend bool operator==(const ScheduleEntry&, const ScheduleEntry&) = default;
 };
@@ -50,14 +50,14 @@ struct Schedule {
   std::string persona_id;
   Weekday first_day = Weekday::kWednesday;
   int days = 5;
-  std::vector<DayPlan> plans;           // general plans as generated (before filtering)
-  std::vector<ScheduleEntry> entries;   // contiguous, covering [0, days·1440)
+  std::vector<DayPlan> plans;          // general plans as generated (before filtering)
+  std::vector<ScheduleEntry> entries;  // contiguous, covering [0, days·1440)
   friend bool operator==(const Schedule&, const Schedule&) = default;
 };
 
 struct ScheduleRequest {
-  int days = 5;                               // 1 … 366
-  Weekday first_day = Weekday::kWednesday;    // the paper's span is Wednesday to Sunday
+  int days = 5;                             // 1 … 366
+  Weekday first_day = Weekday::kWednesday;  // the paper's span is Wednesday to Sunday
   std::uint64_t seed = 0;
 };
 
@@ -82,7 +82,8 @@ class ScheduleDecomposer {
  public:
   virtual ~ScheduleDecomposer() = default;
   virtual Result<std::vector<ScheduleEntry>> decompose(const Persona& persona, const DayPlan& filtered_plan,
-                                                       ActivityVocabulary& vocabulary, std::uint64_t seed) = 0;
+                                                       ActivityVocabulary& vocabulary,
+                                                       std::uint64_t seed) = 0;
 };
 
 class OfflineDayPlanner final : public DayPlanGenerator {
@@ -112,15 +113,16 @@ Status validate_day_plan(const DayPlan& plan);
 
 // Plans each day, filters, decomposes, and joins the days (activities that run past midnight,
 // like sleep, become one entry). Any generator answer that breaks the shape is an error.
-Result<Schedule> generate_schedule(const Persona& persona, const ScheduleRequest& request, DayPlanGenerator& planner,
-                                   ScheduleDecomposer& decomposer, ActivityVocabulary& vocabulary);
+Result<Schedule> generate_schedule(const Persona& persona, const ScheduleRequest& request,
+                                   DayPlanGenerator& planner, ScheduleDecomposer& decomposer,
+                                   ActivityVocabulary& vocabulary);
 Result<Schedule> generate_schedule_offline(const Persona& persona, const HouseholdKnowledge& knowledge,
                                            const ScheduleRequest& request, ActivityVocabulary& vocabulary);
 
 // A consistency problem found in a schedule.
 struct ScheduleIssue {
-  std::string kind;    // overlap | gap | coverage | sleep | meal | duration
-  int minute = 0;      // where, in schedule minutes
+  std::string kind;  // overlap | gap | coverage | sleep | meal | duration
+  int minute = 0;    // where, in schedule minutes
   std::string detail;
 };
 // Overlaps, gaps, coverage of [0, days·1440), a night's sleep (day sleepers: a day sleep after
@@ -133,7 +135,8 @@ Json to_json(const DayPlan& plan);
 Result<DayPlan> day_plan_from_json(const Json& json, const std::string& pointer = "");
 // Reads a schedule written by to_json (stored households); entries must tile [0, days·86400)
 // in whole minutes, roles must be known; errors are named by JSON pointer below `pointer`.
-Result<Schedule> schedule_from_json(const Json& json, const HouseholdKnowledge& knowledge, const std::string& pointer = "");
+Result<Schedule> schedule_from_json(const Json& json, const HouseholdKnowledge& knowledge,
+                                    const std::string& pointer = "");
 std::string format_minutes(int minutes_of_day);  // "07:30"
 
 }  // namespace socsim::household

@@ -23,7 +23,9 @@ MeanSd mean_sd(const std::vector<double>& v) {
   m.sd = std::sqrt(ss / static_cast<double>(v.size() - 1));
   return m;
 }
-double round2(double x) { return std::round(x * 100.0) / 100.0; }
+double round2(double x) {
+  return std::round(x * 100.0) / 100.0;
+}
 
 }  // namespace
 
@@ -71,7 +73,8 @@ Json statistics_report(std::span<const ResidentProfile> residents, std::uint64_t
           for (const auto& [rt, p] : o.receptacles)
             if (p > 0.0) receptacles_of[o.type].insert(rt);
   }
-  const auto age = mean_sd(ages), ope = mean_sd(per_event), ppn = mean_sd(per_persona_names), ppp = mean_sd(per_persona_primaries);
+  const auto age = mean_sd(ages), ope = mean_sd(per_event), ppn = mean_sd(per_persona_names),
+             ppp = mean_sd(per_persona_primaries);
   Json dist = Json::object();
   for (const auto& [k, v] : distribution)
     dist[std::to_string(k)] = round2(100.0 * v / static_cast<double>(std::max<std::size_t>(1, events)));
@@ -83,17 +86,20 @@ Json statistics_report(std::span<const ResidentProfile> residents, std::uint64_t
     per_type[type] = Json(std::vector<std::string>(recs.begin(), recs.end()));
   }
   for (const auto& [k, v] : hist) by_count[std::to_string(k)] = v;
-  return {{"personas", residents.size()},
-          {"days", residents.empty() ? 0 : residents.front().schedule.days},
-          {"age", {{"mean", round2(age.mean)}, {"sd", round2(age.sd)}}},
-          {"activities",
-           {{"names", names.size()},
-            {"primaries", primaries.size()},
-            {"per_persona_names", {{"mean", round2(ppn.mean)}, {"sd", round2(ppn.sd)}}},
-            {"per_persona_primaries", {{"mean", round2(ppp.mean)}, {"sd", round2(ppp.sd)}}}}},
-          {"objects_per_event", {{"events", events}, {"mean", round2(ope.mean)}, {"sd", round2(ope.sd)}, {"percent_by_count", dist}}},
-          {"receptacle_types_per_object_type", {{"object_types", receptacles_of.size()}, {"histogram", by_count}, {"by_type", per_type}}},
-          {"paper", paper_statistics()}};
+  return {
+      {"personas", residents.size()},
+      {"days", residents.empty() ? 0 : residents.front().schedule.days},
+      {"age", {{"mean", round2(age.mean)}, {"sd", round2(age.sd)}}},
+      {"activities",
+       {{"names", names.size()},
+        {"primaries", primaries.size()},
+        {"per_persona_names", {{"mean", round2(ppn.mean)}, {"sd", round2(ppn.sd)}}},
+        {"per_persona_primaries", {{"mean", round2(ppp.mean)}, {"sd", round2(ppp.sd)}}}}},
+      {"objects_per_event",
+       {{"events", events}, {"mean", round2(ope.mean)}, {"sd", round2(ope.sd)}, {"percent_by_count", dist}}},
+      {"receptacle_types_per_object_type",
+       {{"object_types", receptacles_of.size()}, {"histogram", by_count}, {"by_type", per_type}}},
+      {"paper", paper_statistics()}};
 }
 
 }  // namespace socsim::household

@@ -9,14 +9,16 @@ namespace socsim::household {
 namespace {
 
 const std::set<std::string, std::less<>>& stop_words() {
-  static const std::set<std::string, std::less<>> words = {"a", "an", "the", "my", "his", "her", "their", "our", "some",
-                                                           "of", "for", "to", "with", "on", "in", "at", "up", "out", "and"};
+  static const std::set<std::string, std::less<>> words = {
+      "a",   "an", "the",  "my", "his", "her", "their", "our", "some", "of",
+      "for", "to", "with", "on", "in",  "at",  "up",    "out", "and"};
   return words;
 }
 
 std::string stem(std::string w) {
   if (w.size() > 4 && w.compare(w.size() - 3, 3, "ies") == 0) return w.substr(0, w.size() - 3) + "y";
-  if (w.size() > 4 && w.compare(w.size() - 2, 2, "es") == 0 && (w[w.size() - 3] == 's' || w[w.size() - 3] == 'h'))
+  if (w.size() > 4 && w.compare(w.size() - 2, 2, "es") == 0 &&
+      (w[w.size() - 3] == 's' || w[w.size() - 3] == 'h'))
     return w.substr(0, w.size() - 2);
   if (w.size() > 3 && w.back() == 's' && w[w.size() - 2] != 's') return w.substr(0, w.size() - 1);
   return w;
@@ -31,9 +33,12 @@ std::vector<std::string> words_of(std::string_view name) {
   };
   for (char c : name) {
     const auto u = static_cast<unsigned char>(c);
-    if (std::isalnum(u)) cur += static_cast<char>(std::tolower(u));
-    else if (c == '\'') continue;
-    else flush();
+    if (std::isalnum(u))
+      cur += static_cast<char>(std::tolower(u));
+    else if (c == '\'')
+      continue;
+    else
+      flush();
   }
   flush();
   return out;
@@ -72,7 +77,8 @@ ActivityVocabulary ActivityVocabulary::initial(const HouseholdKnowledge& knowled
     for (const auto& s : a.synonyms) v.curated_keys_.emplace(normalise(s), a.name);
     if (!a.base) continue;
     v.entries_[normalise(a.name)] = {a.name, a.name, static_cast<int>(i)};
-    for (const auto& s : a.synonyms) v.entries_.emplace(normalise(s), VocabularyEntry{s, a.name, static_cast<int>(i)});
+    for (const auto& s : a.synonyms)
+      v.entries_.emplace(normalise(s), VocabularyEntry{s, a.name, static_cast<int>(i)});
   }
   return v;
 }

@@ -14,9 +14,9 @@
 namespace socsim::household {
 
 struct VocabularyEntry {
-  std::string name;      // as written in schedules
-  std::string primary;   // the activity it merges into
-  int activity = -1;     // index into HouseholdKnowledge::activities; -1 for a primary without curated effects
+  std::string name;     // as written in schedules
+  std::string primary;  // the activity it merges into
+  int activity = -1;    // index into HouseholdKnowledge::activities; -1 for a primary without curated effects
 };
 
 class ActivityVocabulary {
@@ -51,8 +51,8 @@ class ActivityVocabulary {
   explicit ActivityVocabulary(const HouseholdKnowledge* k) : knowledge_(k) {}
   [[nodiscard]] std::optional<Resolution> match(const std::string& key) const;
   const HouseholdKnowledge* knowledge_;
-  std::unordered_map<std::string, VocabularyEntry> entries_;       // by normalised key
-  std::unordered_map<std::string, std::string> curated_keys_;      // normalised key → curated primary
+  std::unordered_map<std::string, VocabularyEntry> entries_;   // by normalised key
+  std::unordered_map<std::string, std::string> curated_keys_;  // normalised key → curated primary
 };
 
 }  // namespace socsim::household

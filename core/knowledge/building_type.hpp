@@ -18,8 +18,8 @@ struct BuildingTypeEvidence {
 };
 
 struct BuildingTypeGuess {
-  std::string type;        // one of building_types()
-  double confidence = 0.0; // in (0, 1); the default guess has 0.3
+  std::string type;                            // one of building_types()
+  double confidence = 0.0;                     // in (0, 1); the default guess has 0.3
   std::vector<BuildingTypeEvidence> evidence;  // every match, in text order (negated ones excluded)
   std::map<std::string, double> scores;        // summed weight per type that had evidence
   std::string explanation;                     // one sentence naming the deciding words

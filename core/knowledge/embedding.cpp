@@ -47,7 +47,8 @@ Embedding hashed_ngram_vector(const std::string& text, std::size_t dim) {
   for (const std::string& w : words(text)) {
     add_feature(v, w, 0x5157u, 1.0f);
     const std::string padded = "#" + w + "#";
-    for (std::size_t i = 0; i + 3 <= padded.size(); ++i) add_feature(v, std::string_view(padded).substr(i, 3), 0x7431u, 0.5f);
+    for (std::size_t i = 0; i + 3 <= padded.size(); ++i)
+      add_feature(v, std::string_view(padded).substr(i, 3), 0x7431u, 0.5f);
   }
   double norm = 0.0;
   for (float x : v) norm += static_cast<double>(x) * x;
@@ -71,23 +72,28 @@ EmbeddingProvider hashed_ngram_embedding(std::size_t dim) {
   return p;
 }
 
-Status check_embeddings(const std::vector<Embedding>& vectors, std::size_t expected_count, const std::string& model) {
+Status check_embeddings(const std::vector<Embedding>& vectors, std::size_t expected_count,
+                        const std::string& model) {
   if (vectors.size() != expected_count) {
-    return fail(ErrorCode::kUpstream, "embedding model '" + model + "' returned " + std::to_string(vectors.size()) +
-                                          " vectors for " + std::to_string(expected_count) + " texts");
+    return fail(ErrorCode::kUpstream, "embedding model '" + model + "' returned " +
+                                          std::to_string(vectors.size()) + " vectors for " +
+                                          std::to_string(expected_count) + " texts");
   }
   if (vectors.empty()) return {};
   const std::size_t dim = vectors.front().size();
   if (dim == 0 || dim > 65536) {
-    return fail(ErrorCode::kUpstream, "embedding model '" + model + "' returned vectors of dimension " + std::to_string(dim));
+    return fail(ErrorCode::kUpstream,
+                "embedding model '" + model + "' returned vectors of dimension " + std::to_string(dim));
   }
   for (std::size_t i = 0; i < vectors.size(); ++i) {
     if (vectors[i].size() != dim) {
-      return fail(ErrorCode::kUpstream, "embedding model '" + model + "' returned vectors of different dimensions (" +
-                                            std::to_string(dim) + " and " + std::to_string(vectors[i].size()) + ")");
+      return fail(ErrorCode::kUpstream,
+                  "embedding model '" + model + "' returned vectors of different dimensions (" +
+                      std::to_string(dim) + " and " + std::to_string(vectors[i].size()) + ")");
     }
     for (float x : vectors[i]) {
-      if (!std::isfinite(x)) return fail(ErrorCode::kUpstream, "embedding model '" + model + "' returned a non-finite value");
+      if (!std::isfinite(x))
+        return fail(ErrorCode::kUpstream, "embedding model '" + model + "' returned a non-finite value");
     }
   }
   return {};
@@ -98,21 +104,24 @@ std::string embedding_to_blob(const Embedding& v) {
   for (std::size_t i = 0; i < v.size(); ++i) {
     std::uint32_t bits = 0;
     std::memcpy(&bits, &v[i], 4);
-    for (int b = 0; b < 4; ++b) out[i * 4 + static_cast<std::size_t>(b)] = static_cast<char>((bits >> (8 * b)) & 0xffu);
+    for (int b = 0; b < 4; ++b)
+      out[i * 4 + static_cast<std::size_t>(b)] = static_cast<char>((bits >> (8 * b)) & 0xffu);
   }
   return out;
 }
 
 Result<Embedding> embedding_from_blob(const std::string& blob, std::size_t dim) {
   if (blob.size() != dim * 4) {
-    return fail(ErrorCode::kStore, "stored embedding has " + std::to_string(blob.size()) + " bytes, expected " +
-                                       std::to_string(dim * 4));
+    return fail(ErrorCode::kStore, "stored embedding has " + std::to_string(blob.size()) +
+                                       " bytes, expected " + std::to_string(dim * 4));
   }
   Embedding v(dim);
   for (std::size_t i = 0; i < dim; ++i) {
     std::uint32_t bits = 0;
     for (int b = 0; b < 4; ++b)
-      bits |= static_cast<std::uint32_t>(static_cast<unsigned char>(blob[i * 4 + static_cast<std::size_t>(b)])) << (8 * b);
+      bits |=
+          static_cast<std::uint32_t>(static_cast<unsigned char>(blob[i * 4 + static_cast<std::size_t>(b)]))
+          << (8 * b);
     std::memcpy(&v[i], &bits, 4);
   }
   return v;

@@ -29,7 +29,8 @@ EmbeddingProvider hashed_ngram_embedding(std::size_t dim = 512);
 Embedding hashed_ngram_vector(const std::string& text, std::size_t dim);
 
 // Checks a provider's answer: one vector per text, one common non-zero dimension, finite values.
-Status check_embeddings(const std::vector<Embedding>& vectors, std::size_t expected_count, const std::string& model);
+Status check_embeddings(const std::vector<Embedding>& vectors, std::size_t expected_count,
+                        const std::string& model);
 
 // Little-endian float32 bytes, as stored in knowledge_embeddings.vector.
 std::string embedding_to_blob(const Embedding& v);

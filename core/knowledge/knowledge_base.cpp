@@ -19,11 +19,11 @@ using store::Database;
 using store::Statement;
 
 constexpr std::array<std::string_view, 56> kStopWords = {
-    "a",    "an",    "the",   "at",    "in",    "on",   "of",    "to",    "for",   "and",  "or",    "with",
-    "by",   "is",    "are",   "be",    "been",  "as",   "from",  "into",  "onto",  "who",  "that",  "this",
-    "these", "those", "it",   "its",   "their", "them", "they",  "some",  "any",   "there", "where", "when",
-    "what", "which", "how",   "i",     "we",    "you",  "he",    "she",   "his",   "her",  "our",   "your",
-    "my",   "me",    "us",    "do",    "does",  "then", "than",  "so"};
+    "a",     "an",    "the", "at",  "in",    "on",   "of",   "to",   "for",  "and",   "or",    "with",
+    "by",    "is",    "are", "be",  "been",  "as",   "from", "into", "onto", "who",   "that",  "this",
+    "these", "those", "it",  "its", "their", "them", "they", "some", "any",  "there", "where", "when",
+    "what",  "which", "how", "i",   "we",    "you",  "he",   "she",  "his",  "her",   "our",   "your",
+    "my",    "me",    "us",  "do",  "does",  "then", "than", "so"};
 constexpr std::size_t kMaxTerms = 32;
 constexpr double kRrfK = 60.0;  // reciprocal-rank fusion constant (Cormack et al. 2009)
 constexpr std::size_t kEmbedBatch = 64;
@@ -52,11 +52,12 @@ Result<BuildingCode> code_from_row(const Statement& st) {
   if (!sources) return tl::unexpected(sources.error());
   auto constraints = parse_stored(st.text(7), "constraints of building code '" + id + "'");
   if (!constraints) return tl::unexpected(constraints.error());
-  Json j{{"ref_id", id},           {"building_type", st.text(1)}, {"jurisdiction", st.text(2)},
-         {"title", st.text(3)},    {"description", st.text(4)},   {"keywords", st.text(5)},
-         {"sources", *sources},    {"constraints", *constraints}};
+  Json j{{"ref_id", id},        {"building_type", st.text(1)}, {"jurisdiction", st.text(2)},
+         {"title", st.text(3)}, {"description", st.text(4)},   {"keywords", st.text(5)},
+         {"sources", *sources}, {"constraints", *constraints}};
   auto code = building_code_from_json(j);
-  if (!code) return fail(ErrorCode::kStore, "stored building code '" + id + "' is invalid: " + code.error().message());
+  if (!code)
+    return fail(ErrorCode::kStore, "stored building code '" + id + "' is invalid: " + code.error().message());
   return code;
 }
 
@@ -66,23 +67,20 @@ Result<BehaviorNode> node_from_row(const Statement& st) {
   if (!aliases) return tl::unexpected(aliases.error());
   auto ports = parse_stored(st.text(9), "ports of behaviour node '" + name + "'");
   if (!ports) return tl::unexpected(ports.error());
-  Json j{{"name", name},
-         {"kind", st.text(1)},
-         {"origin", st.text(2)},
-         {"category", st.text(3)},
-         {"description", st.text(4)},
-         {"when_to_use", st.text(5)},
-         {"example", st.text(6)},
-         {"keywords", st.text(7)},
-         {"aliases", *aliases},
+  Json j{{"name", name},           {"kind", st.text(1)},        {"origin", st.text(2)},
+         {"category", st.text(3)}, {"description", st.text(4)}, {"when_to_use", st.text(5)},
+         {"example", st.text(6)},  {"keywords", st.text(7)},    {"aliases", *aliases},
          {"ports", *ports}};
   auto node = behavior_node_from_json(j);
-  if (!node) return fail(ErrorCode::kStore, "stored behaviour node '" + name + "' is invalid: " + node.error().message());
+  if (!node)
+    return fail(ErrorCode::kStore,
+                "stored behaviour node '" + name + "' is invalid: " + node.error().message());
   return node;
 }
 
 template <class T, class RowFn>
-Result<std::vector<T>> collect(Database& db, const std::string& sql, const std::vector<std::string>& binds, RowFn row_fn) {
+Result<std::vector<T>> collect(Database& db, const std::string& sql, const std::vector<std::string>& binds,
+                               RowFn row_fn) {
   auto st = db.prepare(sql);
   if (!st) return tl::unexpected(st.error());
   for (std::size_t i = 0; i < binds.size(); ++i) st->bind(static_cast<int>(i + 1), binds[i]);
@@ -98,21 +96,28 @@ Result<std::vector<T>> collect(Database& db, const std::string& sql, const std::
   return out;
 }
 
-Result<std::vector<BuildingCode>> load_codes(Database& db, std::string_view where, const std::vector<std::string>& binds) {
-  return collect<BuildingCode>(db, "SELECT " + std::string(kCodeColumns) + " FROM building_codes " + std::string(where) + " ORDER BY ref_id",
+Result<std::vector<BuildingCode>> load_codes(Database& db, std::string_view where,
+                                             const std::vector<std::string>& binds) {
+  return collect<BuildingCode>(db,
+                               "SELECT " + std::string(kCodeColumns) + " FROM building_codes " +
+                                   std::string(where) + " ORDER BY ref_id",
                                binds, code_from_row);
 }
 
-Result<std::vector<BehaviorNode>> load_nodes(Database& db, std::string_view where, const std::vector<std::string>& binds) {
-  return collect<BehaviorNode>(db, "SELECT " + std::string(kNodeColumns) + " FROM behavior_nodes " + std::string(where) + " ORDER BY name",
-                               binds, node_from_row);
+Result<std::vector<BehaviorNode>> load_nodes(Database& db, std::string_view where,
+                                             const std::vector<std::string>& binds) {
+  return collect<BehaviorNode>(
+      db,
+      "SELECT " + std::string(kNodeColumns) + " FROM behavior_nodes " + std::string(where) + " ORDER BY name",
+      binds, node_from_row);
 }
 
 std::string split_camel_case(const std::string& name) {
   std::string out;
   for (std::size_t i = 0; i < name.size(); ++i) {
     const char c = name[i];
-    if (i > 0 && std::isupper(static_cast<unsigned char>(c)) && !std::isupper(static_cast<unsigned char>(name[i - 1])))
+    if (i > 0 && std::isupper(static_cast<unsigned char>(c)) &&
+        !std::isupper(static_cast<unsigned char>(name[i - 1])))
       out.push_back(' ');
     out.push_back(c == '_' ? ' ' : c);
   }
@@ -127,13 +132,14 @@ std::string replace_underscores(std::string s) {
 // The text that represents an entry for dense retrieval.
 std::string embedding_text(const BuildingCode& b) {
   std::string t = b.title + ". " + b.description + " " + b.keywords + ". " + b.building_type + ".";
-  for (const auto& c : b.constraints) t += " " + replace_underscores(c.name) + (c.applies_to.empty() ? "" : " " + c.applies_to) + ".";
+  for (const auto& c : b.constraints)
+    t += " " + replace_underscores(c.name) + (c.applies_to.empty() ? "" : " " + c.applies_to) + ".";
   return t;
 }
 
 std::string embedding_text(const BehaviorNode& n) {
-  std::string t = split_camel_case(n.name) + " (" + std::string(to_string(n.kind)) + "). " + n.description + " " +
-                  n.when_to_use + " " + n.keywords + ".";
+  std::string t = split_camel_case(n.name) + " (" + std::string(to_string(n.kind)) + "). " + n.description +
+                  " " + n.when_to_use + " " + n.keywords + ".";
   for (const auto& a : n.aliases) t += " " + split_camel_case(a) + ".";
   return t;
 }
@@ -162,7 +168,8 @@ struct Ranked {
   double score = 0.0;
 };
 
-Result<std::vector<Ranked>> bm25_ranking(Database& db, Kind kind, const std::string& match, std::size_t limit) {
+Result<std::vector<Ranked>> bm25_ranking(Database& db, Kind kind, const std::string& match,
+                                         std::size_t limit) {
   const std::string sql =
       kind == Kind::kBuildingCode
           ? "SELECT b.ref_id, bm25(building_codes_fts, 4.0, 1.0, 2.0, 1.0, 0.5, 1.0, 1.5) AS s "
@@ -193,7 +200,9 @@ struct StoredVector {
 
 Result<std::vector<StoredVector>> stored_vectors(Database& db, Kind kind, const std::string& model) {
   return collect<StoredVector>(
-      db, "SELECT item_id, text_hash, dim, vector FROM knowledge_embeddings WHERE kind = ?1 AND model = ?2 ORDER BY item_id",
+      db,
+      "SELECT item_id, text_hash, dim, vector FROM knowledge_embeddings WHERE kind = ?1 AND model = ?2 ORDER "
+      "BY item_id",
       {std::string(to_string(kind)), model}, [](const Statement& st) -> Result<StoredVector> {
         return StoredVector{st.text(0), st.text(1), static_cast<std::size_t>(st.int64(2)), st.blob(3)};
       });
@@ -208,8 +217,9 @@ Result<std::vector<Ranked>> dense_ranking(Database& db, Kind kind, const Embeddi
   for (std::size_t i = 0; i < rows->size(); ++i) {
     const StoredVector& r = (*rows)[i];
     if (r.dim != query.size()) {
-      return fail(ErrorCode::kUpstream, "embeddings of model '" + provider.model + "' have dimension " + std::to_string(r.dim) +
-                                            " but the query's has " + std::to_string(query.size()));
+      return fail(ErrorCode::kUpstream, "embeddings of model '" + provider.model + "' have dimension " +
+                                            std::to_string(r.dim) + " but the query's has " +
+                                            std::to_string(query.size()));
     }
     auto v = embedding_from_blob(r.blob, r.dim);
     if (!v) return tl::unexpected(v.error());
@@ -257,7 +267,9 @@ bool stricter(const Constraint& a, const std::string& a_ref, const Constraint& b
   return a_ref < b_ref;
 }
 
-bool equals_ignore_case(std::string_view a, std::string_view b) { return lower(a) == lower(b); }
+bool equals_ignore_case(std::string_view a, std::string_view b) {
+  return lower(a) == lower(b);
+}
 
 }  // namespace
 
@@ -286,8 +298,8 @@ std::string fts_match_expression(std::string_view text) {
 }
 
 Json to_json(const Provenance& p) {
-  return Json{{"kind", to_string(p.kind)}, {"id", p.id},       {"title", p.title}, {"source", p.source},
-              {"section", p.section},      {"url", p.url},     {"score", p.score}, {"method", p.method}};
+  return Json{{"kind", to_string(p.kind)}, {"id", p.id},   {"title", p.title}, {"source", p.source},
+              {"section", p.section},      {"url", p.url}, {"score", p.score}, {"method", p.method}};
 }
 
 Json to_json(const SearchHit& hit) {
@@ -306,9 +318,8 @@ Json to_json(const SearchResult& result) {
 Json to_json(const MergedConstraint& c) {
   Json sources = Json::array();
   for (const auto& s : c.sources) sources.push_back(to_json(s));
-  return Json{{"constraint", to_json(c.constraint)}, {"ref_id", c.ref_id},
-              {"building_type", c.building_type},    {"jurisdiction", c.jurisdiction},
-              {"title", c.title},                    {"sources", std::move(sources)},
+  return Json{{"constraint", to_json(c.constraint)}, {"ref_id", c.ref_id}, {"building_type", c.building_type},
+              {"jurisdiction", c.jurisdiction},      {"title", c.title},   {"sources", std::move(sources)},
               {"also_considered", c.also_considered}};
 }
 
@@ -318,9 +329,15 @@ std::string describe(const MergedConstraint& m) {
   if (!c.applies_to.empty()) line += " (" + c.applies_to + ")";
   line += ": ";
   switch (c.type) {
-    case ConstraintType::kMin: line += "at least "; break;
-    case ConstraintType::kMax: line += "at most "; break;
-    case ConstraintType::kRecommended: line += "recommended "; break;
+    case ConstraintType::kMin:
+      line += "at least ";
+      break;
+    case ConstraintType::kMax:
+      line += "at most ";
+      break;
+    case ConstraintType::kRecommended:
+      line += "recommended ";
+      break;
   }
   line += format_number(c.value) + " " + c.unit;
   if (!c.original.empty()) line += " [" + c.original + "]";
@@ -358,7 +375,8 @@ Result<std::vector<BuildingCode>> KnowledgeBase::building_codes(std::string_view
 
 Result<BehaviorNode> KnowledgeBase::behavior_node(const std::string& name_or_alias) const {
   auto nodes = store_.read([&](Database& db) {
-    return load_nodes(db, "WHERE name = ?1 OR EXISTS (SELECT 1 FROM json_each(aliases) WHERE value = ?1)", {name_or_alias});
+    return load_nodes(db, "WHERE name = ?1 OR EXISTS (SELECT 1 FROM json_each(aliases) WHERE value = ?1)",
+                      {name_or_alias});
   });
   if (!nodes) return tl::unexpected(nodes.error());
   if (nodes->empty()) return fail(ErrorCode::kNotFound, "no behaviour node named '" + name_or_alias + "'");
@@ -378,13 +396,21 @@ Status KnowledgeBase::upsert(const BuildingCode& code) {
   for (const auto& c : checked->constraints) constraints.push_back(to_json(c));
   auto written = store_.write([&](Database& db) -> Status {
     auto st = db.prepare(
-        "INSERT INTO building_codes (ref_id, building_type, jurisdiction, title, description, keywords, sources, constraints) "
-        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8) ON CONFLICT(ref_id) DO UPDATE SET building_type = excluded.building_type, "
+        "INSERT INTO building_codes (ref_id, building_type, jurisdiction, title, description, keywords, "
+        "sources, constraints) "
+        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8) ON CONFLICT(ref_id) DO UPDATE SET building_type = "
+        "excluded.building_type, "
         "jurisdiction = excluded.jurisdiction, title = excluded.title, description = excluded.description, "
         "keywords = excluded.keywords, sources = excluded.sources, constraints = excluded.constraints");
     if (!st) return tl::unexpected(st.error());
-    st->bind(1, checked->ref_id).bind(2, checked->building_type).bind(3, checked->jurisdiction).bind(4, checked->title);
-    st->bind(5, checked->description).bind(6, checked->keywords).bind(7, sources.dump()).bind(8, constraints.dump());
+    st->bind(1, checked->ref_id)
+        .bind(2, checked->building_type)
+        .bind(3, checked->jurisdiction)
+        .bind(4, checked->title);
+    st->bind(5, checked->description)
+        .bind(6, checked->keywords)
+        .bind(7, sources.dump())
+        .bind(8, constraints.dump());
     return st->run();
   });
   if (written) ++generation_[static_cast<std::size_t>(Kind::kBuildingCode)];
@@ -410,19 +436,26 @@ Status KnowledgeBase::upsert(const BehaviorNode& node) {
       auto row = others->step();
       if (!row) return tl::unexpected(row.error());
       if (*row) {
-        return fail(ErrorCode::kConflict, "tag '" + tag + "' already names behaviour node '" + others->text(0) + "'",
-                    {{tag == checked->name ? "/name" : "/aliases", "clashes with node '" + others->text(0) + "'", "", 0, 0}});
+        return fail(ErrorCode::kConflict,
+                    "tag '" + tag + "' already names behaviour node '" + others->text(0) + "'",
+                    {{tag == checked->name ? "/name" : "/aliases",
+                      "clashes with node '" + others->text(0) + "'", "", 0, 0}});
       }
     }
     auto st = db.prepare(
-        "INSERT INTO behavior_nodes (name, kind, origin, category, description, when_to_use, example, keywords, aliases, ports) "
-        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10) ON CONFLICT(name) DO UPDATE SET kind = excluded.kind, "
+        "INSERT INTO behavior_nodes (name, kind, origin, category, description, when_to_use, example, "
+        "keywords, aliases, ports) "
+        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10) ON CONFLICT(name) DO UPDATE SET kind = "
+        "excluded.kind, "
         "origin = excluded.origin, category = excluded.category, description = excluded.description, "
         "when_to_use = excluded.when_to_use, example = excluded.example, keywords = excluded.keywords, "
         "aliases = excluded.aliases, ports = excluded.ports");
     if (!st) return tl::unexpected(st.error());
     st->bind(1, checked->name).bind(2, std::string(to_string(checked->kind))).bind(3, checked->origin);
-    st->bind(4, checked->category).bind(5, checked->description).bind(6, checked->when_to_use).bind(7, checked->example);
+    st->bind(4, checked->category)
+        .bind(5, checked->description)
+        .bind(6, checked->when_to_use)
+        .bind(7, checked->example);
     st->bind(8, checked->keywords).bind(9, Json(checked->aliases).dump()).bind(10, ports.dump());
     return st->run();
   });
@@ -456,7 +489,8 @@ Result<std::size_t> KnowledgeBase::index_embeddings(Kind kind) const {
     for (std::size_t i = begin; i < end; ++i) texts.push_back(stale[i]->text);
     auto vectors = embeddings_.embed(texts);
     if (!vectors) return tl::unexpected(vectors.error());
-    if (auto s = check_embeddings(*vectors, texts.size(), embeddings_.model); !s) return tl::unexpected(s.error());
+    if (auto s = check_embeddings(*vectors, texts.size(), embeddings_.model); !s)
+      return tl::unexpected(s.error());
     auto written = store_.write([&](Database& db) -> Status {
       auto st = db.prepare(
           "INSERT OR REPLACE INTO knowledge_embeddings (kind, item_id, model, text_hash, dim, vector) "
@@ -465,7 +499,10 @@ Result<std::size_t> KnowledgeBase::index_embeddings(Kind kind) const {
       for (std::size_t i = begin; i < end; ++i) {
         const Embedding& v = (*vectors)[i - begin];
         st->reset();
-        st->bind(1, std::string(to_string(kind))).bind(2, stale[i]->id).bind(3, embeddings_.model).bind(4, hashes[i]);
+        st->bind(1, std::string(to_string(kind)))
+            .bind(2, stale[i]->id)
+            .bind(3, embeddings_.model)
+            .bind(4, hashes[i]);
         st->bind(5, static_cast<std::int64_t>(v.size())).bind_blob(6, embedding_to_blob(v));
         if (auto s = st->run(); !s) return s;
       }
@@ -479,7 +516,8 @@ Result<std::size_t> KnowledgeBase::index_embeddings(Kind kind) const {
 
 Result<SearchResult> KnowledgeBase::search(std::string_view query, Kind kind, std::size_t k) const {
   if (query.size() > kMaxQueryBytes) {
-    return fail(ErrorCode::kBadRequest, "the search text is longer than " + std::to_string(kMaxQueryBytes) + " bytes",
+    return fail(ErrorCode::kBadRequest,
+                "the search text is longer than " + std::to_string(kMaxQueryBytes) + " bytes",
                 {{"", "too long", "q", 0, 0}});
   }
   if (k == 0 || k > kMaxSearchResults) {
@@ -488,7 +526,8 @@ Result<SearchResult> KnowledgeBase::search(std::string_view query, Kind kind, st
   }
   const std::string match = fts_match_expression(query);
   if (match.empty()) {
-    return fail(ErrorCode::kBadRequest, "the search text has no searchable words", {{"", "no searchable words", "q", 0, 0}});
+    return fail(ErrorCode::kBadRequest, "the search text has no searchable words",
+                {{"", "no searchable words", "q", 0, 0}});
   }
   const std::size_t pool = std::max<std::size_t>(50, 4 * k);
   auto lexical = store_.read([&](Database& db) { return bm25_ranking(db, kind, match, pool); });
@@ -506,7 +545,8 @@ Result<SearchResult> KnowledgeBase::search(std::string_view query, Kind kind, st
       auto q = embeddings_.embed({std::string(query)});
       if (!q) return tl::unexpected(q.error());
       if (auto s = check_embeddings(*q, 1, embeddings_.model); !s) return tl::unexpected(s.error());
-      return store_.read([&](Database& db) { return dense_ranking(db, kind, embeddings_, q->front(), pool); });
+      return store_.read(
+          [&](Database& db) { return dense_ranking(db, kind, embeddings_, q->front(), pool); });
     };
     if (auto d = run_dense()) {
       dense = std::move(*d);
@@ -566,8 +606,8 @@ Result<SearchResult> KnowledgeBase::search(std::string_view query, Kind kind, st
       if (!node) return tl::unexpected(node.error());
       p.title = node->name;
       p.source = node->origin == "hunavsim" ? "HuNavSim behaviour-tree nodes"
-                 : node->origin == "btcpp" ? "BehaviorTree.CPP v4 built-in nodes"
-                                           : "socsim behaviour-node library";
+                 : node->origin == "btcpp"  ? "BehaviorTree.CPP v4 built-in nodes"
+                                            : "socsim behaviour-node library";
       p.section = node->category;
       result.hits.push_back({std::move(p), std::move(*node)});
     }
@@ -598,12 +638,14 @@ Result<std::vector<MergedConstraint>> KnowledgeBase::constraints_for(std::string
   for (const auto& code : *codes) {
     if (!jurisdiction.empty() && !equals_ignore_case(code.jurisdiction, jurisdiction)) continue;
     const bool specific = code.building_type == building_type;
-    for (const auto& c : code.constraints) groups[{c.name, static_cast<int>(c.type)}].push_back({&code, &c, specific});
+    for (const auto& c : code.constraints)
+      groups[{c.name, static_cast<int>(c.type)}].push_back({&code, &c, specific});
   }
 
   std::vector<MergedConstraint> out;
   for (auto& [key, candidates] : groups) {
-    const bool any_specific = std::any_of(candidates.begin(), candidates.end(), [](const Candidate& c) { return c.specific; });
+    const bool any_specific =
+        std::any_of(candidates.begin(), candidates.end(), [](const Candidate& c) { return c.specific; });
     const Candidate* best = nullptr;
     for (const auto& c : candidates) {
       if (any_specific && !c.specific) continue;
@@ -617,7 +659,8 @@ Result<std::vector<MergedConstraint>> KnowledgeBase::constraints_for(std::string
     m.title = best->code->title;
     m.sources = best->code->sources;
     for (const auto& c : candidates) {
-      if (&c != best && std::find(m.also_considered.begin(), m.also_considered.end(), c.code->ref_id) == m.also_considered.end())
+      if (&c != best && std::find(m.also_considered.begin(), m.also_considered.end(), c.code->ref_id) ==
+                            m.also_considered.end())
         m.also_considered.push_back(c.code->ref_id);
     }
     out.push_back(std::move(m));

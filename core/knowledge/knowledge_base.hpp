@@ -36,8 +36,8 @@ struct SearchHit {
 
 struct SearchResult {
   std::vector<SearchHit> hits;
-  std::string method = "bm25";        // "bm25+dense" when the dense ranking took part
-  std::optional<Error> dense_error;   // the provider failed: results are BM25 only
+  std::string method = "bm25";       // "bm25+dense" when the dense ranking took part
+  std::optional<Error> dense_error;  // the provider failed: results are BM25 only
 };
 
 // One constraint a floor plan must honour, with the entry that set it.

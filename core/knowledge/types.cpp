@@ -9,17 +9,18 @@
 namespace socsim::knowledge {
 namespace {
 
-constexpr std::array<std::string_view, 8> kBuildingTypes = {"residential", "office",    "hospital", "canteen",
-                                                            "retail",      "warehouse", "school",   "airport"};
-constexpr std::array<std::string_view, 8> kSiUnits = {"m", "m²", "m³/person", "m²/person", "m/person",
-                                                      "persons/m²", "m/s", "persons"};
+constexpr std::array<std::string_view, 8> kBuildingTypes = {
+    "residential", "office", "hospital", "canteen", "retail", "warehouse", "school", "airport"};
+constexpr std::array<std::string_view, 8> kSiUnits = {"m",        "m²",         "m³/person", "m²/person",
+                                                      "m/person", "persons/m²", "m/s",       "persons"};
 constexpr std::array<std::string_view, 3> kOrigins = {"btcpp", "hunavsim", "socsim"};
 constexpr std::array<std::string_view, 5> kPortTypes = {"int", "unsigned", "double", "bool", "string"};
 
 bool identifier(std::string_view s, bool allow_upper, std::size_t min_len, std::size_t max_len) {
   if (s.size() < min_len || s.size() > max_len) return false;
   return std::all_of(s.begin(), s.end(), [&](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || (allow_upper && c >= 'A' && c <= 'Z');
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+           (allow_upper && c >= 'A' && c <= 'Z');
   });
 }
 
@@ -63,7 +64,9 @@ std::optional<PortDirection> direction_from(std::string_view s) {
 
 }  // namespace
 
-std::string_view to_string(Kind kind) { return kind == Kind::kBuildingCode ? "building_code" : "behavior_node"; }
+std::string_view to_string(Kind kind) {
+  return kind == Kind::kBuildingCode ? "building_code" : "behavior_node";
+}
 
 std::optional<Kind> kind_from_string(std::string_view s) {
   if (s == "building_code") return Kind::kBuildingCode;
@@ -71,43 +74,64 @@ std::optional<Kind> kind_from_string(std::string_view s) {
   return std::nullopt;
 }
 
-std::span<const std::string_view> building_types() { return kBuildingTypes; }
-bool is_building_type(std::string_view s) { return one_of(kBuildingTypes, s); }
-std::span<const std::string_view> si_units() { return kSiUnits; }
+std::span<const std::string_view> building_types() {
+  return kBuildingTypes;
+}
+bool is_building_type(std::string_view s) {
+  return one_of(kBuildingTypes, s);
+}
+std::span<const std::string_view> si_units() {
+  return kSiUnits;
+}
 
 std::string_view to_string(ConstraintType type) {
   switch (type) {
-    case ConstraintType::kMin: return "min";
-    case ConstraintType::kMax: return "max";
-    case ConstraintType::kRecommended: return "recommended";
+    case ConstraintType::kMin:
+      return "min";
+    case ConstraintType::kMax:
+      return "max";
+    case ConstraintType::kRecommended:
+      return "recommended";
   }
   return "min";
 }
 
 std::string_view to_string(NodeKind kind) {
   switch (kind) {
-    case NodeKind::kAction: return "action";
-    case NodeKind::kCondition: return "condition";
-    case NodeKind::kControl: return "control";
-    case NodeKind::kDecorator: return "decorator";
+    case NodeKind::kAction:
+      return "action";
+    case NodeKind::kCondition:
+      return "condition";
+    case NodeKind::kControl:
+      return "control";
+    case NodeKind::kDecorator:
+      return "decorator";
   }
   return "action";
 }
 
 std::string_view to_string(PortDirection direction) {
   switch (direction) {
-    case PortDirection::kIn: return "in";
-    case PortDirection::kOut: return "out";
-    case PortDirection::kInOut: return "inout";
+    case PortDirection::kIn:
+      return "in";
+    case PortDirection::kOut:
+      return "out";
+    case PortDirection::kInOut:
+      return "inout";
   }
   return "in";
 }
 
-Json to_json(const Source& s) { return Json{{"title", s.title}, {"url", s.url}, {"section", s.section}}; }
+Json to_json(const Source& s) {
+  return Json{{"title", s.title}, {"url", s.url}, {"section", s.section}};
+}
 
 Json to_json(const Constraint& c) {
-  Json j{{"name", c.name},   {"type", to_string(c.type)},     {"value", c.value},
-         {"unit", c.unit},   {"confidence", c.confidence}};
+  Json j{{"name", c.name},
+         {"type", to_string(c.type)},
+         {"value", c.value},
+         {"unit", c.unit},
+         {"confidence", c.confidence}};
   if (!c.applies_to.empty()) j["applies_to"] = c.applies_to;
   if (!c.original.empty()) j["original"] = c.original;
   return j;
@@ -140,26 +164,25 @@ Json to_json(const Port& p) {
 Json to_json(const BehaviorNode& n) {
   Json ports = Json::array();
   for (const auto& p : n.ports) ports.push_back(to_json(p));
-  Json j{{"name", n.name},
-         {"kind", to_string(n.kind)},
-         {"origin", n.origin},
-         {"category", n.category},
-         {"description", n.description},
-         {"when_to_use", n.when_to_use},
-         {"example", n.example},
-         {"aliases", n.aliases},
-         {"ports", std::move(ports)}};
+  Json j{{"name", n.name},         {"kind", to_string(n.kind)},    {"origin", n.origin},
+         {"category", n.category}, {"description", n.description}, {"when_to_use", n.when_to_use},
+         {"example", n.example},   {"aliases", n.aliases},         {"ports", std::move(ports)}};
   if (!n.keywords.empty()) j["keywords"] = n.keywords;
   return j;
 }
 
 Result<BuildingCode> building_code_from_json(const Json& j, const std::string& pointer) {
-  if (!j.is_object()) return fail(ErrorCode::kValidation, "a building code must be a JSON object", {{pointer, "must be an object", "", 0, 0}});
+  if (!j.is_object())
+    return fail(ErrorCode::kValidation, "a building code must be a JSON object",
+                {{pointer, "must be an object", "", 0, 0}});
   JsonChecker ck;
-  ck.only_keys(j, pointer, {"ref_id", "building_type", "jurisdiction", "title", "description", "keywords", "sources", "constraints"});
+  ck.only_keys(j, pointer,
+               {"ref_id", "building_type", "jurisdiction", "title", "description", "keywords", "sources",
+                "constraints"});
   BuildingCode b;
   if (auto v = ck.string(j, pointer, "ref_id", true, 3, 80)) {
-    if (!identifier(*v, false, 3, 80)) ck.add(JsonChecker::child(pointer, "ref_id"), "must use only a-z, 0-9 and _");
+    if (!identifier(*v, false, 3, 80))
+      ck.add(JsonChecker::child(pointer, "ref_id"), "must use only a-z, 0-9 and _");
     b.ref_id = *v;
   }
   if (auto v = ck.string(j, pointer, "building_type", true, 1, 40)) {
@@ -186,8 +209,8 @@ Result<BuildingCode> building_code_from_json(const Json& j, const std::string& p
       Source src;
       if (auto v = ck.string(s, p, "title", true, 1, 300)) src.title = *v;
       if (auto v = ck.string(s, p, "url", true, 1, 500)) {
-        const bool https = v->rfind("https://", 0) == 0 && v->size() > 8 &&
-                           v->find_first_of(" \t\r\n") == std::string::npos;
+        const bool https =
+            v->rfind("https://", 0) == 0 && v->size() > 8 && v->find_first_of(" \t\r\n") == std::string::npos;
         if (!https) ck.add(JsonChecker::child(p, "url"), "must be an https:// URL without spaces");
         src.url = *v;
       }
@@ -209,7 +232,8 @@ Result<BuildingCode> building_code_from_json(const Json& j, const std::string& p
       ck.only_keys(c, p, {"name", "type", "value", "unit", "confidence", "applies_to", "original"});
       Constraint con;
       if (auto v = ck.string(c, p, "name", true, 2, 80)) {
-        if (!identifier(*v, false, 2, 80)) ck.add(JsonChecker::child(p, "name"), "must use only a-z, 0-9 and _");
+        if (!identifier(*v, false, 2, 80))
+          ck.add(JsonChecker::child(p, "name"), "must use only a-z, 0-9 and _");
         con.name = *v;
       }
       if (auto v = ck.string(c, p, "type", true, 1, 20)) {
@@ -223,7 +247,8 @@ Result<BuildingCode> building_code_from_json(const Json& j, const std::string& p
         con.value = *v;
       }
       if (auto v = ck.string(c, p, "unit", true, 1, 20)) {
-        if (!one_of(kSiUnits, *v)) ck.add(JsonChecker::child(p, "unit"), "must be an SI unit: " + list(kSiUnits));
+        if (!one_of(kSiUnits, *v))
+          ck.add(JsonChecker::child(p, "unit"), "must be an SI unit: " + list(kSiUnits));
         con.unit = *v;
       }
       if (auto v = ck.number(c, p, "confidence", true, 0.0, 1.0)) {
@@ -240,12 +265,18 @@ Result<BuildingCode> building_code_from_json(const Json& j, const std::string& p
 }
 
 Result<BehaviorNode> behavior_node_from_json(const Json& j, const std::string& pointer) {
-  if (!j.is_object()) return fail(ErrorCode::kValidation, "a behaviour node must be a JSON object", {{pointer, "must be an object", "", 0, 0}});
+  if (!j.is_object())
+    return fail(ErrorCode::kValidation, "a behaviour node must be a JSON object",
+                {{pointer, "must be an object", "", 0, 0}});
   JsonChecker ck;
-  ck.only_keys(j, pointer, {"name", "kind", "origin", "category", "description", "when_to_use", "example", "keywords", "aliases", "ports"});
+  ck.only_keys(j, pointer,
+               {"name", "kind", "origin", "category", "description", "when_to_use", "example", "keywords",
+                "aliases", "ports"});
   BehaviorNode n;
   if (auto v = ck.string(j, pointer, "name", true, 2, 64)) {
-    if (!xml_name(*v)) ck.add(JsonChecker::child(pointer, "name"), "must be an XML tag name (letters, digits, _; starting with a letter)");
+    if (!xml_name(*v))
+      ck.add(JsonChecker::child(pointer, "name"),
+             "must be an XML tag name (letters, digits, _; starting with a letter)");
     n.name = *v;
   }
   if (auto v = ck.string(j, pointer, "kind", true, 1, 20)) {
@@ -255,7 +286,8 @@ Result<BehaviorNode> behavior_node_from_json(const Json& j, const std::string& p
       ck.add(JsonChecker::child(pointer, "kind"), "must be action, condition, control or decorator");
   }
   if (auto v = ck.string(j, pointer, "origin", true, 1, 20)) {
-    if (!one_of(kOrigins, *v)) ck.add(JsonChecker::child(pointer, "origin"), "must be one of " + list(kOrigins));
+    if (!one_of(kOrigins, *v))
+      ck.add(JsonChecker::child(pointer, "origin"), "must be one of " + list(kOrigins));
     n.origin = *v;
   }
   if (auto v = ck.string(j, pointer, "category", true, 1, 40)) n.category = *v;
@@ -294,7 +326,8 @@ Result<BehaviorNode> behavior_node_from_json(const Json& j, const std::string& p
       if (auto v = ck.string(pj, p, "name", true, 1, 64)) {
         const bool ok = identifier(*v, true, 1, 64) && !((*v)[0] >= '0' && (*v)[0] <= '9');
         if (!ok) ck.add(JsonChecker::child(p, "name"), "must be a port name (letters, digits, _)");
-        if (!seen.insert(*v).second) ck.add(JsonChecker::child(p, "name"), "duplicates another port of this node");
+        if (!seen.insert(*v).second)
+          ck.add(JsonChecker::child(p, "name"), "duplicates another port of this node");
         port.name = *v;
       }
       if (auto v = ck.string(pj, p, "direction", true, 1, 10)) {
@@ -304,7 +337,8 @@ Result<BehaviorNode> behavior_node_from_json(const Json& j, const std::string& p
           ck.add(JsonChecker::child(p, "direction"), "must be in, out or inout");
       }
       if (auto v = ck.string(pj, p, "type", true, 1, 20)) {
-        if (!one_of(kPortTypes, *v)) ck.add(JsonChecker::child(p, "type"), "must be one of " + list(kPortTypes));
+        if (!one_of(kPortTypes, *v))
+          ck.add(JsonChecker::child(p, "type"), "must be one of " + list(kPortTypes));
         port.type = *v;
       }
       if (auto v = ck.string(pj, p, "default", false, 0, 200)) port.default_value = *v;

@@ -13,7 +13,7 @@
 namespace socsim::knowledge {
 
 enum class Kind { kBuildingCode, kBehaviorNode };
-std::string_view to_string(Kind kind);                    // "building_code" | "behavior_node"
+std::string_view to_string(Kind kind);  // "building_code" | "behavior_node"
 std::optional<Kind> kind_from_string(std::string_view s);
 
 // Building types the classifier returns and constraints_for() accepts; entries may also use

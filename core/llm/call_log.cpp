@@ -4,9 +4,12 @@ namespace socsim::llm {
 
 std::string_view to_string(CallStatus status) {
   switch (status) {
-    case CallStatus::kOk: return "ok";
-    case CallStatus::kInvalid: return "invalid";
-    case CallStatus::kError: return "error";
+    case CallStatus::kOk:
+      return "ok";
+    case CallStatus::kInvalid:
+      return "invalid";
+    case CallStatus::kError:
+      return "error";
   }
   return "error";
 }
@@ -14,7 +17,8 @@ std::string_view to_string(CallStatus status) {
 Result<std::int64_t> record_call(store::Store& store, const CallRecord& r) {
   return store.write([&](store::Database& db) -> Result<std::int64_t> {
     auto st = db.prepare(
-        "INSERT INTO llm_calls (job_id, artifact, model, round, prompt_hash, seed, temperature, prompt, response, "
+        "INSERT INTO llm_calls (job_id, artifact, model, round, prompt_hash, seed, temperature, prompt, "
+        "response, "
         "prompt_tokens, completion_tokens, latency_ms, cache_hit, status, error) "
         "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15)");
     if (!st) return tl::unexpected(st.error());

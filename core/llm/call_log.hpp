@@ -16,15 +16,15 @@ std::string_view to_string(CallStatus status);
 
 struct CallRecord {
   std::optional<std::string> job_id;
-  std::string artifact;    // template name, or "embedding"
+  std::string artifact;  // template name, or "embedding"
   std::string model;
-  int round = 0;           // 0 = first answer, 1.. = repair rounds
+  int round = 0;  // 0 = first answer, 1.. = repair rounds
   std::string prompt_hash;
   std::int64_t seed = 0;
   double temperature = 0.0;
-  std::string prompt;      // the messages as JSON text
+  std::string prompt;  // the messages as JSON text
   std::optional<std::string> response;
-  TokenUsage usage;        // zero on a cache hit: it cost nothing
+  TokenUsage usage;  // zero on a cache hit: it cost nothing
   std::int64_t latency_ms = 0;
   bool cache_hit = false;
   CallStatus status = CallStatus::kOk;

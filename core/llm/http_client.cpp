@@ -39,7 +39,8 @@ std::optional<std::string> url_part(CURLU* u, CURLUPart part, unsigned flags = 0
 }
 
 std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
 }
 
@@ -82,8 +83,8 @@ std::size_t on_header(char* data, std::size_t size, std::size_t n, void* user) {
   const std::string line(data, bytes);
   if (line.rfind("HTTP/", 0) == 0) {
     ex->retry_after_s.reset();  // a new response (after 100-continue or a redirect) starts
-  } else if (const auto colon = line.find(':'); colon != std::string::npos &&
-                                               lower(line.substr(0, colon)) == "retry-after") {
+  } else if (const auto colon = line.find(':');
+             colon != std::string::npos && lower(line.substr(0, colon)) == "retry-after") {
     ex->retry_after_s = parse_retry_after(line.substr(colon + 1));
   }
   return bytes;
@@ -130,19 +131,22 @@ struct Attempt {
   std::string redirect_url;  // set for a 3xx with a Location
 };
 
-tl::expected<Attempt, TransportError> post_once(const std::string& url, const std::string& body, curl_slist* headers,
-                                                 const HttpLimits& limits, const CancelToken& cancel,
-                                                 std::chrono::steady_clock::time_point deadline) {
+tl::expected<Attempt, TransportError> post_once(const std::string& url, const std::string& body,
+                                                curl_slist* headers, const HttpLimits& limits,
+                                                const CancelToken& cancel,
+                                                std::chrono::steady_clock::time_point deadline) {
   std::unique_ptr<CURL, EasyDeleter> easy(curl_easy_init());
   std::unique_ptr<CURLM, MultiDeleter> multi(curl_multi_init());
-  if (!easy || !multi) return tl::unexpected(TransportError{TransportFailure::kOther, "libcurl could not be initialised"});
+  if (!easy || !multi)
+    return tl::unexpected(TransportError{TransportFailure::kOther, "libcurl could not be initialised"});
 
   Exchange ex;
   ex.max_bytes = limits.max_response_bytes;
   ex.cancel = &cancel;
   char errbuf[CURL_ERROR_SIZE] = {0};
   const auto remaining_ms = std::max<long long>(
-      1, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count());
+      1, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now())
+             .count());
 
   CURL* c = easy.get();
   curl_easy_setopt(c, CURLOPT_URL, url.c_str());
@@ -150,10 +154,12 @@ tl::expected<Attempt, TransportError> post_once(const std::string& url, const st
   curl_easy_setopt(c, CURLOPT_REDIR_PROTOCOLS_STR, "http,https");
   curl_easy_setopt(c, CURLOPT_FOLLOWLOCATION, 0L);  // redirects are checked and followed below
   curl_easy_setopt(c, CURLOPT_NOSIGNAL, 1L);
-  curl_easy_setopt(c, CURLOPT_CONNECTTIMEOUT_MS, static_cast<long>(std::min<long long>(limits.connect_timeout_ms, remaining_ms)));
+  curl_easy_setopt(c, CURLOPT_CONNECTTIMEOUT_MS,
+                   static_cast<long>(std::min<long long>(limits.connect_timeout_ms, remaining_ms)));
   curl_easy_setopt(c, CURLOPT_TIMEOUT_MS, static_cast<long>(remaining_ms));
   curl_easy_setopt(c, CURLOPT_LOW_SPEED_LIMIT, 1L);
-  curl_easy_setopt(c, CURLOPT_LOW_SPEED_TIME, static_cast<long>(std::max(1, (limits.stall_timeout_ms + 999) / 1000)));
+  curl_easy_setopt(c, CURLOPT_LOW_SPEED_TIME,
+                   static_cast<long>(std::max(1, (limits.stall_timeout_ms + 999) / 1000)));
   curl_easy_setopt(c, CURLOPT_MAXFILESIZE_LARGE, static_cast<curl_off_t>(limits.max_response_bytes));
   curl_easy_setopt(c, CURLOPT_ACCEPT_ENCODING, "");
   curl_easy_setopt(c, CURLOPT_USERAGENT, "socsim");
@@ -206,7 +212,8 @@ tl::expected<Attempt, TransportError> post_once(const std::string& url, const st
   out.response.effective_url = url;
   if (out.response.status >= 300 && out.response.status < 400) {
     char* location = nullptr;
-    if (curl_easy_getinfo(c, CURLINFO_REDIRECT_URL, &location) == CURLE_OK && location) out.redirect_url = location;
+    if (curl_easy_getinfo(c, CURLINFO_REDIRECT_URL, &location) == CURLE_OK && location)
+      out.redirect_url = location;
   }
   return out;
 }
@@ -249,12 +256,13 @@ Result<HttpUrl> parse_http_url(std::string_view text) {
 
 tl::expected<HttpResponse, TransportError> http_post_json(const std::string& url, const std::string& body,
                                                           const std::vector<std::string>& headers,
-                                                          const HttpLimits& limits, const CancelToken& cancel) {
+                                                          const HttpLimits& limits,
+                                                          const CancelToken& cancel) {
   global_init();
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(limits.timeout_ms);
   std::unique_ptr<curl_slist, ListDeleter> list;
-  for (const std::string& h : {std::string("Content-Type: application/json"), std::string("Accept: application/json"),
-                               std::string("Expect:")}) {
+  for (const std::string& h : {std::string("Content-Type: application/json"),
+                               std::string("Accept: application/json"), std::string("Expect:")}) {
     list.reset(curl_slist_append(list.release(), h.c_str()));
   }
   for (const auto& h : headers) list.reset(curl_slist_append(list.release(), h.c_str()));
@@ -268,12 +276,13 @@ tl::expected<HttpResponse, TransportError> http_post_json(const std::string& url
     if (attempt->redirect_url.empty()) return std::move(attempt->response);
     auto target = parse_http_url(attempt->redirect_url);
     if (!target || target->origin() != origin->origin())
-      return tl::unexpected(TransportError{
-          TransportFailure::kRedirect, "endpoint redirected (HTTP " + std::to_string(attempt->response.status) +
-                                           ") to another origin, " + attempt->redirect_url + "; not followed"});
+      return tl::unexpected(
+          TransportError{TransportFailure::kRedirect,
+                         "endpoint redirected (HTTP " + std::to_string(attempt->response.status) +
+                             ") to another origin, " + attempt->redirect_url + "; not followed"});
     if (hop >= limits.max_redirects)
-      return tl::unexpected(TransportError{TransportFailure::kRedirect,
-                                           "more than " + std::to_string(limits.max_redirects) + " redirects"});
+      return tl::unexpected(TransportError{
+          TransportFailure::kRedirect, "more than " + std::to_string(limits.max_redirects) + " redirects"});
     current = attempt->redirect_url;
   }
 }

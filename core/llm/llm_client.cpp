@@ -42,14 +42,17 @@ std::string server_message(const std::string& body) {
 TokenUsage read_usage(const Json& body) {
   TokenUsage u;
   if (auto it = body.find("usage"); it != body.end() && it->is_object()) {
-    if (auto p = it->find("prompt_tokens"); p != it->end() && p->is_number_integer()) u.prompt_tokens = p->get<std::int64_t>();
+    if (auto p = it->find("prompt_tokens"); p != it->end() && p->is_number_integer())
+      u.prompt_tokens = p->get<std::int64_t>();
     if (auto c = it->find("completion_tokens"); c != it->end() && c->is_number_integer())
       u.completion_tokens = c->get<std::int64_t>();
   }
   return u;
 }
 
-bool retryable_status(long status) { return status == 408 || status == 429 || (status >= 500 && status != 501); }
+bool retryable_status(long status) {
+  return status == 408 || status == 429 || (status >= 500 && status != 501);
+}
 
 }  // namespace
 
@@ -60,7 +63,9 @@ Json to_json(const std::vector<ChatMessage>& messages) {
 }
 
 Result<ParsedChat> parse_chat_completion(const Json& body) {
-  const auto bad = [](const std::string& why) { return fail(ErrorCode::kUpstream, "not a chat completion: " + why); };
+  const auto bad = [](const std::string& why) {
+    return fail(ErrorCode::kUpstream, "not a chat completion: " + why);
+  };
   if (!body.is_object()) return bad("the body is not a JSON object");
   auto choices = body.find("choices");
   if (choices == body.end() || !choices->is_array() || choices->empty()) return bad("no choices[]");
@@ -69,7 +74,8 @@ Result<ParsedChat> parse_chat_completion(const Json& body) {
   auto message = choice.find("message");
   if (message == choice.end() || !message->is_object()) return bad("no choices[0].message");
   ParsedChat out;
-  if (auto fr = choice.find("finish_reason"); fr != choice.end() && fr->is_string()) out.finish_reason = fr->get<std::string>();
+  if (auto fr = choice.find("finish_reason"); fr != choice.end() && fr->is_string())
+    out.finish_reason = fr->get<std::string>();
   auto content = message->find("content");
   if (content == message->end() || !content->is_string()) {
     if (auto refusal = message->find("refusal"); refusal != message->end() && refusal->is_string())
@@ -125,7 +131,8 @@ void LlmClient::release_slot() {
 }
 
 int LlmClient::backoff_ms(int retry) {
-  const double base = std::min<double>(config_.max_backoff_ms, config_.initial_backoff_ms * std::pow(2.0, retry));
+  const double base =
+      std::min<double>(config_.max_backoff_ms, config_.initial_backoff_ms * std::pow(2.0, retry));
   double u;
   {
     std::lock_guard<std::mutex> lock(jitter_mutex_);
@@ -135,7 +142,8 @@ int LlmClient::backoff_ms(int retry) {
   return static_cast<int>(base * (0.5 + 0.5 * u));  // "equal jitter": spreads clients, keeps the floor
 }
 
-Result<Json> LlmClient::post(const std::string& path, const Json& body, const CancelToken& cancel, Call& call) {
+Result<Json> LlmClient::post(const std::string& path, const Json& body, const CancelToken& cancel,
+                             Call& call) {
   const std::string url = endpoint(path);
   const std::string text = body.dump(-1, ' ', false, Json::error_handler_t::replace);
   std::vector<std::string> headers;
@@ -150,12 +158,13 @@ Result<Json> LlmClient::post(const std::string& path, const Json& body, const Ca
     if (!acquire_slot(cancel, call.deadline)) {
       if (cancel.cancelled()) return cancelled();
       return upstream(ErrorCode::kUpstreamTimeout, "no free request slot within the deadline of " +
-                                                        std::to_string(config_.deadline_ms) + " ms");
+                                                       std::to_string(config_.deadline_ms) + " ms");
     }
     const auto remaining = ms_between(Clock::now(), call.deadline);
     HttpLimits limits;
     limits.connect_timeout_ms = config_.connect_timeout_ms;
-    limits.timeout_ms = static_cast<int>(std::max<std::int64_t>(1, std::min<std::int64_t>(config_.attempt_timeout_ms, remaining)));
+    limits.timeout_ms = static_cast<int>(
+        std::max<std::int64_t>(1, std::min<std::int64_t>(config_.attempt_timeout_ms, remaining)));
     limits.stall_timeout_ms = config_.stall_timeout_ms;
     limits.max_response_bytes = config_.max_response_bytes;
     auto r = http_post_json(url, text, headers, limits, cancel);
@@ -180,8 +189,9 @@ Result<Json> LlmClient::post(const std::string& path, const Json& body, const Ca
     } else if (r->status >= 200 && r->status < 300) {
       call.last_status = r->status;
       auto j = parse_json_untrusted(r->body);
-      if (!j) return upstream(ErrorCode::kUpstream, "answered HTTP " + std::to_string(r->status) +
-                                                        " with a body that is not JSON (" + j.error().detail + ")");
+      if (!j)
+        return upstream(ErrorCode::kUpstream, "answered HTTP " + std::to_string(r->status) +
+                                                  " with a body that is not JSON (" + j.error().detail + ")");
       return std::move(*j);
     } else {
       call.last_status = r->status;
@@ -189,9 +199,10 @@ Result<Json> LlmClient::post(const std::string& path, const Json& body, const Ca
       if (retryable_status(r->status)) {
         if (r->retry_after_s && (r->status == 429 || r->status == 503)) {
           if (*r->retry_after_s > config_.max_retry_after_s)
-            return upstream(ErrorCode::kUpstream, what + " (Retry-After " + std::to_string(*r->retry_after_s) +
-                                                      " s is longer than the " + std::to_string(config_.max_retry_after_s) +
-                                                      " s we wait)");
+            return upstream(ErrorCode::kUpstream,
+                            what + " (Retry-After " + std::to_string(*r->retry_after_s) +
+                                " s is longer than the " + std::to_string(config_.max_retry_after_s) +
+                                " s we wait)");
           wait_ms = *r->retry_after_s * 1000;
         } else {
           wait_ms = backoff_ms(attempt);
@@ -203,8 +214,9 @@ Result<Json> LlmClient::post(const std::string& path, const Json& body, const Ca
       return upstream(code, what + " (gave up after " + std::to_string(call.attempts) + " attempts)");
     const auto resume = Clock::now() + std::chrono::milliseconds(wait_ms);
     if (resume >= call.deadline)
-      return upstream(code, what + " (after " + std::to_string(call.attempts) + " attempts; the next would pass the " +
-                                std::to_string(config_.deadline_ms) + " ms deadline)");
+      return upstream(code, what + " (after " + std::to_string(call.attempts) +
+                                " attempts; the next would pass the " + std::to_string(config_.deadline_ms) +
+                                " ms deadline)");
     if (!cancel.sleep_until(resume)) return cancelled();
   }
 }
@@ -257,12 +269,14 @@ Result<ChatResponse> LlmClient::chat(const ChatRequest& request) {
     if (!body) return tl::unexpected(body.error());
     const Error first = answer.error();
     answer = post("/v1/chat/completions", *body, request.cancel, call);
-    if (!answer) answer.error().detail += " (after the endpoint had rejected response_format: " + first.detail + ")";
+    if (!answer)
+      answer.error().detail += " (after the endpoint had rejected response_format: " + first.detail + ")";
   }
   if (!answer) return tl::unexpected(answer.error());
   auto parsed = parse_chat_completion(*answer);
   if (!parsed) {
-    return fail(ErrorCode::kUpstream, "LLM endpoint " + endpoint("/v1/chat/completions") + ": " + parsed.error().detail);
+    return fail(ErrorCode::kUpstream,
+                "LLM endpoint " + endpoint("/v1/chat/completions") + ": " + parsed.error().detail);
   }
   ChatResponse out;
   out.content = std::move(parsed->content);
@@ -287,12 +301,14 @@ Result<EmbeddingResponse> LlmClient::embed(const EmbeddingRequest& request) {
   auto answer = post("/v1/embeddings", body, request.cancel, call);
   if (!answer) return tl::unexpected(answer.error());
   const auto bad = [&](const std::string& why) {
-    return fail(ErrorCode::kUpstream, "LLM endpoint " + endpoint("/v1/embeddings") + ": not an embedding list: " + why);
+    return fail(ErrorCode::kUpstream,
+                "LLM endpoint " + endpoint("/v1/embeddings") + ": not an embedding list: " + why);
   };
   auto data = answer->find("data");
   if (!answer->is_object() || data == answer->end() || !data->is_array()) return bad("no data[]");
   if (data->size() != request.inputs.size())
-    return bad(std::to_string(data->size()) + " embeddings for " + std::to_string(request.inputs.size()) + " inputs");
+    return bad(std::to_string(data->size()) + " embeddings for " + std::to_string(request.inputs.size()) +
+               " inputs");
   out.vectors.assign(request.inputs.size(), {});
   for (std::size_t i = 0; i < data->size(); ++i) {
     const Json& item = (*data)[i];

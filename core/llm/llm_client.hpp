@@ -82,7 +82,9 @@ class LlmClient {
   [[nodiscard]] const LlmConfig& config() const { return config_; }
   // False once the server has rejected response_format (kAuto mode); then JSON is asked for in words.
   [[nodiscard]] bool structured_output_available() const;
-  [[nodiscard]] std::string endpoint(std::string_view path) const { return config_.base_url + std::string(path); }
+  [[nodiscard]] std::string endpoint(std::string_view path) const {
+    return config_.base_url + std::string(path);
+  }
 
  private:
   explicit LlmClient(LlmConfig config);

@@ -32,8 +32,8 @@ class EnvReader {
     if (ec != std::errc() || end != v->data() + v->size()) {
       errors.push_back(env_error(var, "must be a whole number, got \"" + *v + "\""));
     } else if (parsed < min || parsed > max) {
-      errors.push_back(env_error(var, "must be between " + std::to_string(min) + " and " + std::to_string(max) +
-                                          ", got " + *v));
+      errors.push_back(env_error(
+          var, "must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + *v));
     } else {
       out = static_cast<Int>(parsed);
     }
@@ -43,7 +43,8 @@ class EnvReader {
     auto v = text(var);
     if (!v) return;
     std::string s = *v;
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (s == "1" || s == "true" || s == "yes" || s == "on")
       out = true;
     else if (s == "0" || s == "false" || s == "no" || s == "off")
@@ -61,23 +62,26 @@ class EnvReader {
 bool plausible_model_name(std::string_view name) {
   if (name.empty() || name.size() > 200) return false;
   return std::all_of(name.begin(), name.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '_' ||
-           c == '-' || c == ':' || c == '/' || c == '@' || c == '+';
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+           c == '_' || c == '-' || c == ':' || c == '/' || c == '@' || c == '+';
   });
 }
 
-Result<std::string> resolve(const LlmConfig& cfg, const std::optional<std::string>& requested, const std::string& fallback) {
+Result<std::string> resolve(const LlmConfig& cfg, const std::optional<std::string>& requested,
+                            const std::string& fallback) {
   if (!requested) {
     if (fallback.empty())
-      return fail(ErrorCode::kValidation, "no LLM model configured (set SOCSIM_LLM_MODEL or name one in the request)",
+      return fail(ErrorCode::kValidation,
+                  "no LLM model configured (set SOCSIM_LLM_MODEL or name one in the request)",
                   {FieldError{"/model", "is required: no default model is configured", {}, 0, 0}});
     return fallback;
   }
   if (!plausible_model_name(*requested))
-    return fail(ErrorCode::kValidation, "model name is not valid",
-                {FieldError{"/model", "must be 1-200 characters of letters, digits and . _ - : / @ +", {}, 0, 0}});
-  if (!cfg.allowed_models.empty() &&
-      std::find(cfg.allowed_models.begin(), cfg.allowed_models.end(), *requested) == cfg.allowed_models.end()) {
+    return fail(
+        ErrorCode::kValidation, "model name is not valid",
+        {FieldError{"/model", "must be 1-200 characters of letters, digits and . _ - : / @ +", {}, 0, 0}});
+  if (!cfg.allowed_models.empty() && std::find(cfg.allowed_models.begin(), cfg.allowed_models.end(),
+                                               *requested) == cfg.allowed_models.end()) {
     std::string list;
     for (const auto& m : cfg.allowed_models) list += (list.empty() ? "" : ", ") + m;
     return fail(ErrorCode::kValidation, "model \"" + *requested + "\" is not allowed on this server",
@@ -92,8 +96,8 @@ Status LlmConfig::validate() {
   std::vector<FieldError> errors;
   const auto range = [&](const char* var, long long v, long long min, long long max) {
     if (v < min || v > max)
-      errors.push_back(env_error(var, "must be between " + std::to_string(min) + " and " + std::to_string(max) +
-                                          ", got " + std::to_string(v)));
+      errors.push_back(env_error(var, "must be between " + std::to_string(min) + " and " +
+                                          std::to_string(max) + ", got " + std::to_string(v)));
   };
   range("SOCSIM_LLM_CONNECT_TIMEOUT_MS", connect_timeout_ms, 1, 600000);
   range("SOCSIM_LLM_TIMEOUT_MS", attempt_timeout_ms, 1, 3600000);
@@ -112,7 +116,8 @@ Status LlmConfig::validate() {
   if (!embedding_model.empty() && !plausible_model_name(embedding_model))
     errors.push_back(env_error("SOCSIM_LLM_EMBEDDING_MODEL", "is not a plausible model name"));
   for (const auto& m : allowed_models)
-    if (!plausible_model_name(m)) errors.push_back(env_error("SOCSIM_LLM_ALLOWED_MODELS", "\"" + m + "\" is not a model name"));
+    if (!plausible_model_name(m))
+      errors.push_back(env_error("SOCSIM_LLM_ALLOWED_MODELS", "\"" + m + "\" is not a model name"));
 
   if (!base_url.empty()) {
     auto url = parse_http_url(base_url);
@@ -177,13 +182,16 @@ Result<LlmConfig> LlmConfig::from_environment(const Getenv& getenv) {
     else if (*mode == "off")
       cfg.structured_output = StructuredOutput::kOff;
     else
-      env.errors.push_back(env_error("SOCSIM_LLM_STRUCTURED_OUTPUT", "must be auto, on or off, got \"" + *mode + "\""));
+      env.errors.push_back(
+          env_error("SOCSIM_LLM_STRUCTURED_OUTPUT", "must be auto, on or off, got \"" + *mode + "\""));
   }
   if (!env.errors.empty()) {
-    std::string detail = "LLM configuration: " + env.errors.front().parameter + " " + env.errors.front().message;
+    std::string detail =
+        "LLM configuration: " + env.errors.front().parameter + " " + env.errors.front().message;
     return fail(ErrorCode::kValidation, std::move(detail), std::move(env.errors));
   }
-  if (cfg.deadline_ms < cfg.attempt_timeout_ms && !getenv("SOCSIM_LLM_DEADLINE_MS")) cfg.deadline_ms = cfg.attempt_timeout_ms;
+  if (cfg.deadline_ms < cfg.attempt_timeout_ms && !getenv("SOCSIM_LLM_DEADLINE_MS"))
+    cfg.deadline_ms = cfg.attempt_timeout_ms;
   if (auto s = cfg.validate(); !s) return tl::unexpected(s.error());
   return cfg;
 }

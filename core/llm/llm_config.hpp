@@ -17,10 +17,10 @@ namespace socsim::llm {
 enum class StructuredOutput { kAuto, kOn, kOff };
 
 struct LlmConfig {
-  std::string base_url;         // e.g. "https://api.openai.com"; empty = no endpoint configured
-  std::string model;            // default chat model
-  std::string embedding_model;  // default embedding model; empty = `model`
-  std::string api_key;          // sent as "Authorization: Bearer …" when not empty
+  std::string base_url;                     // e.g. "https://api.openai.com"; empty = no endpoint configured
+  std::string model;                        // default chat model
+  std::string embedding_model;              // default embedding model; empty = `model`
+  std::string api_key;                      // sent as "Authorization: Bearer …" when not empty
   std::vector<std::string> allowed_models;  // when not empty, per-request model names must be listed
 
   int connect_timeout_ms = 5000;
@@ -31,13 +31,13 @@ struct LlmConfig {
   int max_retries = 3;              // extra attempts after timeouts, 429 and 5xx
   int initial_backoff_ms = 500;     // doubled per retry, capped at max_backoff_ms, with jitter
   int max_backoff_ms = 20000;
-  int max_retry_after_s = 60;       // a longer Retry-After fails the call instead of waiting
-  int max_concurrency = 4;          // requests in flight per client
+  int max_retry_after_s = 60;  // a longer Retry-After fails the call instead of waiting
+  int max_concurrency = 4;     // requests in flight per client
   std::size_t max_response_bytes = 8u << 20;
   StructuredOutput structured_output = StructuredOutput::kAuto;
-  bool strict_schema = false;       // response_format.json_schema.strict
-  int max_tokens = 0;               // 0 = the server's default
-  int repair_rounds = 2;            // StructuredGenerator: answers re-requested after a failed check
+  bool strict_schema = false;  // response_format.json_schema.strict
+  int max_tokens = 0;          // 0 = the server's default
+  int repair_rounds = 2;       // StructuredGenerator: answers re-requested after a failed check
 
   [[nodiscard]] bool configured() const { return !base_url.empty(); }
 
@@ -48,7 +48,8 @@ struct LlmConfig {
   // The model for one request: the configured default, or `requested` after checking it is a
   // plausible model name (and in allowed_models when that list is set). kValidation at "/model".
   [[nodiscard]] Result<std::string> resolve_model(const std::optional<std::string>& requested) const;
-  [[nodiscard]] Result<std::string> resolve_embedding_model(const std::optional<std::string>& requested) const;
+  [[nodiscard]] Result<std::string> resolve_embedding_model(
+      const std::optional<std::string>& requested) const;
 
   using Getenv = std::function<const char*(const char*)>;
   // Reads SOCSIM_LLM_URL, _MODEL, _API_KEY, _EMBEDDING_MODEL, _ALLOWED_MODELS (comma list),

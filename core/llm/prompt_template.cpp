@@ -11,8 +11,12 @@ const std::map<std::string, std::string>& embedded_prompt_files();  // generated
 
 namespace {
 
-bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
+bool ident_start(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool ident_char(char c) {
+  return ident_start(c) || (c >= '0' && c <= '9');
+}
 
 std::string trim_lines(std::string s) {
   const auto first = s.find_first_not_of(" \t\r\n");
@@ -45,7 +49,8 @@ std::size_t scan(std::string_view text, F&& fn) {
 }
 
 int line_of(std::string_view text, std::size_t offset) {
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
+  return 1 +
+         static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
 }
 
 }  // namespace
@@ -54,7 +59,8 @@ Result<PromptTemplate> parse_prompt_template(std::string name, std::string_view 
   PromptTemplate tpl;
   tpl.name = std::move(name);
   const auto bad = [&](int line, const std::string& why) {
-    return fail(ErrorCode::kValidation, "prompt template " + tpl.name + " line " + std::to_string(line) + ": " + why,
+    return fail(ErrorCode::kValidation,
+                "prompt template " + tpl.name + " line " + std::to_string(line) + ": " + why,
                 {FieldError{"", why, {}, line, 1}});
   };
   enum class Part { kHeader, kSystem, kUser } part = Part::kHeader;
@@ -80,7 +86,9 @@ Result<PromptTemplate> parse_prompt_template(std::string name, std::string_view 
       seen_user = true;
       part = Part::kUser;
     } else {
-      std::string& target = part == Part::kHeader ? tpl.header : part == Part::kSystem ? tpl.system : tpl.user;
+      std::string& target = part == Part::kHeader   ? tpl.header
+                            : part == Part::kSystem ? tpl.system
+                                                    : tpl.user;
       target += line;
       target += '\n';
     }
@@ -93,11 +101,13 @@ Result<PromptTemplate> parse_prompt_template(std::string name, std::string_view 
 
   std::set<std::string> names;
   for (const std::string* section : {&tpl.system, &tpl.user}) {
-    const std::size_t open = scan(*section, [&](std::string n, std::size_t, std::size_t) { names.insert(std::move(n)); });
+    const std::size_t open =
+        scan(*section, [&](std::string n, std::size_t, std::size_t) { names.insert(std::move(n)); });
     if (open != std::string::npos) {
       // Report the line within the whole file.
       const std::size_t base = text.find(section->substr(0, std::min<std::size_t>(section->size(), 40)));
-      return bad(line_of(text, (base == std::string_view::npos ? 0 : base) + open), "placeholder is not closed with }}");
+      return bad(line_of(text, (base == std::string_view::npos ? 0 : base) + open),
+                 "placeholder is not closed with }}");
     }
   }
   tpl.variables.assign(names.begin(), names.end());
@@ -127,7 +137,8 @@ Result<const PromptTemplate*> find_prompt_template(std::string_view name) {
     (void)unused;
     known += (known.empty() ? "" : ", ") + n;
   }
-  return fail(ErrorCode::kInternal, "no prompt template named \"" + std::string(name) + "\" (have: " + known + ")");
+  return fail(ErrorCode::kInternal,
+              "no prompt template named \"" + std::string(name) + "\" (have: " + known + ")");
 }
 
 Result<std::vector<ChatMessage>> render_prompt(const PromptTemplate& tpl, const PromptVariables& variables) {
@@ -152,7 +163,8 @@ Result<std::vector<ChatMessage>> render_prompt(const PromptTemplate& tpl, const 
       copied = end;
     });
     if (!missing.empty())
-      return fail(ErrorCode::kInternal, "prompt template " + tpl.name + " needs {{" + missing + "}}, which was not given");
+      return fail(ErrorCode::kInternal,
+                  "prompt template " + tpl.name + " needs {{" + missing + "}}, which was not given");
     rendered.append(*section, copied, std::string::npos);
     out.push_back(ChatMessage{role, std::move(rendered)});
   }

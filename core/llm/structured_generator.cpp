@@ -72,7 +72,8 @@ Checked check_answer(const std::string& content, const std::string& finish_reaso
     }
   }
   if (finish_reason == "length")
-    out.problems.push_back(FieldError{"", "the answer was cut off at the token limit; answer more compactly", {}, 0, 0});
+    out.problems.push_back(
+        FieldError{"", "the answer was cut off at the token limit; answer more compactly", {}, 0, 0});
   return out;
 }
 
@@ -80,7 +81,9 @@ Checked check_answer(const std::string& content, const std::string& finish_reaso
 
 Result<Json> extract_json_answer(std::string_view text) {
   const std::string_view t = trim(text);
-  if (t.empty()) return fail(ErrorCode::kValidation, "the answer is empty", {FieldError{"", "the answer is empty", {}, 0, 0}});
+  if (t.empty())
+    return fail(ErrorCode::kValidation, "the answer is empty",
+                {FieldError{"", "the answer is empty", {}, 0, 0}});
   if (const auto fence = t.find("```"); fence != std::string_view::npos) {
     std::size_t start = t.find('\n', fence);
     start = start == std::string_view::npos ? t.size() : start + 1;
@@ -126,7 +129,8 @@ Json Generation::provenance() const {
 }
 
 Result<Generation> StructuredGenerator::generate(const GenerationRequest& request) const {
-  if (request.schema == nullptr) return fail(ErrorCode::kInternal, "generation of " + request.artifact + " without a schema");
+  if (request.schema == nullptr)
+    return fail(ErrorCode::kInternal, "generation of " + request.artifact + " without a schema");
   auto tpl = find_prompt_template(request.artifact);
   if (!tpl) return tl::unexpected(tpl.error());
   auto rendered = render_prompt(**tpl, request.variables);
@@ -190,7 +194,8 @@ Result<Generation> StructuredGenerator::generate(const GenerationRequest& reques
         e.detail = "generating " + request.artifact + ": " + e.detail;
         record.status = CallStatus::kError;
         record.error = e.detail;
-        record.latency_ms = std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - started).count();
+        record.latency_ms =
+            std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - started).count();
         if (store_ != nullptr) (void)record_call(*store_, record);  // the endpoint's error matters more
         return tl::unexpected(std::move(e));
       }
@@ -228,7 +233,8 @@ Result<Generation> StructuredGenerator::generate(const GenerationRequest& reques
     }
   }
   std::string detail = "the LLM's " + request.artifact + " answer still failed its checks after " +
-                       std::to_string(rounds) + " repair round" + (rounds == 1 ? "" : "s") + ": " + summary(problems);
+                       std::to_string(rounds) + " repair round" + (rounds == 1 ? "" : "s") + ": " +
+                       summary(problems);
   return fail(ErrorCode::kValidation, std::move(detail), std::move(problems));
 }
 

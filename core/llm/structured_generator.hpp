@@ -26,11 +26,11 @@ Result<Json> extract_json_answer(std::string_view text);
 using SemanticCheck = std::function<Status(const Json&)>;
 
 struct GenerationRequest {
-  std::string artifact;               // prompt template name: schemas/prompts/<artifact>.md
-  PromptVariables variables;          // exactly the template's placeholders
-  const JsonSchema* schema = nullptr; // the answer's schema (required)
-  SemanticCheck check;                // optional
-  std::optional<std::string> model;   // per-request model name; the URL never changes
+  std::string artifact;                // prompt template name: schemas/prompts/<artifact>.md
+  PromptVariables variables;           // exactly the template's placeholders
+  const JsonSchema* schema = nullptr;  // the answer's schema (required)
+  SemanticCheck check;                 // optional
+  std::optional<std::string> model;    // per-request model name; the URL never changes
   double temperature = 0.2;
   std::int64_t seed = 0;
   std::optional<std::string> job_id;  // for the call log
@@ -48,10 +48,10 @@ struct GenerationCall {
 };
 
 struct Generation {
-  Json value;                // schema- and check-valid
+  Json value;  // schema- and check-valid
   std::string artifact;
   std::string model;
-  std::string prompt_hash;   // of the first request: with model, seed and temperature it finds the cache
+  std::string prompt_hash;  // of the first request: with model, seed and temperature it finds the cache
   std::int64_t seed = 0;
   double temperature = 0.0;
   std::vector<GenerationCall> calls;

@@ -22,10 +22,11 @@ struct MethodParts {
   EstimatorKind estimator;
   PlannerKind planner;
 };
-constexpr MethodParts kParts[] = {{EstimatorKind::kUniform, PlannerKind::kGreedy}, {EstimatorKind::kPrior, PlannerKind::kOsg},
-                                  {EstimatorKind::kPrior, PlannerKind::kCeg},      {EstimatorKind::kHint, PlannerKind::kOsg},
-                                  {EstimatorKind::kHint, PlannerKind::kCeg},       {EstimatorKind::kPosterior, PlannerKind::kOsg},
-                                  {EstimatorKind::kPosterior, PlannerKind::kCeg}};
+constexpr MethodParts kParts[] = {
+    {EstimatorKind::kUniform, PlannerKind::kGreedy}, {EstimatorKind::kPrior, PlannerKind::kOsg},
+    {EstimatorKind::kPrior, PlannerKind::kCeg},      {EstimatorKind::kHint, PlannerKind::kOsg},
+    {EstimatorKind::kHint, PlannerKind::kCeg},       {EstimatorKind::kPosterior, PlannerKind::kOsg},
+    {EstimatorKind::kPosterior, PlannerKind::kCeg}};
 
 // Cells of the largest 4-connected part of the grid (ties: the one holding the lowest cell).
 std::vector<int> largest_component(const NavMap& map) {
@@ -49,7 +50,9 @@ std::vector<int> largest_component(const NavMap& map) {
   return best;
 }
 
-Json point(household::FloorPoint p) { return Json::array({p.x, p.z}); }
+Json point(household::FloorPoint p) {
+  return Json::array({p.x, p.z});
+}
 
 Json pose_json(const NavMap& map, int pose) {
   const auto c = map.center(cell_of(pose));
@@ -69,8 +72,14 @@ Json map_json(const House& house, const NavMap& map) {
   Json receptacles = Json::array();
   for (const auto& r : map.receptacles()) {
     const auto& e = house.entities[static_cast<std::size_t>(r.entity)];
-    receptacles.push_back({{"id", r.id}, {"type", r.type}, {"room", r.room >= 0 ? Json(house.rooms[static_cast<std::size_t>(r.room)].id) : Json()},
-                           {"x", r.x}, {"z", r.z}, {"size_x", e.size_x}, {"size_z", e.size_z}});
+    receptacles.push_back(
+        {{"id", r.id},
+         {"type", r.type},
+         {"room", r.room >= 0 ? Json(house.rooms[static_cast<std::size_t>(r.room)].id) : Json()},
+         {"x", r.x},
+         {"z", r.z},
+         {"size_x", e.size_x},
+         {"size_z", e.size_z}});
   }
   std::string free(static_cast<std::size_t>(map.cells()), '0');
   for (int c = 0; c < map.cells(); ++c)
@@ -79,13 +88,19 @@ Json map_json(const House& house, const NavMap& map) {
           {"rooms", rooms},
           {"walls", walls},
           {"receptacles", receptacles},
-          {"grid", {{"origin", Json::array({map.origin_x(), map.origin_z()})}, {"cell", map.cell_size()}, {"width", map.width()},
-                    {"depth", map.depth()}, {"free", free}}}};
+          {"grid",
+           {{"origin", Json::array({map.origin_x(), map.origin_z()})},
+            {"cell", map.cell_size()},
+            {"width", map.width()},
+            {"depth", map.depth()},
+            {"free", free}}}};
 }
 
 }  // namespace
 
-std::string_view split_name(Split split) { return split == Split::kNormal ? "normal" : "hard"; }
+std::string_view split_name(Split split) {
+  return split == Split::kNormal ? "normal" : "hard";
+}
 
 std::optional<Split> parse_split(std::string_view name) {
   if (name == "normal") return Split::kNormal;
@@ -96,49 +111,66 @@ std::optional<Split> parse_split(std::string_view name) {
 const std::vector<std::string>& target_types() {
   // Five of them are ProcTHOR ObjectNav targets, six are not (as in the paper, whose targets are
   // "not fully covered" by the visual models' types); all are often moved and often alone.
-  static const std::vector<std::string> types = {"AlarmClock", "Apple",     "Bowl",          "CellPhone", "Cloth", "KeyChain",
-                                                 "Laptop",     "Mug",       "Newspaper",     "RemoteControl", "Watch"};
+  static const std::vector<std::string> types = {"AlarmClock", "Apple",         "Bowl",   "CellPhone",
+                                                 "Cloth",      "KeyChain",      "Laptop", "Mug",
+                                                 "Newspaper",  "RemoteControl", "Watch"};
   return types;
 }
 
 const std::vector<Method>& methods() {
-  static const std::vector<Method> list = {{"Uniform+Greedy", "Greedy", false}, {"SP+OSG", "SP + OSG", false},
-                                           {"SP+CEG", "SP + CEG", false},         {"Hint+OSG", "Hint + OSG", true},
-                                           {"Hint+CEG", "Hint + CEG", true},      {"Posterior+OSG", "Posterior + OSG", false},
+  static const std::vector<Method> list = {{"Uniform+Greedy", "Greedy", false},
+                                           {"SP+OSG", "SP + OSG", false},
+                                           {"SP+CEG", "SP + CEG", false},
+                                           {"Hint+OSG", "Hint + OSG", true},
+                                           {"Hint+CEG", "Hint + CEG", true},
+                                           {"Posterior+OSG", "Posterior + OSG", false},
                                            {"Posterior+CEG", "Posterior + CEG", false}};
   return list;
 }
 
 Result<BenchmarkRequest> benchmark_request_from_json(const Json& json) {
   JsonChecker check;
-  if (!json.is_object()) return fail(ErrorCode::kValidation, "the request must be a JSON object", {FieldError{"", "must be an object", {}, 0, 0}});
-  check.only_keys(json, "", {"split", "scenes", "seed", "tasks_per_scene", "max_steps", "training_houses", "alpha"});
+  if (!json.is_object())
+    return fail(ErrorCode::kValidation, "the request must be a JSON object",
+                {FieldError{"", "must be an object", {}, 0, 0}});
+  check.only_keys(json, "",
+                  {"split", "scenes", "seed", "tasks_per_scene", "max_steps", "training_houses", "alpha"});
   BenchmarkRequest r;
   if (auto s = check.string(json, "", "split", true)) {
-    if (auto split = parse_split(*s)) r.split = *split;
-    else check.add("/split", "must be \"normal\" or \"hard\"");
+    if (auto split = parse_split(*s))
+      r.split = *split;
+    else
+      check.add("/split", "must be \"normal\" or \"hard\"");
   }
   if (auto v = check.integer(json, "", "scenes", true, 1, 500)) r.scenes = static_cast<int>(*v);
   if (auto v = check.integer(json, "", "seed", true, 0, INT64_MAX)) r.seed = static_cast<std::uint64_t>(*v);
-  if (auto v = check.integer(json, "", "tasks_per_scene", false, 1, 50)) r.tasks_per_scene = static_cast<int>(*v);
+  if (auto v = check.integer(json, "", "tasks_per_scene", false, 1, 50))
+    r.tasks_per_scene = static_cast<int>(*v);
   if (auto v = check.integer(json, "", "max_steps", false, 1, 5000)) r.max_steps = static_cast<int>(*v);
-  if (auto v = check.integer(json, "", "training_houses", false, 1, 20000)) r.training_houses = static_cast<int>(*v);
+  if (auto v = check.integer(json, "", "training_houses", false, 1, 20000))
+    r.training_houses = static_cast<int>(*v);
   if (auto v = check.number(json, "", "alpha", false, 0.0, 1.0)) r.alpha = *v;
   if (!check.ok()) return tl::unexpected(check.error("invalid navigation benchmark request"));
   return r;
 }
 
 Json to_json(const BenchmarkRequest& r) {
-  return {{"split", split_name(r.split)},         {"scenes", r.scenes},     {"seed", r.seed},
-          {"tasks_per_scene", r.tasks_per_scene}, {"max_steps", r.max_steps}, {"training_houses", r.training_houses},
+  return {{"split", split_name(r.split)},
+          {"scenes", r.scenes},
+          {"seed", r.seed},
+          {"tasks_per_scene", r.tasks_per_scene},
+          {"max_steps", r.max_steps},
+          {"training_houses", r.training_houses},
           {"alpha", r.alpha}};
 }
 
-Result<ResidentPool> make_resident_pool(const household::HouseholdKnowledge& knowledge, std::uint64_t seed, int days) {
+Result<ResidentPool> make_resident_pool(const household::HouseholdKnowledge& knowledge, std::uint64_t seed,
+                                        int days) {
   ResidentPool pool;
   auto vocabulary = household::ActivityVocabulary::initial(knowledge);
   for (const auto& persona : knowledge.personas) {
-    auto r = household::make_resident_offline(persona, knowledge, {days, household::Weekday::kWednesday, seed}, vocabulary);
+    auto r = household::make_resident_offline(persona, knowledge,
+                                              {days, household::Weekday::kWednesday, seed}, vocabulary);
     if (!r) return tl::unexpected(r.error());
     pool.push_back(std::make_shared<const household::ResidentProfile>(std::move(*r)));
   }
@@ -152,13 +184,16 @@ Result<household::HouseholdKnowledge> load_benchmark_knowledge(store::Store& sto
   auto posted = household::list_stored_personas(store, false);
   if (!posted) return tl::unexpected(posted.error());
   std::erase_if(knowledge->personas, [&](const household::Persona& p) {
-    return std::any_of(posted->begin(), posted->end(), [&](const household::Persona& q) { return household::persona_id(q) == household::persona_id(p); });
+    return std::any_of(posted->begin(), posted->end(), [&](const household::Persona& q) {
+      return household::persona_id(q) == household::persona_id(p);
+    });
   });
   knowledge->index();
   return knowledge;
 }
 
-Result<BenchmarkInputs> prepare_inputs(const household::HouseholdKnowledge& knowledge, const BenchmarkRequest& request, int threads) {
+Result<BenchmarkInputs> prepare_inputs(const household::HouseholdKnowledge& knowledge,
+                                       const BenchmarkRequest& request, int threads) {
   BenchmarkInputs in;
   auto pool = make_resident_pool(knowledge, request.seed);
   if (!pool) return tl::unexpected(pool.error());
@@ -170,13 +205,14 @@ Result<BenchmarkInputs> prepare_inputs(const household::HouseholdKnowledge& know
 }
 
 std::uint64_t test_scene_seed(std::uint64_t seed, Split split, int index) {
-  std::uint64_t state = seed ^ fnv1a64(split == Split::kNormal ? "navbench/test/normal" : "navbench/test/hard") ^
+  std::uint64_t state = seed ^
+                        fnv1a64(split == Split::kNormal ? "navbench/test/normal" : "navbench/test/hard") ^
                         (static_cast<std::uint64_t>(index) * 0x9E3779B97F4A7C15ULL);
   return splitmix64(state) & ~(std::uint64_t{1} << 63);
 }
 
-Result<TestScene> make_test_scene(const BenchmarkRequest& request, int index, const household::HouseholdKnowledge& knowledge,
-                                  const ResidentPool& pool) {
+Result<TestScene> make_test_scene(const BenchmarkRequest& request, int index,
+                                  const household::HouseholdKnowledge& knowledge, const ResidentPool& pool) {
   const bool hard = request.split == Split::kHard;
   // A layout that cannot be packed is drawn again from the next seed of the same scene.
   for (int attempt = 0; attempt < 8; ++attempt) {
@@ -216,7 +252,8 @@ std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestSce
   for (const auto& type : target_types()) {
     int found = -1, count = 0;
     for (std::size_t o = 0; o < house.objects.size(); ++o)
-      if (house.entities[static_cast<std::size_t>(house.objects[o])].type == type) found = static_cast<int>(o), ++count;
+      if (house.entities[static_cast<std::size_t>(house.objects[o])].type == type)
+        found = static_cast<int>(o), ++count;
     if (count == 1) singles.emplace_back(type, found);
   }
   struct Option {
@@ -227,21 +264,26 @@ std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestSce
   std::vector<Option> candidates;
   const auto minutes = static_cast<std::int64_t>(scene.end() / 60);
   for (int k = 0; k < request.instants; ++k) {
-    const Seconds t0 = rng.between(household::kMinutesPerDay, std::max<std::int64_t>(household::kMinutesPerDay, minutes - 1)) * 60;
+    const Seconds t0 = rng.between(household::kMinutesPerDay,
+                                   std::max<std::int64_t>(household::kMinutesPerDay, minutes - 1)) *
+                       60;
     for (std::size_t s = 0; s < singles.size(); ++s) {
       const int object = singles[s].second;
       bool moved = false;
-      for (const auto& r : scene.relocations_between(t0 - request.recent + 1, t0 + 1)) moved = moved || r.object == object;
+      for (const auto& r : scene.relocations_between(t0 - request.recent + 1, t0 + 1))
+        moved = moved || r.object == object;
       if (!moved) continue;
       const int receptacle = map.receptacle_of_entity(scene.receptacle_at(object, t0));
       if (receptacle < 0) continue;
       bool seen_from_part = false;
-      for (int v : map.receptacles()[static_cast<std::size_t>(receptacle)].views) seen_from_part = seen_from_part || in_part[static_cast<std::size_t>(cell_of(v))];
+      for (int v : map.receptacles()[static_cast<std::size_t>(receptacle)].views)
+        seen_from_part = seen_from_part || in_part[static_cast<std::size_t>(cell_of(v))];
       if (seen_from_part) candidates.push_back({t0, s, receptacle});
     }
   }
   rng.shuffle(candidates);
-  if (candidates.size() > static_cast<std::size_t>(request.tasks_per_scene)) candidates.resize(static_cast<std::size_t>(request.tasks_per_scene));
+  if (candidates.size() > static_cast<std::size_t>(request.tasks_per_scene))
+    candidates.resize(static_cast<std::size_t>(request.tasks_per_scene));
   std::stable_sort(candidates.begin(), candidates.end(), [](const Option& a, const Option& b) {
     return a.time != b.time ? a.time < b.time : a.single < b.single;
   });
@@ -251,7 +293,10 @@ std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestSce
     task.scene = index;
     task.time = c.time;
     task.target_type = singles[c.single].first;
-    task.target_id = house.entities[static_cast<std::size_t>(house.objects[static_cast<std::size_t>(singles[c.single].second)])].id;
+    task.target_id = house
+                         .entities[static_cast<std::size_t>(
+                             house.objects[static_cast<std::size_t>(singles[c.single].second)])]
+                         .id;
     task.target_receptacle = c.receptacle;
     task.receptacle_id = map.receptacles()[static_cast<std::size_t>(c.receptacle)].id;
     for (int attempt = 0; attempt < 64 && task.start < 0; ++attempt) {
@@ -302,12 +347,17 @@ std::vector<EpisodeResult> MethodSuite::run(const TestScene& t, const NavTask& t
   return out;
 }
 
-Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request, const household::HouseholdKnowledge& knowledge,
-                                      const ResidentPool& pool, std::shared_ptr<const PlacementCounts> counts, const RunHooks& hooks) {
-  if (request.scenes < 1) return fail(ErrorCode::kValidation, "no scenes", {FieldError{"/scenes", "must be at least 1", {}, 0, 0}});
+Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
+                                      const household::HouseholdKnowledge& knowledge,
+                                      const ResidentPool& pool, std::shared_ptr<const PlacementCounts> counts,
+                                      const RunHooks& hooks) {
+  if (request.scenes < 1)
+    return fail(ErrorCode::kValidation, "no scenes", {FieldError{"/scenes", "must be at least 1", {}, 0, 0}});
   if (!counts) return fail(ErrorCode::kValidation, "the scene prior needs training counts");
   for (std::uint64_t s : counts->seeds)
-    if (!is_training_seed(s)) return fail(ErrorCode::kValidation, "the scene prior was counted on a house that is not a training house");
+    if (!is_training_seed(s))
+      return fail(ErrorCode::kValidation,
+                  "the scene prior was counted on a house that is not a training house");
   const auto t0 = std::chrono::steady_clock::now();
   const MethodSuite suite(request, counts);
   struct SceneOutcome {
@@ -335,7 +385,8 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request, const hou
       out.tasks = sample_tasks(request, *scene, i);
       for (const auto& task : out.tasks) {
         std::vector<Outcome> row;
-        for (const auto& e : suite.run(*scene, task, request.max_steps)) row.push_back({e.success, e.steps, e.spl});
+        for (const auto& e : suite.run(*scene, task, request.max_steps))
+          row.push_back({e.success, e.steps, e.spl});
         out.outcomes.push_back(std::move(row));
       }
       const int finished = ++done;
@@ -394,7 +445,8 @@ Json to_json(const BenchmarkResult& r, bool with_tasks) {
       const auto& t = r.tasks[i];
       Json outcome = Json::object();
       for (std::size_t m = 0; m < methods().size(); ++m)
-        outcome[methods()[m].key] = {{"success", r.outcomes[i][m].success}, {"steps", r.outcomes[i][m].steps}};
+        outcome[methods()[m].key] = {{"success", r.outcomes[i][m].success},
+                                     {"steps", r.outcomes[i][m].steps}};
       rows.push_back({{"task", i},
                       {"scene", t.scene},
                       {"time", t.time},
@@ -410,11 +462,13 @@ Json to_json(const BenchmarkResult& r, bool with_tasks) {
 std::string format_table(const BenchmarkResult& r) {
   char line[160];
   std::string out;
-  std::snprintf(line, sizeof line, "Object-goal navigation, %s split: %d scenes, %zu tasks, seed %llu (map-based, %d steps)\n",
+  std::snprintf(line, sizeof line,
+                "Object-goal navigation, %s split: %d scenes, %zu tasks, seed %llu (map-based, %d steps)\n",
                 std::string(split_name(r.request.split)).c_str(), r.request.scenes, r.tasks.size(),
                 static_cast<unsigned long long>(r.request.seed), r.request.max_steps);
   out += line;
-  std::snprintf(line, sizeof line, "%-18s %-4s %-5s %8s %8s %8s\n", "Method", "Map", "Hint", "EL", "SR(%)", "SPL");
+  std::snprintf(line, sizeof line, "%-18s %-4s %-5s %8s %8s %8s\n", "Method", "Map", "Hint", "EL", "SR(%)",
+                "SPL");
   out += line;
   for (std::size_t m = 0; m < r.scores.size(); ++m) {
     const auto& s = r.scores[m];
@@ -425,8 +479,9 @@ std::string format_table(const BenchmarkResult& r) {
   return out;
 }
 
-Result<Json> replay_task(const BenchmarkRequest& request, int index, const household::HouseholdKnowledge& knowledge,
-                         const ResidentPool& pool, std::shared_ptr<const PlacementCounts> counts) {
+Result<Json> replay_task(const BenchmarkRequest& request, int index,
+                         const household::HouseholdKnowledge& knowledge, const ResidentPool& pool,
+                         std::shared_ptr<const PlacementCounts> counts) {
   if (index < 0) return fail(ErrorCode::kNotFound, "no such episode");
   int seen = 0;
   const MethodSuite suite(request, std::move(counts));
@@ -448,8 +503,10 @@ Result<Json> replay_task(const BenchmarkRequest& request, int index, const house
       for (int p : e.path) path.push_back(pose_json(map, p));
       Json visited = Json::array();
       for (std::size_t v = 0; v < e.visited.size(); ++v)
-        visited.push_back({{"receptacle", map.receptacles()[static_cast<std::size_t>(e.visited[v])].id}, {"step", e.visited_at[v]}});
-      per_method[methods()[m].key] = {{"success", e.success}, {"steps", e.steps}, {"spl", e.spl}, {"path", path}, {"visited", visited}};
+        visited.push_back({{"receptacle", map.receptacles()[static_cast<std::size_t>(e.visited[v])].id},
+                           {"step", e.visited_at[v]}});
+      per_method[methods()[m].key] = {
+          {"success", e.success}, {"steps", e.steps}, {"spl", e.spl}, {"path", path}, {"visited", visited}};
     }
     const auto& rec = map.receptacles()[static_cast<std::size_t>(task.target_receptacle)];
     return Json{{"task", index},
@@ -458,15 +515,22 @@ Result<Json> replay_task(const BenchmarkRequest& request, int index, const house
                 {"seed", request.seed},
                 {"time", task.time},
                 {"clock", household::format_clock(task.time, scene->scene->first_day())},
-                {"target", {{"type", task.target_type}, {"id", task.target_id}, {"receptacle", task.receptacle_id}, {"x", rec.x}, {"z", rec.z}}},
+                {"target",
+                 {{"type", task.target_type},
+                  {"id", task.target_id},
+                  {"receptacle", task.receptacle_id},
+                  {"x", rec.x},
+                  {"z", rec.z}}},
                 {"start", pose_json(map, task.start)},
                 {"shortest", task.shortest},
                 {"hint", task.hint},
                 {"house", map_json(*scene->house, map)},
                 {"methods", per_method}};
   }
-  return fail(ErrorCode::kNotFound, "the benchmark has " + std::to_string(seen) + " episodes; there is no episode " + std::to_string(index),
-              {FieldError{"/n", "must be below " + std::to_string(seen), "n", 0, 0}});
+  return fail(
+      ErrorCode::kNotFound,
+      "the benchmark has " + std::to_string(seen) + " episodes; there is no episode " + std::to_string(index),
+      {FieldError{"/n", "must be below " + std::to_string(seen), "n", 0, 0}});
 }
 
 }  // namespace socsim::navbench

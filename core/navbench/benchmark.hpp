@@ -28,7 +28,7 @@ struct BenchmarkRequest {
   Split split = Split::kNormal;
   int scenes = 50;
   std::uint64_t seed = 0;
-  int tasks_per_scene = 10;   // "up to 10 tasks per scene at two instants"
+  int tasks_per_scene = 10;  // "up to 10 tasks per scene at two instants"
   int instants = 2;
   int max_steps = 200;
   household::Seconds recent = household::kSecondsPerDay;  // "recently moved": within this before the instant
@@ -53,7 +53,8 @@ const std::vector<Method>& methods();
 using ResidentPool = std::vector<std::shared_ptr<const household::ResidentProfile>>;
 // The residents test scenes draw from: every built-in persona's offline schedule (`days` from
 // Wednesday, as the paper's five days) and activity database.
-Result<ResidentPool> make_resident_pool(const household::HouseholdKnowledge& knowledge, std::uint64_t seed, int days = 5);
+Result<ResidentPool> make_resident_pool(const household::HouseholdKnowledge& knowledge, std::uint64_t seed,
+                                        int days = 5);
 
 // The household knowledge with only the built-in personas: personas posted later must not change
 // the residents, or the same seed would give another table.
@@ -65,8 +66,8 @@ struct BenchmarkInputs {
   ResidentPool pool;
   std::shared_ptr<const PlacementCounts> counts;
 };
-Result<BenchmarkInputs> prepare_inputs(const household::HouseholdKnowledge& knowledge, const BenchmarkRequest& request,
-                                       int threads = 2);
+Result<BenchmarkInputs> prepare_inputs(const household::HouseholdKnowledge& knowledge,
+                                       const BenchmarkRequest& request, int threads = 2);
 
 // A test scene: the house, its dynamic scene and its navigation map.
 struct TestScene {
@@ -76,8 +77,8 @@ struct TestScene {
   std::shared_ptr<const NavMap> map;
 };
 std::uint64_t test_scene_seed(std::uint64_t seed, Split split, int index);
-Result<TestScene> make_test_scene(const BenchmarkRequest& request, int index, const household::HouseholdKnowledge& knowledge,
-                                  const ResidentPool& pool);
+Result<TestScene> make_test_scene(const BenchmarkRequest& request, int index,
+                                  const household::HouseholdKnowledge& knowledge, const ResidentPool& pool);
 
 struct NavTask {
   int scene = 0;
@@ -85,8 +86,8 @@ struct NavTask {
   std::string target_type, target_id;
   int target_receptacle = -1;  // map index
   std::string receptacle_id;
-  int start = -1;              // pose
-  int shortest = 0;            // steps
+  int start = -1;    // pose
+  int shortest = 0;  // steps
   int hint_resident = -1;
   std::string hint;
 };
@@ -125,7 +126,8 @@ class MethodSuite {
  public:
   MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts);
   // The episodes of one task under every method, in methods() order.
-  [[nodiscard]] std::vector<EpisodeResult> run(const TestScene& scene, const NavTask& task, int max_steps) const;
+  [[nodiscard]] std::vector<EpisodeResult> run(const TestScene& scene, const NavTask& task,
+                                               int max_steps) const;
 
  private:
   double recent_ = 0;
@@ -138,7 +140,8 @@ class MethodSuite {
   CegPlanner ceg_;
 };
 
-Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request, const household::HouseholdKnowledge& knowledge,
+Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
+                                      const household::HouseholdKnowledge& knowledge,
                                       const ResidentPool& pool, std::shared_ptr<const PlacementCounts> counts,
                                       const RunHooks& hooks = {});
 
@@ -150,7 +153,8 @@ std::string format_table(const BenchmarkResult& result);
 
 // Task `index` of the benchmark replayed: the house, the target, the start, and every method's
 // path and visited receptacles. kNotFound when the benchmark has fewer tasks.
-Result<Json> replay_task(const BenchmarkRequest& request, int index, const household::HouseholdKnowledge& knowledge,
-                         const ResidentPool& pool, std::shared_ptr<const PlacementCounts> counts);
+Result<Json> replay_task(const BenchmarkRequest& request, int index,
+                         const household::HouseholdKnowledge& knowledge, const ResidentPool& pool,
+                         std::shared_ptr<const PlacementCounts> counts);
 
 }  // namespace socsim::navbench

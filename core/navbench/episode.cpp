@@ -10,7 +10,8 @@ int shortest_steps(const NavMap& map, int start, int receptacle) {
   return v < 0 ? -1 : f.distance[static_cast<std::size_t>(v)];
 }
 
-EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<const double> probabilities, const Planner& planner) {
+EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<const double> probabilities,
+                          const Planner& planner) {
   EpisodeResult out;
   const auto& recs = map.receptacles();
   if (spec.start < 0 || spec.start >= map.poses() || spec.target_receptacle < 0 ||

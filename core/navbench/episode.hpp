@@ -19,11 +19,11 @@ struct EpisodeSpec {
 
 struct EpisodeResult {
   bool success = false;
-  int steps = 0;              // actions taken (EL)
-  int shortest = -1;          // fewest actions from the start to a pose that sees the target; −1: unreachable
-  double spl = 0.0;           // success · shortest / max(shortest, steps)
-  std::vector<int> path;      // pose after every action
-  std::vector<int> visited;   // receptacles the planner chose and reached, in order
+  int steps = 0;          // actions taken (EL)
+  int shortest = -1;      // fewest actions from the start to a pose that sees the target; −1: unreachable
+  double spl = 0.0;       // success · shortest / max(shortest, steps)
+  std::vector<int> path;  // pose after every action
+  std::vector<int> visited;     // receptacles the planner chose and reached, in order
   std::vector<int> visited_at;  // the step at which each was reached
 };
 
@@ -31,6 +31,7 @@ struct EpisodeResult {
 int shortest_steps(const NavMap& map, int start, int receptacle);
 
 // `probabilities`: one per map receptacle (any scale; zeros are searched last, nearest first).
-EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<const double> probabilities, const Planner& planner);
+EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<const double> probabilities,
+                          const Planner& planner);
 
 }  // namespace socsim::navbench

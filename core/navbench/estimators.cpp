@@ -35,7 +35,9 @@ void normalise(std::vector<double>& p) {
   for (double& x : p) x /= total;
 }
 
-std::string lower_words(std::string_view camel) { return household::object_words(camel); }
+std::string lower_words(std::string_view camel) {
+  return household::object_words(camel);
+}
 
 }  // namespace
 
@@ -74,14 +76,16 @@ void add_house(PlacementCounts& c, const House& h, std::uint64_t seed) {
 }
 
 std::uint64_t training_house_seed(std::uint64_t training_seed, int index) {
-  std::uint64_t state = training_seed ^ fnv1a64("navbench/train") ^ (static_cast<std::uint64_t>(index) * 0xD1B54A32D192ED03ULL);
+  std::uint64_t state =
+      training_seed ^ fnv1a64("navbench/train") ^ (static_cast<std::uint64_t>(index) * 0xD1B54A32D192ED03ULL);
   return splitmix64(state) | (std::uint64_t{1} << 63);
 }
 
 Result<PlacementCounts> count_training_placements(const household::HouseholdKnowledge& knowledge, int houses,
                                                   std::uint64_t training_seed, int threads) {
   if (houses < 1 || houses > 100000)
-    return fail(ErrorCode::kValidation, "training houses out of range", {FieldError{"/training_houses", "must be between 1 and 100000", {}, 0, 0}});
+    return fail(ErrorCode::kValidation, "training houses out of range",
+                {FieldError{"/training_houses", "must be between 1 and 100000", {}, 0, 0}});
   // Houses are counted per index and merged in index order, so counts do not depend on threads.
   std::vector<std::optional<House>> built(static_cast<std::size_t>(houses));
   std::atomic<int> next{0};
@@ -89,7 +93,8 @@ Result<PlacementCounts> count_training_placements(const household::HouseholdKnow
     for (int i; (i = next.fetch_add(1)) < houses;) {
       const std::uint64_t seed = training_house_seed(training_seed, i);
       Rng pick(seed, fnv1a64("navbench/train-rooms"));
-      auto h = household::generate_house({static_cast<int>(pick.between(1, 10)), std::nullopt, seed}, knowledge);
+      auto h =
+          household::generate_house({static_cast<int>(pick.between(1, 10)), std::nullopt, seed}, knowledge);
       if (h) built[static_cast<std::size_t>(i)] = std::move(*h);
     }
   };
@@ -99,12 +104,14 @@ Result<PlacementCounts> count_training_placements(const household::HouseholdKnow
   for (auto& t : pool) t.join();
   PlacementCounts c;
   for (int i = 0; i < houses; ++i)
-    if (built[static_cast<std::size_t>(i)]) add_house(c, *built[static_cast<std::size_t>(i)], training_house_seed(training_seed, i));
+    if (built[static_cast<std::size_t>(i)])
+      add_house(c, *built[static_cast<std::size_t>(i)], training_house_seed(training_seed, i));
   if (c.houses == 0) return fail(ErrorCode::kInternal, "no training house could be generated");
   return c;
 }
 
-double ScenePriorEstimator::rate(std::string_view object_type, std::string_view receptacle_type, RoomType room) const {
+double ScenePriorEstimator::rate(std::string_view object_type, std::string_view receptacle_type,
+                                 RoomType room) const {
   const auto& c = *counts_;
   const double overall = (lookup(c.objects, key(object_type)) + 1.0) / (c.total_receptacles + 1.0) * 0.01;
   const double by_type = (lookup(c.objects, key(object_type, receptacle_type)) + kBackoff * overall) /
@@ -153,7 +160,8 @@ std::vector<double> HintEstimator::estimate(const EstimateQuery& q) const {
   const auto& recs = q.map->receptacles();
   std::vector<int> named;
   for (std::size_t i = 0; i < recs.size(); ++i)
-    if (recs[i].type == reading.receptacle_type && (!reading.room || recs[i].room_type == *reading.room)) named.push_back(static_cast<int>(i));
+    if (recs[i].type == reading.receptacle_type && (!reading.room || recs[i].room_type == *reading.room))
+      named.push_back(static_cast<int>(i));
   if (named.empty())  // the room words matched nothing with that receptacle: trust the type alone
     for (std::size_t i = 0; i < recs.size(); ++i)
       if (recs[i].type == reading.receptacle_type) named.push_back(static_cast<int>(i));
@@ -195,7 +203,9 @@ std::vector<double> PosteriorEstimator::estimate(const EstimateQuery& q) const {
     const auto& entries = q.model->residents[r].profile->schedule.entries;
     for (std::size_t e = 0; e < entries.size(); ++e) {
       const household::Seconds end = entries[e].end * household::Seconds{60};
-      if (end <= q.time) events.push_back({end, entries[e].start * household::Seconds{60}, static_cast<int>(r), static_cast<int>(e)});
+      if (end <= q.time)
+        events.push_back(
+            {end, entries[e].start * household::Seconds{60}, static_cast<int>(r), static_cast<int>(e)});
     }
   }
   std::sort(events.begin(), events.end(), [](const Ev& a, const Ev& b) {
@@ -207,7 +217,8 @@ std::vector<double> PosteriorEstimator::estimate(const EstimateQuery& q) const {
   const int start = slot[static_cast<std::size_t>(h.entities[static_cast<std::size_t>(instance)].parent)];
   if (start < 0) return zero;
   a[static_cast<std::size_t>(start)] = 1.0;
-  const household::Seconds window_start = q.recent > 0 ? q.time - q.recent : std::numeric_limits<household::Seconds>::min();
+  const household::Seconds window_start =
+      q.recent > 0 ? q.time - q.recent : std::numeric_limits<household::Seconds>::min();
 
   for (const Ev& ev : events) {
     const auto& res = q.model->residents[static_cast<std::size_t>(ev.resident)];
@@ -219,7 +230,8 @@ std::vector<double> PosteriorEstimator::estimate(const EstimateQuery& q) const {
       for (const auto& op : loc.objects) involves = involves || op.type == q.target_type;
     if (!involves) continue;
     double total = 0.0;
-    for (const auto& loc : prior->locations) total += has_type[household::index_of(loc.room)] && loc.p > 0 ? loc.p : 0.0;
+    for (const auto& loc : prior->locations)
+      total += has_type[household::index_of(loc.room)] && loc.p > 0 ? loc.p : 0.0;
     if (total <= 0.0) continue;
     const bool flagged = ev.end > window_start;
     std::fill(next_a.begin(), next_a.end(), 0.0);
@@ -228,9 +240,12 @@ std::vector<double> PosteriorEstimator::estimate(const EstimateQuery& q) const {
       const double pl = has_type[household::index_of(loc.room)] && loc.p > 0 ? loc.p / total : 0.0;
       if (pl <= 0.0) continue;
       std::vector<int> rooms;
-      if (loc.room == RoomType::kBedroom && res.bedroom >= 0) rooms = {res.bedroom};
-      else if (loc.room == RoomType::kBathroom && res.bathroom >= 0) rooms = {res.bathroom};
-      else rooms = h.rooms_of(loc.room);
+      if (loc.room == RoomType::kBedroom && res.bedroom >= 0)
+        rooms = {res.bedroom};
+      else if (loc.room == RoomType::kBathroom && res.bathroom >= 0)
+        rooms = {res.bathroom};
+      else
+        rooms = h.rooms_of(loc.room);
       for (int room : rooms) {
         const double weight = pl / static_cast<double>(rooms.size());
         work_a = a;
@@ -245,10 +260,13 @@ std::vector<double> PosteriorEstimator::estimate(const EstimateQuery& q) const {
           for (const auto& [rt, p] : op.receptacles) {
             auto it = here.find(rt);
             if (it == here.end()) continue;
-            for (int idx : it->second) m[static_cast<std::size_t>(slot[static_cast<std::size_t>(idx)])] += p / wsum / static_cast<double>(it->second.size());
+            for (int idx : it->second)
+              m[static_cast<std::size_t>(slot[static_cast<std::size_t>(idx)])] +=
+                  p / wsum / static_cast<double>(it->second.size());
           }
           const double qo = op.p;
-          const double sa = std::accumulate(work_a.begin(), work_a.end(), 0.0), sb = std::accumulate(work_b.begin(), work_b.end(), 0.0);
+          const double sa = std::accumulate(work_a.begin(), work_a.end(), 0.0),
+                       sb = std::accumulate(work_b.begin(), work_b.end(), 0.0);
           if (!flagged) {
             for (std::size_t i = 0; i < n; ++i) work_a[i] = (1 - qo) * work_a[i] + qo * m[i] * sa;
           } else {

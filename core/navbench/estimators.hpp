@@ -31,7 +31,7 @@ struct EstimateQuery {
   household::Seconds time = 0;
   // The task's promise: the target was moved within (time − recent, time]; ≤ 0: no promise.
   household::Seconds recent = household::kSecondsPerDay;
-  std::string hint;                       // the asked resident's answer, "" when none
+  std::string hint;                        // the asked resident's answer, "" when none
   const GenerativeModel* model = nullptr;  // only the posterior reads it
 };
 
@@ -51,7 +51,7 @@ class UniformEstimator final : public LocationEstimator {
 
 // How often objects of each type rest on receptacles of each type in each room type.
 struct PlacementCounts {
-  std::map<std::string, double, std::less<>> objects;      // "Mug|DiningTable|Kitchen", "Mug|DiningTable", "Mug"
+  std::map<std::string, double, std::less<>> objects;  // "Mug|DiningTable|Kitchen", "Mug|DiningTable", "Mug"
   std::map<std::string, double, std::less<>> receptacles;  // "DiningTable|Kitchen", "DiningTable"
   double total_receptacles = 0.0;
   int houses = 0;
@@ -62,7 +62,9 @@ void add_house(PlacementCounts& counts, const household::House& house, std::uint
 // Training houses and test scenes draw seeds from disjoint halves of the 64-bit range (top bit
 // set for training), so no test house is ever a training house.
 std::uint64_t training_house_seed(std::uint64_t training_seed, int index);
-inline bool is_training_seed(std::uint64_t seed) { return (seed >> 63) != 0; }
+inline bool is_training_seed(std::uint64_t seed) {
+  return (seed >> 63) != 0;
+}
 // Counts `houses` generated static houses of 1–10 rooms (as ProcTHOR-10k's training split).
 Result<PlacementCounts> count_training_placements(const household::HouseholdKnowledge& knowledge, int houses,
                                                   std::uint64_t training_seed, int threads = 1);
@@ -74,7 +76,8 @@ class ScenePriorEstimator final : public LocationEstimator {
   [[nodiscard]] std::vector<double> estimate(const EstimateQuery& query) const override;
   // Expected objects of `object_type` on one receptacle of this type in this room type, with
   // back-off to the receptacle type alone and to the object type's overall rate.
-  [[nodiscard]] double rate(std::string_view object_type, std::string_view receptacle_type, household::RoomType room) const;
+  [[nodiscard]] double rate(std::string_view object_type, std::string_view receptacle_type,
+                            household::RoomType room) const;
   [[nodiscard]] const PlacementCounts& counts() const { return *counts_; }
 
  private:
@@ -84,7 +87,7 @@ class ScenePriorEstimator final : public LocationEstimator {
 // What a hint says: whether the resident used the object, and where they say they left it.
 struct HintReading {
   bool used = false;
-  std::string receptacle_type;             // a type on the map, "" when not understood
+  std::string receptacle_type;  // a type on the map, "" when not understood
   std::optional<household::RoomType> room;
 };
 // Reads the offline hint's wording ("Yes, I used the mug while … and left it on the dining table
@@ -95,7 +98,8 @@ HintReading read_hint(std::string_view hint, const NavMap& map);
 // rest from the scene prior; the scene prior alone when the hint says no or names nothing known.
 class HintEstimator final : public LocationEstimator {
  public:
-  HintEstimator(std::shared_ptr<const ScenePriorEstimator> prior, double trust = 0.85) : prior_(std::move(prior)), trust_(trust) {}
+  HintEstimator(std::shared_ptr<const ScenePriorEstimator> prior, double trust = 0.85)
+      : prior_(std::move(prior)), trust_(trust) {}
   [[nodiscard]] std::string_view name() const override { return "Hint"; }
   [[nodiscard]] std::vector<double> estimate(const EstimateQuery& query) const override;
 

@@ -16,11 +16,13 @@ constexpr int kDz[kHeadings] = {0, 1, 0, -1};
 constexpr double kEps = 1e-12;
 constexpr std::int64_t kMaxCells = 4'000'000;
 
-double cross(FloorPoint o, FloorPoint a, FloorPoint b) { return (a.x - o.x) * (b.z - o.z) - (a.z - o.z) * (b.x - o.x); }
+double cross(FloorPoint o, FloorPoint a, FloorPoint b) {
+  return (a.x - o.x) * (b.z - o.z) - (a.z - o.z) * (b.x - o.x);
+}
 
 bool within_box(FloorPoint p, FloorPoint a, FloorPoint b) {
-  return p.x >= std::min(a.x, b.x) - 1e-12 && p.x <= std::max(a.x, b.x) + 1e-12 && p.z >= std::min(a.z, b.z) - 1e-12 &&
-         p.z <= std::max(a.z, b.z) + 1e-12;
+  return p.x >= std::min(a.x, b.x) - 1e-12 && p.x <= std::max(a.x, b.x) + 1e-12 &&
+         p.z >= std::min(a.z, b.z) - 1e-12 && p.z <= std::max(a.z, b.z) + 1e-12;
 }
 
 double distance_to_segment(FloorPoint p, FloorPoint a, FloorPoint b) {
@@ -44,7 +46,8 @@ std::vector<WallPiece> solid_walls(const House& house) {
     const double len = std::hypot(w.b.x - w.a.x, w.b.z - w.a.z);
     if (len <= 0) continue;
     const double ux = (w.b.x - w.a.x) / len, uz = (w.b.z - w.a.z) / len;
-    openings.push_back({{w.a.x + ux * d.hole_min.x, w.a.z + uz * d.hole_min.x}, {w.a.x + ux * d.hole_max.x, w.a.z + uz * d.hole_max.x}});
+    openings.push_back({{w.a.x + ux * d.hole_min.x, w.a.z + uz * d.hole_min.x},
+                        {w.a.x + ux * d.hole_max.x, w.a.z + uz * d.hole_max.x}});
   }
   std::vector<WallPiece> out;
   for (const auto& w : house.walls) {
@@ -55,7 +58,8 @@ std::vector<WallPiece> solid_walls(const House& house) {
     std::vector<std::pair<double, double>> solid = {{0.0, len}};
     for (const auto& [p0, p1] : openings) {
       if (std::abs(cross(w.a, w.b, p0)) / len > 1e-3 || std::abs(cross(w.a, w.b, p1)) / len > 1e-3) continue;
-      const double t0 = (p0.x - w.a.x) * ux + (p0.z - w.a.z) * uz, t1 = (p1.x - w.a.x) * ux + (p1.z - w.a.z) * uz;
+      const double t0 = (p0.x - w.a.x) * ux + (p0.z - w.a.z) * uz,
+                   t1 = (p1.x - w.a.x) * ux + (p1.z - w.a.z) * uz;
       const double lo = std::min(t0, t1), hi = std::max(t0, t1);
       std::vector<std::pair<double, double>> next;
       for (auto [s, e] : solid) {
@@ -91,7 +95,8 @@ bool segments_touch(FloorPoint a, FloorPoint b, FloorPoint c, FloorPoint d) {
 std::vector<int> StepField::path_to(int pose) const {
   std::vector<int> path;
   if (pose < 0 || distance[static_cast<std::size_t>(pose)] < 0) return path;
-  for (int p = pose; parent[static_cast<std::size_t>(p)] >= 0; p = parent[static_cast<std::size_t>(p)]) path.push_back(p);
+  for (int p = pose; parent[static_cast<std::size_t>(p)] >= 0; p = parent[static_cast<std::size_t>(p)])
+    path.push_back(p);
   std::reverse(path.begin(), path.end());
   return path;
 }
@@ -106,7 +111,9 @@ int StepField::nearest(std::span<const int> poses) const {
   return best;
 }
 
-int NavMap::free_cells() const { return static_cast<int>(std::count(free_.begin(), free_.end(), std::uint8_t{1})); }
+int NavMap::free_cells() const {
+  return static_cast<int>(std::count(free_.begin(), free_.end(), std::uint8_t{1}));
+}
 
 FloorPoint NavMap::center(int cell) const {
   return {origin_x_ + (cell % width_ + 0.5) * config_.cell, origin_z_ + (cell / width_ + 0.5) * config_.cell};
@@ -179,16 +186,23 @@ StepField NavMap::steps_from(int pose) const {
 }
 
 Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
-  if (house.rooms.empty()) return fail(ErrorCode::kValidation, "a navigation map needs a house with rooms", {FieldError{"/rooms", "is empty", {}, 0, 0}});
-  if (!(config.cell > 0.01) || !(config.view_distance > 0) || !(config.field_of_view_deg > 0 && config.field_of_view_deg <= 360))
+  if (house.rooms.empty())
+    return fail(ErrorCode::kValidation, "a navigation map needs a house with rooms",
+                {FieldError{"/rooms", "is empty", {}, 0, 0}});
+  if (!(config.cell > 0.01) || !(config.view_distance > 0) ||
+      !(config.field_of_view_deg > 0 && config.field_of_view_deg <= 360))
     return fail(ErrorCode::kValidation, "bad navigation map configuration");
   double x0 = 1e300, z0 = 1e300, x1 = -1e300, z1 = -1e300;
   for (const auto& r : house.rooms)
-    for (const auto& p : r.floor) x0 = std::min(x0, p.x), z0 = std::min(z0, p.z), x1 = std::max(x1, p.x), z1 = std::max(z1, p.z);
-  if (!(x1 > x0) || !(z1 > z0)) return fail(ErrorCode::kValidation, "the house's rooms have no area", {FieldError{"/rooms", "floor polygons are empty", {}, 0, 0}});
+    for (const auto& p : r.floor)
+      x0 = std::min(x0, p.x), z0 = std::min(z0, p.z), x1 = std::max(x1, p.x), z1 = std::max(z1, p.z);
+  if (!(x1 > x0) || !(z1 > z0))
+    return fail(ErrorCode::kValidation, "the house's rooms have no area",
+                {FieldError{"/rooms", "floor polygons are empty", {}, 0, 0}});
   const double w = std::ceil((x1 - x0) / config.cell), d = std::ceil((z1 - z0) / config.cell);
   if (w * d > static_cast<double>(kMaxCells))
-    return fail(ErrorCode::kValidation, "the house is too large for the navigation grid", {FieldError{"/rooms", "spans more than 4 million grid cells", {}, 0, 0}});
+    return fail(ErrorCode::kValidation, "the house is too large for the navigation grid",
+                {FieldError{"/rooms", "spans more than 4 million grid cells", {}, 0, 0}});
 
   NavMap m;
   m.config_ = config;
@@ -204,7 +218,8 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
   for (int idx : house.receptacles) {
     const auto& e = house.entities[static_cast<std::size_t>(idx)];
     if (e.synthetic) continue;
-    furniture.push_back({e.position.x - e.size_x / 2, e.position.z - e.size_z / 2, e.position.x + e.size_x / 2, e.position.z + e.size_z / 2});
+    furniture.push_back({e.position.x - e.size_x / 2, e.position.z - e.size_z / 2,
+                         e.position.x + e.size_x / 2, e.position.z + e.size_z / 2});
   }
   const auto n = static_cast<std::size_t>(m.cells());
   m.free_.assign(n, 0);
@@ -212,7 +227,8 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
     const FloorPoint p = m.center(c);
     if (house.room_at(p.x, p.z) < 0) continue;
     bool blocked = false;
-    for (const auto& b : furniture) blocked = blocked || (p.x >= b.x0 && p.x <= b.x1 && p.z >= b.z0 && p.z <= b.z1);
+    for (const auto& b : furniture)
+      blocked = blocked || (p.x >= b.x0 && p.x <= b.x1 && p.z >= b.z0 && p.z <= b.z1);
     for (std::size_t i = 0; i < m.walls_.size() && !blocked; ++i)
       blocked = distance_to_segment(p, m.walls_[i].a, m.walls_[i].b) < config.wall_clearance;
     m.free_[static_cast<std::size_t>(c)] = blocked ? 0 : 1;
@@ -226,7 +242,8 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
       if (nx < 0 || nz < 0 || nx >= m.width_ || nz >= m.depth_) continue;
       const int next = nz * m.width_ + nx;
       if (!m.free(next) || !m.line_of_sight(m.center(c), m.center(next))) continue;
-      m.moves_[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(m.moves_[static_cast<std::size_t>(c)] | (1u << h));
+      m.moves_[static_cast<std::size_t>(c)] =
+          static_cast<std::uint8_t>(m.moves_[static_cast<std::size_t>(c)] | (1u << h));
     }
   }
   // Receptacles and the poses that see them.
@@ -242,7 +259,8 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
     if (e.room >= 0) r.room_type = house.rooms[static_cast<std::size_t>(e.room)].type;
     r.x = e.position.x;
     r.z = e.position.z;
-    const int cx = static_cast<int>(std::floor((r.x - x0) / config.cell)), cz = static_cast<int>(std::floor((r.z - z0) / config.cell));
+    const int cx = static_cast<int>(std::floor((r.x - x0) / config.cell)),
+              cz = static_cast<int>(std::floor((r.z - z0) / config.cell));
     const auto index = static_cast<int>(m.receptacles_.size());
     for (int iz = std::max(0, cz - reach); iz <= std::min(m.depth_ - 1, cz + reach); ++iz)
       for (int ix = std::max(0, cx - reach); ix <= std::min(m.width_ - 1, cx + reach); ++ix) {

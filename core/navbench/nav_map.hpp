@@ -22,9 +22,15 @@ struct NavConfig {
 
 // Headings in steps of 90°: 0 = +x, 1 = +z, 2 = −x, 3 = −z. A pose is cell · 4 + heading.
 inline constexpr int kHeadings = 4;
-inline int pose_of(int cell, int heading) { return cell * kHeadings + heading; }
-inline int cell_of(int pose) { return pose / kHeadings; }
-inline int heading_of(int pose) { return pose % kHeadings; }
+inline int pose_of(int cell, int heading) {
+  return cell * kHeadings + heading;
+}
+inline int cell_of(int pose) {
+  return pose / kHeadings;
+}
+inline int heading_of(int pose) {
+  return pose % kHeadings;
+}
 
 // A receptacle as the robot's map knows it. No object information lives on the map, so
 // estimators that take only a NavMap cannot read where objects are.
@@ -102,6 +108,7 @@ class NavMap {
 Result<NavMap> build_nav_map(const household::House& house, const NavConfig& config = {});
 
 // Whether segment ab crosses or touches segment cd.
-bool segments_touch(household::FloorPoint a, household::FloorPoint b, household::FloorPoint c, household::FloorPoint d);
+bool segments_touch(household::FloorPoint a, household::FloorPoint b, household::FloorPoint c,
+                    household::FloorPoint d);
 
 }  // namespace socsim::navbench

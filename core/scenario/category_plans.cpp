@@ -40,12 +40,13 @@ std::string plural(const std::string& role, std::size_t n) {
   return role + "s";
 }
 bool staff_like(const std::string& role) {
-  return role == "nurse" || role == "doctor" || role == "staff" || role == "worker" || role == "receptionist" ||
-         role == "security";
+  return role == "nurse" || role == "doctor" || role == "staff" || role == "worker" ||
+         role == "receptionist" || role == "security";
 }
 
 // Splits people into the first n (spotlight) and the rest, role by role in proportion.
-std::pair<std::vector<People>, std::vector<People>> split_people(const std::vector<People>& people, std::size_t n) {
+std::pair<std::vector<People>, std::vector<People>> split_people(const std::vector<People>& people,
+                                                                 std::size_t n) {
   std::vector<People> first, rest;
   const std::size_t total = sum(people);
   std::size_t given = 0;
@@ -56,11 +57,13 @@ std::pair<std::vector<People>, std::vector<People>> split_people(const std::vect
     given += share;
     if (share > 0) first.push_back(People{people[k].role, share, people[k].explicit_count, people[k].phrase});
     if (people[k].count > share)
-      rest.push_back(People{people[k].role, people[k].count - share, people[k].explicit_count, people[k].phrase});
+      rest.push_back(
+          People{people[k].role, people[k].count - share, people[k].explicit_count, people[k].phrase});
   }
   // Rounding left places: give them to the first roles that still have people.
   for (std::size_t k = 0; given < n && k < rest.size();) {
-    auto it = std::find_if(first.begin(), first.end(), [&](const People& p) { return p.role == rest[k].role; });
+    auto it =
+        std::find_if(first.begin(), first.end(), [&](const People& p) { return p.role == rest[k].role; });
     if (it == first.end()) {
       first.push_back(People{rest[k].role, 0, rest[k].explicit_count, rest[k].phrase});
       it = first.end() - 1;
@@ -123,15 +126,16 @@ void spawn_people(Draft& d, const std::vector<People>& people, const std::vector
       placed += n;
     }
     if (placed < who.count)
-      d.note(std::to_string(who.count - placed) + " of the " + std::to_string(who.count) + " " + plural(who.role, who.count) +
-             " (" + std::string(to_string(c)) + ") did not fit in " + (regions.empty() ? std::string("any region") : regions.front()) +
+      d.note(std::to_string(who.count - placed) + " of the " + std::to_string(who.count) + " " +
+             plural(who.role, who.count) + " (" + std::string(to_string(c)) + ") did not fit in " +
+             (regions.empty() ? std::string("any region") : regions.front()) +
              " and its neighbours and were left out");
   }
 }
 
-void leftover_ambient(Draft& d, Category c, const std::vector<People>& rest, const std::vector<std::string>& start,
-                      const std::vector<std::string>& goal, const std::string& what, bool exit_at_goal, Rng& rng,
-                      Status& status) {
+void leftover_ambient(Draft& d, Category c, const std::vector<People>& rest,
+                      const std::vector<std::string>& start, const std::vector<std::string>& goal,
+                      const std::string& what, bool exit_at_goal, Rng& rng, Status& status) {
   for (const People& who : rest) {
     if (!status || who.count == 0 || start.empty() || goal.empty()) continue;
     Draft::Ambient g;
@@ -150,11 +154,13 @@ void leftover_ambient(Draft& d, Category c, const std::vector<People>& rest, con
 }
 
 // One entry per role of a group's members (slots[at, at + size)), all spawned in `region`.
-void add_group(Draft& d, const std::vector<People>& slots, std::size_t at, std::size_t size, const std::string& region,
-               const std::string& name, const std::string& tree, std::int64_t group, Category c) {
+void add_group(Draft& d, const std::vector<People>& slots, std::size_t at, std::size_t size,
+               const std::string& region, const std::string& name, const std::string& tree,
+               std::int64_t group, Category c) {
   std::vector<People> roles;
   for (std::size_t k = at; k < at + size; ++k) {
-    auto it = std::find_if(roles.begin(), roles.end(), [&](const People& p) { return p.role == slots[k].role; });
+    auto it =
+        std::find_if(roles.begin(), roles.end(), [&](const People& p) { return p.role == slots[k].role; });
     if (it == roles.end())
       roles.push_back(slots[k]);
     else
@@ -194,11 +200,13 @@ const QueueLane* pick_lane(Draft& d, const Activity& a, Rng& rng, Category c, st
         }
       }
       if (best != nullptr) {
-        why = best->counter == r->name ? "the prompt's place '" + r->name + "' has this lane"
-                                       : "the lane of '" + best->counter + "', the nearest " + r->type + " with a queue lane";
+        why = best->counter == r->name
+                  ? "the prompt's place '" + r->name + "' has this lane"
+                  : "the lane of '" + best->counter + "', the nearest " + r->type + " with a queue lane";
         return best;
       }
-      d.note("no " + r->type + " of the world has a queue lane: people wait by '" + r->name + "' without a strict order");
+      d.note("no " + r->type + " of the world has a queue lane: people wait by '" + r->name +
+             "' without a strict order");
       return nullptr;
     }
     const QueueLane* best = nullptr;
@@ -222,7 +230,8 @@ const QueueLane* pick_lane(Draft& d, const Activity& a, Rng& rng, Category c, st
       why = "the queue lane nearest the prompt's place '" + r->name + "' (" + num(best_d) + " m walk)";
       return best;
     }
-    d.note("no queue lane within 8 m of '" + r->name + "'; " + std::string(to_string(c)) + " uses another lane");
+    d.note("no queue lane within 8 m of '" + r->name + "'; " + std::string(to_string(c)) +
+           " uses another lane");
   }
   // Reception lanes first (a hospital or office queue forms at the front desk), then lanes at
   // other counters, then lanes at machines (a corridor world's water dispenser, Fig. 6).
@@ -238,8 +247,9 @@ const QueueLane* pick_lane(Draft& d, const Activity& a, Rng& rng, Category c, st
   }
   const auto& pool = !reception.empty() ? reception : !counters.empty() ? counters : machines;
   const QueueLane* pick = pool[rng.below(static_cast<std::uint32_t>(pool.size()))];
-  const std::string kind = !reception.empty() ? "a reception queue lane" : !counters.empty() ? "a counter's queue lane"
-                                                                                              : "the queue lane of a machine";
+  const std::string kind = !reception.empty()  ? "a reception queue lane"
+                           : !counters.empty() ? "a counter's queue lane"
+                                               : "the queue lane of a machine";
   why = kind + " (seeded pick among " + std::to_string(pool.size()) + ")";
   return pick;
 }
@@ -252,7 +262,8 @@ std::size_t lane_places(const QueueLane& l) {
 std::optional<std::string> wait_poi(Draft& d, const Activity& a) {
   if (const ResolvedPlace* r = a.place())
     if (r->kind == ResolvedPlace::Kind::kEntity) return r->name;
-  for (const std::string& e : d.probe.entities_of_type({"counter", "water_dispenser", "coffee_machine", "desk"}))
+  for (const std::string& e :
+       d.probe.entities_of_type({"counter", "water_dispenser", "coffee_machine", "desk"}))
     return e;
   return std::nullopt;
 }
@@ -283,7 +294,10 @@ Status plan_emergency(Draft& d, const Activity& a, Rng& rng) {
   const auto zones = occupied_zones(p);
   double area = 0.0;
   for (const std::string& z : zones) area += p.zone_area(z);
-  const auto people = d.people(a, std::clamp<std::size_t>(static_cast<std::size_t>(std::lround(area * rng.uniform(0.04, 0.07))), 6, 40), rng);
+  const auto people = d.people(
+      a,
+      std::clamp<std::size_t>(static_cast<std::size_t>(std::lround(area * rng.uniform(0.04, 0.07))), 6, 40),
+      rng);
   const auto [spot, rest] = split_people(people, d.take_spotlight(std::min<std::size_t>(sum(people), 30)));
 
   // The exit: the prompt's when it names one, else each agent's nearest (Evacuate without a name).
@@ -295,13 +309,17 @@ Status plan_emergency(Draft& d, const Activity& a, Rng& rng) {
   }
   std::vector<std::string> exit_regions;
   for (const ExitPlace& x : p.exits())
-    if ((exit.empty() || x.name == exit) && !x.region.empty() && !contains(exit_regions, x.region)) exit_regions.push_back(x.region);
+    if ((exit.empty() || x.name == exit) && !x.region.empty() && !contains(exit_regions, x.region))
+      exit_regions.push_back(x.region);
   if (p.exits().empty()) {
-    d.note("the world has no door to the outside and no exit ROI: people gather in the largest zone instead of leaving");
+    d.note(
+        "the world has no door to the outside and no exit ROI: people gather in the largest zone instead of "
+        "leaving");
   } else {
     for (const ExitPlace& x : p.exits())
       d.place_used(C::kEmergency, "exit", x.name,
-                   exit.empty() ? "door to the outside or exit ROI; each agent takes the nearest (" + std::to_string(p.exits().size()) + " exits)"
+                   exit.empty() ? "door to the outside or exit ROI; each agent takes the nearest (" +
+                                      std::to_string(p.exits().size()) + " exits)"
                                 : "named in the prompt");
   }
   const double alarm = d.alarm_s.value_or(0.0);
@@ -309,13 +327,16 @@ Status plan_emergency(Draft& d, const Activity& a, Rng& rng) {
   // Everyone goes about their business in the zone they are in until the alarm, then leaves;
   // staff hurry (paper 001 Table II: evacuation, panic running, staff rushing).
   for (const People& who : spot) {
-    const double factor = staff_like(who.role) ? 1.5 : (who.role == "patient" || who.role == "elderly" ? 1.1 : 1.3);
+    const double factor =
+        staff_like(who.role) ? 1.5 : (who.role == "patient" || who.role == "elderly" ? 1.1 : 1.3);
     // Spread over the zones by room left, largest first, seeded start.
-    const std::size_t offset = zones.empty() ? 0 : rng.below(static_cast<std::uint32_t>(std::min<std::size_t>(zones.size(), 3)));
+    const std::size_t offset =
+        zones.empty() ? 0 : rng.below(static_cast<std::uint32_t>(std::min<std::size_t>(zones.size(), 3)));
     std::vector<std::string> order;
     for (std::size_t k = 0; k < zones.size(); ++k) order.push_back(zones[(k + offset) % zones.size()]);
     std::size_t left = who.count;
-    const std::size_t per_zone = std::max<std::size_t>(1, (who.count + order.size() - 1) / std::max<std::size_t>(1, order.size()));
+    const std::size_t per_zone =
+        std::max<std::size_t>(1, (who.count + order.size() - 1) / std::max<std::size_t>(1, order.size()));
     for (const std::string& z : order) {
       if (left == 0) break;
       const auto placed = d.spread({z}, std::min(left, per_zone));
@@ -332,7 +353,11 @@ Status plan_emergency(Draft& d, const Activity& a, Rng& rng) {
           t.leaf("Evacuate", ev);
         }
         t.close();
-        t.leaf("Wander", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"region", z}, {"pause_min", "1"}, {"pause_max", "6"}});
+        t.leaf("Wander", {{"agent_id", "{id}"},
+                          {"time_step", "{dt}"},
+                          {"region", z},
+                          {"pause_min", "1"},
+                          {"pause_max", "6"}});
         t.close();
       });
       if (!tree) return tl::unexpected(tree.error());
@@ -342,13 +367,15 @@ Status plan_emergency(Draft& d, const Activity& a, Rng& rng) {
     // What did not fit zone by zone goes wherever there is room.
     if (left > 0) {
       std::vector<People> more{People{who.role, left, who.explicit_count, who.phrase}};
-      leftover_ambient(d, C::kEmergency, more, zones, exit_regions, "evacuating to the nearest exit", true, rng, status);
+      leftover_ambient(d, C::kEmergency, more, zones, exit_regions, "evacuating to the nearest exit", true,
+                       rng, status);
     }
   }
   if (!exit_regions.empty())
-    leftover_ambient(d, C::kEmergency, rest, zones, exit_regions,
-                     "evacuating after the alarm to the nearest of " + std::to_string(exit_regions.size()) + " exits", true, rng,
-                     status);
+    leftover_ambient(
+        d, C::kEmergency, rest, zones, exit_regions,
+        "evacuating after the alarm to the nearest of " + std::to_string(exit_regions.size()) + " exits",
+        true, rng, status);
   return status;
 }
 
@@ -362,30 +389,39 @@ Status plan_queuing(Draft& d, const Activity& a, Rng& rng) {
     // No lane: wait by a POI, one after another as they arrive (no strict order).
     const auto poi = wait_poi(d, a);
     const std::string zone = poi ? p.zone_at(p.point(*poi)) : occupied_zones(p).front();
-    d.note("the world has no queue lane (queue_lane ROI): people wait by " + (poi ? "'" + *poi + "'" : "'" + zone + "'") +
-           " without a strict queue order");
+    d.note("the world has no queue lane (queue_lane ROI): people wait by " +
+           (poi ? "'" + *poi + "'" : "'" + zone + "'") + " without a strict queue order");
     const auto people = d.people(a, 4 + rng.below(3), rng);
     const auto [spot, rest] = split_people(people, d.take_spotlight(std::min<std::size_t>(sum(people), 10)));
     auto tree = d.add_tree(C::kQueuing, "wait_by_" + (poi ? *poi : zone), [&](TreeXml& t) {
       t.open("Sequence");
-      t.leaf("WaitAt", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"location", poi ? *poi : zone},
-                        {"duration", num(rng.uniform(5.0, 10.0))}, {"face", poi ? *poi : ""}});
-      t.leaf("Wander", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"region", zone}, {"pause_min", "2"}, {"pause_max", "8"}});
+      t.leaf("WaitAt", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"location", poi ? *poi : zone},
+                        {"duration", num(rng.uniform(5.0, 10.0))},
+                        {"face", poi ? *poi : ""}});
+      t.leaf("Wander", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"region", zone},
+                        {"pause_min", "2"},
+                        {"pause_max", "8"}});
       t.close();
     });
     if (!tree) return tl::unexpected(tree.error());
     d.place_used(C::kQueuing, "wait by", poi ? *poi : zone, "fallback: no queue lane in the world");
     spawn_people(d, spot, around(p, zone, false), "waiting", *tree, -1, C::kQueuing);
     Status status;
-    leftover_ambient(d, C::kQueuing, rest, around(p, zone, false), {zone}, "walking to " + zone, false, rng, status);
+    leftover_ambient(d, C::kQueuing, rest, around(p, zone, false), {zone}, "walking to " + zone, false, rng,
+                     status);
     return status;
   }
   d.place_used(C::kQueuing, "queue lane", lane->name, why);
   const std::string counter = lane->counter.empty() ? lane->name : lane->counter;
-  if (!lane->counter.empty()) d.place_used(C::kQueuing, "counter", lane->counter, "the serving entity at the lane's head");
+  if (!lane->counter.empty())
+    d.place_used(C::kQueuing, "counter", lane->counter, "the serving entity at the lane's head");
   const std::size_t places = lane_places(*lane);
-  const std::size_t default_total =
-      std::clamp<std::size_t>(static_cast<std::size_t>(std::lround(static_cast<double>(places) * rng.uniform(0.8, 1.0))), 3, 10);
+  const std::size_t default_total = std::clamp<std::size_t>(
+      static_cast<std::size_t>(std::lround(static_cast<double>(places) * rng.uniform(0.8, 1.0))), 3, 10);
   const auto people = d.people(a, default_total, rng);
   const auto [spot, rest] = split_people(people, d.take_spotlight(std::min(sum(people), places + 3)));
 
@@ -394,18 +430,31 @@ Status plan_queuing(Draft& d, const Activity& a, Rng& rng) {
   const double spread = round1(rng.uniform(0.5, 1.5));
   auto tree = d.add_tree(C::kQueuing, "queue_" + lane->name, [&](TreeXml& t) {
     t.open("Sequence");
-    t.leaf("JoinQueue", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"queue", lane->name}, {"spacing", "0.7"},
+    t.leaf("JoinQueue", {{"agent_id", "{id}"},
+                         {"time_step", "{dt}"},
+                         {"queue", lane->name},
+                         {"spacing", "0.7"},
                          {"position", "{place}"}});
-    t.leaf("ServeAtCounter", {{"agent_id", "{id}"}, {"counter", counter}, {"queue", lane->name},
-                              {"service_time", num(service)}, {"service_spread", num(std::min(spread, service))}});
+    t.leaf("ServeAtCounter", {{"agent_id", "{id}"},
+                              {"counter", counter},
+                              {"queue", lane->name},
+                              {"service_time", num(service)},
+                              {"service_spread", num(std::min(spread, service))}});
     if (!waiting.empty()) {
       t.open("Fallback");
-      t.leaf("SitAt", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"seat", waiting}, {"duration", num(kForever)}});
-      t.leaf("WaitAt", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"location", waiting}, {"duration", num(kForever)},
+      t.leaf("SitAt",
+             {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"seat", waiting}, {"duration", num(kForever)}});
+      t.leaf("WaitAt", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"location", waiting},
+                        {"duration", num(kForever)},
                         {"face", counter}});
       t.close();
     } else {
-      t.leaf("Wander", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"region", lane->zone}, {"pause_min", "2"},
+      t.leaf("Wander", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"region", lane->zone},
+                        {"pause_min", "2"},
                         {"pause_max", "8"}});
     }
     t.close();
@@ -416,7 +465,8 @@ Status plan_queuing(Draft& d, const Activity& a, Rng& rng) {
   spawn_people(d, spot, around(p, lane->zone, true), "queuer", *tree, -1, C::kQueuing);
   Status status;
   leftover_ambient(d, C::kQueuing, rest, around(p, lane->zone, false),
-                   {waiting.empty() ? lane->zone : waiting}, "arriving to queue at " + counter, false, rng, status);
+                   {waiting.empty() ? lane->zone : waiting}, "arriving to queue at " + counter, false, rng,
+                   status);
   return status;
 }
 
@@ -463,12 +513,20 @@ Status plan_reception(Draft& d, const Activity& a, Rng& rng) {
     const auto [spot, rest] = split_people(people, d.take_spotlight(std::min<std::size_t>(sum(people), 10)));
     auto tree = d.add_tree(C::kReception, "check_in_" + *poi, [&](TreeXml& t) {
       t.open("Sequence");
-      t.leaf("WaitAt", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"location", *poi}, {"duration", num(rng.uniform(4.0, 7.0))},
+      t.leaf("WaitAt", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"location", *poi},
+                        {"duration", num(rng.uniform(4.0, 7.0))},
                         {"face", *poi}});
       if (exit != nullptr)
-        t.leaf("Evacuate", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"exit", exit->name}, {"speed_factor", "1"}});
+        t.leaf("Evacuate",
+               {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"exit", exit->name}, {"speed_factor", "1"}});
       else
-        t.leaf("Wander", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"region", zone}, {"pause_min", "2"}, {"pause_max", "8"}});
+        t.leaf("Wander", {{"agent_id", "{id}"},
+                          {"time_step", "{dt}"},
+                          {"region", zone},
+                          {"pause_min", "2"},
+                          {"pause_max", "8"}});
       t.close();
     });
     if (!tree) return tl::unexpected(tree.error());
@@ -478,7 +536,8 @@ Status plan_reception(Draft& d, const Activity& a, Rng& rng) {
   d.place_used(C::kReception, "queue lane", lane->name, why);
   const ExitPlace* exit = nearest_exit(lane->service);
   const std::string counter = lane->counter.empty() ? lane->name : lane->counter;
-  if (!lane->counter.empty()) d.place_used(C::kReception, "counter", lane->counter, "the serving entity at the lane's head");
+  if (!lane->counter.empty())
+    d.place_used(C::kReception, "counter", lane->counter, "the serving entity at the lane's head");
 
   // The receptionist (one by default) faces the lane from behind the counter.
   if (receptionists == 0 && !lane->counter.empty()) receptionists = 1;
@@ -504,16 +563,27 @@ Status plan_reception(Draft& d, const Activity& a, Rng& rng) {
   // Approach (walk in from the neighbouring zones), queue, register at the counter, depart.
   auto tree = d.add_tree(C::kReception, "check_in_" + lane->name, [&](TreeXml& t) {
     t.open("Sequence");
-    t.leaf("JoinQueue", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"queue", lane->name}, {"spacing", "0.7"},
+    t.leaf("JoinQueue", {{"agent_id", "{id}"},
+                         {"time_step", "{dt}"},
+                         {"queue", lane->name},
+                         {"spacing", "0.7"},
                          {"position", "{place}"}});
-    t.leaf("ServeAtCounter", {{"agent_id", "{id}"}, {"counter", counter}, {"queue", lane->name},
-                              {"service_time", num(service)}, {"service_spread", num(std::min(1.0, service))}});
+    t.leaf("ServeAtCounter", {{"agent_id", "{id}"},
+                              {"counter", counter},
+                              {"queue", lane->name},
+                              {"service_time", num(service)},
+                              {"service_spread", num(std::min(1.0, service))}});
     if (exit != nullptr) {
       if (!exit->region.empty() && exit->region != exit->name)
-        t.leaf("GoTo", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"goal", exit->region}, {"tolerance", "0.3"}});
-      t.leaf("Evacuate", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"exit", exit->name}, {"speed_factor", "1"}});
+        t.leaf("GoTo",
+               {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"goal", exit->region}, {"tolerance", "0.3"}});
+      t.leaf("Evacuate",
+             {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"exit", exit->name}, {"speed_factor", "1"}});
     } else {
-      t.leaf("Wander", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"region", lane->zone}, {"pause_min", "2"},
+      t.leaf("Wander", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"region", lane->zone},
+                        {"pause_min", "2"},
                         {"pause_max", "8"}});
     }
     t.close();
@@ -573,7 +643,8 @@ Status plan_coffee_break(Draft& d, const Activity& a, Rng& rng) {
     for (const std::string& e : p.entities_of_type({"table", "coffee_table"})) {
       const std::string z = p.zone_at(p.point(e));
       const auto zt = p.place(z);
-      if (zt && (zt->type == "kitchenette" || zt->type == "break_room" || zt->type == "staff_room" || zt->type == "kitchen"))
+      if (zt && (zt->type == "kitchenette" || zt->type == "break_room" || zt->type == "staff_room" ||
+                 zt->type == "kitchen"))
         pois.push_back(e);
     }
     why = machines.empty() ? "water dispenser or break-room table (the world has no coffee machine)"
@@ -613,15 +684,17 @@ Status plan_coffee_break(Draft& d, const Activity& a, Rng& rng) {
   // Role slots in order, cut into groups of 2–4.
   std::vector<People> slots;
   for (const People& who : spot)
-    for (std::size_t k = 0; k < who.count; ++k) slots.push_back(People{who.role, 1, who.explicit_count, who.phrase});
+    for (std::size_t k = 0; k < who.count; ++k)
+      slots.push_back(People{who.role, 1, who.explicit_count, who.phrase});
   std::size_t at = 0;
   std::size_t g = 0;
   const double chat = round1(d.activity_s.value_or(rng.uniform(40.0, 90.0)));
   Status status;
   std::set<std::string> used_pois;
   while (at < slots.size()) {
-    std::size_t size = g < planned.size() && slots.size() == default_total ? planned[g]
-                                                                           : std::min<std::size_t>(slots.size() - at, 2 + rng.below(3));
+    std::size_t size = g < planned.size() && slots.size() == default_total
+                           ? planned[g]
+                           : std::min<std::size_t>(slots.size() - at, 2 + rng.below(3));
     size = std::min(size, slots.size() - at);
     if (slots.size() - at - size == 1) ++size;  // nobody chats alone
     const std::string poi = pois[g % pois.size()];
@@ -637,9 +710,17 @@ Status plan_coffee_break(Draft& d, const Activity& a, Rng& rng) {
     const std::int64_t group = d.new_group();
     auto tree = d.add_tree(C::kCoffeeBreak, "coffee_break_group_" + std::to_string(group), [&](TreeXml& t) {
       t.open("Sequence");
-      t.leaf("Gather", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"point", poi}, {"radius", "1.5"},
-                        {"group_id", std::to_string(group)}, {"duration", num(chat)}});
-      t.leaf("Wander", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"region", walk}, {"pause_min", "2"}, {"pause_max", "6"}});
+      t.leaf("Gather", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"point", poi},
+                        {"radius", "1.5"},
+                        {"group_id", std::to_string(group)},
+                        {"duration", num(chat)}});
+      t.leaf("Wander", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"region", walk},
+                        {"pause_min", "2"},
+                        {"pause_max", "6"}});
       t.close();
     });
     if (!tree) return tl::unexpected(tree.error());
@@ -655,7 +736,8 @@ Status plan_coffee_break(Draft& d, const Activity& a, Rng& rng) {
       d.note("no room left near '" + poi + "' for a group of " + std::to_string(size));
       break;
     }
-    add_group(d, slots, at, size, region, "coffee_break_" + std::to_string(group), *tree, group, C::kCoffeeBreak);
+    add_group(d, slots, at, size, region, "coffee_break_" + std::to_string(group), *tree, group,
+              C::kCoffeeBreak);
     at += size;
     ++g;
   }
@@ -692,21 +774,27 @@ Status plan_social_party(Draft& d, const Activity& a, Rng& rng) {
     if (room.empty()) room = occupied_zones(p).front();
     d.note("the world has no living room: the party is in '" + room + "', its largest room");
   }
-  d.place_used(C::kSocialParty, "party room", room, a.place() != nullptr ? "the prompt's place" : "living room");
+  d.place_used(C::kSocialParty, "party room", room,
+               a.place() != nullptr ? "the prompt's place" : "living room");
   // Cluster points: furniture and seating ROIs in the room, the room itself as a last resort.
   std::vector<std::string> points;
   for (const std::string& r : p.rois_in(room)) points.push_back(r);
   for (const std::string& e : p.entities_in(room)) points.push_back(e);
   if (points.size() < 2) points.push_back(room);
-  for (std::size_t k = points.size(); k > 1; --k) std::swap(points[k - 1], points[rng.below(static_cast<std::uint32_t>(k))]);
+  for (std::size_t k = points.size(); k > 1; --k)
+    std::swap(points[k - 1], points[rng.below(static_cast<std::uint32_t>(k))]);
 
   const double area = p.zone_area(room);
-  const auto people = d.people(
-      a, std::clamp<std::size_t>(static_cast<std::size_t>(std::lround(area / 2.5 * rng.uniform(0.8, 1.1))), 4, 16), rng);
+  const auto people =
+      d.people(a,
+               std::clamp<std::size_t>(
+                   static_cast<std::size_t>(std::lround(area / 2.5 * rng.uniform(0.8, 1.1))), 4, 16),
+               rng);
   const auto [spot, rest] = split_people(people, d.take_spotlight(std::min<std::size_t>(sum(people), 32)));
   std::vector<People> slots;
   for (const People& who : spot)
-    for (std::size_t k = 0; k < who.count; ++k) slots.push_back(People{who.role, 1, who.explicit_count, who.phrase});
+    for (std::size_t k = 0; k < who.count; ++k)
+      slots.push_back(People{who.role, 1, who.explicit_count, who.phrase});
   const std::vector<std::string> from = around(p, room, true);
   std::size_t at = 0, g = 0;
   while (at < slots.size()) {
@@ -718,12 +806,24 @@ Status plan_social_party(Draft& d, const Activity& a, Rng& rng) {
     const double talk = round1(d.activity_s.value_or(rng.uniform(15.0, 30.0)));
     auto tree = d.add_tree(C::kSocialParty, "party_group_" + std::to_string(group), [&](TreeXml& t) {
       t.open("Repeat", {{"num_cycles", "-1"}}).open("Sequence");
-      t.leaf("Gather", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"point", first}, {"radius", "1.5"},
-                        {"group_id", std::to_string(group)}, {"duration", num(talk)}});
-      t.leaf("Wander", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"region", room}, {"duration", num(rng.uniform(4.0, 8.0))},
-                        {"pause_min", "1"}, {"pause_max", "3"}});
-      t.leaf("Gather", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"point", second}, {"radius", "1.5"},
-                        {"group_id", std::to_string(group)}, {"duration", num(talk)}});
+      t.leaf("Gather", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"point", first},
+                        {"radius", "1.5"},
+                        {"group_id", std::to_string(group)},
+                        {"duration", num(talk)}});
+      t.leaf("Wander", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"region", room},
+                        {"duration", num(rng.uniform(4.0, 8.0))},
+                        {"pause_min", "1"},
+                        {"pause_max", "3"}});
+      t.leaf("Gather", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"point", second},
+                        {"radius", "1.5"},
+                        {"group_id", std::to_string(group)},
+                        {"duration", num(talk)}});
       t.close().close();
     });
     if (!tree) return tl::unexpected(tree.error());
@@ -745,8 +845,8 @@ Status plan_social_party(Draft& d, const Activity& a, Rng& rng) {
   std::vector<std::string> arrive;
   for (const std::string& z : from)
     if (z != room) arrive.push_back(z);
-  leftover_ambient(d, C::kSocialParty, rest, arrive.empty() ? from : arrive, {room}, "arriving at the party in " + room, false,
-                   rng, status);
+  leftover_ambient(d, C::kSocialParty, rest, arrive.empty() ? from : arrive, {room},
+                   "arriving at the party in " + room, false, rng, status);
   return status;
 }
 
@@ -772,9 +872,12 @@ Status plan_bottleneck(Draft& d, const Activity& a, Rng& rng) {
       const std::size_t inner = p.neighbours(s).size();
       double score = std::min(p.zone_area(s), 80.0) / (inner == 1 ? 1.0 : 3.0) / std::max(0.8, door.width);
       if (named != nullptr) {
-        if (named->name == door.name) score += 1000.0;
-        else if (named->kind == ResolvedPlace::Kind::kZone && named->name == s) score += 500.0;
-        else if (named->kind == ResolvedPlace::Kind::kZone && named->name == o) score += 400.0;
+        if (named->name == door.name)
+          score += 1000.0;
+        else if (named->kind == ResolvedPlace::Kind::kZone && named->name == s)
+          score += 500.0;
+        else if (named->kind == ResolvedPlace::Kind::kZone && named->name == o)
+          score += 400.0;
       }
       options.push_back(Option{&door, s, o, score});
     }
@@ -783,11 +886,14 @@ Status plan_bottleneck(Draft& d, const Activity& a, Rng& rng) {
     d.note("the world has no door between two rooms: no bottleneck possible; planned as normal operation");
     return plan_normal_operation(d, a, rng);
   }
-  std::stable_sort(options.begin(), options.end(), [](const Option& x, const Option& y) { return x.score > y.score; });
+  std::stable_sort(options.begin(), options.end(),
+                   [](const Option& x, const Option& y) { return x.score > y.score; });
   std::size_t top = 1;
-  while (top < std::min<std::size_t>(options.size(), 3) && options[top].score >= options[0].score * 0.8) ++top;
+  while (top < std::min<std::size_t>(options.size(), 3) && options[top].score >= options[0].score * 0.8)
+    ++top;
   const Option& o = options[rng.below(static_cast<std::uint32_t>(top))];
-  if (named != nullptr && o.score < 400.0) d.note("'" + named->name + "' is no door between rooms; the crowd uses '" + o.door->name + "'");
+  if (named != nullptr && o.score < 400.0)
+    d.note("'" + named->name + "' is no door between rooms; the crowd uses '" + o.door->name + "'");
   // Goal beyond the door: the room behind the far zone farthest from the door, else the far zone.
   const crowd::Vec2 door_at{o.door->pose.x, o.door->pose.y};
   std::string goal;
@@ -802,12 +908,15 @@ Status plan_bottleneck(Draft& d, const Activity& a, Rng& rng) {
   }
   if (goal.empty()) goal = o.through;
   d.place_used(C::kBottleneck, "doorway", o.door->name,
-               "door of width " + num(o.door->width) + " m, the only way out of '" + o.start + "' towards '" + goal + "'");
+               "door of width " + num(o.door->width) + " m, the only way out of '" + o.start + "' towards '" +
+                   goal + "'");
   d.place_used(C::kBottleneck, "crowd start", o.start, "the room before the door");
   d.place_used(C::kBottleneck, "crowd goal", goal, "beyond the door");
   const std::size_t cap = p.capacity(o.start);
   const auto people = d.people(
-      a, std::clamp<std::size_t>(static_cast<std::size_t>(std::lround(static_cast<double>(cap) * rng.uniform(0.6, 0.9))), 8, 60),
+      a,
+      std::clamp<std::size_t>(
+          static_cast<std::size_t>(std::lround(static_cast<double>(cap) * rng.uniform(0.6, 0.9))), 8, 60),
       rng);
   const double speed = round1(rng.uniform(1.3, 1.6));
   Status status;
@@ -822,8 +931,8 @@ Status plan_bottleneck(Draft& d, const Activity& a, Rng& rng) {
     g.speed = speed;
     g.variation = 0.05;
     g.explicit_count = who.explicit_count;
-    g.description = std::to_string(who.count) + " " + plural(who.role, who.count) + " rushing from " + o.start + " through " +
-                    o.door->name + " to " + goal;
+    g.description = std::to_string(who.count) + " " + plural(who.role, who.count) + " rushing from " +
+                    o.start + " through " + o.door->name + " to " + goal;
     status = d.add_ambient(C::kBottleneck, std::move(g));
   }
   return status;
@@ -848,8 +957,9 @@ Status plan_normal_operation(Draft& d, const Activity& a, Rng& rng) {
       continue;
     }
     const std::string type = p.place(z) ? p.place(z)->type : "";
-    if (type == "nurse_station" || type == "treatment_room" || type == "private_office" || type == "open_office" ||
-        type == "kitchen" || type == "loading_bay" || type == "meeting_room" || type == "kitchenette")
+    if (type == "nurse_station" || type == "treatment_room" || type == "private_office" ||
+        type == "open_office" || type == "kitchen" || type == "loading_bay" || type == "meeting_room" ||
+        type == "kitchenette")
       work.push_back(z);
     else
       rest_places.push_back(z);
@@ -865,7 +975,9 @@ Status plan_normal_operation(Draft& d, const Activity& a, Rng& rng) {
   if (rest_places.empty()) rest_places = zones;
   if (circulation.empty()) circulation.push_back(zones.front());
   const auto people = d.people(
-      a, std::clamp<std::size_t>(static_cast<std::size_t>(std::lround(area * rng.uniform(0.02, 0.04))), 4, 16), rng);
+      a,
+      std::clamp<std::size_t>(static_cast<std::size_t>(std::lround(area * rng.uniform(0.02, 0.04))), 4, 16),
+      rng);
   const auto [spot, rest] = split_people(people, d.take_spotlight(std::min<std::size_t>(sum(people), 16)));
   const double stay = d.activity_s.value_or(0.0);
   for (const People& who : spot) {
@@ -878,25 +990,40 @@ Status plan_normal_operation(Draft& d, const Activity& a, Rng& rng) {
       const double dwell = round1(stay > 0.0 ? stay : rng.uniform(15.0, 40.0));
       if (pl && pl->region != nullptr) {
         t.open("Fallback");
-        t.leaf("SitAt", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"seat", place}, {"duration", num(dwell)}});
-        t.leaf("WaitAt", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"location", place}, {"duration", num(dwell)}, {"face", ""}});
+        t.leaf("SitAt",
+               {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"seat", place}, {"duration", num(dwell)}});
+        t.leaf("WaitAt", {{"agent_id", "{id}"},
+                          {"time_step", "{dt}"},
+                          {"location", place},
+                          {"duration", num(dwell)},
+                          {"face", ""}});
         t.close();
       } else {
-        t.leaf("WaitAt", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"location", place}, {"duration", num(dwell)}, {"face", ""}});
+        t.leaf("WaitAt", {{"agent_id", "{id}"},
+                          {"time_step", "{dt}"},
+                          {"location", place},
+                          {"duration", num(dwell)},
+                          {"face", ""}});
       }
     };
     auto tree = d.add_tree(C::kNormalOperation, "routine_" + who.role, [&](TreeXml& t) {
       t.open("Repeat", {{"num_cycles", "-1"}}).open("Sequence");
       visit(t, first);
-      t.leaf("Wander", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"region", walk}, {"duration", num(rng.uniform(5.0, 15.0))},
-                        {"pause_min", "1"}, {"pause_max", "4"}});
+      t.leaf("Wander", {{"agent_id", "{id}"},
+                        {"time_step", "{dt}"},
+                        {"region", walk},
+                        {"duration", num(rng.uniform(5.0, 15.0))},
+                        {"pause_min", "1"},
+                        {"pause_max", "4"}});
       visit(t, second);
       t.close().close();
     });
     if (!tree) return tl::unexpected(tree.error());
-    d.place_used(C::kNormalOperation, who.role + " routine", first, staff_like(who.role) ? "work place" : "waiting or living place");
+    d.place_used(C::kNormalOperation, who.role + " routine", first,
+                 staff_like(who.role) ? "work place" : "waiting or living place");
     if (second != first)
-      d.place_used(C::kNormalOperation, who.role + " routine", second, staff_like(who.role) ? "work place" : "waiting or living place");
+      d.place_used(C::kNormalOperation, who.role + " routine", second,
+                   staff_like(who.role) ? "work place" : "waiting or living place");
     std::vector<std::string> spawn = zones;
     const std::size_t shift = rng.below(static_cast<std::uint32_t>(spawn.size()));
     std::rotate(spawn.begin(), spawn.begin() + static_cast<std::ptrdiff_t>(shift), spawn.end());
@@ -915,7 +1042,8 @@ Status plan_normal_operation(Draft& d, const Activity& a, Rng& rng) {
   if (traffic.empty() && area >= 120.0 && !entrances.empty()) {
     double circ_area = 0.0;
     for (const std::string& z : circulation) circ_area += p.zone_area(z);
-    const std::size_t n = std::clamp<std::size_t>(static_cast<std::size_t>(std::lround(circ_area * rng.uniform(0.05, 0.1))), 4, 24);
+    const std::size_t n = std::clamp<std::size_t>(
+        static_cast<std::size_t>(std::lround(circ_area * rng.uniform(0.05, 0.1))), 4, 24);
     const auto roles = d.people(Activity{C::kNormalOperation, 0.0, {}, {}, {}, std::nullopt}, n, rng);
     traffic = roles;
   }
@@ -928,12 +1056,14 @@ Status plan_normal_operation(Draft& d, const Activity& a, Rng& rng) {
     std::vector<People> in, out;
     for (const People& who : traffic) {
       const std::size_t half = who.count / 2;
-      if (who.count - half > 0) in.push_back(People{who.role, who.count - half, who.explicit_count, who.phrase});
+      if (who.count - half > 0)
+        in.push_back(People{who.role, who.count - half, who.explicit_count, who.phrase});
       if (half > 0) out.push_back(People{who.role, half, who.explicit_count, who.phrase});
     }
-    leftover_ambient(d, C::kNormalOperation, in, entrance_zones, {destination}, "coming in and walking to " + destination, true,
-                     rng, status);
-    leftover_ambient(d, C::kNormalOperation, out, circulation, entrances, "walking out through the entrance", true, rng, status);
+    leftover_ambient(d, C::kNormalOperation, in, entrance_zones, {destination},
+                     "coming in and walking to " + destination, true, rng, status);
+    leftover_ambient(d, C::kNormalOperation, out, circulation, entrances, "walking out through the entrance",
+                     true, rng, status);
   }
   return status;
 }

@@ -94,7 +94,8 @@ std::optional<CountParse> number_at(const std::vector<Token>& t, std::size_t i) 
     current = w->value;
     ++k;
     // "twenty five"
-    if (current >= 20 && current < 100 && std::fmod(current, 10.0) == 0.0 && k < t.size() && t[k].clause == t[i].clause) {
+    if (current >= 20 && current < 100 && std::fmod(current, 10.0) == 0.0 && k < t.size() &&
+        t[k].clause == t[i].clause) {
       std::size_t m = 0;
       const CountWord* u = count_word_at(t, k, m);
       if (u != nullptr && m == 1 && !u->approximate && !u->multiplier && u->value < 10 && u->phrase != "a" &&
@@ -199,11 +200,12 @@ bool is_determiner(std::string_view w) {
 // Words after a preposition that end a place phrase or show it is no place ("to leave", "in line").
 bool ends_place(std::string_view w) {
   static const std::set<std::string_view> kStop = {
-      "and",   "or",     "but",   "with",   "for",    "after",  "before", "when",  "until", "during", "who",
-      "which", "where",  "as",    "so",     "if",     "because", "then",  "be",    "get",   "leave",  "go",
-      "see",   "do",     "have",  "make",   "take",   "wait",   "walk",   "run",   "them",  "him",    "it",
-      "line",  "turn",   "turns", "order",  "front",  "all",    "other",  "others", "another", "time", "while",
-      "once",  "again",  "is",    "are",    "was",    "were",   "will",   "would", "can",   "could",  "should"};
+      "and",    "or",      "but",   "with",  "for",   "after", "before",  "when",  "until", "during",
+      "who",    "which",   "where", "as",    "so",    "if",    "because", "then",  "be",    "get",
+      "leave",  "go",      "see",   "do",    "have",  "make",  "take",    "wait",  "walk",  "run",
+      "them",   "him",     "it",    "line",  "turn",  "turns", "order",   "front", "all",   "other",
+      "others", "another", "time",  "while", "once",  "again", "is",      "are",   "was",   "were",
+      "will",   "would",   "can",   "could", "should"};
   return kStop.count(w) != 0;
 }
 
@@ -217,7 +219,8 @@ std::vector<std::string> name_tokens(std::string_view name) {
   std::vector<std::string> out;
   std::string cur;
   for (char c : name) {
-    if (std::isalnum(static_cast<unsigned char>(c)) != 0 && std::isdigit(static_cast<unsigned char>(c)) == 0) {
+    if (std::isalnum(static_cast<unsigned char>(c)) != 0 &&
+        std::isdigit(static_cast<unsigned char>(c)) == 0) {
       cur.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
     } else if (!cur.empty()) {
       out.push_back(singular(cur));
@@ -283,9 +286,12 @@ Intent parse_intent(std::string_view prompt) {
         const double seconds = *v * *u;
         const std::size_t len = k - i + 1;
         bool later = !(start || span) && k + 1 < t.size() && t[k + 1].text == "later";
-        if (span) intent.timing.duration_s = seconds;
-        else if (start || later) intent.timing.start_after_s = seconds;
-        else continue;
+        if (span)
+          intent.timing.duration_s = seconds;
+        else if (start || later)
+          intent.timing.start_after_s = seconds;
+        else
+          continue;
         intent.timing.phrases.push_back(join(t, i, len + (later ? 1 : 0)));
         for (std::size_t m = i; m < i + len + (later ? 1 : 0); ++m) used[m] = true;
         continue;
@@ -365,8 +371,10 @@ Intent parse_intent(std::string_view prompt) {
       i += c->length - 1;
       continue;
     }
-    if (pending && (i - pending->end >= 2 || t[i].clause != t[pending->start].clause || preposition_at(t, i) > 0)) {
-      if (!pending->count.bare_article && !intent.crowd_size && pending->count.phrase.find("crowd") != std::string::npos) {
+    if (pending &&
+        (i - pending->end >= 2 || t[i].clause != t[pending->start].clause || preposition_at(t, i) > 0)) {
+      if (!pending->count.bare_article && !intent.crowd_size &&
+          pending->count.phrase.find("crowd") != std::string::npos) {
         intent.crowd_size = static_cast<std::size_t>(std::llround(pending->count.value));
         intent.crowd_phrase = pending->count.phrase;
         intent.crowd_clause = t[pending->start].clause;
@@ -391,8 +399,8 @@ Intent parse_intent(std::string_view prompt) {
     std::size_t k = i + pn;
     while (k < t.size() && t[k].clause == t[i].clause && is_determiner(t[k].text)) ++k;
     std::size_t end = k;
-    while (end < t.size() && end - k < 4 && t[end].clause == t[i].clause && !used[end] && !ends_place(t[end].text) &&
-           preposition_at(t, end) == 0 && !t[end].number) {
+    while (end < t.size() && end - k < 4 && t[end].clause == t[i].clause && !used[end] &&
+           !ends_place(t[end].text) && preposition_at(t, end) == 0 && !t[end].number) {
       std::size_t pn2 = 0;
       if (place_phrase_at(t, end, pn2) != nullptr) {  // "nurse station" is a place, not a nurse
         end = std::min(t.size(), end + pn2);
@@ -510,7 +518,8 @@ Json to_json(const Intent& intent) {
       if (p.lexicon != nullptr) j["lexicon"] = std::string(p.lexicon->phrase);
       places.push_back(std::move(j));
     }
-    clauses.push_back(Json{{"index", c.index}, {"text", c.text}, {"categories", cats}, {"roles", roles}, {"places", places}});
+    clauses.push_back(Json{
+        {"index", c.index}, {"text", c.text}, {"categories", cats}, {"roles", roles}, {"places", places}});
   }
   Json timing = Json::object();
   if (intent.timing.start_after_s) timing["start_after_s"] = *intent.timing.start_after_s;
@@ -523,10 +532,14 @@ Json to_json(const Intent& intent) {
 
 std::string_view to_string(ResolvedPlace::Kind kind) {
   switch (kind) {
-    case ResolvedPlace::Kind::kRoi: return "roi";
-    case ResolvedPlace::Kind::kEntity: return "poi";
-    case ResolvedPlace::Kind::kDoor: return "door";
-    case ResolvedPlace::Kind::kZone: return "zone";
+    case ResolvedPlace::Kind::kRoi:
+      return "roi";
+    case ResolvedPlace::Kind::kEntity:
+      return "poi";
+    case ResolvedPlace::Kind::kDoor:
+      return "door";
+    case ResolvedPlace::Kind::kZone:
+      return "zone";
   }
   return "roi";
 }
@@ -534,8 +547,9 @@ std::string_view to_string(ResolvedPlace::Kind kind) {
 std::optional<ResolvedPlace> resolve_place(const PlaceMention& mention, const world::World& world) {
   // Name words: the lexicon's curated ones and the mention's words without generic nouns
   // ("room" alone would match every room).
-  static const std::set<std::string> kGeneric = {"room", "area", "zone", "place", "space", "spot", "side", "end",
-                                                 "part", "corner", "middle", "center", "centre", "building", "floor"};
+  static const std::set<std::string> kGeneric = {"room",   "area",   "zone",   "place",    "space",
+                                                 "spot",   "side",   "end",    "part",     "corner",
+                                                 "middle", "center", "centre", "building", "floor"};
   std::vector<std::string> words;
   if (mention.lexicon != nullptr)
     for (std::string_view w : mention.lexicon->name_words) words.push_back(singular(std::string(w)));
@@ -562,7 +576,8 @@ std::optional<ResolvedPlace> resolve_place(const PlaceMention& mention, const wo
     if (score < 1.0) return;
     if (!best || score > best->score + 1e-9) best = ResolvedPlace{name, kind, type, score, why};
   };
-  auto rank = [](const std::vector<std::string_view>& list, std::string_view v) -> std::optional<std::size_t> {
+  auto rank = [](const std::vector<std::string_view>& list,
+                 std::string_view v) -> std::optional<std::size_t> {
     for (std::size_t i = 0; i < list.size(); ++i)
       if (list[i] == v) return i;
     return std::nullopt;
@@ -611,8 +626,11 @@ std::optional<ResolvedPlace> resolve_place(const PlaceMention& mention, const wo
 }
 
 Json to_json(const ResolvedPlace& place) {
-  return Json{{"name", place.name}, {"kind", std::string(to_string(place.kind))}, {"type", place.type},
-              {"score", place.score}, {"why", place.why}};
+  return Json{{"name", place.name},
+              {"kind", std::string(to_string(place.kind))},
+              {"type", place.type},
+              {"score", place.score},
+              {"why", place.why}};
 }
 
 }  // namespace socsim::scenario

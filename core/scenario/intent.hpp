@@ -31,10 +31,10 @@ struct RoleMention {
 };
 
 struct PlaceMention {
-  std::string phrase;                   // "the elevator", "reception desk"
-  std::vector<std::string> words;       // content words ("elevator")
+  std::string phrase;                    // "the elevator", "reception desk"
+  std::vector<std::string> words;        // content words ("elevator")
   const PlacePhrase* lexicon = nullptr;  // the lexicon entry it matched, if any
-  std::string preposition;              // "near", "at", "" when mentioned without one
+  std::string preposition;               // "near", "at", "" when mentioned without one
   std::size_t clause = 0;
   std::size_t offset = 0;
 };

@@ -10,8 +10,9 @@ namespace {
 
 using C = Category;
 
-constexpr std::array<Category, 7> kCategories = {C::kEmergency,  C::kQueuing,    C::kSocialParty,    C::kCoffeeBreak,
-                                                  C::kReception, C::kBottleneck, C::kNormalOperation};
+constexpr std::array<Category, 7> kCategories = {C::kEmergency,      C::kQueuing,   C::kSocialParty,
+                                                 C::kCoffeeBreak,    C::kReception, C::kBottleneck,
+                                                 C::kNormalOperation};
 
 // Weights: 1.0 for the category's own word, more for unambiguous phrases, less for words that
 // also occur in other settings ("break", "counter", "work").
@@ -254,43 +255,131 @@ const std::vector<RoleProfile> kRoleProfiles = {
 };
 
 const std::vector<CountWord> kCountWords = {
-    {"one", 1, false, false},        {"single", 1, false, false},      {"two", 2, false, false},
-    {"three", 3, false, false},      {"four", 4, false, false},        {"five", 5, false, false},
-    {"six", 6, false, false},        {"seven", 7, false, false},       {"eight", 8, false, false},
-    {"nine", 9, false, false},       {"ten", 10, false, false},        {"eleven", 11, false, false},
-    {"twelve", 12, false, false},    {"thirteen", 13, false, false},   {"fourteen", 14, false, false},
-    {"fifteen", 15, false, false},   {"sixteen", 16, false, false},    {"seventeen", 17, false, false},
-    {"eighteen", 18, false, false},  {"nineteen", 19, false, false},   {"twenty", 20, false, false},
-    {"thirty", 30, false, false},    {"forty", 40, false, false},      {"fifty", 50, false, false},
-    {"sixty", 60, false, false},     {"seventy", 70, false, false},    {"eighty", 80, false, false},
-    {"ninety", 90, false, false},    {"hundred", 100, false, true},    {"dozen", 12, false, true},
-    {"a hundred", 100, false, false}, {"a dozen", 12, false, false},   {"dozens of", 24, true, false},
-    {"hundreds of", 200, true, false}, {"a couple of", 2, false, false}, {"a couple", 2, false, false},
-    {"couple of", 2, false, false},  {"a pair of", 2, false, false},   {"pair of", 2, false, false},
-    {"a few", 3, true, false},       {"few", 3, true, false},          {"a handful of", 4, true, false},
-    {"several", 5, true, false},     {"some", 4, true, false},         {"many", 15, true, false},
-    {"lots of", 20, true, false},    {"a lot of", 20, true, false},    {"numerous", 15, true, false},
-    {"a group of", 4, true, false},  {"a small group of", 3, true, false}, {"a large group of", 10, true, false},
-    {"a crowd of", 40, true, false}, {"a large crowd of", 80, true, false}, {"a big crowd of", 80, true, false},
-    {"crowd of", 40, true, false},   {"a crowd", 40, true, false},     {"a large crowd", 80, true, false},
-    {"a", 1, false, false},          {"an", 1, false, false},          {"a lone", 1, false, false},
+    {"one", 1, false, false},
+    {"single", 1, false, false},
+    {"two", 2, false, false},
+    {"three", 3, false, false},
+    {"four", 4, false, false},
+    {"five", 5, false, false},
+    {"six", 6, false, false},
+    {"seven", 7, false, false},
+    {"eight", 8, false, false},
+    {"nine", 9, false, false},
+    {"ten", 10, false, false},
+    {"eleven", 11, false, false},
+    {"twelve", 12, false, false},
+    {"thirteen", 13, false, false},
+    {"fourteen", 14, false, false},
+    {"fifteen", 15, false, false},
+    {"sixteen", 16, false, false},
+    {"seventeen", 17, false, false},
+    {"eighteen", 18, false, false},
+    {"nineteen", 19, false, false},
+    {"twenty", 20, false, false},
+    {"thirty", 30, false, false},
+    {"forty", 40, false, false},
+    {"fifty", 50, false, false},
+    {"sixty", 60, false, false},
+    {"seventy", 70, false, false},
+    {"eighty", 80, false, false},
+    {"ninety", 90, false, false},
+    {"hundred", 100, false, true},
+    {"dozen", 12, false, true},
+    {"a hundred", 100, false, false},
+    {"a dozen", 12, false, false},
+    {"dozens of", 24, true, false},
+    {"hundreds of", 200, true, false},
+    {"a couple of", 2, false, false},
+    {"a couple", 2, false, false},
+    {"couple of", 2, false, false},
+    {"a pair of", 2, false, false},
+    {"pair of", 2, false, false},
+    {"a few", 3, true, false},
+    {"few", 3, true, false},
+    {"a handful of", 4, true, false},
+    {"several", 5, true, false},
+    {"some", 4, true, false},
+    {"many", 15, true, false},
+    {"lots of", 20, true, false},
+    {"a lot of", 20, true, false},
+    {"numerous", 15, true, false},
+    {"a group of", 4, true, false},
+    {"a small group of", 3, true, false},
+    {"a large group of", 10, true, false},
+    {"a crowd of", 40, true, false},
+    {"a large crowd of", 80, true, false},
+    {"a big crowd of", 80, true, false},
+    {"crowd of", 40, true, false},
+    {"a crowd", 40, true, false},
+    {"a large crowd", 80, true, false},
+    {"a", 1, false, false},
+    {"an", 1, false, false},
+    {"a lone", 1, false, false},
 };
 
 const std::vector<std::string_view> kApproximation = {
-    "more than", "up to", "at least", "no more than", "about", "around", "roughly", "approximately", "approx",
-    "nearly",    "almost", "some",    "circa",        "maybe", "perhaps", "over"};
+    "more than", "up to",  "at least", "no more than", "about", "around", "roughly", "approximately",
+    "approx",    "nearly", "almost",   "some",         "circa", "maybe",  "perhaps", "over"};
 
 const std::vector<PlacePhrase> kPlacePhrases = {
-    {"elevator", {"elevator", "lift"}, {}, {"elevator_lobby", "elevator"}, false, false, {"elevator", "lift"}},
-    {"elevators", {"elevator", "lift"}, {}, {"elevator_lobby", "elevator"}, false, false, {"elevator", "lift"}},
+    {"elevator",
+     {"elevator", "lift"},
+     {},
+     {"elevator_lobby", "elevator"},
+     false,
+     false,
+     {"elevator", "lift"}},
+    {"elevators",
+     {"elevator", "lift"},
+     {},
+     {"elevator_lobby", "elevator"},
+     false,
+     false,
+     {"elevator", "lift"}},
     {"lift", {"elevator", "lift"}, {}, {"elevator_lobby", "elevator"}, false, false, {"elevator", "lift"}},
-    {"reception desk", {"counter"}, {"queue_lane", "counter_area"}, {"reception", "lobby"}, false, false, {"reception"}},
-    {"reception counter", {"counter"}, {"queue_lane", "counter_area"}, {"reception", "lobby"}, false, false, {"reception"}},
-    {"front desk", {"counter"}, {"queue_lane", "counter_area"}, {"reception", "lobby"}, false, false, {"reception"}},
-    {"check in", {"counter"}, {"queue_lane", "counter_area"}, {"reception", "lobby"}, false, false, {"reception"}},
+    {"reception desk",
+     {"counter"},
+     {"queue_lane", "counter_area"},
+     {"reception", "lobby"},
+     false,
+     false,
+     {"reception"}},
+    {"reception counter",
+     {"counter"},
+     {"queue_lane", "counter_area"},
+     {"reception", "lobby"},
+     false,
+     false,
+     {"reception"}},
+    {"front desk",
+     {"counter"},
+     {"queue_lane", "counter_area"},
+     {"reception", "lobby"},
+     false,
+     false,
+     {"reception"}},
+    {"check in",
+     {"counter"},
+     {"queue_lane", "counter_area"},
+     {"reception", "lobby"},
+     false,
+     false,
+     {"reception"}},
     {"registration desk", {"counter"}, {"queue_lane"}, {"reception", "lobby"}, false, false, {"reception"}},
-    {"reception", {"counter"}, {"queue_lane", "counter_area"}, {"reception", "lobby"}, false, false, {"reception"}},
-    {"information desk", {"counter"}, {"queue_lane"}, {"concourse", "lobby", "reception"}, false, false, {"info", "reception"}},
+    {"reception",
+     {"counter"},
+     {"queue_lane", "counter_area"},
+     {"reception", "lobby"},
+     false,
+     false,
+     {"reception"}},
+    {"information desk",
+     {"counter"},
+     {"queue_lane"},
+     {"concourse", "lobby", "reception"},
+     false,
+     false,
+     {"info", "reception"}},
     {"counter", {"counter"}, {"queue_lane", "counter_area"}, {}, false, false, {"counter"}},
     {"checkout", {"counter"}, {"queue_lane"}, {"sales_floor"}, false, false, {"checkout"}},
     {"nurse station", {"counter"}, {}, {"nurse_station"}, false, false, {"nurse"}},
@@ -303,7 +392,13 @@ const std::vector<PlacePhrase> kPlacePhrases = {
     {"vending machine", {"vending_machine"}, {}, {}, false, false, {"vending"}},
     {"vending machines", {"vending_machine"}, {}, {}, false, false, {"vending"}},
     {"snack machine", {"vending_machine"}, {}, {}, false, false, {"vending", "snack"}},
-    {"coffee machine", {"coffee_machine"}, {}, {"kitchenette", "break_room", "staff_room"}, false, false, {"coffee"}},
+    {"coffee machine",
+     {"coffee_machine"},
+     {},
+     {"kitchenette", "break_room", "staff_room"},
+     false,
+     false,
+     {"coffee"}},
     {"coffee", {"coffee_machine"}, {}, {"kitchenette", "break_room", "staff_room"}, false, false, {"coffee"}},
     {"break room", {}, {}, {"break_room", "staff_room", "kitchenette"}, false, false, {"break"}},
     {"staff room", {}, {}, {"staff_room", "break_room"}, false, false, {"staff"}},
@@ -323,8 +418,20 @@ const std::vector<PlacePhrase> kPlacePhrases = {
     {"couch", {"sofa"}, {}, {}, false, false, {"sofa"}},
     {"table", {"table", "dining_table", "meeting_table", "coffee_table"}, {}, {}, false, false, {"table"}},
     {"bedroom", {"bed"}, {}, {"bedroom"}, false, false, {"bedroom"}},
-    {"waiting room", {"chair"}, {"waiting_zone", "seating_area"}, {"waiting_room"}, false, false, {"waiting"}},
-    {"waiting area", {"chair"}, {"waiting_zone", "seating_area"}, {"waiting_room", "lobby"}, false, false, {"waiting"}},
+    {"waiting room",
+     {"chair"},
+     {"waiting_zone", "seating_area"},
+     {"waiting_room"},
+     false,
+     false,
+     {"waiting"}},
+    {"waiting area",
+     {"chair"},
+     {"waiting_zone", "seating_area"},
+     {"waiting_room", "lobby"},
+     false,
+     false,
+     {"waiting"}},
     {"lobby", {}, {"waiting_zone", "entrance"}, {"lobby", "reception"}, false, false, {"lobby"}},
     {"main entrance", {}, {"entrance"}, {}, true, true, {"entrance"}},
     {"entrance", {}, {"entrance"}, {}, true, true, {"entrance"}},
@@ -336,7 +443,13 @@ const std::vector<PlacePhrase> kPlacePhrases = {
     {"doorway", {}, {}, {}, true, false, {"door"}},
     {"door", {}, {}, {}, true, false, {"door"}},
     {"narrow door", {}, {}, {}, true, false, {"door"}},
-    {"office", {"desk"}, {"work_area"}, {"open_office", "private_office", "office"}, false, false, {"office"}},
+    {"office",
+     {"desk"},
+     {"work_area"},
+     {"open_office", "private_office", "office"},
+     false,
+     false,
+     {"office"}},
     {"open office", {"desk"}, {"work_area"}, {"open_office"}, false, false, {"office"}},
     {"desks", {"desk"}, {"work_area"}, {"open_office"}, false, false, {"desk"}},
     {"desk", {"desk"}, {"work_area"}, {}, false, false, {"desk"}},
@@ -358,19 +471,22 @@ const std::vector<PlacePhrase> kPlacePhrases = {
 };
 
 const std::vector<std::string_view> kPrepositions = {
-    "in front of", "next to", "close to", "on the way to", "at", "near", "in", "inside", "by", "around", "to",
-    "into", "from", "towards", "toward", "beside", "outside", "through", "along", "past", "behind", "across"};
+    "in front of", "next to", "close to", "on the way to", "at",     "near",    "in",     "inside",
+    "by",          "around",  "to",       "into",          "from",   "towards", "toward", "beside",
+    "outside",     "through", "along",    "past",          "behind", "across"};
 
-const std::vector<std::string_view> kEmergencyNodes = {"ReactiveFallback", "Sequence", "TimeExpired", "Evacuate",
-                                                       "Wander"};
-const std::vector<std::string_view> kQueuingNodes = {"Sequence", "Fallback", "JoinQueue", "ServeAtCounter",
-                                                     "SitAt", "WaitAt", "LookAtPoint", "StopAndWait"};
+const std::vector<std::string_view> kEmergencyNodes = {"ReactiveFallback", "Sequence", "TimeExpired",
+                                                       "Evacuate", "Wander"};
+const std::vector<std::string_view> kQueuingNodes = {"Sequence", "Fallback", "JoinQueue",   "ServeAtCounter",
+                                                     "SitAt",    "WaitAt",   "LookAtPoint", "StopAndWait"};
 const std::vector<std::string_view> kPartyNodes = {"Sequence", "Repeat", "Gather", "Wander"};
 const std::vector<std::string_view> kCoffeeNodes = {"Sequence", "Gather", "Wander"};
-const std::vector<std::string_view> kReceptionNodes = {"Sequence", "JoinQueue", "ServeAtCounter", "GoTo",
+const std::vector<std::string_view> kReceptionNodes = {"Sequence", "JoinQueue",   "ServeAtCounter", "GoTo",
                                                        "Evacuate", "LookAtPoint", "StopAndWait"};
-const std::vector<std::string_view> kBottleneckNodes = {"FollowVelocityField", "Sequence", "GoTo", "Evacuate"};
-const std::vector<std::string_view> kNormalNodes = {"Sequence", "Fallback", "GoTo", "SitAt", "WaitAt", "Wander"};
+const std::vector<std::string_view> kBottleneckNodes = {"FollowVelocityField", "Sequence", "GoTo",
+                                                        "Evacuate"};
+const std::vector<std::string_view> kNormalNodes = {"Sequence", "Fallback", "GoTo",
+                                                    "SitAt",    "WaitAt",   "Wander"};
 
 bool is_word_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '.' || c == '\'';
@@ -384,13 +500,20 @@ std::span<const Category> all_categories() {
 
 std::string_view to_string(Category c) {
   switch (c) {
-    case C::kEmergency: return "emergency";
-    case C::kQueuing: return "queuing";
-    case C::kSocialParty: return "social_party";
-    case C::kCoffeeBreak: return "coffee_break";
-    case C::kReception: return "reception";
-    case C::kBottleneck: return "bottleneck";
-    case C::kNormalOperation: return "normal_operation";
+    case C::kEmergency:
+      return "emergency";
+    case C::kQueuing:
+      return "queuing";
+    case C::kSocialParty:
+      return "social_party";
+    case C::kCoffeeBreak:
+      return "coffee_break";
+    case C::kReception:
+      return "reception";
+    case C::kBottleneck:
+      return "bottleneck";
+    case C::kNormalOperation:
+      return "normal_operation";
   }
   return "normal_operation";
 }
@@ -433,14 +556,16 @@ std::vector<Token> tokenize(std::string_view prompt) {
       } else if (d == '.' && digits && j + 1 < prompt.size() &&
                  std::isdigit(static_cast<unsigned char>(prompt[j + 1])) != 0) {
         ++j;  // decimal point
-      } else if (d == '\'' && j + 1 < prompt.size() && std::isalpha(static_cast<unsigned char>(prompt[j + 1])) != 0) {
+      } else if (d == '\'' && j + 1 < prompt.size() &&
+                 std::isalpha(static_cast<unsigned char>(prompt[j + 1])) != 0) {
         ++j;  // apostrophe inside a word (don't, nurse's)
       } else {
         break;
       }
     }
     std::string word;
-    for (std::size_t k = i; k < j; ++k) word.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(prompt[k]))));
+    for (std::size_t k = i; k < j; ++k)
+      word.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(prompt[k]))));
     if (word.size() > 2 && word.ends_with("'s")) word.resize(word.size() - 2);
     if (word == "while" || word == "whereas" || word == "meanwhile" || word == "then" || word == "whilst") {
       end_clause();
@@ -467,7 +592,8 @@ std::optional<RoleProfile> role_profile(std::string_view role) {
 }
 
 bool is_builtin_role(std::string_view role) {
-  return role == "adult" || role == "elderly" || role == "staff" || role == "jogger" || role == "stroller_pusher";
+  return role == "adult" || role == "elderly" || role == "staff" || role == "jogger" ||
+         role == "stroller_pusher";
 }
 
 std::span<const CountWord> count_words() {
@@ -487,26 +613,40 @@ std::span<const std::string_view> place_prepositions() {
 
 std::string_view node_query(Category c) {
   switch (c) {
-    case C::kEmergency: return "evacuate to the nearest exit when the fire alarm sounds, emergency leave building";
-    case C::kQueuing: return "join a queue lane, wait in line, advance, be served at the counter";
-    case C::kSocialParty: return "gather in a group and talk, cluster, wander around the room, party";
-    case C::kCoffeeBreak: return "gather near a point with colleagues, chat, then continue walking";
-    case C::kReception: return "walk to the reception counter, queue, be served, register, then leave";
-    case C::kBottleneck: return "follow a velocity field crowd flow through a door, go to a place";
-    case C::kNormalOperation: return "walk to a place, sit at a desk or seat, wait, wander around a region";
+    case C::kEmergency:
+      return "evacuate to the nearest exit when the fire alarm sounds, emergency leave building";
+    case C::kQueuing:
+      return "join a queue lane, wait in line, advance, be served at the counter";
+    case C::kSocialParty:
+      return "gather in a group and talk, cluster, wander around the room, party";
+    case C::kCoffeeBreak:
+      return "gather near a point with colleagues, chat, then continue walking";
+    case C::kReception:
+      return "walk to the reception counter, queue, be served, register, then leave";
+    case C::kBottleneck:
+      return "follow a velocity field crowd flow through a door, go to a place";
+    case C::kNormalOperation:
+      return "walk to a place, sit at a desk or seat, wait, wander around a region";
   }
   return "";
 }
 
 std::span<const std::string_view> category_nodes(Category c) {
   switch (c) {
-    case C::kEmergency: return kEmergencyNodes;
-    case C::kQueuing: return kQueuingNodes;
-    case C::kSocialParty: return kPartyNodes;
-    case C::kCoffeeBreak: return kCoffeeNodes;
-    case C::kReception: return kReceptionNodes;
-    case C::kBottleneck: return kBottleneckNodes;
-    case C::kNormalOperation: return kNormalNodes;
+    case C::kEmergency:
+      return kEmergencyNodes;
+    case C::kQueuing:
+      return kQueuingNodes;
+    case C::kSocialParty:
+      return kPartyNodes;
+    case C::kCoffeeBreak:
+      return kCoffeeNodes;
+    case C::kReception:
+      return kReceptionNodes;
+    case C::kBottleneck:
+      return kBottleneckNodes;
+    case C::kNormalOperation:
+      return kNormalNodes;
   }
   return {};
 }

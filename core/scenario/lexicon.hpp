@@ -10,7 +10,15 @@
 
 namespace socsim::scenario {
 
-enum class Category { kEmergency, kQueuing, kSocialParty, kCoffeeBreak, kReception, kBottleneck, kNormalOperation };
+enum class Category {
+  kEmergency,
+  kQueuing,
+  kSocialParty,
+  kCoffeeBreak,
+  kReception,
+  kBottleneck,
+  kNormalOperation
+};
 
 std::span<const Category> all_categories();
 std::string_view to_string(Category c);  // "emergency", "queuing", "social_party", …

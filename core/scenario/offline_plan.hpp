@@ -46,9 +46,9 @@ class Draft {
   const Intent& intent;
   const ProgramRequest& request;
   const ScenarioLimits& limits;
-  std::optional<double> alarm_s;      // emergency in the prompt: every tree evacuates from then on
-  std::optional<double> start_s;      // "after 20 seconds" without an emergency: activities start then
-  std::optional<double> activity_s;   // "for two minutes": how long chats, gatherings, visits last
+  std::optional<double> alarm_s;     // emergency in the prompt: every tree evacuates from then on
+  std::optional<double> start_s;     // "after 20 seconds" without an emergency: activities start then
+  std::optional<double> activity_s;  // "for two minutes": how long chats, gatherings, visits last
 
   // Who takes part: the activity's roles with their counts (defaults where the prompt gives none),
   // else the world's usual people for the category, `default_total` in all.
@@ -56,16 +56,18 @@ class Draft {
   // Spotlight places left in the limit; grants at most `wanted`.
   std::size_t take_spotlight(std::size_t wanted);
   // Splits n people over regions (in order) within what each still holds; the rest is unplaced.
-  std::vector<std::pair<std::string, std::size_t>> spread(const std::vector<std::string>& regions, std::size_t n);
+  std::vector<std::pair<std::string, std::size_t>> spread(const std::vector<std::string>& regions,
+                                                          std::size_t n);
   [[nodiscard]] std::size_t room_left(const std::string& region) const;
 
   // A tree named after `base` (made unique); the body must write one root element. The emergency
   // and delayed-start wrappers are added here.
-  Result<std::string> add_tree(Category category, const std::string& base, const std::function<void(TreeXml&)>& body);
+  Result<std::string> add_tree(Category category, const std::string& base,
+                               const std::function<void(TreeXml&)>& body);
   void add_agents(const std::string& name, const People& who, const std::string& spawn, std::size_t count,
                   const std::string& tree, std::int64_t group, Category category);
-  void add_agent_at(const std::string& name, const std::string& role, crowd::Vec2 position, const std::string& tree,
-                    Category category);
+  void add_agent_at(const std::string& name, const std::string& role, crowd::Vec2 position,
+                    const std::string& tree, Category category);
   struct Ambient {
     std::string name;
     std::string role;
@@ -81,7 +83,8 @@ class Draft {
   Status add_ambient(Category category, Ambient group);
   std::int64_t new_group() { return next_group_++; }
   void note(std::string text) { notes_.push_back(std::move(text)); }
-  void place_used(Category category, const std::string& purpose, const std::string& name, const std::string& why);
+  void place_used(Category category, const std::string& purpose, const std::string& name,
+                  const std::string& why);
 
   // Scales counts down to the agent bound (ambient first, defaults before explicit counts).
   void fit(std::size_t bound);

@@ -37,10 +37,13 @@ Status NodeCatalogue::retrieve(const knowledge::KnowledgeBase& knowledge, Catego
   if (!found) return tl::unexpected(found.error());
   Json hits = Json::array();
   for (const knowledge::SearchHit& h : found->hits) {
-    hits.push_back(Json{{"name", h.provenance.id}, {"score", h.provenance.score}, {"method", h.provenance.method}});
+    hits.push_back(
+        Json{{"name", h.provenance.id}, {"score", h.provenance.score}, {"method", h.provenance.method}});
     retrieved_.insert(h.provenance.id);
   }
-  Json q{{"category", std::string(to_string(category))}, {"query", std::string(query)}, {"method", found->method},
+  Json q{{"category", std::string(to_string(category))},
+         {"query", std::string(query)},
+         {"method", found->method},
          {"hits", hits}};
   if (found->dense_error) q["dense_error"] = found->dense_error->detail;
   queries_.emplace_back(category, std::move(q));
@@ -85,7 +88,8 @@ void TreeXml::element(std::string_view node, const Attributes& attributes, bool 
       const bool known = std::any_of(n->ports.begin(), n->ports.end(),
                                      [&](const knowledge::Port& p) { return p.name == key; });
       if (!known)
-        problems_.push_back("behaviour node '" + n->name + "' has no port '" + key + "' in the knowledge store");
+        problems_.push_back("behaviour node '" + n->name + "' has no port '" + key +
+                            "' in the knowledge store");
     }
   }
   body_.append(2 * (stack_.size() + 2), ' ');
@@ -118,15 +122,16 @@ TreeXml& TreeXml::close() {
 
 Result<std::string> TreeXml::finish() const {
   std::vector<std::string> problems = problems_;
-  if (!stack_.empty()) problems.push_back("tree '" + id_ + "': element <" + stack_.back() + "> is not closed");
+  if (!stack_.empty())
+    problems.push_back("tree '" + id_ + "': element <" + stack_.back() + "> is not closed");
   if (!problems.empty()) {
     std::vector<FieldError> errors;
     for (const std::string& p : problems) errors.push_back(FieldError{"", p, {}, 0, 0});
     return fail(ErrorCode::kValidation, problems.front(), std::move(errors));
   }
   const std::string id = world::xml_escape(id_);
-  return "<root BTCPP_format=\"4\" main_tree_to_execute=\"" + id + "\">\n  <BehaviorTree ID=\"" + id + "\">\n" +
-         body_ + "  </BehaviorTree>\n</root>";
+  return "<root BTCPP_format=\"4\" main_tree_to_execute=\"" + id + "\">\n  <BehaviorTree ID=\"" + id +
+         "\">\n" + body_ + "  </BehaviorTree>\n</root>";
 }
 
 }  // namespace socsim::scenario

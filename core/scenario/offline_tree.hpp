@@ -26,7 +26,8 @@ class NodeCatalogue {
   [[nodiscard]] const knowledge::BehaviorNode* find(std::string_view name) const;
   // Marks a node as used by a tree of the category.
   void use(std::string_view name, Category category);
-  // {queries:[{category, query, method, hits:[{name, score, method}]}], nodes_used:[{name, categories, retrieved}]}
+  // {queries:[{category, query, method, hits:[{name, score, method}]}], nodes_used:[{name, categories,
+  // retrieved}]}
   [[nodiscard]] Json provenance() const;
 
  private:

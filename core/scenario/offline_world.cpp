@@ -19,7 +19,8 @@ std::string guess_domain(const world::World& w) {
   std::map<std::string, int> votes;
   for (const world::Zone& z : w.zones()) {
     const std::string t = world::canonical_room_type(z.type);
-    if (t == "patient_room" || t == "nurse_station" || t == "treatment_room" || t == "icu_room" || t == "ward")
+    if (t == "patient_room" || t == "nurse_station" || t == "treatment_room" || t == "icu_room" ||
+        t == "ward")
       ++votes["hospital"];
     else if (t == "open_office" || t == "meeting_room" || t == "private_office" || t == "kitchenette")
       ++votes["office"];
@@ -142,8 +143,10 @@ std::vector<std::pair<std::string, std::string>> WorldProbe::neighbours(std::str
   if (!z) return out;
   for (const world::Door& d : world_.doors()) {
     if (!d.other) continue;
-    if (d.zone == *z) out.emplace_back(world_.zone(*d.other).name, d.name);
-    else if (*d.other == *z) out.emplace_back(world_.zone(d.zone).name, d.name);
+    if (d.zone == *z)
+      out.emplace_back(world_.zone(*d.other).name, d.name);
+    else if (*d.other == *z)
+      out.emplace_back(world_.zone(d.zone).name, d.name);
   }
   return out;
 }

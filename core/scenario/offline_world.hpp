@@ -15,11 +15,11 @@
 namespace socsim::scenario {
 
 struct QueueLane {
-  std::string name;              // queue_lane ROI
-  std::string counter;           // the serving entity ("" when the lane has none)
-  std::string zone;              // zone holding the lane
-  crowd::Vec2 head, service;     // first place in line, where the head is served
-  double length = 0.0;           // m along the lane axis
+  std::string name;           // queue_lane ROI
+  std::string counter;        // the serving entity ("" when the lane has none)
+  std::string zone;           // zone holding the lane
+  crowd::Vec2 head, service;  // first place in line, where the head is served
+  double length = 0.0;        // m along the lane axis
 };
 
 struct ExitPlace {
@@ -53,7 +53,8 @@ class WorldProbe {
   [[nodiscard]] bool is_circulation(std::string_view zone) const;
   [[nodiscard]] bool is_toilet(std::string_view zone) const;
   [[nodiscard]] std::vector<std::string> zones_of_type(std::initializer_list<std::string_view> types) const;
-  [[nodiscard]] std::vector<std::string> entities_of_type(std::initializer_list<std::string_view> types) const;
+  [[nodiscard]] std::vector<std::string> entities_of_type(
+      std::initializer_list<std::string_view> types) const;
   [[nodiscard]] std::vector<std::string> rois_of_kind(std::string_view kind) const;
   // Entities and ROIs whose point lies in the zone.
   [[nodiscard]] std::vector<std::string> entities_in(std::string_view zone) const;

@@ -70,7 +70,8 @@ Json metrics_json(const crowd::RunMetrics& m) {
       const double k = n ? 1.0 / static_cast<double>(n) : 0.0;
       return Json{{"agents", n},
                   {"goal_reached", reached},
-                  {"mean_time_to_reach_goal", reached ? Json(time_to_goal / static_cast<double>(reached)) : Json(nullptr)},
+                  {"mean_time_to_reach_goal",
+                   reached ? Json(time_to_goal / static_cast<double>(reached)) : Json(nullptr)},
                   {"mean_path_length", path * k},
                   {"minimum_distance_to_people", n ? Json(min_dist) : Json(nullptr)},
                   {"mean_intimate_space_intrusions", intimate * k},
@@ -88,12 +89,9 @@ Json metrics_json(const crowd::RunMetrics& m) {
   }
   Json roles = Json::object();
   for (const auto& [role, s] : by_role) roles[role] = s.json();
-  Json j = {{"duration", m.duration},
-            {"frames", m.frames},
-            {"frame_period", m.frame_period},
-            {"avg_pedestrian_velocity", m.avg_pedestrian_velocity},
-            {"summary", all.json()},
-            {"by_role", std::move(roles)}};
+  Json j = {{"duration", m.duration},         {"frames", m.frames},
+            {"frame_period", m.frame_period}, {"avg_pedestrian_velocity", m.avg_pedestrian_velocity},
+            {"summary", all.json()},          {"by_role", std::move(roles)}};
   if (m.agents.size() <= kPerAgentMetricsUpTo) {
     Json agents = Json::array();
     for (const auto& a : m.agents) agents.push_back(crowd::to_json(a));
@@ -123,8 +121,8 @@ std::string describe_program(const Json& program) {
     }
     text += ")";
   }
-  text += " and " + std::to_string(ambient) + " ambient pedestrians in " + std::to_string(groups.size()) + " group" +
-          (groups.size() == 1 ? "" : "s");
+  text += " and " + std::to_string(ambient) + " ambient pedestrians in " + std::to_string(groups.size()) +
+          " group" + (groups.size() == 1 ? "" : "s");
   for (const auto& g : groups)
     if (!g.value("description", std::string()).empty()) text += "; " + g.value("description", std::string());
   return text + ".";
@@ -134,9 +132,12 @@ std::string describe_program(const Json& program) {
 
 Result<ScenarioRequest> scenario_request_from_json(const Json& body, const ScenarioConfig& config) {
   JsonChecker c;
-  if (!body.is_object()) return fail(ErrorCode::kValidation, "the request must be a JSON object", {{"", "expected an object", "", 0, 0}});
-  c.only_keys(body, "", {"prompt", "world", "world_id", "scene_graph", "domain", "seed", "generator", "model",
-                         "duration_s", "agents", "title", "tags"});
+  if (!body.is_object())
+    return fail(ErrorCode::kValidation, "the request must be a JSON object",
+                {{"", "expected an object", "", 0, 0}});
+  c.only_keys(body, "",
+              {"prompt", "world", "world_id", "scene_graph", "domain", "seed", "generator", "model",
+               "duration_s", "agents", "title", "tags"});
   ScenarioRequest r;
   r.prompt = c.string(body, "", "prompt", true, 1, config.max_prompt_bytes).value_or("");
   int sources = 0;
@@ -169,7 +170,8 @@ Result<ScenarioRequest> scenario_request_from_json(const Json& body, const Scena
     if (r.generator != "llm") c.add("/model", "a model is only used with generator 'llm'");
     r.model = *m;
   }
-  r.duration_s = c.number(body, "", "duration_s", false, 1.0, config.limits.max_duration_s).value_or(std::min(60.0, config.limits.max_duration_s));
+  r.duration_s = c.number(body, "", "duration_s", false, 1.0, config.limits.max_duration_s)
+                     .value_or(std::min(60.0, config.limits.max_duration_s));
   if (auto n = c.integer(body, "", "agents", false, 1, static_cast<std::int64_t>(config.limits.max_agents)))
     r.agents = static_cast<std::size_t>(*n);
   r.title = c.string(body, "", "title", false, 0, 200).value_or("");
@@ -186,8 +188,10 @@ Result<ScenarioRequest> scenario_request_from_json(const Json& body, const Scena
   return r;
 }
 
-Result<ScenarioWorld> world_for_request(const ScenarioRequest& request, const knowledge::KnowledgeBase& knowledge,
-                                        const llm::StructuredGenerator* llm, const std::optional<std::string>& job_id,
+Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
+                                        const knowledge::KnowledgeBase& knowledge,
+                                        const llm::StructuredGenerator* llm,
+                                        const std::optional<std::string>& job_id,
                                         const llm::CancelToken& cancel) {
   Json fp = {{"seed", request.seed}, {"generator", request.generator}};
   if (request.scene_graph)
@@ -221,9 +225,9 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request, const kn
   return ScenarioWorld{std::move(plan->world), resolved->graph.domain, std::move(plan->provenance)};
 }
 
-Result<SimulationOutput> simulate_program(const world::World& world, const Json& program_json, std::uint64_t seed,
-                                          double duration_s, double frame_interval, const ProgressFn& progress,
-                                          const llm::CancelToken& cancel) {
+Result<SimulationOutput> simulate_program(const world::World& world, const Json& program_json,
+                                          std::uint64_t seed, double duration_s, double frame_interval,
+                                          const ProgressFn& progress, const llm::CancelToken& cancel) {
   auto program = crowd::program_from_json(program_json);
   if (!program) return tl::unexpected(program.error());
   crowd::RunnerOptions options;
@@ -264,13 +268,14 @@ Result<SimulationOutput> simulate_program(const world::World& world, const Json&
     const auto* entry = r.environment().velocity_field(g.name);
     if (!entry) continue;
     const auto& f = entry->field;
-    out.velocity_fields.push_back({{"group", g.name},
-                                   {"width", f.width()},
-                                   {"height", f.height()},
-                                   {"bounds", {f.bounds().min.x, f.bounds().min.y, f.bounds().max.x, f.bounds().max.y}},
-                                   {"source", g.field ? "supplied" : "geodesic"},
-                                   {"variation", g.variation},
-                                   {"sha256", hex_of_values(f.values())}});
+    out.velocity_fields.push_back(
+        {{"group", g.name},
+         {"width", f.width()},
+         {"height", f.height()},
+         {"bounds", {f.bounds().min.x, f.bounds().min.y, f.bounds().max.x, f.bounds().max.y}},
+         {"source", g.field ? "supplied" : "geodesic"},
+         {"variation", g.variation},
+         {"sha256", hex_of_values(f.values())}});
   }
   return out;
 }
@@ -281,10 +286,12 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
     if (s.progress) s.progress(f, m);
   };
   if (request.generator == "llm" && !s.llm)
-    return fail(ErrorCode::kValidation, "no LLM endpoint is configured, so only the offline generator is available",
+    return fail(ErrorCode::kValidation,
+                "no LLM endpoint is configured, so only the offline generator is available",
                 {{"/generator", "must be offline on this server", "", 0, 0}});
   if (!world) {
-    report(0.02, "laying out a floor plan from the " + std::string(request.scene_graph ? "scene graph" : "prompt"));
+    report(0.02,
+           "laying out a floor plan from the " + std::string(request.scene_graph ? "scene graph" : "prompt"));
     auto made = world_for_request(request, s.knowledge, s.llm, s.job_id, s.cancel);
     if (!made) return tl::unexpected(made.error());
     world = std::move(*made);
@@ -326,7 +333,8 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
   c.generator.name = request.generator;
   if (request.generator == "llm") {
     const Json llm_prov = generated->provenance.value("llm", Json::object());
-    if (llm_prov.contains("model") && llm_prov["model"].is_string()) c.generator.model = llm_prov["model"].get<std::string>();
+    if (llm_prov.contains("model") && llm_prov["model"].is_string())
+      c.generator.model = llm_prov["model"].get<std::string>();
   }
   c.domain = world->domain.empty() ? std::optional<std::string>() : world->domain;
   std::vector<std::string> tags = request.tags;
@@ -348,12 +356,14 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
                       {"agents", sim->log.agent_count()},
                       {"duration_s", request.duration_s},
                       {"sha256", sha}};
-  c.provenance = {{"program", generated->provenance},
-                  {"world", world->provenance},
-                  {"categories", generated->categories},
-                  {"velocity_fields", sim->velocity_fields},
-                  {"simulation", {{"duration_s", request.duration_s}, {"threads", 1}, {"dt", generated->program.value("dt", 0.05)}}},
-                  {"runtime_errors", sim->runtime_errors}};
+  c.provenance = {
+      {"program", generated->provenance},
+      {"world", world->provenance},
+      {"categories", generated->categories},
+      {"velocity_fields", sim->velocity_fields},
+      {"simulation",
+       {{"duration_s", request.duration_s}, {"threads", 1}, {"dt", generated->program.value("dt", 0.05)}}},
+      {"runtime_errors", sim->runtime_errors}};
   if (request.world_id) c.provenance["world_id"] = *request.world_id;
   out.world_name = world->world.name();
   out.log = std::move(sim->log);

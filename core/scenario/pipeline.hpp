@@ -53,8 +53,10 @@ struct ScenarioWorld {
 
 // The world of a request that carries none: a floor plan from the scene graph or the prompt
 // (offline by default, the LLM when the request's generator is llm and `llm` is set).
-Result<ScenarioWorld> world_for_request(const ScenarioRequest& request, const knowledge::KnowledgeBase& knowledge,
-                                        const llm::StructuredGenerator* llm, const std::optional<std::string>& job_id,
+Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
+                                        const knowledge::KnowledgeBase& knowledge,
+                                        const llm::StructuredGenerator* llm,
+                                        const std::optional<std::string>& job_id,
                                         const llm::CancelToken& cancel);
 
 struct SimulationOutput {
@@ -67,7 +69,8 @@ struct SimulationOutput {
 // Runs a checked program for duration_s (one thread: the card's promise is per build, not per
 // machine's core count) and logs a frame every `frame_interval`. kCancelled when cancelled.
 Result<SimulationOutput> simulate_program(const world::World& world, const Json& program, std::uint64_t seed,
-                                          double duration_s, double frame_interval, const ProgressFn& progress = {},
+                                          double duration_s, double frame_interval,
+                                          const ProgressFn& progress = {},
                                           const llm::CancelToken& cancel = {});
 
 struct ScenarioOutcome {

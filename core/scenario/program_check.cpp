@@ -66,11 +66,13 @@ class Checker {
       ambient += g.size;
     }
     if (spotlight > limits_.max_spotlight)
-      add("/agents", std::to_string(spotlight) + " spotlight agents (each runs its own behaviour tree); the limit is " +
+      add("/agents", std::to_string(spotlight) +
+                         " spotlight agents (each runs its own behaviour tree); the limit is " +
                          std::to_string(limits_.max_spotlight) + " — put crowds in ambient_groups");
     if (spotlight + ambient > limits_.max_agents)
-      add("", std::to_string(spotlight + ambient) + " agents in all (" + std::to_string(spotlight) + " spotlight, " +
-                  std::to_string(ambient) + " ambient); the limit is " + std::to_string(limits_.max_agents));
+      add("", std::to_string(spotlight + ambient) + " agents in all (" + std::to_string(spotlight) +
+                  " spotlight, " + std::to_string(ambient) + " ambient); the limit is " +
+                  std::to_string(limits_.max_agents));
   }
 
   // Region of a program entry; null (with an error) when it names no ROI or zone.
@@ -109,12 +111,14 @@ class Checker {
                                         ? "'" + std::get<std::string>(a.spawn->where) + "'"
                                         : std::string("the spawn polygon");
           if (a.count > most)
-            add(a.pointer + "/count", std::to_string(a.count) + " agents do not fit in " + where + " (" +
-                                          std::to_string(static_cast<long>(std::lround(std::abs(geometry::area(*poly))))) +
-                                          " m², room for at most " + std::to_string(most) + ")");
+            add(a.pointer + "/count",
+                std::to_string(a.count) + " agents do not fit in " + where + " (" +
+                    std::to_string(static_cast<long>(std::lround(std::abs(geometry::area(*poly))))) +
+                    " m², room for at most " + std::to_string(most) + ")");
         }
       } else if (a.position && world_.zone_at({a.position->x, a.position->y}) == std::nullopt) {
-        add(a.pointer + "/position", "[" + std::to_string(a.position->x) + ", " + std::to_string(a.position->y) +
+        add(a.pointer + "/position", "[" + std::to_string(a.position->x) + ", " +
+                                         std::to_string(a.position->y) +
                                          "] is outside every zone of the world");
       }
       for (const crowd::ProgramPoint& g : a.goals) point(g, env);
@@ -133,7 +137,8 @@ class Checker {
       }
       for (const crowd::ProgramRegion& r : g.goal) (void)region(r, env);
       if (all && g.size > most)
-        add(g.pointer + "/size", std::to_string(g.size) + " agents do not fit in the start regions (room for at most " +
+        add(g.pointer + "/size", std::to_string(g.size) +
+                                     " agents do not fit in the start regions (room for at most " +
                                      std::to_string(most) + ")");
     }
     if (p.robot) {
@@ -155,7 +160,8 @@ class Checker {
         return;
       }
       if (!t.file.empty()) {
-        add(t.pointer + "/file", "tree files cannot be checked against the world here; give the XML inline ('xml')");
+        add(t.pointer + "/file",
+            "tree files cannot be checked against the world here; give the XML inline ('xml')");
         return;
       }
       auto doc = crowd::BtDocument::parse(t.xml, registry, load);
@@ -164,7 +170,8 @@ class Checker {
         return;
       }
       if (!t.tree.empty() && doc->tree(t.tree) == nullptr)
-        add(t.pointer + "/tree", "no BehaviorTree with ID '" + t.tree + "' in the document (IDs: " + names(doc->tree_ids()) + ")");
+        add(t.pointer + "/tree",
+            "no BehaviorTree with ID '" + t.tree + "' in the document (IDs: " + names(doc->tree_ids()) + ")");
     };
     for (const auto& [name, t] : p.behavior_trees) check(t);
     for (const crowd::ProgramAgent& a : p.agents)

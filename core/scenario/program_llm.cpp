@@ -23,9 +23,12 @@ const JsonSchema& answer_schema() {
     auto it = files.find("scenario_program.schema.json");
     if (it == files.end()) throw std::logic_error("scenario_program.schema.json is not embedded");
     auto parsed = parse_json_untrusted(it->second);
-    if (!parsed) throw std::logic_error("embedded scenario_program.schema.json is not JSON: " + parsed.error().message());
+    if (!parsed)
+      throw std::logic_error("embedded scenario_program.schema.json is not JSON: " +
+                             parsed.error().message());
     auto compiled = JsonSchema::compile(std::move(*parsed));
-    if (!compiled) throw std::logic_error("embedded scenario_program.schema.json: " + compiled.error().message());
+    if (!compiled)
+      throw std::logic_error("embedded scenario_program.schema.json: " + compiled.error().message());
     return std::move(*compiled);
   }();
   return schema;
@@ -49,8 +52,8 @@ std::string node_line(const knowledge::BehaviorNode& n) {
     ports += p.name + ":" + p.type;
     if (p.default_value) ports += "=" + *p.default_value;
   }
-  std::string line = "- " + n.name + " (" + std::string(knowledge::to_string(n.kind)) + "; ports: " +
-                     (ports.empty() ? "none" : ports) + "): " + n.description;
+  std::string line = "- " + n.name + " (" + std::string(knowledge::to_string(n.kind)) +
+                     "; ports: " + (ports.empty() ? "none" : ports) + "): " + n.description;
   if (!n.when_to_use.empty()) line += " When to use: " + n.when_to_use;
   if (!n.example.empty()) line += " Example: " + n.example;
   return line;
@@ -94,8 +97,8 @@ std::string world_places_text(const world::World& world) {
   for (const auto& z : world.zones())
     out << "zone " << z.name << " (" << z.type << ", " << fixed1(geometry::area(z.polygon)) << " m2)\n";
   for (const auto& d : world.doors()) {
-    out << "door " << d.name << " (" << fixed1(d.width) << " m wide) between " << world.zone(d.zone).name << " and "
-        << (d.other ? world.zone(*d.other).name : std::string("outside")) << "\n";
+    out << "door " << d.name << " (" << fixed1(d.width) << " m wide) between " << world.zone(d.zone).name
+        << " and " << (d.other ? world.zone(*d.other).name : std::string("outside")) << "\n";
   }
   for (const auto& r : world.rois())
     out << "ROI " << r.name << " (" << r.kind << ", " << fixed1(geometry::area(r.polygon)) << " m2)\n";
@@ -144,26 +147,32 @@ Json program_from_answer(const Json& answer, const ProgramRequest& request) {
     if (role.empty() || is_builtin_role(role) || roles.contains(role)) return;
     Json r = Json::object();
     if (auto p = role_profile(role))
-      r = {{"speed", {{"mean", p->mean}, {"sd", p->sd}, {"min", p->min}, {"max", p->max}}}, {"radius", p->radius}};
+      r = {{"speed", {{"mean", p->mean}, {"sd", p->sd}, {"min", p->min}, {"max", p->max}}},
+           {"radius", p->radius}};
     roles[role] = std::move(r);
   };
   for (const auto& a : agents) define(a);
   for (const auto& g : groups) define(g);
   std::string name = request.prompt.substr(0, 200);
-  return Json{{"version", 1},         {"name", name},        {"dt", 0.05},
-              {"decision_period", 0.1}, {"roles", std::move(roles)}, {"agents", std::move(agents)},
+  return Json{{"version", 1},
+              {"name", name},
+              {"dt", 0.05},
+              {"decision_period", 0.1},
+              {"roles", std::move(roles)},
+              {"agents", std::move(agents)},
               {"ambient_groups", std::move(groups)}};
 }
 
-Result<Json> checked_program_from_answer(const Json& answer, const world::World& world, const ProgramRequest& request,
-                                         const ScenarioLimits& limits) {
+Result<Json> checked_program_from_answer(const Json& answer, const world::World& world,
+                                         const ProgramRequest& request, const ScenarioLimits& limits) {
   // Unique ids, so that errors and trajectories name agents unambiguously.
   std::vector<FieldError> errors;
   std::set<std::string> ids;
   const Json agents = answer.value("spotlight_agents", Json::array());
   for (std::size_t i = 0; i < agents.size(); ++i)
     if (!ids.insert(agents[i].value("id", "")).second)
-      errors.push_back({"/spotlight_agents/" + std::to_string(i) + "/id", "id is used by another agent", "", 0, 0});
+      errors.push_back(
+          {"/spotlight_agents/" + std::to_string(i) + "/id", "id is used by another agent", "", 0, 0});
   Json program = program_from_answer(answer, request);
   if (auto s = check_program(program, world, limits); !s) {
     for (auto e : s.error().errors) {
@@ -177,9 +186,11 @@ Result<Json> checked_program_from_answer(const Json& answer, const world::World&
   return program;
 }
 
-Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& generator, const world::World& world,
-                                              const knowledge::KnowledgeBase& knowledge, const ProgramRequest& request,
-                                              const ScenarioLimits& limits, const LlmProgramOptions& options) {
+Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& generator,
+                                              const world::World& world,
+                                              const knowledge::KnowledgeBase& knowledge,
+                                              const ProgramRequest& request, const ScenarioLimits& limits,
+                                              const LlmProgramOptions& options) {
   auto hits = knowledge.search(request.prompt, knowledge::Kind::kBehaviorNode, options.retrieved_nodes);
   if (!hits) return tl::unexpected(hits.error());
   std::vector<knowledge::BehaviorNode> nodes;
@@ -200,11 +211,13 @@ Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& ge
   std::string node_text;
   for (const auto& n : nodes) node_text += node_line(n) + "\n";
 
-  const std::size_t max_agents = request.agents ? std::min(*request.agents, limits.max_agents) : limits.max_agents;
+  const std::size_t max_agents =
+      request.agents ? std::min(*request.agents, limits.max_agents) : limits.max_agents;
   const std::string limits_text = "at most " + std::to_string(max_agents) +
                                   " people in total (spotlight counts plus ambient group sizes), at most " +
-                                  std::to_string(limits.max_spotlight) + " spotlight agents; the scenario runs for " +
-                                  fixed1(request.duration_s) + " s";
+                                  std::to_string(limits.max_spotlight) +
+                                  " spotlight agents; the scenario runs for " + fixed1(request.duration_s) +
+                                  " s";
 
   llm::GenerationRequest r;
   r.artifact = "scenario_program";

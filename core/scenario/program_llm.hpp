@@ -30,14 +30,16 @@ std::string world_places_text(const world::World& world);
 Json program_from_answer(const Json& answer, const ProgramRequest& request);
 
 // Compiles and checks an answer; errors point into the answer (/spotlight_agents/2/spawn_roi …).
-Result<Json> checked_program_from_answer(const Json& answer, const world::World& world, const ProgramRequest& request,
-                                         const ScenarioLimits& limits);
+Result<Json> checked_program_from_answer(const Json& answer, const world::World& world,
+                                         const ProgramRequest& request, const ScenarioLimits& limits);
 
 // kUpstream / kUpstreamTimeout naming the endpoint's failure; kValidation when the last answer
 // still failed (errors[] point into it). The result's provenance holds the LLM calls and the
 // retrieved nodes.
-Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& generator, const world::World& world,
-                                              const knowledge::KnowledgeBase& knowledge, const ProgramRequest& request,
-                                              const ScenarioLimits& limits, const LlmProgramOptions& options = {});
+Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& generator,
+                                              const world::World& world,
+                                              const knowledge::KnowledgeBase& knowledge,
+                                              const ProgramRequest& request, const ScenarioLimits& limits,
+                                              const LlmProgramOptions& options = {});
 
 }  // namespace socsim::scenario

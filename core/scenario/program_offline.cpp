@@ -18,20 +18,28 @@ std::vector<std::pair<std::string, double>> default_roles(const std::string& dom
   if (domain == "hospital") {
     switch (c) {
       case C::kQueuing:
-      case C::kReception: return {{"patient", 0.6}, {"visitor", 0.4}};
-      case C::kCoffeeBreak: return {{"nurse", 0.5}, {"doctor", 0.25}, {"staff", 0.25}};
-      case C::kEmergency: return {{"patient", 0.35}, {"visitor", 0.35}, {"nurse", 0.3}};
-      case C::kNormalOperation: return {{"nurse", 0.3}, {"doctor", 0.1}, {"patient", 0.3}, {"visitor", 0.3}};
-      default: return {{"visitor", 1.0}};
+      case C::kReception:
+        return {{"patient", 0.6}, {"visitor", 0.4}};
+      case C::kCoffeeBreak:
+        return {{"nurse", 0.5}, {"doctor", 0.25}, {"staff", 0.25}};
+      case C::kEmergency:
+        return {{"patient", 0.35}, {"visitor", 0.35}, {"nurse", 0.3}};
+      case C::kNormalOperation:
+        return {{"nurse", 0.3}, {"doctor", 0.1}, {"patient", 0.3}, {"visitor", 0.3}};
+      default:
+        return {{"visitor", 1.0}};
     }
   }
   if (domain == "office") {
     switch (c) {
       case C::kQueuing:
-      case C::kReception: return {{"visitor", 1.0}};
+      case C::kReception:
+        return {{"visitor", 1.0}};
       case C::kEmergency:
-      case C::kNormalOperation: return {{"worker", 0.8}, {"visitor", 0.2}};
-      default: return {{"worker", 1.0}};
+      case C::kNormalOperation:
+        return {{"worker", 0.8}, {"visitor", 0.2}};
+      default:
+        return {{"worker", 1.0}};
     }
   }
   if (domain == "residential") {
@@ -77,7 +85,8 @@ std::string trimmed(std::string_view s) {
 Json role_json(const std::string& role) {
   const auto p = role_profile(role);
   if (!p) return Json::object();
-  return Json{{"speed", {{"mean", p->mean}, {"sd", p->sd}, {"min", p->min}, {"max", p->max}}}, {"radius", p->radius}};
+  return Json{{"speed", {{"mean", p->mean}, {"sd", p->sd}, {"min", p->min}, {"max", p->max}}},
+              {"radius", p->radius}};
 }
 
 }  // namespace
@@ -98,7 +107,8 @@ const PlaceMention* Activity::unresolved() const {
 
 // --- Draft ---------------------------------------------------------------------------------------
 
-Draft::Draft(WorldProbe& p, NodeCatalogue& n, const Intent& i, const ProgramRequest& r, const ScenarioLimits& l)
+Draft::Draft(WorldProbe& p, NodeCatalogue& n, const Intent& i, const ProgramRequest& r,
+             const ScenarioLimits& l)
     : probe(p), nodes(n), intent(i), request(r), limits(l) {}
 
 std::vector<People> Draft::people(const Activity& a, std::size_t default_total, Rng& rng) const {
@@ -130,7 +140,8 @@ std::vector<People> Draft::people(const Activity& a, std::size_t default_total, 
   const auto counts = apportion(default_total, weights);
   for (std::size_t k = 0; k < roles.size(); ++k)
     if (counts[k] > 0)
-      out.push_back(People{roles[k].first, counts[k], crowd, crowd ? intent.crowd_phrase : std::string("default")});
+      out.push_back(
+          People{roles[k].first, counts[k], crowd, crowd ? intent.crowd_phrase : std::string("default")});
   return out;
 }
 
@@ -148,7 +159,8 @@ std::size_t Draft::room_left(const std::string& region) const {
   return cap > used ? cap - used : 0;
 }
 
-std::vector<std::pair<std::string, std::size_t>> Draft::spread(const std::vector<std::string>& regions, std::size_t n) {
+std::vector<std::pair<std::string, std::size_t>> Draft::spread(const std::vector<std::string>& regions,
+                                                               std::size_t n) {
   std::vector<std::pair<std::string, std::size_t>> out;
   std::set<std::string> seen;
   for (const std::string& r : regions) {
@@ -166,7 +178,8 @@ std::vector<std::pair<std::string, std::size_t>> Draft::spread(const std::vector
 Result<std::string> Draft::add_tree(Category category, const std::string& base,
                                     const std::function<void(TreeXml&)>& body) {
   std::string name = base;
-  for (int k = 2; std::any_of(trees_.begin(), trees_.end(), [&](const auto& t) { return t.first == name; }); ++k)
+  for (int k = 2; std::any_of(trees_.begin(), trees_.end(), [&](const auto& t) { return t.first == name; });
+       ++k)
     name = base + "_" + std::to_string(k);
   TreeXml t(nodes, category, name);
   if (alarm_s && category != Category::kEmergency) {
@@ -190,11 +203,12 @@ Result<std::string> Draft::add_tree(Category category, const std::string& base,
   return name;
 }
 
-void Draft::add_agents(const std::string& name, const People& who, const std::string& spawn, std::size_t count,
-                       const std::string& tree, std::int64_t group, Category category) {
+void Draft::add_agents(const std::string& name, const People& who, const std::string& spawn,
+                       std::size_t count, const std::string& tree, std::int64_t group, Category category) {
   if (count == 0) return;
-  Json j{{"name", name}, {"role", who.role}, {"spawn", spawn}, {"count", count}, {"behavior", tree},
-         {"tags", Json::array({std::string(to_string(category)), "spotlight"})}};
+  Json j{{"name", name},     {"role", who.role},
+         {"spawn", spawn},   {"count", count},
+         {"behavior", tree}, {"tags", Json::array({std::string(to_string(category)), "spotlight"})}};
   if (group >= 0) j["group_id"] = group;
   agents_.push_back(Entry{std::move(j), count, who.explicit_count, false});
   if (std::find(roles_.begin(), roles_.end(), who.role) == roles_.end()) roles_.push_back(who.role);
@@ -203,8 +217,11 @@ void Draft::add_agents(const std::string& name, const People& who, const std::st
 void Draft::add_agent_at(const std::string& name, const std::string& role, crowd::Vec2 position,
                          const std::string& tree, Category category) {
   auto mm = [](double v) { return std::round(v * 1000.0) / 1000.0; };
-  Json j{{"name", name}, {"role", role}, {"position", Json::array({mm(position.x), mm(position.y)})},
-         {"behavior", tree}, {"tags", Json::array({std::string(to_string(category)), "spotlight"})}};
+  Json j{{"name", name},
+         {"role", role},
+         {"position", Json::array({mm(position.x), mm(position.y)})},
+         {"behavior", tree},
+         {"tags", Json::array({std::string(to_string(category)), "spotlight"})}};
   agents_.push_back(Entry{std::move(j), 1, false, true});
   if (std::find(roles_.begin(), roles_.end(), role) == roles_.end()) roles_.push_back(role);
 }
@@ -212,15 +229,16 @@ void Draft::add_agent_at(const std::string& name, const std::string& role, crowd
 Status Draft::add_ambient(Category category, Ambient group) {
   if (group.size == 0) return {};
   std::string name = group.name;
-  for (int k = 2; std::any_of(ambient_.begin(), ambient_.end(), [&](const AmbientEntry& a) { return a.group.name == name; });
+  for (int k = 2; std::any_of(ambient_.begin(), ambient_.end(),
+                              [&](const AmbientEntry& a) { return a.group.name == name; });
        ++k)
     name = group.name + "_" + std::to_string(k);
   group.name = name;
   std::size_t cap = 0;
   for (const std::string& s : group.start) cap += room_left(s);
   if (group.size > cap) {
-    note("ambient group '" + name + "': " + std::to_string(group.size) + " people do not fit in its start regions; " +
-         std::to_string(cap) + " placed");
+    note("ambient group '" + name + "': " + std::to_string(group.size) +
+         " people do not fit in its start regions; " + std::to_string(cap) + " placed");
     group.size = cap;
   }
   if (group.size == 0) return {};
@@ -235,12 +253,14 @@ Status Draft::add_ambient(Category category, Ambient group) {
       t.leaf("TimeExpired", {{"seconds", format_number(*alarm_s)}, {"ts", "{dt}"}, {"only_once", "true"}});
       t.leaf("Evacuate", {{"agent_id", "{id}"}, {"speed_factor", "1.3"}});
       t.close();
-      t.leaf("FollowVelocityField", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"field", name}, {"tolerance", "0.5"}});
+      t.leaf("FollowVelocityField",
+             {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"field", name}, {"tolerance", "0.5"}});
       t.close();
     } else {
       t.open("Sequence");
       t.leaf("TimeExpired", {{"seconds", format_number(*delay)}, {"ts", "{dt}"}, {"only_once", "true"}});
-      t.leaf("FollowVelocityField", {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"field", name}, {"tolerance", "0.5"}});
+      t.leaf("FollowVelocityField",
+             {{"agent_id", "{id}"}, {"time_step", "{dt}"}, {"field", name}, {"tolerance", "0.5"}});
       t.close();
     }
     auto xml = t.finish();
@@ -263,8 +283,8 @@ Status Draft::add_ambient(Category category, Ambient group) {
 
 void Draft::place_used(Category category, const std::string& purpose, const std::string& name,
                        const std::string& why) {
-  places_.push_back(Json{{"category", std::string(to_string(category))}, {"purpose", purpose}, {"place", name},
-                         {"why", why}});
+  places_.push_back(Json{
+      {"category", std::string(to_string(category))}, {"purpose", purpose}, {"place", name}, {"why", why}});
 }
 
 std::size_t Draft::total() const {
@@ -285,13 +305,15 @@ void Draft::fit(std::size_t bound) {
     if (spare == 0 || excess == 0) return;
     const std::size_t cut = std::min(spare, excess);
     std::vector<double> weights;
-    for (std::size_t* s : sizes) weights.push_back(static_cast<double>(*s > floor_each ? *s - floor_each : 0));
+    for (std::size_t* s : sizes)
+      weights.push_back(static_cast<double>(*s > floor_each ? *s - floor_each : 0));
     const auto cuts = apportion(cut, weights);
     for (std::size_t k = 0; k < sizes.size(); ++k) *sizes[k] -= cuts[k];
     excess -= cut;
   };
   std::vector<std::size_t*> ambient_default, ambient_explicit, spot_default, spot_explicit;
-  for (AmbientEntry& a : ambient_) (a.group.explicit_count ? ambient_explicit : ambient_default).push_back(&a.group.size);
+  for (AmbientEntry& a : ambient_)
+    (a.group.explicit_count ? ambient_explicit : ambient_default).push_back(&a.group.size);
   for (Entry& e : agents_)
     if (!e.positioned) (e.explicit_count ? spot_explicit : spot_default).push_back(&e.count);
   reduce(ambient_default, 0);
@@ -299,7 +321,8 @@ void Draft::fit(std::size_t bound) {
   reduce(ambient_explicit, 0);
   reduce(spot_explicit, 1);
   for (Entry& e : agents_) e.json["count"] = e.count;
-  ambient_.erase(std::remove_if(ambient_.begin(), ambient_.end(), [](const AmbientEntry& a) { return a.group.size == 0; }),
+  ambient_.erase(std::remove_if(ambient_.begin(), ambient_.end(),
+                                [](const AmbientEntry& a) { return a.group.size == 0; }),
                  ambient_.end());
   while (excess > 0 && !agents_.empty()) {  // more entries than the bound: the last ones go
     excess -= std::min(excess, agents_.back().count);
@@ -321,22 +344,35 @@ Json Draft::program(const std::string& name) const {
   for (const Entry& e : agents_) agents.push_back(e.json);
   Json ambient = Json::array();
   for (const AmbientEntry& a : ambient_) {
-    Json g{{"name", a.group.name},       {"description", a.group.description}, {"start", a.group.start},
-           {"goal", a.group.goal},       {"size", a.group.size},               {"speed", a.group.speed},
-           {"role", a.group.role},       {"resolution", 64},                   {"variation", a.group.variation},
-           {"tolerance", 0.5},           {"on_arrival", a.group.exit_at_goal ? "exit" : "stand"}};
+    Json g{{"name", a.group.name},
+           {"description", a.group.description},
+           {"start", a.group.start},
+           {"goal", a.group.goal},
+           {"size", a.group.size},
+           {"speed", a.group.speed},
+           {"role", a.group.role},
+           {"resolution", 64},
+           {"variation", a.group.variation},
+           {"tolerance", 0.5},
+           {"on_arrival", a.group.exit_at_goal ? "exit" : "stand"}};
     if (!a.tree.empty()) g["behavior"] = a.tree;
     ambient.push_back(std::move(g));
   }
-  return Json{{"version", 1},          {"name", name},     {"dt", 0.05},         {"decision_period", 0.1},
-              {"roles", roles},        {"behavior_trees", trees}, {"agents", agents}, {"ambient_groups", ambient}};
+  return Json{{"version", 1},     {"name", name},
+              {"dt", 0.05},       {"decision_period", 0.1},
+              {"roles", roles},   {"behavior_trees", trees},
+              {"agents", agents}, {"ambient_groups", ambient}};
 }
 
 Json Draft::provenance() const {
   Json ambient = Json::array();
   for (const AmbientEntry& a : ambient_)
-    ambient.push_back(Json{{"name", a.group.name}, {"description", a.group.description}, {"size", a.group.size},
-                           {"role", a.group.role}, {"start", a.group.start}, {"goal", a.group.goal}});
+    ambient.push_back(Json{{"name", a.group.name},
+                           {"description", a.group.description},
+                           {"size", a.group.size},
+                           {"role", a.group.role},
+                           {"start", a.group.start},
+                           {"goal", a.group.goal}});
   std::size_t spotlight = 0;
   for (const Entry& e : agents_) spotlight += e.count;
   return Json{{"places_used", places_},
@@ -381,12 +417,15 @@ std::vector<Activity> plan_activities(const Intent& intent, const world::World& 
     // An emergency said alongside another activity in one clause ("patients queue when the fire
     // alarm sounds") is the alarm of that activity (applied to every tree), not a second crowd.
     const CategoryScore* pick = &c.categories.front();
-    if (pick->category == Category::kEmergency && c.categories.size() > 1 && c.categories[1].score >= kAlarmWeight)
+    if (pick->category == Category::kEmergency && c.categories.size() > 1 &&
+        c.categories[1].score >= kAlarmWeight)
       pick = &c.categories[1];
     const CategoryScore& top = *pick;
     // A clause that repeats an activity without adding people or places joins it.
-    auto same = std::find_if(out.begin(), out.end(), [&](const Activity& a) { return a.category == top.category; });
-    if (same != out.end() && (c.roles.empty() || same->roles.empty()) && (places.empty() || same->places.empty())) {
+    auto same =
+        std::find_if(out.begin(), out.end(), [&](const Activity& a) { return a.category == top.category; });
+    if (same != out.end() && (c.roles.empty() || same->roles.empty()) &&
+        (places.empty() || same->places.empty())) {
       same->clauses.push_back(c.index);
       same->score += top.score;
       same->roles.insert(same->roles.end(), c.roles.begin(), c.roles.end());
@@ -423,8 +462,10 @@ std::vector<Activity> plan_activities(const Intent& intent, const world::World& 
   }
   if (intent.crowd_size) {
     for (Activity& a : out)
-      if (std::find(a.clauses.begin(), a.clauses.end(), intent.crowd_clause) != a.clauses.end()) a.crowd = intent.crowd_size;
-    if (std::none_of(out.begin(), out.end(), [](const Activity& a) { return a.crowd.has_value(); })) out.front().crowd = intent.crowd_size;
+      if (std::find(a.clauses.begin(), a.clauses.end(), intent.crowd_clause) != a.clauses.end())
+        a.crowd = intent.crowd_size;
+    if (std::none_of(out.begin(), out.end(), [](const Activity& a) { return a.crowd.has_value(); }))
+      out.front().crowd = intent.crowd_size;
   }
   // Emergencies first: their alarm shapes every other tree; then by weight.
   std::stable_sort(out.begin(), out.end(), [](const Activity& x, const Activity& y) {
@@ -437,31 +478,49 @@ std::vector<Activity> plan_activities(const Intent& intent, const world::World& 
 
 Status run_planner(Draft& d, const Activity& a, Rng& rng) {
   switch (a.category) {
-    case Category::kEmergency: return plan_emergency(d, a, rng);
-    case Category::kQueuing: return plan_queuing(d, a, rng);
-    case Category::kSocialParty: return plan_social_party(d, a, rng);
-    case Category::kCoffeeBreak: return plan_coffee_break(d, a, rng);
-    case Category::kReception: return plan_reception(d, a, rng);
-    case Category::kBottleneck: return plan_bottleneck(d, a, rng);
-    case Category::kNormalOperation: return plan_normal_operation(d, a, rng);
+    case Category::kEmergency:
+      return plan_emergency(d, a, rng);
+    case Category::kQueuing:
+      return plan_queuing(d, a, rng);
+    case Category::kSocialParty:
+      return plan_social_party(d, a, rng);
+    case Category::kCoffeeBreak:
+      return plan_coffee_break(d, a, rng);
+    case Category::kReception:
+      return plan_reception(d, a, rng);
+    case Category::kBottleneck:
+      return plan_bottleneck(d, a, rng);
+    case Category::kNormalOperation:
+      return plan_normal_operation(d, a, rng);
   }
   return {};
 }
 
 }  // namespace
 
-Result<GeneratedProgram> generate_program_offline(const world::World& world, const knowledge::KnowledgeBase& knowledge,
-                                                  const ProgramRequest& request, const ScenarioLimits& limits) {
+Result<GeneratedProgram> generate_program_offline(const world::World& world,
+                                                  const knowledge::KnowledgeBase& knowledge,
+                                                  const ProgramRequest& request,
+                                                  const ScenarioLimits& limits) {
   std::vector<FieldError> errors;
   const std::string prompt = trimmed(request.prompt);
-  if (prompt.empty()) return fail(ErrorCode::kBadRequest, "the prompt is empty", {FieldError{"/prompt", "must not be empty", {}, 0, 0}});
+  if (prompt.empty())
+    return fail(ErrorCode::kBadRequest, "the prompt is empty",
+                {FieldError{"/prompt", "must not be empty", {}, 0, 0}});
   if (!(request.duration_s > 0.0) || request.duration_s > limits.max_duration_s)
-    errors.push_back(FieldError{"/duration_s",
-                                "must be more than 0 and at most " + format_number(limits.max_duration_s) + " s", {}, 0, 0});
+    errors.push_back(
+        FieldError{"/duration_s",
+                   "must be more than 0 and at most " + format_number(limits.max_duration_s) + " s",
+                   {},
+                   0,
+                   0});
   if (request.agents && (*request.agents == 0 || *request.agents > limits.max_agents))
-    errors.push_back(FieldError{"/agents", "must be between 1 and " + std::to_string(limits.max_agents), {}, 0, 0});
-  if (world.zones().empty()) errors.push_back(FieldError{"/world", "the world has no zones to place people in", {}, 0, 0});
-  if (!errors.empty()) return fail(ErrorCode::kValidation, errors.front().pointer + ": " + errors.front().message, errors);
+    errors.push_back(
+        FieldError{"/agents", "must be between 1 and " + std::to_string(limits.max_agents), {}, 0, 0});
+  if (world.zones().empty())
+    errors.push_back(FieldError{"/world", "the world has no zones to place people in", {}, 0, 0});
+  if (!errors.empty())
+    return fail(ErrorCode::kValidation, errors.front().pointer + ": " + errors.front().message, errors);
 
   const Intent intent = parse_intent(prompt);
   WorldProbe probe(world);
@@ -473,18 +532,20 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world, con
   Draft draft(probe, *catalogue, intent, request, limits);
   Rng rng(request.seed);
   Rng timing = rng.fork("timing");
-  const bool emergency_activity =
-      std::any_of(activities.begin(), activities.end(), [](const Activity& a) { return a.category == Category::kEmergency; });
-  const bool emergency_words = std::any_of(intent.categories.begin(), intent.categories.end(), [](const CategoryScore& c) {
-    return c.category == Category::kEmergency && c.score >= kAlarmWeight;
+  const bool emergency_activity = std::any_of(activities.begin(), activities.end(), [](const Activity& a) {
+    return a.category == Category::kEmergency;
   });
+  const bool emergency_words = std::any_of(
+      intent.categories.begin(), intent.categories.end(),
+      [](const CategoryScore& c) { return c.category == Category::kEmergency && c.score >= kAlarmWeight; });
   if (emergency_activity || emergency_words) {
     // The alarm: when the prompt says, else a few seconds in (seeded) so the scene starts calm.
     draft.alarm_s = intent.timing.start_after_s.value_or(std::round(timing.uniform(3.0, 8.0) * 10.0) / 10.0);
     draft.alarm_s = std::min(*draft.alarm_s, std::max(0.0, request.duration_s - 1.0));
     if (!emergency_activity)
-      draft.note("emergency words ('" + std::string(to_string(Category::kEmergency)) + "') apply to everyone: the alarm sounds at " +
-                 format_number(*draft.alarm_s) + " s and every agent evacuates");
+      draft.note("emergency words ('" + std::string(to_string(Category::kEmergency)) +
+                 "') apply to everyone: the alarm sounds at " + format_number(*draft.alarm_s) +
+                 " s and every agent evacuates");
   } else if (intent.timing.start_after_s) {
     draft.start_s = std::min(*intent.timing.start_after_s, std::max(0.0, request.duration_s - 1.0));
   }
@@ -502,7 +563,8 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world, con
     if (std::find(categories.begin(), categories.end(), name) == categories.end()) categories.push_back(name);
   }
   if (emergency_words && !emergency_activity) {
-    if (auto ok = catalogue->retrieve(knowledge, Category::kEmergency); !ok) return tl::unexpected(ok.error());
+    if (auto ok = catalogue->retrieve(knowledge, Category::kEmergency); !ok)
+      return tl::unexpected(ok.error());
     categories.push_back(std::string(to_string(Category::kEmergency)));
   }
   const std::size_t bound = std::min(limits.max_agents, request.agents.value_or(limits.max_agents));
@@ -520,7 +582,9 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world, con
   for (const Activity& a : activities) {
     Json roles = Json::array();
     for (const RoleMention& r : a.roles) roles.push_back(r.phrase);
-    activity_log.push_back(Json{{"category", std::string(to_string(a.category))}, {"score", a.score}, {"clauses", a.clauses},
+    activity_log.push_back(Json{{"category", std::string(to_string(a.category))},
+                                {"score", a.score},
+                                {"clauses", a.clauses},
                                 {"roles", roles}});
   }
   Json provenance = draft.provenance();

@@ -39,7 +39,9 @@ struct GeneratedProgram {
 // empty prompt (/prompt), kValidation for a duration or agent bound outside the limits
 // (/duration_s, /agents), for a world without any zone (/world), and when the knowledge store lacks
 // a behaviour node a category needs. The result passes check_program().
-Result<GeneratedProgram> generate_program_offline(const world::World& world, const knowledge::KnowledgeBase& knowledge,
-                                                  const ProgramRequest& request, const ScenarioLimits& limits);
+Result<GeneratedProgram> generate_program_offline(const world::World& world,
+                                                  const knowledge::KnowledgeBase& knowledge,
+                                                  const ProgramRequest& request,
+                                                  const ScenarioLimits& limits);
 
 }  // namespace socsim::scenario

@@ -13,7 +13,8 @@
 
 namespace socsim::scenario {
 
-static_assert(std::endian::native == std::endian::little, "the log byte format is written little-endian as is");
+static_assert(std::endian::native == std::endian::little,
+              "the log byte format is written little-endian as is");
 
 namespace {
 
@@ -126,10 +127,12 @@ Result<TrajectoryLog> TrajectoryLog::from_compressed(std::string_view bytes, std
                                   0));
   std::string raw(static_cast<std::size_t>(raw_size), '\0');
   uLongf out_size = static_cast<uLongf>(raw_size);
-  const int rc = uncompress(reinterpret_cast<Bytef*>(raw.data()), &out_size,
-                            reinterpret_cast<const Bytef*>(bytes.data() + 8), static_cast<uLong>(bytes.size() - 8));
+  const int rc =
+      uncompress(reinterpret_cast<Bytef*>(raw.data()), &out_size,
+                 reinterpret_cast<const Bytef*>(bytes.data() + 8), static_cast<uLong>(bytes.size() - 8));
   if (rc != Z_OK || out_size != raw_size)
-    return tl::unexpected(corrupt("zlib stream does not inflate to the declared size (zlib " + std::to_string(rc) + ")", 8));
+    return tl::unexpected(
+        corrupt("zlib stream does not inflate to the declared size (zlib " + std::to_string(rc) + ")", 8));
   return from_encoded(raw);
 }
 
@@ -148,13 +151,15 @@ Result<TrajectoryLog> TrajectoryLog::from_encoded(std::string_view bytes) {
   for (std::uint32_t i = 0; i < roles; ++i) {
     std::uint16_t n = 0;
     std::string role;
-    if (!r.get(n) || n > kMaxRoleBytes || !r.get_text(n, role)) return tl::unexpected(corrupt("bad role name", r.position()));
+    if (!r.get(n) || n > kMaxRoleBytes || !r.get_text(n, role))
+      return tl::unexpected(corrupt("bad role name", r.position()));
     log.roles_.push_back(std::move(role));
   }
   std::uint32_t frames = 0;
   if (!r.get(frames)) return tl::unexpected(corrupt("missing frame count", r.position()));
   // Each frame takes at least 12 bytes: a count larger than the rest of the input is a lie.
-  if (frames > r.remaining() / 12) return tl::unexpected(corrupt("frame count exceeds the data", r.position()));
+  if (frames > r.remaining() / 12)
+    return tl::unexpected(corrupt("frame count exceeds the data", r.position()));
   log.times_.reserve(frames);
   log.offsets_.reserve(frames + 1u);
   constexpr std::size_t kBytesPerAgent = 4 + 5 * 4 + 1 + 2 + 4;
@@ -165,7 +170,8 @@ Result<TrajectoryLog> TrajectoryLog::from_encoded(std::string_view bytes) {
     if (!r.get(t) || !std::isfinite(t) || (f > 0 && t < log.times_.back()))
       return tl::unexpected(corrupt("frame " + std::to_string(f) + " has a bad time", r.position()));
     if (!r.get(n) || n > r.remaining() / kBytesPerAgent)
-      return tl::unexpected(corrupt("frame " + std::to_string(f) + " agent count exceeds the data", r.position()));
+      return tl::unexpected(
+          corrupt("frame " + std::to_string(f) + " agent count exceeds the data", r.position()));
     const std::size_t base = log.agents_.size();
     log.agents_.resize(base + n);
     auto column = [&](auto member, auto check) -> bool {
@@ -177,8 +183,9 @@ Result<TrajectoryLog> TrajectoryLog::from_encoded(std::string_view bytes) {
     };
     auto any = [](auto) { return true; };
     auto finite = [](float v) { return std::isfinite(v); };
-    bool ok = column(&LoggedAgent::id, any) && column(&LoggedAgent::x, finite) && column(&LoggedAgent::y, finite) &&
-              column(&LoggedAgent::yaw, finite) && column(&LoggedAgent::vx, finite) && column(&LoggedAgent::vy, finite);
+    bool ok = column(&LoggedAgent::id, any) && column(&LoggedAgent::x, finite) &&
+              column(&LoggedAgent::y, finite) && column(&LoggedAgent::yaw, finite) &&
+              column(&LoggedAgent::vx, finite) && column(&LoggedAgent::vy, finite);
     if (ok) {
       for (std::uint32_t k = 0; k < n && ok; ++k) {
         std::uint8_t a = 0;
@@ -188,10 +195,12 @@ Result<TrajectoryLog> TrajectoryLog::from_encoded(std::string_view bytes) {
     }
     ok = ok && column(&LoggedAgent::role, [&](std::uint16_t v) { return v < log.roles_.size(); }) &&
          column(&LoggedAgent::group_id, any);
-    if (!ok) return tl::unexpected(corrupt("frame " + std::to_string(f) + " has a bad agent column", r.position()));
+    if (!ok)
+      return tl::unexpected(corrupt("frame " + std::to_string(f) + " has a bad agent column", r.position()));
     for (std::uint32_t k = 1; k < n; ++k)
       if (log.agents_[base + k].id <= log.agents_[base + k - 1].id)
-        return tl::unexpected(corrupt("frame " + std::to_string(f) + " ids are not increasing", r.position()));
+        return tl::unexpected(
+            corrupt("frame " + std::to_string(f) + " ids are not increasing", r.position()));
     log.times_.push_back(t);
     log.offsets_.push_back(log.agents_.size());
   }
@@ -208,7 +217,8 @@ void TrajectoryLog::seal() {
 }
 
 TrajectoryRecorder::TrajectoryRecorder(double interval) {
-  if (!(interval > 0) || !std::isfinite(interval)) throw std::invalid_argument("trajectory frame interval must be > 0");
+  if (!(interval > 0) || !std::isfinite(interval))
+    throw std::invalid_argument("trajectory frame interval must be > 0");
   log_.interval_ = interval;
 }
 
@@ -218,7 +228,8 @@ void TrajectoryRecorder::add(double time, std::span<const crowd::PedestrianState
     if (s.activity == crowd::Activity::kExited) continue;
     auto it = std::find(log_.roles_.begin(), log_.roles_.end(), s.role);
     if (it == log_.roles_.end()) {
-      if (log_.roles_.size() >= kMaxRoles) throw std::length_error("more than 65535 roles in one trajectory log");
+      if (log_.roles_.size() >= kMaxRoles)
+        throw std::length_error("more than 65535 roles in one trajectory log");
       log_.roles_.push_back(s.role.substr(0, kMaxRoleBytes));
       it = log_.roles_.end() - 1;
     }
@@ -231,8 +242,8 @@ void TrajectoryRecorder::add(double time, std::span<const crowd::PedestrianState
     a.vy = narrow(s.twist.vy);
     a.activity = s.activity;
     a.role = static_cast<std::uint16_t>(it - log_.roles_.begin());
-    a.group_id = static_cast<std::int32_t>(std::clamp<std::int64_t>(s.group_id, std::numeric_limits<std::int32_t>::min(),
-                                                                     std::numeric_limits<std::int32_t>::max()));
+    a.group_id = static_cast<std::int32_t>(std::clamp<std::int64_t>(
+        s.group_id, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
     log_.agents_.push_back(a);
   }
   std::sort(log_.agents_.begin() + static_cast<std::ptrdiff_t>(base), log_.agents_.end(),

@@ -9,7 +9,8 @@ Status save_trajectory_log(store::Store& store, const TrajectoryLog& log) {
   const std::size_t raw = log.encoded().size();
   return store.write([&](store::Database& db) -> Status {
     auto st = db.prepare(
-        "INSERT INTO trajectory_logs(sha256, format, frames, agents, frame_interval, raw_bytes, data, created_at) "
+        "INSERT INTO trajectory_logs(sha256, format, frames, agents, frame_interval, raw_bytes, data, "
+        "created_at) "
         "VALUES (?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT(sha256) DO NOTHING");
     if (!st) return tl::unexpected(st.error());
     st->bind(1, log.sha256())
@@ -42,7 +43,8 @@ Result<TrajectoryLog> load_trajectory_log(store::Store& store, std::string_view 
   auto log = TrajectoryLog::from_compressed(*blob);
   if (!log) return log;
   if (log->sha256() != sha256)
-    return fail(ErrorCode::kInternal, "stored trajectory log " + std::string(sha256) + " does not match its hash");
+    return fail(ErrorCode::kInternal,
+                "stored trajectory log " + std::string(sha256) + " does not match its hash");
   return log;
 }
 

@@ -14,7 +14,8 @@ const std::vector<Migration>& embedded_migrations() {
   static const std::vector<Migration> all = [] {
     std::vector<Migration> v;
     for (const auto& [name, sql] : embedded_migration_files()) v.push_back(migration_from_file(name, sql));
-    std::sort(v.begin(), v.end(), [](const Migration& a, const Migration& b) { return a.version < b.version; });
+    std::sort(v.begin(), v.end(),
+              [](const Migration& a, const Migration& b) { return a.version < b.version; });
     return v;
   }();
   return all;
@@ -46,10 +47,9 @@ Result<int> schema_version(Database& db) {
 }
 
 Result<MigrationReport> migrate(Database& db, const std::vector<Migration>& migrations) {
-  if (auto s = db.exec(
-          "CREATE TABLE IF NOT EXISTS schema_migrations ("
-          " version INTEGER PRIMARY KEY, name TEXT NOT NULL, checksum TEXT NOT NULL,"
-          " applied_at TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now'))) STRICT");
+  if (auto s = db.exec("CREATE TABLE IF NOT EXISTS schema_migrations ("
+                       " version INTEGER PRIMARY KEY, name TEXT NOT NULL, checksum TEXT NOT NULL,"
+                       " applied_at TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now'))) STRICT");
       !s)
     return tl::unexpected(s.error());
 

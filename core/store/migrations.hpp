@@ -9,8 +9,8 @@
 namespace socsim::store {
 
 struct Migration {
-  int version = 0;       // from the file name: 0003_cards.sql → 3
-  std::string name;      // "cards"
+  int version = 0;   // from the file name: 0003_cards.sql → 3
+  std::string name;  // "cards"
   std::string sql;
 };
 

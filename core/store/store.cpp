@@ -11,7 +11,8 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const StoreO
     std::error_code ec;
     const auto parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-    if (ec) return fail(ErrorCode::kStore, "cannot create directory '" + parent.string() + "': " + ec.message());
+    if (ec)
+      return fail(ErrorCode::kStore, "cannot create directory '" + parent.string() + "': " + ec.message());
   }
   auto db = Database::open(path, {false, options.busy_timeout_ms, true});
   if (!db) return tl::unexpected(db.error());

@@ -115,7 +115,8 @@ class Checker {
  public:
   Checker(const World& world, std::string_view building_type, std::span<const MergedConstraint> constraints)
       : world_(world), building_type_(building_type), constraints_(constraints) {
-    for (const auto& z : world.zones()) zones_.push_back({canonical_room_type(z.type), geometry::area(z.polygon), {}, {}, 0});
+    for (const auto& z : world.zones())
+      zones_.push_back({canonical_room_type(z.type), geometry::area(z.polygon), {}, {}, 0});
     for (const auto& e : world.entities())
       if (e.type == "desk" || e.type == "workstation") ++zones_[e.zone.index()].desks;
     residential_ = building_type_ == "residential";
@@ -212,8 +213,8 @@ class Checker {
       double persons = 0.0;
       for (const auto& z : zones_) {
         const RoomType* rt = find_room_type(z.type);
-        const bool counts = use == "residential" ? residential_
-                                                 : (!residential_ && rt && rt->load_use == use);
+        const bool counts =
+            use == "residential" ? residential_ : (!residential_ && rt && rt->load_use == use);
         if (!counts) continue;
         area += z.area;
         persons += std::ceil(z.area / m.constraint.value - 1e-9);
@@ -245,10 +246,12 @@ class Checker {
       return;
     }
     const bool ok = c.failures.empty();
-    c.status = ok ? CheckStatus::kPass : (c.type == "recommended" ? CheckStatus::kAdvisory : CheckStatus::kFail);
+    c.status =
+        ok ? CheckStatus::kPass : (c.type == "recommended" ? CheckStatus::kAdvisory : CheckStatus::kFail);
   }
-  void zone_values(ComplianceCheck& c, const std::vector<std::size_t>& zs, const std::function<double(std::size_t)>& f,
-                   const std::string& what, const std::string& none) {
+  void zone_values(ComplianceCheck& c, const std::vector<std::size_t>& zs,
+                   const std::function<double(std::size_t)>& f, const std::string& what,
+                   const std::string& none) {
     std::vector<std::pair<std::string, double>> values;
     for (auto z : zs) values.emplace_back(world_.zones()[z].name, f(z));
     measure(c, values);
@@ -272,7 +275,8 @@ class Checker {
 
     if (n == "habitable_room_area") {
       return zone_values(c, zones_where([](const ZoneInfo& z) { return is_habitable_type(z.type); }), area,
-                         "net area of every habitable room (living, sleeping, dining, study)", "no habitable room");
+                         "net area of every habitable room (living, sleeping, dining, study)",
+                         "no habitable room");
     }
     if (n == "habitable_room_min_dimension") {
       return zone_values(c, zones_where([](const ZoneInfo& z) { return is_habitable_type(z.type); }), width,
@@ -283,7 +287,8 @@ class Checker {
       return zone_values(c, l ? std::vector{*l} : std::vector<std::size_t>{}, area,
                          "net area of the largest habitable room", "no habitable room");
     }
-    if (n == "bedroom_single_area") return zone_values(c, beds, area, "net area of every bedroom", "no bedroom");
+    if (n == "bedroom_single_area")
+      return zone_values(c, beds, area, "net area of every bedroom", "no bedroom");
     if (n == "bedroom_single_min_width")
       return zone_values(c, beds, width, "narrowest clear width of every bedroom", "no bedroom");
     if (n == "bedroom_double_area" || n == "bedroom_double_min_width") {
@@ -311,7 +316,8 @@ class Checker {
                          "net area of every ICU room", "no ICU room");
     if (n.rfind("built_in_storage_", 0) == 0) return storage(c);
     if (n.rfind("dwelling_gia_", 0) == 0) return gross_area(c);
-    if (n == "corridor_clear_width" || n == "corridor_clear_width_small_occupancy" || n == "accessible_route_clear_width")
+    if (n == "corridor_clear_width" || n == "corridor_clear_width_small_occupancy" ||
+        n == "accessible_route_clear_width")
       return zone_values(c, corridors, width, "narrowest clear width of every corridor", "no corridor");
     if (n == "exit_route_clear_width") {
       std::vector<std::pair<std::string, double>> values;
@@ -330,9 +336,10 @@ class Checker {
         values.emplace_back(world_.zones()[z].name, len <= kPassingInterval ? c.required : width_of(z));
       }
       measure(c, values);
-      c.detail = values.empty() ? "no corridor"
-                                : "corridors longer than " + num(kPassingInterval) +
-                                      " m (ADA 403.5.3 interval) must be this wide throughout; shorter ones pass";
+      c.detail = values.empty()
+                     ? "no corridor"
+                     : "corridors longer than " + num(kPassingInterval) +
+                           " m (ADA 403.5.3 interval) must be this wide throughout; shorter ones pass";
       return;
     }
     if (n == "door_clear_width") {
@@ -362,13 +369,13 @@ class Checker {
     if (n == "turning_circle_diameter") {
       std::vector<std::size_t> all(zones_.size());
       for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-      return zone_values(c, all, [this](std::size_t z) { return diameter_of(z); },
-                         "largest circle that fits in every zone", "no zone");
+      return zone_values(
+          c, all, [this](std::size_t z) { return diameter_of(z); }, "largest circle that fits in every zone",
+          "no zone");
     }
     if (n.rfind("occupant_load_factor_", 0) == 0) {
       const auto it = load_by_use_.find(n.substr(std::string("occupant_load_factor_").size()));
-      if (it == load_by_use_.end() || it->second.first <= 0)
-        return not_applicable(c, "no zone of this use");
+      if (it == load_by_use_.end() || it->second.first <= 0) return not_applicable(c, "no zone of this use");
       c.status = CheckStatus::kUsed;
       c.value = it->second.first;
       c.checked = 1;
@@ -377,7 +384,8 @@ class Checker {
       return;
     }
     if (n == "egress_width_per_occupant") return egress(c);
-    if (n == "exit_access_travel_distance" || n == "exit_access_travel_distance_unsprinklered") return travel(c);
+    if (n == "exit_access_travel_distance" || n == "exit_access_travel_distance_unsprinklered")
+      return travel(c);
     if (n == "workspace_area_per_person" || n == "workroom_volume_per_person") {
       const bool volume = n == "workroom_volume_per_person";
       const double h = min_wall_height();
@@ -390,8 +398,8 @@ class Checker {
       }
       measure(c, values);
       c.detail = values.empty() ? "no work room with desks"
-                                : volume ? "area × ceiling (lowest wall) height per desk in every work room"
-                                         : "area per desk in every work room";
+                 : volume       ? "area × ceiling (lowest wall) height per desk in every work room"
+                                : "area per desk in every work room";
       return;
     }
     if (n == "aisle_clear_width" || n == "storage_aisle_width" || n == "checkout_aisle_width") {
@@ -402,7 +410,8 @@ class Checker {
         bool applies = false;
         if (n == "aisle_clear_width") applies = roi.kind == "walkway";
         if (n == "storage_aisle_width")
-          applies = roi.kind == "walkway" && (zt == "warehouse_floor" || zt == "stock_room" || zt == "loading_bay");
+          applies =
+              roi.kind == "walkway" && (zt == "warehouse_floor" || zt == "stock_room" || zt == "loading_bay");
         if (n == "checkout_aisle_width") applies = roi.kind == "queue_lane" && zt == "sales_floor";
         if (applies) values.emplace_back(roi.name, clear_width(roi.polygon));
       }
@@ -422,8 +431,9 @@ class Checker {
     if (n == "door_leaf_width")
       return not_checked(c, "door leaves are not modelled; an opening wider than one leaf is a double door");
     if (n.rfind("dead_end_corridor_length", 0) == 0)
-      return not_checked(c, "needs the sprinkler status and a second exit; single-exit plans are bounded by the "
-                            "exit access travel distance instead");
+      return not_checked(c,
+                         "needs the sprinkler status and a second exit; single-exit plans are bounded by the "
+                         "exit access travel distance instead");
     not_checked(c, "no check is defined for this constraint");
   }
 
@@ -449,8 +459,9 @@ class Checker {
     const std::string want = c.name.substr(std::string("dwelling_gia_").size());  // "2b3p"
     const std::string chosen = dwelling_entry(areas);
     if (chosen != want)
-      return not_applicable(c, chosen.empty() ? "no entry for a dwelling with " + std::to_string(beds.size()) + " bedroom(s)"
-                                              : "the dwelling is " + chosen);
+      return not_applicable(
+          c, chosen.empty() ? "no entry for a dwelling with " + std::to_string(beds.size()) + " bedroom(s)"
+                            : "the dwelling is " + chosen);
     double total = 0.0;
     for (const auto& z : zones_) total += z.area;
     measure(c, {{"dwelling", total}});
@@ -463,7 +474,8 @@ class Checker {
   }
 
  public:
-  static std::string dwelling_entry_for(std::span<const MergedConstraint> cs, std::span<const double> bedroom_areas) {
+  static std::string dwelling_entry_for(std::span<const MergedConstraint> cs,
+                                        std::span<const double> bedroom_areas) {
     if (bedroom_areas.empty()) return "";
     const double dbl = value_of(cs, "bedroom_double_area", 11.5);
     int persons = 0;
@@ -503,7 +515,8 @@ class Checker {
     c.required = c.required * occupant_load_;
     c.unit = "m";
     measure(c, {{names.empty() ? "exits" : names, width}});
-    c.detail = "total width of the exits against " + num(occupant_load_) + " occupants × the per-occupant width";
+    c.detail =
+        "total width of the exits against " + num(occupant_load_) + " occupants × the per-occupant width";
   }
 
   // IBC 2018 Table 1006.3.3(2), stories with one exit (first story above grade plane): the
@@ -514,9 +527,9 @@ class Checker {
     const char* occupancy;
   };
   SingleExitLimit single_exit_limit() const {
-    if (building_type_ == "hospital") return {10, 22.86, "I-2"};           // H-4, H-5, I, R-1, R-2, R-4: 10, 75 ft
-    if (building_type_ == "warehouse") return {29, 30.48, "S"};           // S: 29, 100 ft
-    return {49, 22.86, "A, B, E, F, M, U"};                                // 49, 75 ft
+    if (building_type_ == "hospital") return {10, 22.86, "I-2"};  // H-4, H-5, I, R-1, R-2, R-4: 10, 75 ft
+    if (building_type_ == "warehouse") return {29, 30.48, "S"};   // S: 29, 100 ft
+    return {49, 22.86, "A, B, E, F, M, U"};                       // 49, 75 ft
   }
 
   std::vector<ComplianceCheck> exit_checks() {
@@ -550,11 +563,12 @@ class Checker {
                                  "IBC 2018 1006.3: number of exits from a story");
     count.required = crowded || distant ? 2.0 : 1.0;
     measure(count, {{names.empty() ? "exits" : names, static_cast<double>(ex.size())}});
-    count.detail = "doors to the outside against the single-exit limit of occupancy " + std::string(limit.occupancy) +
-                   " (" + num(limit.occupants) + " occupants, " + num2(limit.travel_m) + " m travel): " +
-                   num(occupant_load_) + " occupants" +
-                   (far ? ", " + num2(*far) + " m of travel to the best single exit" : std::string(", no exit")) +
-                   " (built-in rule; the knowledge store holds no entry for it)";
+    count.detail =
+        "doors to the outside against the single-exit limit of occupancy " + std::string(limit.occupancy) +
+        " (" + num(limit.occupants) + " occupants, " + num2(limit.travel_m) +
+        " m travel): " + num(occupant_load_) + " occupants" +
+        (far ? ", " + num2(*far) + " m of travel to the best single exit" : std::string(", no exit")) +
+        " (built-in rule; the knowledge store holds no entry for it)";
 
     ComplianceCheck apart = base("exit_separation", "m", "1007.1.1 Two exits or exit access doorways",
                                  "IBC 2018 1007.1.1: separation of two exits");
@@ -580,8 +594,10 @@ class Checker {
           }
         }
       measure(apart, {{pair, best}});
-      apart.detail = "straight line between the centres of the two exits farthest apart against half the building's "
-                     "overall diagonal (" + num2(diagonal) + " m; unsprinklered)";
+      apart.detail =
+          "straight line between the centres of the two exits farthest apart against half the building's "
+          "overall diagonal (" +
+          num2(diagonal) + " m; unsprinklered)";
     }
     return {std::move(count), std::move(apart)};
   }
@@ -647,18 +663,26 @@ class Checker {
   std::map<std::vector<std::size_t>, std::optional<std::pair<double, std::string>>> travel_;
 };
 
-double round_micro(double v) { return std::isfinite(v) ? std::round(v * 1e6) / 1e6 : v; }
+double round_micro(double v) {
+  return std::isfinite(v) ? std::round(v * 1e6) / 1e6 : v;
+}
 
 }  // namespace
 
 std::string_view to_string(CheckStatus status) {
   switch (status) {
-    case CheckStatus::kPass: return "pass";
-    case CheckStatus::kFail: return "fail";
-    case CheckStatus::kAdvisory: return "advisory";
-    case CheckStatus::kUsed: return "used";
-    case CheckStatus::kNotApplicable: return "not_applicable";
-    case CheckStatus::kNotChecked: return "not_checked";
+    case CheckStatus::kPass:
+      return "pass";
+    case CheckStatus::kFail:
+      return "fail";
+    case CheckStatus::kAdvisory:
+      return "advisory";
+    case CheckStatus::kUsed:
+      return "used";
+    case CheckStatus::kNotApplicable:
+      return "not_applicable";
+    case CheckStatus::kNotChecked:
+      return "not_checked";
   }
   return "not_checked";
 }
@@ -677,7 +701,8 @@ ComplianceReport check_compliance(const World& world, std::string_view building_
 
 Json to_json(const ComplianceCheck& c) {
   Json failures = Json::array();
-  for (const auto& f : c.failures) failures.push_back({{"element", f.element}, {"value", round_micro(f.value)}});
+  for (const auto& f : c.failures)
+    failures.push_back({{"element", f.element}, {"value", round_micro(f.value)}});
   return Json{{"name", c.name},
               {"applies_to", c.applies_to},
               {"type", c.type},
@@ -713,11 +738,14 @@ Json to_json(const ComplianceReport& r) {
               {"checks", std::move(checks)}};
 }
 
-RoomRequirement room_requirement(std::span<const MergedConstraint> cs, std::string_view room_type, bool main_bedroom) {
+RoomRequirement room_requirement(std::span<const MergedConstraint> cs, std::string_view room_type,
+                                 bool main_bedroom) {
   const std::string t = canonical_room_type(room_type);
   RoomRequirement r;
   auto raise_area = [&](std::string_view name) { r.min_area = std::max(r.min_area, value_of(cs, name)); };
-  auto raise_dim = [&](std::string_view name) { r.min_dimension = std::max(r.min_dimension, value_of(cs, name)); };
+  auto raise_dim = [&](std::string_view name) {
+    r.min_dimension = std::max(r.min_dimension, value_of(cs, name));
+  };
   if (is_habitable_type(t)) {
     raise_area("habitable_room_area");
     raise_dim("habitable_room_min_dimension");
@@ -736,8 +764,8 @@ RoomRequirement room_requirement(std::span<const MergedConstraint> cs, std::stri
   if (t == "icu_room") raise_area("icu_room_area");
   raise_dim("turning_circle_diameter");
   if (is_corridor_type(t)) {
-    for (auto n : {"corridor_clear_width", "corridor_clear_width_small_occupancy", "accessible_route_clear_width",
-                   "exit_route_clear_width"})
+    for (auto n : {"corridor_clear_width", "corridor_clear_width_small_occupancy",
+                   "accessible_route_clear_width", "exit_route_clear_width"})
       raise_dim(n);
   }
   return r;
@@ -745,12 +773,13 @@ RoomRequirement room_requirement(std::span<const MergedConstraint> cs, std::stri
 
 PlanRequirement plan_requirement(std::span<const MergedConstraint> cs, std::string_view building_type) {
   PlanRequirement p;
-  for (auto n : {"corridor_clear_width", "corridor_clear_width_small_occupancy", "accessible_route_clear_width",
-                 "exit_route_clear_width"})
+  for (auto n : {"corridor_clear_width", "corridor_clear_width_small_occupancy",
+                 "accessible_route_clear_width", "exit_route_clear_width"})
     p.corridor_width = std::max(p.corridor_width, value_of(cs, n));
   p.door_width = std::max({value_of(cs, "door_clear_width"), value_of(cs, "exit_route_clear_width"), 0.6});
   p.public_door_width = p.door_width;
-  if (building_type != "residential") p.public_door_width = std::max(p.door_width, value_of(cs, "door_clear_width_public"));
+  if (building_type != "residential")
+    p.public_door_width = std::max(p.door_width, value_of(cs, "door_clear_width_public"));
   p.walkway_width = std::max(value_of(cs, "aisle_clear_width"), value_of(cs, "storage_aisle_width"));
   p.queue_lane_width = value_of(cs, "checkout_aisle_width");
   p.turning_diameter = value_of(cs, "turning_circle_diameter");
@@ -758,17 +787,20 @@ PlanRequirement plan_requirement(std::span<const MergedConstraint> cs, std::stri
     p.ceiling_height = std::max(p.ceiling_height, value_of(cs, n));
   for (const auto& m : cs) {
     if (m.constraint.name.rfind("exit_access_travel_distance", 0) != 0) continue;
-    p.travel_distance = p.travel_distance > 0 ? std::min(p.travel_distance, m.constraint.value) : m.constraint.value;
+    p.travel_distance =
+        p.travel_distance > 0 ? std::min(p.travel_distance, m.constraint.value) : m.constraint.value;
   }
   return p;
 }
 
-DwellingRequirement dwelling_requirement(std::span<const MergedConstraint> cs, std::span<const double> bedroom_areas) {
+DwellingRequirement dwelling_requirement(std::span<const MergedConstraint> cs,
+                                         std::span<const double> bedroom_areas) {
   DwellingRequirement d;
   const std::string entry = Checker::dwelling_entry_for(cs, bedroom_areas);
   if (!entry.empty()) d.gross_internal_area = value_of(cs, "dwelling_gia_" + entry);
   const std::size_t b = bedroom_areas.size();
-  if (b > 0) d.storage_area = value_of(cs, "built_in_storage_" + std::to_string(std::min<std::size_t>(b, 3)) + "b");
+  if (b > 0)
+    d.storage_area = value_of(cs, "built_in_storage_" + std::to_string(std::min<std::size_t>(b, 3)) + "b");
   return d;
 }
 

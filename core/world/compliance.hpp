@@ -30,10 +30,10 @@ struct ComplianceFinding {
 };
 
 struct ComplianceCheck {
-  std::string name;        // constraint name, e.g. corridor_clear_width
+  std::string name;  // constraint name, e.g. corridor_clear_width
   std::string applies_to;
-  std::string type;        // min | max | recommended
-  double required = 0.0;   // the constraint's value
+  std::string type;       // min | max | recommended
+  double required = 0.0;  // the constraint's value
   std::string unit;
   std::optional<double> value;  // the worst measured value (smallest for min, largest for max)
   std::string element;          // where that value was measured
@@ -50,8 +50,8 @@ struct ComplianceCheck {
 
 struct ComplianceReport {
   std::string building_type;
-  bool passed = true;           // no check has status kFail
-  double occupant_load = 0.0;   // persons, from the occupant-load factors
+  bool passed = true;          // no check has status kFail
+  double occupant_load = 0.0;  // persons, from the occupant-load factors
   std::vector<ComplianceCheck> checks;
   [[nodiscard]] std::vector<const ComplianceCheck*> failures() const;
 };
@@ -74,14 +74,14 @@ RoomRequirement room_requirement(std::span<const knowledge::MergedConstraint> co
                                  std::string_view room_type, bool main_bedroom);
 
 struct PlanRequirement {
-  double corridor_width = 0.0;      // m, clear
-  double door_width = 0.0;          // m, every door
-  double public_door_width = 0.0;   // m, entrances and doors onto circulation (non-dwellings)
-  double walkway_width = 0.0;       // m, aisles between shelves or racks
-  double queue_lane_width = 0.0;    // m, check-out aisles
-  double turning_diameter = 0.0;    // m, every room
-  double ceiling_height = 0.0;      // m, wall height
-  double travel_distance = 0.0;     // m, to the nearest exit; 0 = no limit retrieved
+  double corridor_width = 0.0;     // m, clear
+  double door_width = 0.0;         // m, every door
+  double public_door_width = 0.0;  // m, entrances and doors onto circulation (non-dwellings)
+  double walkway_width = 0.0;      // m, aisles between shelves or racks
+  double queue_lane_width = 0.0;   // m, check-out aisles
+  double turning_diameter = 0.0;   // m, every room
+  double ceiling_height = 0.0;     // m, wall height
+  double travel_distance = 0.0;    // m, to the nearest exit; 0 = no limit retrieved
 };
 PlanRequirement plan_requirement(std::span<const knowledge::MergedConstraint> constraints,
                                  std::string_view building_type);

@@ -57,11 +57,13 @@ Box inner_box(const Polygon& polygon) {
   double best_area = 0.0;
   std::vector<Point> centres{geometry::centroid(polygon.outer)};
   for (double fx : {0.25, 0.5, 0.75})
-    for (double fy : {0.25, 0.5, 0.75}) centres.push_back({bb.min.x + fx * bb.width(), bb.min.y + fy * bb.height()});
+    for (double fy : {0.25, 0.5, 0.75})
+      centres.push_back({bb.min.x + fx * bb.width(), bb.min.y + fy * bb.height()});
   for (const Point& c : centres) {
     if (!geometry::contains(polygon, c)) continue;
     auto box_at = [&](double s) {
-      return Box{{c.x - s * bb.width() / 2, c.y - s * bb.height() / 2}, {c.x + s * bb.width() / 2, c.y + s * bb.height() / 2}};
+      return Box{{c.x - s * bb.width() / 2, c.y - s * bb.height() / 2},
+                 {c.x + s * bb.width() / 2, c.y + s * bb.height() / 2}};
     };
     auto fits = [&](double s) {
       const Box b = box_at(s);
@@ -112,18 +114,26 @@ struct Frame {
   }
   [[nodiscard]] Point at(double u, double v) const {
     switch (side) {
-      case 0: return {box.min.x + u, box.min.y + v};
-      case 2: return {box.max.x - u, box.max.y - v};
-      case 3: return {box.min.x + v, box.max.y - u};
-      default: return {box.max.x - v, box.min.y + u};
+      case 0:
+        return {box.min.x + u, box.min.y + v};
+      case 2:
+        return {box.max.x - u, box.max.y - v};
+      case 3:
+        return {box.min.x + v, box.max.y - u};
+      default:
+        return {box.max.x - v, box.min.y + u};
     }
   }
   [[nodiscard]] Point local(Point p) const {
     switch (side) {
-      case 0: return {p.x - box.min.x, p.y - box.min.y};
-      case 2: return {box.max.x - p.x, box.max.y - p.y};
-      case 3: return {box.max.y - p.y, p.x - box.min.x};
-      default: return {p.y - box.min.y, box.max.x - p.x};
+      case 0:
+        return {p.x - box.min.x, p.y - box.min.y};
+      case 2:
+        return {box.max.x - p.x, box.max.y - p.y};
+      case 3:
+        return {box.max.y - p.y, p.x - box.min.x};
+      default:
+        return {p.y - box.min.y, box.max.x - p.x};
     }
   }
   // World yaw of a heading given relative to "into the room" (+v).
@@ -139,7 +149,8 @@ struct Frame {
 };
 
 int nearest_side(const Box& b, Point p) {
-  const double d[4] = {std::abs(p.y - b.min.y), std::abs(p.x - b.max.x), std::abs(p.y - b.max.y), std::abs(p.x - b.min.x)};
+  const double d[4] = {std::abs(p.y - b.min.y), std::abs(p.x - b.max.x), std::abs(p.y - b.max.y),
+                       std::abs(p.x - b.min.x)};
   return static_cast<int>(std::min_element(d, d + 4) - d);
 }
 
@@ -163,16 +174,18 @@ class Placer {
       if (geometry::distance(p, d.centre) < d.width / 2 + 0.6 + radius) return false;
     return true;
   }
-  // No furniture but entity `keep` within 0.5 m of the rectangle (1.3 m for serving furniture) and no area of the room but
-  // corridors and work areas overlapping it (ROIs since `first_roi`).
-  [[nodiscard]] bool lane_clear(double u0, double v0, double u1, double v1, std::size_t keep, std::size_t first_roi) const {
+  // No furniture but entity `keep` within 0.5 m of the rectangle (1.3 m for serving furniture) and no area of
+  // the room but corridors and work areas overlapping it (ROIs since `first_roi`).
+  [[nodiscard]] bool lane_clear(double u0, double v0, double u1, double v1, std::size_t keep,
+                                std::size_t first_roi) const {
     for (std::size_t k = 0; k < out_.entities.size(); ++k) {
       if (k == keep) continue;
       // Serving furniture farther off, so that the lane's head is taken to be at the machine.
       const EntitySpec& e = out_.entities[k];
-      const bool serves = e.type == "counter" || e.type == "desk" || e.type == "reception" ||
-                          std::find(e.affordances.begin(), e.affordances.end(), "serve") != e.affordances.end() ||
-                          std::find(e.affordances.begin(), e.affordances.end(), "queue_target") != e.affordances.end();
+      const bool serves =
+          e.type == "counter" || e.type == "desk" || e.type == "reception" ||
+          std::find(e.affordances.begin(), e.affordances.end(), "serve") != e.affordances.end() ||
+          std::find(e.affordances.begin(), e.affordances.end(), "queue_target") != e.affordances.end();
       const double m = serves ? 1.3 : 0.5;
       const Point q = f_.local({e.pose.x, e.pose.y});
       if (q.x > u0 - m && q.x < u1 + m && q.y > v0 - m && q.y < v1 + m) return false;
@@ -183,7 +196,8 @@ class Placer {
       const Roi& o = out_.rois[k];
       if (o.kind == "corridor" || o.kind == "work_area") continue;
       const Box ob = geometry::bounds(o.polygon.outer);
-      if (ob.min.x < b.max.x - 1e-9 && b.min.x < ob.max.x - 1e-9 && ob.min.y < b.max.y - 1e-9 && b.min.y < ob.max.y - 1e-9)
+      if (ob.min.x < b.max.x - 1e-9 && b.min.x < ob.max.x - 1e-9 && ob.min.y < b.max.y - 1e-9 &&
+          b.min.y < ob.max.y - 1e-9)
         return false;
     }
     return true;
@@ -201,7 +215,8 @@ class Placer {
       if (!inside(u, v, std::min(0.2, radius))) continue;
       const Point p = f_.at(u, v);
       if (!clear(p, radius)) continue;
-      out_.entities.push_back({type, zone_.name + "_" + suffix, {p.x, p.y, f_.yaw(local_yaw)}, std::move(affordances)});
+      out_.entities.push_back(
+          {type, zone_.name + "_" + suffix, {p.x, p.y, f_.yaw(local_yaw)}, std::move(affordances)});
       return Point{u, v};
     }
     return std::nullopt;
@@ -251,7 +266,8 @@ class Placer {
   void poi_lanes(std::size_t first, std::size_t first_roi, double width, double length) {
     for (std::size_t k = first; k < out_.entities.size(); ++k) {
       EntitySpec& poi = out_.entities[k];
-      if (poi.type != "water_dispenser" && poi.type != "coffee_machine" && poi.type != "vending_machine") continue;
+      if (poi.type != "water_dispenser" && poi.type != "coffee_machine" && poi.type != "vending_machine")
+        continue;
       const Point at = f_.local({poi.pose.x, poi.pose.y});
       // Facing in room coordinates: the world yaw turned back by the frame's base heading.
       const double local = wrap(poi.pose.yaw - f_.yaw(0.0)) + kPi / 2;
@@ -262,7 +278,8 @@ class Placer {
         const double near = 0.55, far = near + length;
         // Across the lane: centred on the machine, moved off the walls (the machine stays in it).
         auto across = [&](double c, double extent) {
-          return std::clamp(c - width / 2, std::min(0.1, c - 0.05), std::max(0.1, std::min(extent - 0.1 - width, c + 0.05 - width)));
+          return std::clamp(c - width / 2, std::min(0.1, c - 0.05),
+                            std::max(0.1, std::min(extent - 0.1 - width, c + 0.05 - width)));
         };
         const double u0 = du != 0 ? std::min(at.x + du * near, at.x + du * far) : across(at.x, len());
         const double u1 = du != 0 ? std::max(at.x + du * near, at.x + du * far) : u0 + width;
@@ -270,7 +287,8 @@ class Placer {
         const double v1 = dv != 0 ? std::max(at.y + dv * near, at.y + dv * far) : v0 + width;
         if (!inside(u0, v0, 0.1) || !inside(u1, v1, 0.1)) continue;
         if (!lane_clear(u0, v0, u1, v1, k, first_roi)) continue;
-        const auto lane = roi("queue_lane", poi.name.substr(zone_.name.size() + 1) + "_queue", u0, v0, u1, v1);
+        const auto lane =
+            roi("queue_lane", poi.name.substr(zone_.name.size() + 1) + "_queue", u0, v0, u1, v1);
         if (!lane) continue;
         if ((lane->u1 - lane->u0) * (lane->v1 - lane->v0) < (u1 - u0) * (v1 - v0) - 1e-6) {
           out_.rois.pop_back();  // cut by a door's swing: too short to queue in
@@ -287,8 +305,8 @@ class Placer {
   [[nodiscard]] int side() const { return f_.side; }
 
   // Items on a grid of cells (du × dv) inside [u0, u1] × [v0, v1], skipping cells near doors.
-  int grid(const std::string& type, const std::string& base, double u0, double v0, double u1, double v1, double du,
-           double dv, int max_items, double local_yaw, const std::vector<std::string>& affordances,
+  int grid(const std::string& type, const std::string& base, double u0, double v0, double u1, double v1,
+           double du, double dv, int max_items, double local_yaw, const std::vector<std::string>& affordances,
            double radius = 0.5) {
     const int nu = std::max(0, static_cast<int>(std::floor((u1 - u0) / du + 1e-9)));
     const int nv = std::max(0, static_cast<int>(std::floor((v1 - v0) / dv + 1e-9)));
@@ -300,7 +318,10 @@ class Placer {
         const double u = su + i * du, v = sv + j * dv;
         const Point p = f_.at(u, v);
         if (!inside(u, v, 0.2) || !clear(p, radius)) continue;
-        out_.entities.push_back({type, zone_.name + "_" + numbered(base, placed + 1), {p.x, p.y, f_.yaw(local_yaw)}, affordances});
+        out_.entities.push_back({type,
+                                 zone_.name + "_" + numbered(base, placed + 1),
+                                 {p.x, p.y, f_.yaw(local_yaw)},
+                                 affordances});
         ++placed;
       }
     return placed;
@@ -309,9 +330,9 @@ class Placer {
   // A counter at depth v with a queue lane of up to `lane` metres in front of it: towards the main
   // door (customers come in and queue towards a counter deeper in the room) or, when `inward`,
   // deeper into the room (a check-out by the door). Returns the u it was placed at.
-  std::optional<CounterPlace> counter_with_queue(const std::string& type, const std::string& name, double u, double v,
-                                           double lane, bool inward, double lane_width,
-                                           std::vector<std::string> affordances) {
+  std::optional<CounterPlace> counter_with_queue(const std::string& type, const std::string& name, double u,
+                                                 double v, double lane, bool inward, double lane_width,
+                                                 std::vector<std::string> affordances) {
     lane = inward ? std::min(lane, depth() - v - 1.0) : std::min(lane, v - 1.6);
     if (lane < 1.5) return std::nullopt;
     for (double du : {0.0, -1.2, 1.2, -2.4, 2.4}) {
@@ -320,8 +341,10 @@ class Placer {
       const Point p = f_.at(uu, v);
       if (!clear(p, 0.6)) continue;
       const double v0 = inward ? v + 0.7 : v - 0.7 - lane;
-      if (!roi("queue_lane", name + "_queue", uu - lane_width / 2, v0, uu + lane_width / 2, v0 + lane, true)) continue;
-      out_.entities.push_back({type, zone_.name + "_" + name, {p.x, p.y, f_.yaw(inward ? 0.0 : kPi)}, std::move(affordances)});
+      if (!roi("queue_lane", name + "_queue", uu - lane_width / 2, v0, uu + lane_width / 2, v0 + lane, true))
+        continue;
+      out_.entities.push_back(
+          {type, zone_.name + "_" + name, {p.x, p.y, f_.yaw(inward ? 0.0 : kPi)}, std::move(affordances)});
       return CounterPlace{uu, v, std::min(v0, v), std::max(v0 + lane, v)};
     }
     return std::nullopt;
@@ -348,19 +371,21 @@ void furnish_waiting(Placer& p, const std::string& type, const std::optional<Cou
   }
   const Area* best = nullptr;
   for (const auto& a : areas)
-    if (a.u1 - a.u0 >= 1.4 && a.v1 - a.v0 >= 1.4 && (!best || (a.u1 - a.u0) * (a.v1 - a.v0) > (best->u1 - best->u0) * (best->v1 - best->v0)))
+    if (a.u1 - a.u0 >= 1.4 && a.v1 - a.v0 >= 1.4 &&
+        (!best || (a.u1 - a.u0) * (a.v1 - a.v0) > (best->u1 - best->u0) * (best->v1 - best->v0)))
       best = &a;
   if (type != "security" && best) {
     const bool cafe = type == "cafe";
-    if (auto a = p.roi(cafe ? "seating_area" : "waiting_zone", cafe ? "seating" : "waiting", best->u0, best->v0, best->u1,
-                       best->v1))
+    if (auto a = p.roi(cafe ? "seating_area" : "waiting_zone", cafe ? "seating" : "waiting", best->u0,
+                       best->v0, best->u1, best->v1))
       p.grid(cafe ? "table" : "chair", cafe ? "table" : "chair", a->u0, a->v0, a->u1, a->v1, cafe ? 1.8 : 0.8,
-             cafe ? 1.8 : 1.1, 24, 0, cafe ? std::vector<std::string>{"eat", "sit"} : std::vector<std::string>{"sit", "wait"},
+             cafe ? 1.8 : 1.1, 24, 0,
+             cafe ? std::vector<std::string>{"eat", "sit"} : std::vector<std::string>{"sit", "wait"},
              cafe ? 0.5 : 0.25);
   }
   if (type == "lobby" || type == "reception" || type == "concourse")
-    p.entity("water_dispenser", "water_dispenser", {{on_left ? 0.4 : L - 0.4, D - 0.4}, {on_left ? 0.4 : L - 0.4, 1.2}},
-             0, {"drink"}, 0.3);
+    p.entity("water_dispenser", "water_dispenser",
+             {{on_left ? 0.4 : L - 0.4, D - 0.4}, {on_left ? 0.4 : L - 0.4, 1.2}}, 0, {"drink"}, 0.3);
 }
 
 void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rules, Rng& rng, double area) {
@@ -371,7 +396,8 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
     p.entity("bed", "bed", {{L / 2, D - 1.1}, {L / 2, D / 2 + 0.3}}, kPi, {"lie", "sleep"}, 0.5);
     p.entity("wardrobe", "wardrobe", {{left, D - 0.4}, {right, D - 0.4}, {left, D / 2}}, kPi, {"store"}, 0.3);
   } else if (type == "living_room") {
-    const auto sofa = p.entity("sofa", "sofa", {{L / 2, D - 0.6}, {L / 2, D / 2 + 0.5}}, kPi, {"sit", "rest"}, 0.5);
+    const auto sofa =
+        p.entity("sofa", "sofa", {{L / 2, D - 0.6}, {L / 2, D / 2 + 0.5}}, kPi, {"sit", "rest"}, 0.5);
     if (sofa) {
       p.entity("coffee_table", "coffee_table", {{sofa->x, sofa->y - 1.0}}, 0, {"place"}, 0.3);
       p.roi("seating_area", "seating", sofa->x - 1.3, sofa->y - 1.6, sofa->x + 1.3, sofa->y + 0.5);
@@ -388,11 +414,13 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
       p.entity("coffee_machine", "coffee_machine", {{right, D - 0.4}, {right, D / 2}}, kPi, {"drink"}, 0.3);
       p.entity("water_dispenser", "water_dispenser", {{left, D / 2}, {right, 0.9}}, 0, {"drink"}, 0.3);
     }
-    if (area >= 9.0) p.entity("table", "table", {{L / 2, D / 2 - 0.3}, {L / 2, D / 2}}, 0, {"eat", "sit"}, 0.6);
+    if (area >= 9.0)
+      p.entity("table", "table", {{L / 2, D / 2 - 0.3}, {L / 2, D / 2}}, 0, {"eat", "sit"}, 0.6);
   } else if (type == "bathroom" || type == "toilet") {
     p.entity("toilet", "toilet", {{left, D - 0.5}, {right, D - 0.5}}, kPi, {"use_toilet"}, 0.3);
     p.entity("sink", "sink", {{right, D - 0.35}, {left, D / 2}, {right, D / 2}}, kPi, {"wash"}, 0.25);
-    if (type == "bathroom") p.entity("shower", "shower", {{right, 0.6}, {left, 0.6}, {L / 2, D - 0.6}}, 0, {"shower"}, 0.4);
+    if (type == "bathroom")
+      p.entity("shower", "shower", {{right, 0.6}, {left, 0.6}, {L / 2, D - 0.6}}, 0, {"shower"}, 0.4);
   } else if (type == "storage") {
     p.grid("shelf", "shelf", 0.2, D - 0.8, L - 0.2, D - 0.1, 1.0, 0.7, 4, kPi, {"store", "pick"});
   } else if (type == "dining_room") {
@@ -400,13 +428,15 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
   } else if (type == "study") {
     p.entity("desk", "desk", {{L / 2, D - 0.8}}, kPi, {"work", "sit"}, 0.5);
   } else if (type == "open_office" || type == "classroom") {
-    const int wanted = type == "open_office" ? std::max(1, static_cast<int>(std::floor(area / rules.area_per_desk)))
-                                             : std::max(1, static_cast<int>(std::floor(area / 2.0)));
+    const int wanted = type == "open_office"
+                           ? std::max(1, static_cast<int>(std::floor(area / rules.area_per_desk)))
+                           : std::max(1, static_cast<int>(std::floor(area / 2.0)));
     const int n = p.grid("desk", "desk", 1.0, 1.4, L - 1.0, D - 1.0, type == "open_office" ? 1.8 : 1.3,
                          type == "open_office" ? 2.4 : 1.6, wanted, 0, {"work", "sit"});
     if (n > 0) p.roi("work_area", "desks", 0.8, 1.3, L - 0.8, D - 0.8, true);
     if (type == "open_office") {
-      p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}, {left, D - 0.4}}, 0, {"drink"}, 0.3);
+      p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}, {left, D - 0.4}}, 0,
+               {"drink"}, 0.3);
       p.entity("printer", "printer", {{right, D - 0.4}, {left, D - 0.4}}, kPi, {"print"}, 0.3);
     } else {
       p.entity("teacher_desk", "teacher_desk", {{L / 2, 0.9}, {L / 2, D - 0.7}}, 0, {"teach"}, 0.5);
@@ -419,8 +449,11 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
   } else if (type == "reception" || type == "lobby" || type == "security" || type == "gate_area" ||
              type == "concourse" || type == "cafe") {
     const bool gate = type == "gate_area";
-    const std::string counter = type == "security" ? "checkpoint" : gate ? "gate_counter" : type == "cafe" ? "counter"
-                                                                   : type == "concourse" ? "info_desk" : "reception_counter";
+    const std::string counter = type == "security"    ? "checkpoint"
+                                : gate                ? "gate_counter"
+                                : type == "cafe"      ? "counter"
+                                : type == "concourse" ? "info_desk"
+                                                      : "reception_counter";
     // The side with the main door first; a room too shallow for a queue there turns a quarter.
     const double frac = rng.chance(0.5) ? 0.68 : 0.32;
     std::optional<CounterPlace> at;
@@ -440,10 +473,12 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
       p.grid("chair", "chair", a->u0, a->v0, a->u1, a->v1, 0.8, 1.1, 24, 0, {"sit", "wait"}, 0.25);
     p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}}, 0, {"drink"}, 0.3);
   } else if (type == "patient_room" || type == "icu_room") {
-    const auto bed = p.entity("bed", "bed", {{L / 2, D - 1.3}, {L / 2, D / 2 + 0.4}}, kPi, {"lie", "visit"}, 0.6);
+    const auto bed =
+        p.entity("bed", "bed", {{L / 2, D - 1.3}, {L / 2, D / 2 + 0.4}}, kPi, {"lie", "visit"}, 0.6);
     if (bed) p.entity("chair", "chair", {{bed->x + 1.4, bed->y}, {bed->x - 1.4, bed->y}}, 0, {"sit"}, 0.3);
     p.entity(type == "icu_room" ? "monitor" : "sink", type == "icu_room" ? "monitor" : "sink",
-             {{left, 1.0}, {right, 1.0}, {left, D - 0.4}}, 0, {type == "icu_room" ? "observe" : "wash"}, 0.25);
+             {{left, 1.0}, {right, 1.0}, {left, D - 0.4}}, 0, {type == "icu_room" ? "observe" : "wash"},
+             0.25);
   } else if (type == "nurse_station") {
     p.entity("counter", "counter", {{L / 2, D / 2}, {L / 2, D - 1.0}}, kPi, {"serve", "queue_target"}, 0.6);
     p.entity("desk", "desk", {{left, D - 0.6}, {right, D - 0.6}}, kPi, {"work", "sit"}, 0.4);
@@ -459,10 +494,13 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
                                          rules.queue_lane_width, {"serve", "queue_target"});
     const double gap = rules.queue_lane_width / 2 + 1.0;
     const double split = at ? at->u : -10.0;
-    if (auto a = split - gap - 0.8 >= 2.0 ? p.roi("seating_area", "seating_01", 0.8, 1.6, split - gap, D - 0.6) : std::nullopt)
+    if (auto a = split - gap - 0.8 >= 2.0
+                     ? p.roi("seating_area", "seating_01", 0.8, 1.6, split - gap, D - 0.6)
+                     : std::nullopt)
       p.grid("table", "table_a", a->u0, a->v0, a->u1, a->v1, 2.0, 2.2, 40, 0, {"eat", "sit"});
     const double u0 = at ? split + gap : 0.8;
-    if (auto a = L - 0.8 - u0 >= 2.0 ? p.roi("seating_area", "seating_02", u0, 1.6, L - 0.8, D - 0.6) : std::nullopt)
+    if (auto a = L - 0.8 - u0 >= 2.0 ? p.roi("seating_area", "seating_02", u0, 1.6, L - 0.8, D - 0.6)
+                                     : std::nullopt)
       p.grid("table", "table_b", a->u0, a->v0, a->u1, a->v1, 2.0, 2.2, 40, 0, {"eat", "sit"});
     p.entity("water_dispenser", "water_dispenser", {{0.5, D / 2}, {L - 0.5, D / 2}}, 0, {"drink"}, 0.3);
     p.entity("tray_return", "tray_return", {{L - 0.5, D * 0.3}, {0.5, D * 0.3}}, 0, {"return_tray"}, 0.3);
@@ -485,8 +523,8 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
     for (double v = v_start; v + shelf + walk <= D - 0.3 && row < 12; v += shelf + walk) {
       ++row;
       p.roi("walkway", numbered("aisle", row), 0.6, v + shelf, L - 0.6, v + shelf + walk, true);
-      p.grid(shop ? "shelf" : "rack", numbered(shop ? "shelf" : "rack", row), 1.0, v, L - 1.0, v + shelf, 2.0, shelf,
-             20, 0, {shop ? "browse" : "store", "pick"});
+      p.grid(shop ? "shelf" : "rack", numbered(shop ? "shelf" : "rack", row), 1.0, v, L - 1.0, v + shelf, 2.0,
+             shelf, 20, 0, {shop ? "browse" : "store", "pick"});
     }
   } else if (type == "loading_bay") {
     p.roi("work_area", "dock", 0.6, 0.6, L - 0.6, D - 0.6);
@@ -496,7 +534,8 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
 
 }  // namespace
 
-FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> constraints, const PlanRequirement& plan) {
+FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> constraints,
+                                 const PlanRequirement& plan) {
   FurnishingRules r;
   r.walkway_width = std::max({1.2, plan.walkway_width + 0.2});
   r.queue_lane_width = std::max(1.0, plan.queue_lane_width + 0.05);
@@ -507,12 +546,14 @@ FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> co
   return r;
 }
 
-Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules, Rng& rng) {
+Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
+                   Rng& rng) {
   Furnishing out;
   std::map<std::string, std::string> type_of;
   for (const auto& z : zones) type_of[z.name] = canonical_room_type(z.type);
-  const bool named_entrance =
-      std::any_of(doors.begin(), doors.end(), [](const DoorSpec& d) { return d.name == "main_entrance" && d.connects.size() == 1; });
+  const bool named_entrance = std::any_of(doors.begin(), doors.end(), [](const DoorSpec& d) {
+    return d.name == "main_entrance" && d.connects.size() == 1;
+  });
   for (const auto& z : zones) {
     const std::string type = canonical_room_type(z.type);
     std::vector<DoorAt> here;
@@ -551,9 +592,11 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
       const Point c = geometry::closest_point(wall, d.centre);
       if (!geometry::contains(z.polygon, {c.x + n.x * 0.1, c.y + n.y * 0.1})) n = {-n.x, -n.y};
       // Half as wide as the door plus 0.2 m each side, narrowed to the wall (a corridor's end).
-      const double h = std::min(d.width / 2 + 0.2, std::min(geometry::distance(c, wall.a), geometry::distance(c, wall.b)));
+      const double h =
+          std::min(d.width / 2 + 0.2, std::min(geometry::distance(c, wall.a), geometry::distance(c, wall.b)));
       if (h < d.width / 2 - 1e-9) continue;
-      std::vector<Point> r{{c.x - u.x * h, c.y - u.y * h}, {c.x + u.x * h, c.y + u.y * h},
+      std::vector<Point> r{{c.x - u.x * h, c.y - u.y * h},
+                           {c.x + u.x * h, c.y + u.y * h},
                            {c.x + u.x * h + n.x * 1.0, c.y + u.y * h + n.y * 1.0},
                            {c.x - u.x * h + n.x * 1.0, c.y - u.y * h + n.y * 1.0}};
       if (geometry::signed_area(r) < 0) std::reverse(r.begin(), r.end());
@@ -561,7 +604,8 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
       bool inside = true;
       for (const auto& p : r) inside = inside && geometry::contains(z.polygon, p, 1e-6);
       if (inside)
-        out.rois.push_back({entrance ? z.name + "_entrance" : z.name + "_" + d.name, entrance ? "entrance" : "exit", poly});
+        out.rois.push_back(
+            {entrance ? z.name + "_entrance" : z.name + "_" + d.name, entrance ? "entrance" : "exit", poly});
     }
     if (!find_room_type(type) || is_corridor_type(type)) continue;
     const Box box = inner_box(z.polygon);
@@ -573,7 +617,8 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
       for (const auto& d : here)
         if (!main && pred(d)) main = &d;
     };
-    if (type == "sales_floor" || type == "dining_hall" || type == "lobby" || type == "reception" || type == "security" || type == "concourse")
+    if (type == "sales_floor" || type == "dining_hall" || type == "lobby" || type == "reception" ||
+        type == "security" || type == "concourse")
       pick([](const DoorAt& d) { return d.exterior; });
     pick([](const DoorAt& d) { return !d.exterior && is_circulation_type(d.other_type); });
     pick([](const DoorAt&) { return true; });

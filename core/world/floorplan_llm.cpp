@@ -52,7 +52,8 @@ llm::PromptVariables floor_plan_prompt_variables(std::string_view prompt, const 
 }
 
 Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& graph,
-                                         std::span<const MergedConstraint> constraints, const BuildOptions& build) {
+                                         std::span<const MergedConstraint> constraints,
+                                         const BuildOptions& build) {
   if (auto errors = floor_plan_schema().validate(answer, 50); !errors.empty())
     return fail(ErrorCode::kValidation, "the floor plan does not match its schema", std::move(errors));
   std::vector<FieldError> errors;
@@ -64,7 +65,8 @@ Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& g
     z.name = rooms[i].at("name").get<std::string>();
     z.type = canonical_room_type(rooms[i].at("type").get<std::string>());
     z.material = is_toilet_type(z.type) ? "ceramic_tile" : "painted_plaster";
-    for (const auto& p : rooms[i].at("polygon")) z.polygon.outer.push_back({p[0].get<double>(), p[1].get<double>()});
+    for (const auto& p : rooms[i].at("polygon"))
+      z.polygon.outer.push_back({p[0].get<double>(), p[1].get<double>()});
     room_index.emplace(z.name, i);
     zones.push_back(std::move(z));
   }
@@ -85,16 +87,21 @@ Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& g
   // The scene graph: every room present, every edge a door, a way in.
   for (std::size_t i = 0; i < graph.rooms.size(); ++i)
     if (!room_index.count(graph.rooms[i].name))
-      errors.push_back({"/rooms", "room '" + graph.rooms[i].name + "' (" + graph.rooms[i].type +
-                                      ") of the scene graph is missing", "", 0, 0});
+      errors.push_back(
+          {"/rooms",
+           "room '" + graph.rooms[i].name + "' (" + graph.rooms[i].type + ") of the scene graph is missing",
+           "", 0, 0});
   for (const auto& [a, b] : graph.adjacency)
     if (room_index.count(a) && room_index.count(b) && !connected.count(std::minmax(a, b)))
-      errors.push_back({"/doors", "no door connects '" + a + "' and '" + b +
-                                      "': the scene graph says they are adjacent; give them a shared wall with a door",
+      errors.push_back({"/doors",
+                        "no door connects '" + a + "' and '" + b +
+                            "': the scene graph says they are adjacent; give them a shared wall with a door",
                         "", 0, 0});
   if (!entrance)
-    errors.push_back({"/doors", "no entrance: add a door with one room (the entrance room '" + graph.entrance +
-                                    "') on an outer wall", "", 0, 0});
+    errors.push_back({"/doors",
+                      "no entrance: add a door with one room (the entrance room '" + graph.entrance +
+                          "') on an outer wall",
+                      "", 0, 0});
 
   // Geometry first (so that problems point at rooms and doors), then the furnished world.
   WorldBuilder bare;
@@ -103,9 +110,11 @@ Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& g
   for (const auto& d : doors) bare.add_door(d);
   auto checked = bare.build(build);
   if (!checked) {
-    for (const auto& e : checked.error().errors) errors.push_back({answer_pointer(e.pointer), e.message, "", 0, 0});
+    for (const auto& e : checked.error().errors)
+      errors.push_back({answer_pointer(e.pointer), e.message, "", 0, 0});
   }
-  if (!errors.empty()) return fail(ErrorCode::kValidation, "the floor plan is not a valid world", std::move(errors));
+  if (!errors.empty())
+    return fail(ErrorCode::kValidation, "the floor plan is not a valid world", std::move(errors));
 
   WorldBuilder builder = bare;
   Rng rng(0x464c4f4f52ULL);  // furnishing of an LLM plan depends on its geometry only
@@ -114,18 +123,22 @@ Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& g
   for (auto& r : f.rois) builder.add_roi(std::move(r));
   for (auto& e : f.entities) builder.add_entity(std::move(e));
   auto world = builder.build(build);
-  if (!world) world = std::move(checked);  // furnishing never makes a valid plan invalid; keep the bare one if it did
+  if (!world)
+    world = std::move(checked);  // furnishing never makes a valid plan invalid; keep the bare one if it did
 
   ComplianceReport report = check_compliance(*world, graph.domain, constraints);
   for (const auto* c : report.failures()) {
     std::string where;
-    if (auto it = room_index.find(c->element); it != room_index.end()) where = "/rooms/" + std::to_string(it->second);
+    if (auto it = room_index.find(c->element); it != room_index.end())
+      where = "/rooms/" + std::to_string(it->second);
     for (std::size_t i = 0; i < doors.size() && where.empty(); ++i)
       if (doors[i].name == c->element) where = "/doors/" + std::to_string(i) + "/width";
     const std::string bound = c->type == "max" ? "at most " : "at least ";
-    errors.push_back({where, c->name + " (" + c->ref_id + (c->section.empty() ? "" : ", " + c->section) + "): " +
-                                 c->element + " has " + (c->value ? num(*c->value) : std::string("none")) + " " + c->unit +
-                                 ", must be " + bound + num(c->required) + " " + c->unit + " — " + c->detail,
+    errors.push_back({where,
+                      c->name + " (" + c->ref_id + (c->section.empty() ? "" : ", " + c->section) +
+                          "): " + c->element + " has " + (c->value ? num(*c->value) : std::string("none")) +
+                          " " + c->unit + ", must be " + bound + num(c->required) + " " + c->unit + " — " +
+                          c->detail,
                       "", 0, 0});
   }
   if (!errors.empty())
@@ -134,7 +147,8 @@ Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& g
 }
 
 Result<FloorPlan> generate_floor_plan_llm(const llm::StructuredGenerator& generator, std::string_view prompt,
-                                          const SceneGraph& graph, std::span<const MergedConstraint> constraints,
+                                          const SceneGraph& graph,
+                                          std::span<const MergedConstraint> constraints,
                                           const LlmFloorPlanOptions& options) {
   llm::GenerationRequest r;
   r.artifact = "floor_plan";
@@ -174,7 +188,10 @@ Json floor_plan_answer(const World& world) {
   for (const auto& d : world.doors()) {
     Json names = Json::array({world.zone(d.zone).name});
     if (d.other) names.push_back(world.zone(*d.other).name);
-    doors.push_back({{"name", d.name}, {"rooms", std::move(names)}, {"position", {d.pose.x, d.pose.y}}, {"width", d.width}});
+    doors.push_back({{"name", d.name},
+                     {"rooms", std::move(names)},
+                     {"position", {d.pose.x, d.pose.y}},
+                     {"width", d.width}});
   }
   return {{"rooms", std::move(rooms)}, {"doors", std::move(doors)}};
 }

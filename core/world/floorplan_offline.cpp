@@ -23,7 +23,9 @@ int cm_up(double metres, int step = 5) {
   const int c = static_cast<int>(std::ceil(metres * 100.0 - 1e-6));
   return (c + step - 1) / step * step;
 }
-double m(int cm) { return cm / 100.0; }
+double m(int cm) {
+  return cm / 100.0;
+}
 
 struct Rect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
@@ -52,7 +54,10 @@ std::optional<Wall> shared_wall(const Rect& a, const Rect& b) {
 // Parts of rect i's sides not shared with any other rectangle: the outside walls.
 std::vector<Wall> outside_walls(const std::vector<Rect>& rects, std::size_t i) {
   const Rect& r = rects[i];
-  std::vector<Wall> sides = {{false, r.y0, r.x0, r.x1}, {true, r.x1, r.y0, r.y1}, {false, r.y1, r.x0, r.x1}, {true, r.x0, r.y0, r.y1}};
+  std::vector<Wall> sides = {{false, r.y0, r.x0, r.x1},
+                             {true, r.x1, r.y0, r.y1},
+                             {false, r.y1, r.x0, r.x1},
+                             {true, r.x0, r.y0, r.y1}};
   std::vector<Wall> out;
   for (const Wall& side : sides) {
     std::vector<std::pair<int, int>> free{{side.lo, side.hi}};
@@ -79,8 +84,8 @@ std::vector<Wall> outside_walls(const std::vector<Rect>& rects, std::size_t i) {
 struct PlanRoom {
   std::string name;
   std::string type;
-  double area = 0.0;     // target, m²
-  int min_dim = 0;       // cm
+  double area = 0.0;  // target, m²
+  int min_dim = 0;    // cm
   Rect rect;
   bool placed = false;
 };
@@ -89,7 +94,7 @@ struct DoorDraft {
   std::string name;
   int x = 0, y = 0;  // cm
   bool vertical_wall = false;
-  int width = 0;     // cm
+  int width = 0;  // cm
   std::vector<std::string> connects;
 };
 
@@ -115,7 +120,9 @@ std::string material_of(std::string_view domain, std::string_view type) {
   return "painted_plaster";
 }
 
-std::string circulation_for(std::string_view domain) { return room_program(domain).rooms.front().type; }
+std::string circulation_for(std::string_view domain) {
+  return room_program(domain).rooms.front().type;
+}
 
 class Layout {
  public:
@@ -129,7 +136,9 @@ class Layout {
     if (!circ_) {
       const std::string type = circulation_for(graph_.domain);
       std::string name = type;
-      for (int k = 2; std::any_of(graph_.rooms.begin(), graph_.rooms.end(), [&](const SceneRoom& r) { return r.name == name; }); ++k)
+      for (int k = 2; std::any_of(graph_.rooms.begin(), graph_.rooms.end(),
+                                  [&](const SceneRoom& r) { return r.name == name; });
+           ++k)
         name = type + "_" + std::to_string(k);
       for (const auto& r : graph_.rooms) graph_.adjacency.emplace_back(name, r.name);
       graph_.rooms.push_back({name, type, std::nullopt});
@@ -155,17 +164,24 @@ class Layout {
       const std::string ptr = "/adjacency/" + std::to_string(e);
       for (std::size_t r : {a, b})
         if (neighbours_[r].size() == 2) {
-          errors.push_back({ptr, "room '" + graph_.rooms[r].name + "' must already share walls with '" +
-                                     graph_.rooms[neighbours_[r][0]].name + "' and '" + graph_.rooms[neighbours_[r][1]].name +
-                                     "'; the offline layout puts at most two rooms beside a room on the " +
-                                     graph_.rooms[*circ_].type + " — connect the others through '" +
-                                     graph_.rooms[*circ_].name + "'", "", 0, 0});
+          errors.push_back({ptr,
+                            "room '" + graph_.rooms[r].name + "' must already share walls with '" +
+                                graph_.rooms[neighbours_[r][0]].name + "' and '" +
+                                graph_.rooms[neighbours_[r][1]].name +
+                                "'; the offline layout puts at most two rooms beside a room on the " +
+                                graph_.rooms[*circ_].type + " — connect the others through '" +
+                                graph_.rooms[*circ_].name + "'",
+                            "", 0, 0});
         }
       if (!errors.empty()) break;
       if (root(a) == root(b)) {
-        errors.push_back({ptr, "rooms '" + graph_.rooms[a].name + "' and '" + graph_.rooms[b].name +
-                                   "' would close a ring of rooms, which the offline layout cannot place; connect one "
-                                   "of them through '" + graph_.rooms[*circ_].name + "'", "", 0, 0});
+        errors.push_back(
+            {ptr,
+             "rooms '" + graph_.rooms[a].name + "' and '" + graph_.rooms[b].name +
+                 "' would close a ring of rooms, which the offline layout cannot place; connect one "
+                 "of them through '" +
+                 graph_.rooms[*circ_].name + "'",
+             "", 0, 0});
         break;
       }
       parent[root(a)] = root(b);
@@ -173,7 +189,8 @@ class Layout {
       neighbours_[b].push_back(a);
     }
     if (!errors.empty())
-      return fail(ErrorCode::kValidation, "the scene graph cannot be laid out by the offline generator", std::move(errors));
+      return fail(ErrorCode::kValidation, "the scene graph cannot be laid out by the offline generator",
+                  std::move(errors));
     // Chains: the paths of rooms that must stand side by side, in graph order.
     std::vector<bool> seen(n, false);
     seen[*circ_] = true;
@@ -207,7 +224,8 @@ class Layout {
     const bool dwelling = graph_.domain == "residential";
     door_w_ = cm_up(std::max(plan_.door_width, dwelling ? 0.85 : 0.9)) + 5 * static_cast<int>(rng.below(3));
     public_w_ = std::max(door_w_, cm_up(plan_.public_door_width));
-    entrance_w_ = dwelling ? std::max(door_w_, cm_up(0.95)) : std::max(public_w_, 180 + 10 * static_cast<int>(rng.below(3)));
+    entrance_w_ = dwelling ? std::max(door_w_, cm_up(0.95))
+                           : std::max(public_w_, 180 + 10 * static_cast<int>(rng.below(3)));
 
     // Target areas and narrowest dimensions.
     std::optional<std::size_t> main_bedroom;
@@ -218,7 +236,8 @@ class Layout {
       r.name = s.name;
       r.type = s.type;
       const RoomType* rt = find_room_type(s.type);
-      const double lo = rt && rt->area_hi > 0 ? rt->area_lo : 10.0, hi = rt && rt->area_hi > 0 ? rt->area_hi : 15.0;
+      const double lo = rt && rt->area_hi > 0 ? rt->area_lo : 10.0,
+                   hi = rt && rt->area_hi > 0 ? rt->area_hi : 15.0;
       r.area = s.area ? *s.area : rng.uniform(lo, hi);
       const bool main = is_bedroom_type(s.type) && !main_bedroom;
       if (main) main_bedroom = i;
@@ -229,7 +248,8 @@ class Layout {
     if (main_bedroom) {
       double biggest = 0.0;
       for (std::size_t i = 0; i < n; ++i)
-        if (is_bedroom_type(rooms_[i].type) && i != *main_bedroom) biggest = std::max(biggest, rooms_[i].area);
+        if (is_bedroom_type(rooms_[i].type) && i != *main_bedroom)
+          biggest = std::max(biggest, rooms_[i].area);
       rooms_[*main_bedroom].area = std::max(rooms_[*main_bedroom].area, biggest + 0.5);
       for (const auto& r : rooms_)
         if (is_bedroom_type(r.type)) bedroom_areas.push_back(r.area);
@@ -238,7 +258,8 @@ class Layout {
       for (std::size_t i = 0; i < n; ++i)
         if (rooms_[i].type == "storage") stores.push_back(i);
       for (auto i : stores)
-        rooms_[i].area = std::max(rooms_[i].area, dw.storage_area * 1.05 / static_cast<double>(stores.size()));
+        rooms_[i].area =
+            std::max(rooms_[i].area, dw.storage_area * 1.05 / static_cast<double>(stores.size()));
     }
 
     // Caps at the ends of the circulation, bands of rooms along its sides.
@@ -262,7 +283,8 @@ class Layout {
     std::vector<std::vector<std::size_t>> pieces_of(caps.size());
     for (std::size_t k = 0; k < caps.size(); ++k) {
       const auto& chain = chains_[chain_of_[caps[k]]];
-      const auto pos = static_cast<std::size_t>(std::find(chain.begin(), chain.end(), caps[k]) - chain.begin());
+      const auto pos =
+          static_cast<std::size_t>(std::find(chain.begin(), chain.end(), caps[k]) - chain.begin());
       std::vector<std::size_t> before(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(pos));
       std::reverse(before.begin(), before.end());
       std::vector<std::size_t> after(chain.begin() + static_cast<std::ptrdiff_t>(pos) + 1, chain.end());
@@ -274,7 +296,8 @@ class Layout {
       }
     }
     std::size_t band_rooms = n - 1 - caps.size();
-    const bool single = !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
+    const bool single =
+        !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
     std::vector<std::size_t> left[2], middle[2], right[2];
     const bool first_cap_left = rng.chance(0.5);
     std::vector<bool> used(n, false);
@@ -341,11 +364,13 @@ class Layout {
     PlanRoom& c = rooms_[*circ_];
     int L = 0, W = 0;
     if (corridor) {
-      W = cm_up(std::max(plan_.corridor_width, m(std::max(door_w_, public_w_)) + 0.35) + rng.uniform(0.0, 0.3));
+      W = cm_up(std::max(plan_.corridor_width, m(std::max(door_w_, public_w_)) + 0.35) +
+                rng.uniform(0.0, 0.3));
       L = std::max({length[0], length[1], 300});
     } else {
       const RoomType* rt = find_room_type(c.type);
-      const double area = graph_.rooms[*circ_].area ? *graph_.rooms[*circ_].area : rng.uniform(rt->area_lo, rt->area_hi);
+      const double area =
+          graph_.rooms[*circ_].area ? *graph_.rooms[*circ_].area : rng.uniform(rt->area_lo, rt->area_hi);
       c.area = area * scale;
       L = std::max({length[0], length[1], cm_up(std::sqrt(c.area * rng.uniform(0.9, 1.7)))});
       W = cm_up(std::max({c.area / m(L), 4.0, m(c.min_dim)}));
@@ -369,11 +394,12 @@ class Layout {
       for (std::size_t k = 0; k < band[b].size(); ++k) {
         const auto r = band[b][k];
         const bool first_right = !right[b].empty() && r == right[b].front();
-        if (first_right) x = L - [&] {
-          int w = 0;
-          for (auto q : right[b]) w += width[q];
-          return w;
-        }();
+        if (first_right)
+          x = L - [&] {
+            int w = 0;
+            for (auto q : right[b]) w += width[q];
+            return w;
+          }();
         x_of[r] = x;
         x += width[r];
       }
@@ -382,7 +408,8 @@ class Layout {
     c.placed = true;
     for (int b = 0; b < 2; ++b)
       for (auto r : band[b]) {
-        rooms_[r].rect = b == 0 ? Rect{x_of[r], W, x_of[r] + width[r], W + depth[b]} : Rect{x_of[r], -depth[b], x_of[r] + width[r], 0};
+        rooms_[r].rect = b == 0 ? Rect{x_of[r], W, x_of[r] + width[r], W + depth[b]}
+                                : Rect{x_of[r], -depth[b], x_of[r] + width[r], 0};
         rooms_[r].placed = true;
       }
     for (auto cap : caps) {
@@ -412,7 +439,8 @@ class Layout {
       std::string name = "door_" + an + "_" + bn;
       for (int k = 2; names.count(name); ++k) name = "door_" + an + "_" + bn + "_" + std::to_string(k);
       names.insert(name);
-      if (!place_door(rng, name, *wall, w, {an, bn})) return "the wall between '" + an + "' and '" + bn + "' is too short";
+      if (!place_door(rng, name, *wall, w, {an, bn}))
+        return "the wall between '" + an + "' and '" + bn + "' is too short";
     }
     {
       auto walls = outside_walls(rects, entrance_);
@@ -452,8 +480,8 @@ class Layout {
       return Point{m(tx - min_x), m(ty - min_y)};
     };
     for (const auto& r : rooms_) {
-      std::vector<Point> ring{point(r.rect.x0, r.rect.y0), point(r.rect.x1, r.rect.y0), point(r.rect.x1, r.rect.y1),
-                              point(r.rect.x0, r.rect.y1)};
+      std::vector<Point> ring{point(r.rect.x0, r.rect.y0), point(r.rect.x1, r.rect.y0),
+                              point(r.rect.x1, r.rect.y1), point(r.rect.x0, r.rect.y1)};
       if (geometry::signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
       // Start at the lower-left corner: stable text whatever the orientation.
       const auto first = std::min_element(ring.begin(), ring.end(), [](const Point& a, const Point& b) {
@@ -480,7 +508,8 @@ class Layout {
   // first, then other rooms except toilets, bedrooms and stores; no randomness, so a plan that
   // needs no second exit is unchanged. False when no outside wall takes one.
   std::optional<std::string> add_exit() {
-    const auto main = std::find_if(doors_.begin(), doors_.end(), [](const DoorDraft& d) { return d.name == "main_entrance"; });
+    const auto main = std::find_if(doors_.begin(), doors_.end(),
+                                   [](const DoorDraft& d) { return d.name == "main_entrance"; });
     if (main == doors_.end()) return std::nullopt;
     std::vector<Rect> rects;
     for (const auto& r : rooms_) rects.push_back(r.rect);
@@ -494,8 +523,8 @@ class Layout {
     auto tier = [&](std::size_t r) {
       const std::string& t = rooms_[r].type;
       if (is_circulation_type(t)) return 0;
-      if (is_public(r) || t == "dining_hall" || t == "sales_floor" || t == "concourse" || t == "open_office" ||
-          t == "warehouse_floor" || t == "loading_bay")
+      if (is_public(r) || t == "dining_hall" || t == "sales_floor" || t == "concourse" ||
+          t == "open_office" || t == "warehouse_floor" || t == "loading_bay")
         return 1;
       if (is_toilet_type(t) || is_bedroom_type(t) || t == "storage") return 3;
       return 2;
@@ -556,7 +585,8 @@ class Layout {
     return is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room";
   }
 
-  bool place_door(Rng& rng, const std::string& name, const Wall& wall, int width, std::vector<std::string> connects) {
+  bool place_door(Rng& rng, const std::string& name, const Wall& wall, int width,
+                  std::vector<std::string> connects) {
     const int margin = 15;
     const int lo = wall.lo + margin + (width + 1) / 2, hi = wall.hi - margin - (width + 1) / 2;
     if (lo > hi) return false;
@@ -594,7 +624,9 @@ class Layout {
   bool mirror_ = false;
 };
 
-const char* floor_material(std::string_view domain) { return style_of(domain).floor; }
+const char* floor_material(std::string_view domain) {
+  return style_of(domain).floor;
+}
 
 }  // namespace
 
@@ -605,10 +637,15 @@ Json knowledge_provenance(std::span<const MergedConstraint> constraints) {
     auto it = by_ref.find(c.ref_id);
     if (it == by_ref.end()) {
       Json sources = Json::array();
-      for (const auto& s : c.sources) sources.push_back({{"title", s.title}, {"url", s.url}, {"section", s.section}});
-      it = by_ref.emplace(c.ref_id, Json{{"ref_id", c.ref_id}, {"title", c.title}, {"building_type", c.building_type},
-                                         {"jurisdiction", c.jurisdiction}, {"sources", std::move(sources)},
-                                         {"constraints", Json::array()}})
+      for (const auto& s : c.sources)
+        sources.push_back({{"title", s.title}, {"url", s.url}, {"section", s.section}});
+      it = by_ref
+               .emplace(c.ref_id, Json{{"ref_id", c.ref_id},
+                                       {"title", c.title},
+                                       {"building_type", c.building_type},
+                                       {"jurisdiction", c.jurisdiction},
+                                       {"sources", std::move(sources)},
+                                       {"constraints", Json::array()}})
                .first;
       order.push_back(c.ref_id);
     }
@@ -622,7 +659,8 @@ Json knowledge_provenance(std::span<const MergedConstraint> constraints) {
 Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const MergedConstraint> constraints,
                                       const OfflineOptions& options) {
   if (graph.rooms.empty())
-    return fail(ErrorCode::kValidation, "the scene graph has no rooms", {{"/rooms", "needs at least one room", "", 0, 0}});
+    return fail(ErrorCode::kValidation, "the scene graph has no rooms",
+                {{"/rooms", "needs at least one room", "", 0, 0}});
   Layout layout(graph, constraints);
   if (auto s = layout.prepare(); !s) return tl::unexpected(s.error());
   const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
@@ -677,10 +715,12 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     if (!report.passed) {
       double grow = 1.1;
       for (const auto* c : report.failures())
-        if (c->value && *c->value > 0 && c->type == "min" && c->name.rfind("exit_", 0) != 0) grow = std::max(grow, c->required / *c->value * 1.02);
+        if (c->value && *c->value > 0 && c->type == "min" && c->name.rfind("exit_", 0) != 0)
+          grow = std::max(grow, c->required / *c->value * 1.02);
       scale *= std::min(grow, 1.6);
       std::string what;
-      for (const auto* c : report.failures()) what += (what.empty() ? "" : ", ") + c->name + " at " + c->element;
+      for (const auto* c : report.failures())
+        what += (what.empty() ? "" : ", ") + c->name + " at " + c->element;
       tried.push_back("not compliant: " + what);
       last_report = std::move(report);
       continue;
@@ -688,20 +728,19 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     FloorPlan plan{std::move(*world), std::move(report), layout.graph(), Json::object()};
     Json notes = layout.notes();
     if (exit_note) notes.push_back(*exit_note);
-    plan.provenance = {{"generator", "offline"},
-                       {"seed", options.seed},
-                       {"domain", layout.graph().domain},
-                       {"attempts", attempt + 1},
-                       {"notes", std::move(notes)},
-                       {"knowledge", knowledge_provenance(constraints)}};
+    plan.provenance = {{"generator", "offline"},          {"seed", options.seed},
+                       {"domain", layout.graph().domain}, {"attempts", attempt + 1},
+                       {"notes", std::move(notes)},       {"knowledge", knowledge_provenance(constraints)}};
     return plan;
   }
   std::vector<FieldError> errors;
   if (last_report)
     for (const auto* c : last_report->failures())
-      errors.push_back({"", c->name + " (" + c->ref_id + "): " + c->element + " has " +
-                                (c->value ? std::to_string(*c->value) : std::string("nothing")) + " " + c->unit +
-                                ", required " + std::to_string(c->required), "", 0, 0});
+      errors.push_back({"",
+                        c->name + " (" + c->ref_id + "): " + c->element + " has " +
+                            (c->value ? std::to_string(*c->value) : std::string("nothing")) + " " + c->unit +
+                            ", required " + std::to_string(c->required),
+                        "", 0, 0});
   if (last_error)
     for (const auto& e : last_error->errors) errors.push_back(e);
   std::string detail = "no compliant plan after " + std::to_string(attempts) + " attempts";

@@ -31,7 +31,8 @@ struct OfflineOptions {
 // kValidation (with /adjacency/<i> or /rooms/<i> pointers) when the graph cannot be laid out
 // this way (a room that must touch more than two rooms besides the circulation, a cycle of
 // rooms) or no attempt produced a compliant plan (the last report's failures are listed).
-Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const knowledge::MergedConstraint> constraints,
+Result<FloorPlan> generate_floor_plan(const SceneGraph& graph,
+                                      std::span<const knowledge::MergedConstraint> constraints,
                                       const OfflineOptions& options = {});
 
 // The knowledge behind a plan, for its provenance: one item per code entry used, with the

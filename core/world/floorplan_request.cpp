@@ -24,7 +24,8 @@ Result<FloorPlanRequest> floor_plan_request_from_json(const Json& body) {
     for (auto t : knowledge::building_types()) all += (all.empty() ? "" : ", ") + std::string(t);
     c.add("/domain", "unknown building type '" + *r.domain + "'; one of " + all);
   }
-  if (auto seed = c.integer(body, "", "seed", false, 0, kMaxFloorPlanSeed)) r.seed = static_cast<std::uint64_t>(*seed);
+  if (auto seed = c.integer(body, "", "seed", false, 0, kMaxFloorPlanSeed))
+    r.seed = static_cast<std::uint64_t>(*seed);
   if (auto g = c.string(body, "", "generator", false)) {
     if (*g != "offline" && *g != "llm") c.add("/generator", "must be offline or llm");
     r.generator = *g;
@@ -43,11 +44,13 @@ Result<ResolvedSceneGraph> resolve_scene_graph(const FloorPlanRequest& request) 
     if (!g) return tl::unexpected(g.error());
     const bool had_domain = request.scene_graph->contains("domain");
     if (request.domain && had_domain && g->domain != *request.domain)
-      return fail(ErrorCode::kValidation, "the domain and the scene graph's domain disagree",
-                  {{"/domain", "is " + *request.domain + " but /scene_graph/domain is " + g->domain, "", 0, 0}});
+      return fail(
+          ErrorCode::kValidation, "the domain and the scene graph's domain disagree",
+          {{"/domain", "is " + *request.domain + " but /scene_graph/domain is " + g->domain, "", 0, 0}});
     if (request.domain) g->domain = *request.domain;
-    out.classification = had_domain || request.domain ? Json{{"given", true}, {"type", g->domain}}
-                                                      : Json{{"given", false}, {"type", g->domain}, {"from", "room names"}};
+    out.classification = had_domain || request.domain
+                             ? Json{{"given", true}, {"type", g->domain}}
+                             : Json{{"given", false}, {"type", g->domain}, {"from", "room names"}};
     out.graph = std::move(*g);
     return out;
   }

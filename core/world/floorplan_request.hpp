@@ -27,7 +27,8 @@ Result<FloorPlanRequest> floor_plan_request_from_json(const Json& body);
 
 struct ResolvedSceneGraph {
   SceneGraph graph;
-  Json classification;  // how the domain was found: {type, confidence, explanation, evidence} or {given: true}
+  Json
+      classification;  // how the domain was found: {type, confidence, explanation, evidence} or {given: true}
 };
 
 // The scene graph (its pointers prefixed /scene_graph) or the prompt's programme; the request's

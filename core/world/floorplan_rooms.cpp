@@ -53,14 +53,30 @@ constexpr std::array kRoomTypes = {
 };
 
 constexpr std::array<std::pair<std::string_view, std::string_view>, 24> kSynonyms = {{
-    {"living", "living_room"},        {"lounge", "living_room"},      {"bed_room", "bedroom"},
-    {"hallways", "hallway"},          {"passage", "hallway"},        {"restroom", "toilet"},
-    {"wc", "toilet"},                 {"washroom", "toilet"},         {"ward", "patient_room"},
-    {"patient_bedroom", "patient_room"}, {"exam_room", "treatment_room"}, {"examination_room", "treatment_room"},
-    {"consultation_room", "treatment_room"}, {"office", "private_office"}, {"conference_room", "meeting_room"},
-    {"canteen", "dining_hall"},       {"dining_area", "dining_hall"}, {"shop_floor", "sales_floor"},
-    {"stockroom", "stock_room"},      {"store_room", "storage"},      {"waiting_area", "waiting_room"},
-    {"icu", "icu_room"},              {"gate", "gate_area"},          {"entrance_hall", "lobby"},
+    {"living", "living_room"},
+    {"lounge", "living_room"},
+    {"bed_room", "bedroom"},
+    {"hallways", "hallway"},
+    {"passage", "hallway"},
+    {"restroom", "toilet"},
+    {"wc", "toilet"},
+    {"washroom", "toilet"},
+    {"ward", "patient_room"},
+    {"patient_bedroom", "patient_room"},
+    {"exam_room", "treatment_room"},
+    {"examination_room", "treatment_room"},
+    {"consultation_room", "treatment_room"},
+    {"office", "private_office"},
+    {"conference_room", "meeting_room"},
+    {"canteen", "dining_hall"},
+    {"dining_area", "dining_hall"},
+    {"shop_floor", "sales_floor"},
+    {"stockroom", "stock_room"},
+    {"store_room", "storage"},
+    {"waiting_area", "waiting_room"},
+    {"icu", "icu_room"},
+    {"gate", "gate_area"},
+    {"entrance_hall", "lobby"},
 }};
 
 std::string lower(std::string_view s) {
@@ -73,7 +89,9 @@ std::string lower(std::string_view s) {
 
 }  // namespace
 
-std::span<const RoomType> room_types() { return kRoomTypes; }
+std::span<const RoomType> room_types() {
+  return kRoomTypes;
+}
 
 const RoomType* find_room_type(std::string_view type) {
   std::string t = lower(type);
@@ -97,7 +115,9 @@ bool is_hall_type(std::string_view type) {
   const RoomType* r = find_room_type(type);
   return r && r->circulation == Circulation::kHall;
 }
-bool is_bedroom_type(std::string_view type) { return canonical_room_type(type) == "bedroom"; }
+bool is_bedroom_type(std::string_view type) {
+  return canonical_room_type(type) == "bedroom";
+}
 bool is_habitable_type(std::string_view type) {
   const RoomType* r = find_room_type(type);
   return r && r->habitable;

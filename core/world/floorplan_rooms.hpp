@@ -11,12 +11,13 @@ namespace socsim::world {
 enum class Circulation { kNone, kCorridor, kHall };
 
 struct RoomType {
-  std::string_view type;      // zone type, e.g. "patient_room"
-  std::string_view label;     // words for people and prompts, e.g. "patient room"
+  std::string_view type;   // zone type, e.g. "patient_room"
+  std::string_view label;  // words for people and prompts, e.g. "patient room"
   Circulation circulation = Circulation::kNone;
   bool habitable = false;     // a habitable room of a dwelling (IRC R304): living, sleeping, dining, study
-  std::string_view load_use;  // occupant-load factor the room's area counts under ("business", "waiting" …); empty: accessory
-  double area_lo = 0.0;       // typical net area (m²) of a generated room, before code minima
+  std::string_view load_use;  // occupant-load factor the room's area counts under ("business", "waiting" …);
+                              // empty: accessory
+  double area_lo = 0.0;  // typical net area (m²) of a generated room, before code minima
   double area_hi = 0.0;
 };
 
@@ -29,9 +30,11 @@ std::string canonical_room_type(std::string_view type);
 
 bool is_corridor_type(std::string_view type);  // corridor, hallway
 bool is_hall_type(std::string_view type);      // dining_hall, sales_floor, warehouse_floor, concourse
-inline bool is_circulation_type(std::string_view type) { return is_corridor_type(type) || is_hall_type(type); }
-bool is_bedroom_type(std::string_view type);   // bedroom (dwellings)
+inline bool is_circulation_type(std::string_view type) {
+  return is_corridor_type(type) || is_hall_type(type);
+}
+bool is_bedroom_type(std::string_view type);  // bedroom (dwellings)
 bool is_habitable_type(std::string_view type);
-bool is_toilet_type(std::string_view type);    // toilet, bathroom
+bool is_toilet_type(std::string_view type);  // toilet, bathroom
 
 }  // namespace socsim::world

@@ -27,19 +27,53 @@ struct Program {
 
 const std::vector<Program>& programs() {
   static const std::vector<Program> p = {
-      {"residential", "hallway", "hallway",
-       {{"living_room", 1, ""}, {"kitchen", 1, "living_room"}, {"bedroom", 2, ""}, {"bathroom", 1, ""}, {"storage", 1, ""}}},
-      {"office", "corridor", "reception",
-       {{"reception", 1, ""}, {"open_office", 1, ""}, {"meeting_room", 2, ""}, {"kitchenette", 1, ""}, {"toilet", 2, ""}}},
-      {"hospital", "corridor", "lobby",
-       {{"lobby", 1, ""}, {"patient_room", 4, ""}, {"nurse_station", 1, ""}, {"treatment_room", 2, ""}, {"toilet", 2, ""}}},
-      {"canteen", "dining_hall", "dining_hall", {{"kitchen", 1, ""}, {"storage", 1, "kitchen"}, {"toilet", 2, ""}}},
-      {"retail", "sales_floor", "sales_floor", {{"stock_room", 1, ""}, {"private_office", 1, ""}, {"toilet", 1, ""}}},
-      {"warehouse", "warehouse_floor", "warehouse_floor",
+      {"residential",
+       "hallway",
+       "hallway",
+       {{"living_room", 1, ""},
+        {"kitchen", 1, "living_room"},
+        {"bedroom", 2, ""},
+        {"bathroom", 1, ""},
+        {"storage", 1, ""}}},
+      {"office",
+       "corridor",
+       "reception",
+       {{"reception", 1, ""},
+        {"open_office", 1, ""},
+        {"meeting_room", 2, ""},
+        {"kitchenette", 1, ""},
+        {"toilet", 2, ""}}},
+      {"hospital",
+       "corridor",
+       "lobby",
+       {{"lobby", 1, ""},
+        {"patient_room", 4, ""},
+        {"nurse_station", 1, ""},
+        {"treatment_room", 2, ""},
+        {"toilet", 2, ""}}},
+      {"canteen",
+       "dining_hall",
+       "dining_hall",
+       {{"kitchen", 1, ""}, {"storage", 1, "kitchen"}, {"toilet", 2, ""}}},
+      {"retail",
+       "sales_floor",
+       "sales_floor",
+       {{"stock_room", 1, ""}, {"private_office", 1, ""}, {"toilet", 1, ""}}},
+      {"warehouse",
+       "warehouse_floor",
+       "warehouse_floor",
        {{"loading_bay", 1, ""}, {"private_office", 1, ""}, {"break_room", 1, ""}, {"toilet", 1, ""}}},
-      {"school", "corridor", "lobby",
-       {{"lobby", 1, ""}, {"classroom", 4, ""}, {"staff_room", 1, ""}, {"private_office", 1, ""}, {"toilet", 2, ""}}},
-      {"airport", "concourse", "security",
+      {"school",
+       "corridor",
+       "lobby",
+       {{"lobby", 1, ""},
+        {"classroom", 4, ""},
+        {"staff_room", 1, ""},
+        {"private_office", 1, ""},
+        {"toilet", 2, ""}}},
+      {"airport",
+       "concourse",
+       "security",
        {{"security", 1, ""}, {"gate_area", 2, ""}, {"cafe", 1, ""}, {"toilet", 2, ""}}},
   };
   return p;
@@ -60,29 +94,52 @@ struct Term {
 
 const std::vector<Term>& terms() {
   static const std::vector<Term> t = {
-      {{"patient", "room"}, "patient_room"},       {{"patient", "bedroom"}, "patient_room"},
-      {{"treatment", "room"}, "treatment_room"},   {{"exam", "room"}, "treatment_room"},
-      {{"examination", "room"}, "treatment_room"}, {{"consultation", "room"}, "treatment_room"},
-      {{"consulting", "room"}, "treatment_room"},  {{"nurse", "station"}, "nurse_station"},
-      {{"waiting", "room"}, "waiting_room"},       {{"icu", "room"}, "icu_room"},
-      {{"meeting", "room"}, "meeting_room"},       {{"conference", "room"}, "meeting_room"},
-      {{"private", "office"}, "private_office"},   {{"open", "plan", "office"}, "open_office"},
-      {{"open", "office"}, "open_office"},         {{"living", "room"}, "living_room"},
-      {{"dining", "room"}, "dining_room"},         {{"storage", "room"}, "storage"},
-      {{"store", "room"}, "storage"},              {{"stock", "room"}, "stock_room"},
-      {{"staff", "room"}, "staff_room"},           {{"break", "room"}, "break_room"},
-      {{"loading", "bay"}, "loading_bay"},         {{"loading", "dock"}, "loading_bay"},
-      {{"coffee", "shop"}, "cafe"},                {{"security", "checkpoint"}, "security"},
-      {{"bedroom"}, "bedroom"},                    {{"bathroom"}, "bathroom"},
-      {{"toilet"}, "toilet"},                      {{"restroom"}, "toilet"},
-      {{"washroom"}, "toilet"},                    {{"wc"}, "toilet"},
-      {{"kitchenette"}, "kitchenette"},            {{"kitchen"}, "kitchen"},
-      {{"lounge"}, "living_room"},                 {{"study"}, "study"},
-      {{"storeroom"}, "storage"},                  {{"stockroom"}, "stock_room"},
-      {{"classroom"}, "classroom"},                {{"cafe"}, "cafe"},
-      {{"reception"}, "reception"},                {{"lobby"}, "lobby"},
-      {{"icu"}, "icu_room", true},                 {{"office"}, "private_office", true},
-      {{"gate"}, "gate_area", true},               {{"ward"}, "patient_room", true},
+      {{"patient", "room"}, "patient_room"},
+      {{"patient", "bedroom"}, "patient_room"},
+      {{"treatment", "room"}, "treatment_room"},
+      {{"exam", "room"}, "treatment_room"},
+      {{"examination", "room"}, "treatment_room"},
+      {{"consultation", "room"}, "treatment_room"},
+      {{"consulting", "room"}, "treatment_room"},
+      {{"nurse", "station"}, "nurse_station"},
+      {{"waiting", "room"}, "waiting_room"},
+      {{"icu", "room"}, "icu_room"},
+      {{"meeting", "room"}, "meeting_room"},
+      {{"conference", "room"}, "meeting_room"},
+      {{"private", "office"}, "private_office"},
+      {{"open", "plan", "office"}, "open_office"},
+      {{"open", "office"}, "open_office"},
+      {{"living", "room"}, "living_room"},
+      {{"dining", "room"}, "dining_room"},
+      {{"storage", "room"}, "storage"},
+      {{"store", "room"}, "storage"},
+      {{"stock", "room"}, "stock_room"},
+      {{"staff", "room"}, "staff_room"},
+      {{"break", "room"}, "break_room"},
+      {{"loading", "bay"}, "loading_bay"},
+      {{"loading", "dock"}, "loading_bay"},
+      {{"coffee", "shop"}, "cafe"},
+      {{"security", "checkpoint"}, "security"},
+      {{"bedroom"}, "bedroom"},
+      {{"bathroom"}, "bathroom"},
+      {{"toilet"}, "toilet"},
+      {{"restroom"}, "toilet"},
+      {{"washroom"}, "toilet"},
+      {{"wc"}, "toilet"},
+      {{"kitchenette"}, "kitchenette"},
+      {{"kitchen"}, "kitchen"},
+      {{"lounge"}, "living_room"},
+      {{"study"}, "study"},
+      {{"storeroom"}, "storage"},
+      {{"stockroom"}, "stock_room"},
+      {{"classroom"}, "classroom"},
+      {{"cafe"}, "cafe"},
+      {{"reception"}, "reception"},
+      {{"lobby"}, "lobby"},
+      {{"icu"}, "icu_room", true},
+      {{"office"}, "private_office", true},
+      {{"gate"}, "gate_area", true},
+      {{"ward"}, "patient_room", true},
   };
   return t;
 }
@@ -92,7 +149,8 @@ std::string_view localise(std::string_view domain, std::string_view type) {
   if (domain == "residential" && type == "toilet") return "bathroom";
   if (domain != "residential" && type == "bathroom") return "toilet";
   if (domain == "hospital" && type == "bedroom") return "patient_room";
-  if ((domain == "hospital" || domain == "school" || domain == "airport") && type == "reception") return "lobby";
+  if ((domain == "hospital" || domain == "school" || domain == "airport") && type == "reception")
+    return "lobby";
   if (domain == "office" && type == "lobby") return "reception";
   if (domain == "retail" && type == "storage") return "stock_room";
   return type;
@@ -100,13 +158,15 @@ std::string_view localise(std::string_view domain, std::string_view type) {
 
 std::optional<int> number_word(std::string_view w) {
   static constexpr std::array<std::string_view, 21> kWords = {
-      "zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
-      "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty"};
+      "zero",     "one",     "two",     "three",     "four",     "five",     "six",
+      "seven",    "eight",   "nine",    "ten",       "eleven",   "twelve",   "thirteen",
+      "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen", "twenty"};
   for (std::size_t i = 0; i < kWords.size(); ++i)
     if (w == kWords[i]) return static_cast<int>(i);
   if (w == "single") return 1;
   if (w == "couple" || w == "pair") return 2;
-  if (!w.empty() && w.size() <= 4 && std::all_of(w.begin(), w.end(), [](char c) { return c >= '0' && c <= '9'; }))
+  if (!w.empty() && w.size() <= 4 &&
+      std::all_of(w.begin(), w.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return std::stoi(std::string(w));
   return std::nullopt;
 }
@@ -137,7 +197,9 @@ bool is_stop(std::string_view w) {
   return w == "and" || w == "with" || w == "or" || w == "plus" || w == "a" || w == "an" || w == "the" ||
          w == "for" || w == "in" || w == "has" || w == "have";
 }
-bool is_negation(std::string_view w) { return w == "no" || w == "not" || w == "without" || w == "non"; }
+bool is_negation(std::string_view w) {
+  return w == "no" || w == "not" || w == "without" || w == "non";
+}
 
 std::string room_name(std::string_view type, int index, int count) {
   if (count <= 1) return std::string(type);
@@ -165,7 +227,8 @@ SceneGraph room_program(std::string_view domain, const std::map<std::string, int
   std::vector<ProgramRoom> rooms = p.rooms;
   for (const auto& [type, n] : counts) {
     if (is_circulation_type(type)) continue;
-    const bool known = std::any_of(rooms.begin(), rooms.end(), [&](const ProgramRoom& r) { return r.type == type; });
+    const bool known =
+        std::any_of(rooms.begin(), rooms.end(), [&](const ProgramRoom& r) { return r.type == type; });
     if (!known) {
       const RoomType* rt = find_room_type(type);
       if (rt) rooms.push_back({rt->type, n, ""});
@@ -180,7 +243,8 @@ SceneGraph room_program(std::string_view domain, const std::map<std::string, int
       g.rooms.push_back({name, std::string(r.type), std::nullopt});
       first_of_type.emplace(std::string(r.type), name);
       const auto link = first_of_type.find(std::string(r.link));
-      g.adjacency.emplace_back(r.link.empty() || link == first_of_type.end() ? circulation : link->second, name);
+      g.adjacency.emplace_back(r.link.empty() || link == first_of_type.end() ? circulation : link->second,
+                               name);
     }
   }
   const auto entrance = first_of_type.find(std::string(p.entrance));
@@ -190,7 +254,8 @@ SceneGraph room_program(std::string_view domain, const std::map<std::string, int
 
 Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::optional<std::string> domain) {
   if (prompt.find_first_not_of(" \t\r\n") == std::string_view::npos)
-    return fail(ErrorCode::kValidation, "describe the building", {{"/prompt", "must not be empty", "", 0, 0}});
+    return fail(ErrorCode::kValidation, "describe the building",
+                {{"/prompt", "must not be empty", "", 0, 0}});
   if (prompt.size() > 4000)
     return fail(ErrorCode::kValidation, "prompt too long", {{"/prompt", "at most 4000 bytes", "", 0, 0}});
   PromptSceneGraph out;
@@ -198,7 +263,8 @@ Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::o
   if (domain && !knowledge::is_building_type(*domain)) {
     std::string all;
     for (auto t : knowledge::building_types()) all += (all.empty() ? "" : ", ") + std::string(t);
-    return fail(ErrorCode::kValidation, "unknown domain '" + *domain + "'", {{"/domain", "one of " + all, "", 0, 0}});
+    return fail(ErrorCode::kValidation, "unknown domain '" + *domain + "'",
+                {{"/domain", "one of " + all, "", 0, 0}});
   }
   const std::string d = domain ? *domain : out.classification.type;
 
@@ -238,8 +304,10 @@ Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::o
     if (n) {
       if (*n > kMaxRoomsPerType)
         return fail(ErrorCode::kValidation, "too many rooms of one type",
-                    {{"/prompt", "asks for " + std::to_string(*n) + " rooms of type " + type + "; at most " +
-                                     std::to_string(kMaxRoomsPerType), "", 0, 0}});
+                    {{"/prompt",
+                      "asks for " + std::to_string(*n) + " rooms of type " + type + "; at most " +
+                          std::to_string(kMaxRoomsPerType),
+                      "", 0, 0}});
       if (counted.insert(type).second) counts[type] = *n;
     } else if (!counts.count(type)) {
       counts[type] = -1;  // mentioned without a number: present at least once
@@ -252,7 +320,8 @@ Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::o
       ++it;
       continue;
     }
-    const auto n = std::count_if(base.rooms.begin(), base.rooms.end(), [&](const SceneRoom& r) { return r.type == it->first; });
+    const auto n = std::count_if(base.rooms.begin(), base.rooms.end(),
+                                 [&](const SceneRoom& r) { return r.type == it->first; });
     if (n > 0) {
       it = counts.erase(it);
     } else {
@@ -264,15 +333,18 @@ Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::o
   out.graph = room_program(d, counts);
   if (out.graph.rooms.size() > kMaxSceneRooms)
     return fail(ErrorCode::kValidation, "too many rooms",
-                {{"/prompt", "describes " + std::to_string(out.graph.rooms.size()) + " rooms; at most " +
-                                 std::to_string(kMaxSceneRooms), "", 0, 0}});
+                {{"/prompt",
+                  "describes " + std::to_string(out.graph.rooms.size()) + " rooms; at most " +
+                      std::to_string(kMaxSceneRooms),
+                  "", 0, 0}});
   return out;
 }
 
 Result<SceneGraph> scene_graph_from_json(const Json& j, const std::string& pointer) {
   std::vector<FieldError> errors = scene_graph_schema().validate(j, 50);
   for (auto& e : errors) e.pointer = pointer + e.pointer;
-  if (!errors.empty()) return fail(ErrorCode::kValidation, "the scene graph does not match its schema", std::move(errors));
+  if (!errors.empty())
+    return fail(ErrorCode::kValidation, "the scene graph does not match its schema", std::move(errors));
 
   SceneGraph g;
   std::map<std::string, std::size_t> index;
@@ -284,8 +356,10 @@ Result<SceneGraph> scene_graph_from_json(const Json& j, const std::string& point
     if (rooms[i].contains("area")) r.area = rooms[i].at("area").get<double>();
     const std::string ptr = pointer + "/rooms/" + std::to_string(i);
     if (auto [it, fresh] = index.emplace(r.name, i); !fresh)
-      errors.push_back({ptr + "/name", "duplicate room name '" + r.name + "' (already " + pointer + "/rooms/" +
-                                           std::to_string(it->second) + ")", "", 0, 0});
+      errors.push_back({ptr + "/name",
+                        "duplicate room name '" + r.name + "' (already " + pointer + "/rooms/" +
+                            std::to_string(it->second) + ")",
+                        "", 0, 0});
     g.rooms.push_back(std::move(r));
   }
   std::vector<std::vector<std::size_t>> neighbours(g.rooms.size());
@@ -343,7 +417,8 @@ Result<SceneGraph> scene_graph_from_json(const Json& j, const std::string& point
                               "' by any chain of adjacency edges, so it could not be reached",
                           "", 0, 0});
   }
-  if (!errors.empty()) return fail(ErrorCode::kValidation, "the scene graph is inconsistent", std::move(errors));
+  if (!errors.empty())
+    return fail(ErrorCode::kValidation, "the scene graph is inconsistent", std::move(errors));
 
   if (j.contains("domain")) {
     g.domain = j.at("domain").get<std::string>();
@@ -365,7 +440,10 @@ Json to_json(const SceneGraph& g) {
   }
   Json edges = Json::array();
   for (const auto& [a, b] : g.adjacency) edges.push_back(Json::array({a, b}));
-  return Json{{"domain", g.domain}, {"rooms", std::move(rooms)}, {"adjacency", std::move(edges)}, {"entrance", g.entrance}};
+  return Json{{"domain", g.domain},
+              {"rooms", std::move(rooms)},
+              {"adjacency", std::move(edges)},
+              {"entrance", g.entrance}};
 }
 
 }  // namespace socsim::world

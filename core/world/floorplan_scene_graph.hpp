@@ -16,8 +16,8 @@ namespace socsim::world {
 
 struct SceneRoom {
   std::string name;
-  std::string type;             // canonical room type when known (floorplan_rooms.hpp)
-  std::optional<double> area;   // wanted net area, m²
+  std::string type;            // canonical room type when known (floorplan_rooms.hpp)
+  std::optional<double> area;  // wanted net area, m²
   friend bool operator==(const SceneRoom&, const SceneRoom&) = default;
 };
 
@@ -25,7 +25,7 @@ struct SceneGraph {
   std::string domain;  // building type (knowledge::building_types())
   std::vector<SceneRoom> rooms;
   std::vector<std::pair<std::string, std::string>> adjacency;  // each edge: a door on a shared wall
-  std::string entrance;  // room with the door to the outside
+  std::string entrance;                                        // room with the door to the outside
   friend bool operator==(const SceneGraph&, const SceneGraph&) = default;
 };
 
@@ -55,6 +55,7 @@ struct PromptSceneGraph {
 // Classifies the prompt (unless `domain` is given), reads room counts and mentioned room types
 // ("a clinic with six patient rooms and a waiting room") and builds the domain's room program.
 // kValidation naming /prompt or /domain for empty text, an unknown domain or too many rooms.
-Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::optional<std::string> domain = {});
+Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt,
+                                                 std::optional<std::string> domain = {});
 
 }  // namespace socsim::world

@@ -8,9 +8,12 @@ namespace {
 
 JsonSchema compile_embedded(std::string_view text, const char* what) {
   auto parsed = parse_json_untrusted(text);
-  if (!parsed) throw std::logic_error(std::string("embedded ") + what + " is not JSON: " + parsed.error().message());
+  if (!parsed)
+    throw std::logic_error(std::string("embedded ") + what + " is not JSON: " + parsed.error().message());
   auto schema = JsonSchema::compile(std::move(*parsed));
-  if (!schema) throw std::logic_error(std::string("embedded ") + what + " does not compile: " + schema.error().message());
+  if (!schema)
+    throw std::logic_error(std::string("embedded ") + what +
+                           " does not compile: " + schema.error().message());
   return std::move(*schema);
 }
 

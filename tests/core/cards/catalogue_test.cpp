@@ -37,7 +37,8 @@ class CatalogueTest : public ::testing::Test {
 };
 
 TEST_F(CatalogueTest, CreatedCardReadsBackIdentically) {
-  auto c = catalogue_->create(content("Coffee break", "staff chat near the coffee machine", {"social"}), "alice");
+  auto c =
+      catalogue_->create(content("Coffee break", "staff chat near the coffee machine", {"social"}), "alice");
   ASSERT_TRUE(c) << c.error().message();
   auto back = catalogue_->get(c->id);
   ASSERT_TRUE(back);
@@ -84,9 +85,16 @@ TEST_F(CatalogueTest, PageWalkVisitsEveryCardExactlyOnce) {
 }
 
 TEST_F(CatalogueTest, SearchAndFiltersFindTheRightCards) {
-  auto evac = catalogue_->create(content("Fire drill", "everyone evacuates to the exits", {"emergency"}, "office"), "alice").value();
-  auto queue = catalogue_->create(content("Check-in", "visitors queue at the counter", {"queue"}, "hospital"), "bob").value();
-  catalogue_->create(content("Party", "friends gather in the living room", {"social"}, "residential"), "alice").value();
+  auto evac =
+      catalogue_
+          ->create(content("Fire drill", "everyone evacuates to the exits", {"emergency"}, "office"), "alice")
+          .value();
+  auto queue =
+      catalogue_->create(content("Check-in", "visitors queue at the counter", {"queue"}, "hospital"), "bob")
+          .value();
+  catalogue_
+      ->create(content("Party", "friends gather in the living room", {"social"}, "residential"), "alice")
+      .value();
   auto ids = [&](CardQuery q) {
     std::vector<std::string> out;
     const CardPage page = catalogue_->list(q).value();
@@ -128,7 +136,8 @@ TEST_F(CatalogueTest, OnlyTheAuthorDeletesAndSearchForgetsDeletedCards) {
 }
 
 TEST_F(CatalogueTest, ExportImportIntoAnotherDatabaseKeepsHashAndBytes) {
-  auto c = catalogue_->create(content("Bottleneck", "crowd squeezes through a door", {"bottleneck"}), "alice").value();
+  auto c = catalogue_->create(content("Bottleneck", "crowd squeezes through a door", {"bottleneck"}), "alice")
+               .value();
   const std::string doc = catalogue_->export_card(c.id).value();
   testing::TempDir other_dir;
   auto other_store = store::Store::open(other_dir.file("other.db")).value();

@@ -80,7 +80,8 @@ TEST(JsonSchema, ReportsEveryViolationWithItsPointer) {
   EXPECT_THAT(message_at(errors, "/rooms/0/polygon"), HasSubstr("at least 3 items"));
   EXPECT_THAT(message_at(errors, "/rooms/0/polygon/1/1"), HasSubstr("type number, got string"));
   EXPECT_THAT(message_at(errors, "/rooms/0/colour"), HasSubstr("not an allowed property"));
-  EXPECT_THAT(message_at(errors, "/rooms/0/colour"), HasSubstr("allowed: area_m2, doors, kind, name, polygon"));
+  EXPECT_THAT(message_at(errors, "/rooms/0/colour"),
+              HasSubstr("allowed: area_m2, doors, kind, name, polygon"));
   EXPECT_THAT(message_at(errors, "/rooms/1/name"), HasSubstr("is required"));
   EXPECT_THAT(message_at(errors, "/note"), HasSubstr("at most 5 characters"));
   EXPECT_THAT(p, Contains("/extra"));
@@ -89,7 +90,8 @@ TEST(JsonSchema, ReportsEveryViolationWithItsPointer) {
   const auto status = s.check(bad, "floor plan");
   ASSERT_FALSE(status.has_value());
   EXPECT_EQ(status.error().code, ErrorCode::kValidation);
-  EXPECT_THAT(status.error().detail, HasSubstr("floor plan does not match its schema: /extra is not an allowed property"));
+  EXPECT_THAT(status.error().detail,
+              HasSubstr("floor plan does not match its schema: /extra is not an allowed property"));
   EXPECT_EQ(status.error().errors.size(), errors.size());
 }
 
@@ -119,7 +121,8 @@ TEST(JsonSchema, ConstUniqueItemsMultipleOfAndPropertyCounts) {
                      "step": {"multipleOf": 0.05}, "n": {"multipleOf": 3}},
       "minProperties": 1, "maxProperties": 3})"));
   EXPECT_TRUE(s.validate(Json::parse(R"({"v": "v1", "step": 0.35, "n": 9})")).empty());
-  const auto errors = s.validate(Json::parse(R"({"v": "v2", "tags": ["a", "b", "a"], "step": 0.33, "n": 10})"));
+  const auto errors =
+      s.validate(Json::parse(R"({"v": "v2", "tags": ["a", "b", "a"], "step": 0.33, "n": 10})"));
   EXPECT_THAT(message_at(errors, "/v"), HasSubstr("must be \"v1\""));
   EXPECT_THAT(message_at(errors, "/tags"), HasSubstr("items 0 and 2 are equal"));
   EXPECT_THAT(message_at(errors, "/step"), HasSubstr("multiple of 0.05"));
@@ -159,8 +162,11 @@ TEST(JsonSchema, AnyOfAllOfNotAndBooleanSchemas) {
 TEST(JsonSchema, RecursiveRefsFollowTheInstance) {
   const auto s = compile(Json::parse(R"({"$ref": "#/$defs/node", "$defs": {"node": {"type": "object",
       "required": ["name"], "properties": {"name": {"type": "string"}, "children": {"type": "array", "items": {"$ref": "#/$defs/node"}}}}}})"));
-  EXPECT_TRUE(s.validate(Json::parse(R"({"name": "root", "children": [{"name": "a", "children": [{"name": "b"}]}]})")).empty());
-  const auto errors = s.validate(Json::parse(R"({"name": "root", "children": [{"children": [{"name": 3}]}]})"));
+  EXPECT_TRUE(
+      s.validate(Json::parse(R"({"name": "root", "children": [{"name": "a", "children": [{"name": "b"}]}]})"))
+          .empty());
+  const auto errors =
+      s.validate(Json::parse(R"({"name": "root", "children": [{"children": [{"name": 3}]}]})"));
   EXPECT_THAT(pointers(errors), ::testing::ElementsAre("/children/0/name", "/children/0/children/0/name"));
 }
 
@@ -193,10 +199,12 @@ TEST(JsonSchema, BadSchemasAreRefusedWithPointersIntoTheSchema) {
     return s ? std::vector<FieldError>{FieldError{"<accepted>", "<accepted>", {}, 0, 0}} : s.error().errors;
   };
   EXPECT_EQ(refused(R"({"type": "text"})")[0].pointer, "/type");
-  EXPECT_EQ(refused(R"({"properties": {"a": {"$ref": "#/$defs/missing"}}})")[0].pointer, "/properties/a/$ref");
+  EXPECT_EQ(refused(R"({"properties": {"a": {"$ref": "#/$defs/missing"}}})")[0].pointer,
+            "/properties/a/$ref");
   EXPECT_THAT(refused(R"({"pattern": "([a-z"})")[0].message, HasSubstr("invalid regular expression"));
   EXPECT_THAT(refused(R"({"prefixItems": [{"type": "number"}]})")[0].message, HasSubstr("not supported"));
-  EXPECT_THAT(refused(R"({"if": {"type": "number"}, "then": {"minimum": 0}})")[0].message, HasSubstr("not supported"));
+  EXPECT_THAT(refused(R"({"if": {"type": "number"}, "then": {"minimum": 0}})")[0].message,
+              HasSubstr("not supported"));
   EXPECT_EQ(refused(R"({"minItems": -1})")[0].pointer, "/minItems");
   EXPECT_EQ(refused(R"({"anyOf": []})")[0].pointer, "/anyOf");
   EXPECT_EQ(refused(R"({"items": 3})")[0].pointer, "/items");
@@ -205,7 +213,8 @@ TEST(JsonSchema, BadSchemasAreRefusedWithPointersIntoTheSchema) {
 }
 
 TEST(JsonSchema, UnknownExtensionKeywordsAndAnnotationsAreIgnored) {
-  const auto s = compile(Json::parse(R"({"type": "string", "format": "email", "x-socsim": {"ui": 1}, "examples": ["a"]})"));
+  const auto s = compile(
+      Json::parse(R"({"type": "string", "format": "email", "x-socsim": {"ui": 1}, "examples": ["a"]})"));
   EXPECT_TRUE(s.validate(Json("not an email")).empty());
 }
 

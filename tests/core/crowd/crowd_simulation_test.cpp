@@ -34,7 +34,9 @@ AgentId add(CrowdSimulation& sim, Vec2 p, Vec2 v = {}, double speed = 1.3, std::
   return *id;
 }
 
-double norm(Vec2 v) { return std::hypot(v.x, v.y); }
+double norm(Vec2 v) {
+  return std::hypot(v.x, v.y);
+}
 
 // A crowd for determinism and reference checks: random positions in a walled 20×20 m room with
 // two inner walls, groups of 3, goals across the room.
@@ -54,8 +56,9 @@ CrowdSimulation busy_room(std::size_t n, unsigned threads, std::uint64_t seed) {
     spec.group_id = k % 4 == 0 ? -1 : static_cast<std::int64_t>(k / 3);
     auto id = sim.add_agent(spec);
     EXPECT_TRUE(id);
-    EXPECT_TRUE(sim.set_goals(*id, {Goal{{rng.uniform(1, 19), rng.uniform(1, 19)}, 0.5},
-                                    Goal{{rng.uniform(1, 19), rng.uniform(1, 19)}, 0.5}},
+    EXPECT_TRUE(sim.set_goals(*id,
+                              {Goal{{rng.uniform(1, 19), rng.uniform(1, 19)}, 0.5},
+                               Goal{{rng.uniform(1, 19), rng.uniform(1, 19)}, 0.5}},
                               true));
   }
   return sim;
@@ -293,7 +296,7 @@ TEST(CrowdSimulation, CellListAgreesWithBruteForceReference) {
 bool crosses(Vec2 p, Vec2 q, const WallSegment& w) {
   auto side = [](Vec2 a, Vec2 b, Vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); };
   const double s1 = side(w.a, w.b, p), s2 = side(w.a, w.b, q);
-  if (s1 == 0.0) return false;                         // started on the wall's line
+  if (s1 == 0.0) return false;                          // started on the wall's line
   if (s2 != 0.0 && (s1 > 0) == (s2 > 0)) return false;  // stayed on its side
   const double t1 = side(p, q, w.a), t2 = side(p, q, w.b);
   return (t1 > 0) != (t2 > 0) || t1 == 0.0 || t2 == 0.0;
@@ -319,8 +322,9 @@ TEST(CrowdSimulation, NoAgentEverCrossesAWallInADenseRandomBox) {
     spec.role = rng.chance(0.1) ? "jogger" : "adult";
     auto id = sim.add_agent(spec);
     ASSERT_TRUE(id);
-    ASSERT_TRUE(sim.set_goals(*id, {Goal{{rng.uniform(-5, 15), rng.uniform(-5, 15)}, 0.2},
-                                    Goal{{rng.uniform(-5, 15), rng.uniform(-5, 15)}, 0.2}},
+    ASSERT_TRUE(sim.set_goals(*id,
+                              {Goal{{rng.uniform(-5, 15), rng.uniform(-5, 15)}, 0.2},
+                               Goal{{rng.uniform(-5, 15), rng.uniform(-5, 15)}, 0.2}},
                               true));
   }
   const std::vector<WallSegment> walls = sim.walls();
@@ -346,16 +350,16 @@ TEST(CrowdSimulation, DegenerateInputsNeverProduceNaN) {
   SimulationConfig config;
   config.body_stiffness = 100.0;
   CrowdSimulation sim = make(config);
-  ASSERT_TRUE(sim.add_wall({0, 0}, {0, 0}));        // zero-length wall
+  ASSERT_TRUE(sim.add_wall({0, 0}, {0, 0}));  // zero-length wall
   ASSERT_TRUE(sim.add_wall({-3, 1}, {3, 1}));
-  ASSERT_TRUE(sim.add_wall({3, 1}, {3, 1}));        // duplicate point on a vertex
-  ASSERT_TRUE(sim.add_wall({-3, 1}, {3, 1}));       // duplicate wall
+  ASSERT_TRUE(sim.add_wall({3, 1}, {3, 1}));                              // duplicate point on a vertex
+  ASSERT_TRUE(sim.add_wall({-3, 1}, {3, 1}));                             // duplicate wall
   for (int k = 0; k < 6; ++k) add(sim, {0, 0}, {}, 1.3, k < 3 ? 1 : -1);  // coincident, on a point wall
-  const AgentId on_wall = add(sim, {1, 1});         // exactly on a wall
+  const AgentId on_wall = add(sim, {1, 1});                               // exactly on a wall
   const AgentId on_vertex = add(sim, {3, 1}, {1, 1});
-  const AgentId still = add(sim, {-2, -2}, {}, 0.0);  // desired speed 0
-  add(sim, {-2, -2}, {0.5, 0});                     // coincident with it, moving
-  ASSERT_TRUE(sim.set_goal(on_wall, Goal{{1, 1}, 0.0}));   // goal at its own position, radius 0
+  const AgentId still = add(sim, {-2, -2}, {}, 0.0);      // desired speed 0
+  add(sim, {-2, -2}, {0.5, 0});                           // coincident with it, moving
+  ASSERT_TRUE(sim.set_goal(on_wall, Goal{{1, 1}, 0.0}));  // goal at its own position, radius 0
   ASSERT_TRUE(sim.set_goal(on_vertex, Goal{{3, 5}, 0.0}));
   ASSERT_TRUE(sim.set_goal(still, Goal{{5, -2}, 0.1}));
   for (int step = 0; step < 200; ++step) {

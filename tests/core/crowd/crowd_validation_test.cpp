@@ -22,7 +22,8 @@ CrowdSimulation make(SimulationConfig config = {}) {
   return std::move(*sim);
 }
 
-AgentId walker(CrowdSimulation& sim, Vec2 p, std::vector<Goal> goals, std::optional<double> speed = std::nullopt) {
+AgentId walker(CrowdSimulation& sim, Vec2 p, std::vector<Goal> goals,
+               std::optional<double> speed = std::nullopt) {
   AgentSpec spec;
   spec.position = p;
   spec.desired_speed = speed;
@@ -39,7 +40,8 @@ double speed(const CrowdSimulation& sim, AgentId id) {
 
 double min_wall_distance(const CrowdSimulation& sim, AgentId id) {
   double d = 1e300;
-  for (const WallSegment& w : sim.walls()) d = std::min(d, point_segment_distance(sim.position(id), w.a, w.b));
+  for (const WallSegment& w : sim.walls())
+    d = std::min(d, point_segment_distance(sim.position(id), w.a, w.b));
   return d;
 }
 
@@ -215,7 +217,8 @@ TEST(CrowdValidation, FreeWalkingSpeedsMatchZara01) {
       auto q = next->second.find(id);
       if (q == next->second.end()) continue;
       bool alone = true;
-      for (const auto& [other, o] : people) alone = alone && (other == id || std::hypot(o.x - p.x, o.y - p.y) > 3.0);
+      for (const auto& [other, o] : people)
+        alone = alone && (other == id || std::hypot(o.x - p.x, o.y - p.y) > 3.0);
       const double v = std::hypot(q->second.x - p.x, q->second.y - p.y) / 0.4;
       if (alone && v > 0.3) observed.push_back(v);
     }

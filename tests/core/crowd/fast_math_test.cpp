@@ -44,8 +44,9 @@ TEST(FastMath, Atan2MatchesLibmInAllQuadrants) {
     worst = std::max(worst, std::abs(fast_atan2(y, x) - std::atan2(y, x)));
     const auto fy = static_cast<float>(y);
     const auto fx = static_cast<float>(x);
-    worst_f = std::max(worst_f, static_cast<float>(std::abs(fast_atan2f(fy, fx) -
-                                                            std::atan2(static_cast<double>(fy), static_cast<double>(fx)))));
+    worst_f = std::max(
+        worst_f, static_cast<float>(std::abs(fast_atan2f(fy, fx) -
+                                             std::atan2(static_cast<double>(fy), static_cast<double>(fx)))));
   }
   EXPECT_LT(worst, 3e-12);
   EXPECT_LT(worst_f, 1e-6f);

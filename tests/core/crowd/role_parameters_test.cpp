@@ -45,7 +45,8 @@ TEST(RoleParameters, JsonRoundTripAndPartialOverride) {
   ASSERT_TRUE(same) << same.error().message();
   EXPECT_EQ(*same, adult);
 
-  auto faster = role_parameters_from_json(Json::parse(R"({"speed": {"mean": 1.6}, "forces": {"lambda": 1.5}})"), adult);
+  auto faster =
+      role_parameters_from_json(Json::parse(R"({"speed": {"mean": 1.6}, "forces": {"lambda": 1.5}})"), adult);
   ASSERT_TRUE(faster) << faster.error().message();
   EXPECT_DOUBLE_EQ(faster->speed.mean, 1.6);
   EXPECT_DOUBLE_EQ(faster->speed.sd, 0.26);
@@ -55,7 +56,8 @@ TEST(RoleParameters, JsonRoundTripAndPartialOverride) {
 
 TEST(RoleParameters, TableAppliesOverridesAndAddsRoles) {
   RoleTable t = RoleTable::defaults();
-  auto ok = t.apply_json(Json::parse(R"({"nurse": {"speed": {"mean": 1.5, "sd": 0.1}}, "adult": {"radius": 0.25}})"));
+  auto ok = t.apply_json(
+      Json::parse(R"({"nurse": {"speed": {"mean": 1.5, "sd": 0.1}}, "adult": {"radius": 0.25}})"));
   ASSERT_TRUE(ok) << ok.error().message();
   ASSERT_TRUE(t.index_of("nurse"));
   EXPECT_DOUBLE_EQ(t.at(*t.index_of("nurse")).speed.mean, 1.5);

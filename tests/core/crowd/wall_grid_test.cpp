@@ -26,7 +26,8 @@ TEST(WallGrid, EveryWallWithinTheCutoffIsListed) {
     EXPECT_TRUE(std::is_sorted(near.begin(), near.end()));
     for (std::uint32_t w = 0; w < walls.size(); ++w) {
       if (point_segment_distance(p, walls[w].a, walls[w].b) <= 2.0) {
-        EXPECT_TRUE(std::binary_search(near.begin(), near.end(), w)) << "wall " << w << " missing at " << p.x << "," << p.y;
+        EXPECT_TRUE(std::binary_search(near.begin(), near.end(), w))
+            << "wall " << w << " missing at " << p.x << "," << p.y;
       }
     }
   }
@@ -36,18 +37,18 @@ TEST(WallGrid, EveryWallWithinTheCutoffIsListed) {
 TEST(WallGrid, MoveBlockedDetectsCrossingsAndLandings) {
   const Vec2 a{0, 0};
   const Vec2 b{0, 4};
-  EXPECT_TRUE(move_blocked({-1, 2}, {1, 2}, a, b));       // straight through
-  EXPECT_TRUE(move_blocked({-1, 2}, {0, 2}, a, b));       // landing on the wall
-  EXPECT_TRUE(move_blocked({-1, -1}, {1, 1}, a, b));      // through the end point
-  EXPECT_FALSE(move_blocked({-1, 5}, {1, 5}, a, b));      // past the end
-  EXPECT_FALSE(move_blocked({-1, 2}, {-0.5, 3}, a, b));   // stays on its side
-  EXPECT_FALSE(move_blocked({-1, 2}, {-1, 2}, a, b));     // no move
-  EXPECT_FALSE(move_blocked({0, 2}, {1, 2}, a, b));       // starting on the wall: may step off
+  EXPECT_TRUE(move_blocked({-1, 2}, {1, 2}, a, b));      // straight through
+  EXPECT_TRUE(move_blocked({-1, 2}, {0, 2}, a, b));      // landing on the wall
+  EXPECT_TRUE(move_blocked({-1, -1}, {1, 1}, a, b));     // through the end point
+  EXPECT_FALSE(move_blocked({-1, 5}, {1, 5}, a, b));     // past the end
+  EXPECT_FALSE(move_blocked({-1, 2}, {-0.5, 3}, a, b));  // stays on its side
+  EXPECT_FALSE(move_blocked({-1, 2}, {-1, 2}, a, b));    // no move
+  EXPECT_FALSE(move_blocked({0, 2}, {1, 2}, a, b));      // starting on the wall: may step off
   EXPECT_FALSE(move_blocked({0, 2}, {-1, 2}, a, b));
-  EXPECT_TRUE(move_blocked({0, -1}, {0, 1}, a, b));       // sliding along the line into the wall
-  EXPECT_TRUE(move_blocked({0, -1}, {0, 5}, a, b));       // ... and through it
-  EXPECT_FALSE(move_blocked({0, -2}, {0, -1}, a, b));     // along the line, short of it
-  EXPECT_FALSE(move_blocked({-1, 2}, {1, 2}, a, a));      // a point cannot be crossed
+  EXPECT_TRUE(move_blocked({0, -1}, {0, 1}, a, b));    // sliding along the line into the wall
+  EXPECT_TRUE(move_blocked({0, -1}, {0, 5}, a, b));    // ... and through it
+  EXPECT_FALSE(move_blocked({0, -2}, {0, -1}, a, b));  // along the line, short of it
+  EXPECT_FALSE(move_blocked({-1, 2}, {1, 2}, a, a));   // a point cannot be crossed
 }
 
 TEST(WallGrid, PointSegmentDistance) {

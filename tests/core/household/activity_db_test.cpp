@@ -66,7 +66,8 @@ TEST(ActivityDb, DeterministicPerSeedAndPersonal) {
         for (const auto& o : l.objects)
           for (const auto& [r, p] : o.receptacles) {
             all += p;
-            if (r == "ShelvingUnit" || r == "Dresser" || r == "Sink" || r == "Fridge" || r == "LaundryHamper") storage += p;
+            if (r == "ShelvingUnit" || r == "Dresser" || r == "Sink" || r == "Fridge" || r == "LaundryHamper")
+              storage += p;
           }
     return storage / all;
   };
@@ -81,8 +82,9 @@ TEST(ActivityDb, JsonRoundTripAndPointedErrors) {
   Json bad = to_json(db);
   Json& loc = bad["activities"][1]["locations"][0];
   loc["p"] = 0.9;  // p(l|a) no longer sums to 1 (unless alone; we add a second below)
-  loc["objects"] = Json::array({{{"type", "Mug"}, {"p", 0.5}, {"receptacles", {{"Fridge", 0.5}, {"Bed", 0.2}}}},
-                                {{"type", "Spaceship"}, {"p", 0.5}, {"receptacles", {{"Desk", 1.0}}}}});
+  loc["objects"] =
+      Json::array({{{"type", "Mug"}, {"p", 0.5}, {"receptacles", {{"Fridge", 0.5}, {"Bed", 0.2}}}},
+                   {{"type", "Spaceship"}, {"p", 0.5}, {"receptacles", {{"Desk", 1.0}}}}});
   loc["room"] = "Kitchen";
   bad["activities"][1]["locations"].push_back({{"room", "Garage"}, {"p", 0.5}, {"objects", Json::array()}});
   auto r = activity_db_from_json(bad, knowledge());
@@ -98,7 +100,8 @@ TEST(ActivityDb, JsonRoundTripAndPointedErrors) {
   for (const auto& f : r.error().errors) ptrs.insert(f.pointer);
   EXPECT_TRUE(ptrs.count("/activities/1/locations")) << "p(l|a) must sum to 1";
   EXPECT_TRUE(ptrs.count("/activities/1/locations/0/objects/0/receptacles")) << "p(r|o,a,l) must sum to 1";
-  EXPECT_TRUE(ptrs.count("/activities/1/locations/0/objects/0/receptacles/0")) << "a bed does not stand in a kitchen";
+  EXPECT_TRUE(ptrs.count("/activities/1/locations/0/objects/0/receptacles/0"))
+      << "a bed does not stand in a kitchen";
   EXPECT_TRUE(ptrs.count("/activities/1/locations/0/objects/1/type"));
 }
 

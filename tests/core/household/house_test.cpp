@@ -50,8 +50,10 @@ TEST(House, EveryRoomCountGivesAConnectedFurnishedHouse) {
 }
 
 TEST(House, SameSeedSameHouse) {
-  EXPECT_EQ(*generate_house({7, std::nullopt, 5}, knowledge()), *generate_house({7, std::nullopt, 5}, knowledge()));
-  EXPECT_NE(*generate_house({7, std::nullopt, 5}, knowledge()), *generate_house({7, std::nullopt, 6}, knowledge()));
+  EXPECT_EQ(*generate_house({7, std::nullopt, 5}, knowledge()),
+            *generate_house({7, std::nullopt, 5}, knowledge()));
+  EXPECT_NE(*generate_house({7, std::nullopt, 5}, knowledge()),
+            *generate_house({7, std::nullopt, 6}, knowledge()));
 }
 
 TEST(House, FurnitureDoesNotOverlap) {

@@ -32,15 +32,21 @@ HouseholdRequest request(int rooms, int residents, int days, std::uint64_t seed)
 }
 
 TEST(HouseholdDocument, BadRequestsNameTheirFields) {
-  auto r = household_request_from_json(Json{{"rooms", 12}, {"residents", {"a", 3}}, {"days", 0}, {"start_weekday", "Funday"},
-                                            {"generator", "magic"}, {"colour", "red"}});
+  auto r = household_request_from_json(Json{{"rooms", 12},
+                                            {"residents", {"a", 3}},
+                                            {"days", 0},
+                                            {"start_weekday", "Funday"},
+                                            {"generator", "magic"},
+                                            {"colour", "red"}});
   ASSERT_FALSE(r);
   const auto p = pointers(r.error());
-  for (const char* want : {"/rooms", "/residents/1", "/days", "/start_weekday", "/generator", "/colour"}) EXPECT_TRUE(p.count(want)) << want;
+  for (const char* want : {"/rooms", "/residents/1", "/days", "/start_weekday", "/generator", "/colour"})
+    EXPECT_TRUE(p.count(want)) << want;
   auto neither = household_request_from_json(Json{{"days", 3}});
   ASSERT_FALSE(neither);
   EXPECT_TRUE(pointers(neither.error()).count("/rooms"));
-  auto ok = household_request_from_json(Json{{"rooms", 5}, {"residents", 2}, {"days", 3}, {"start_weekday", "monday"}, {"seed", 7}});
+  auto ok = household_request_from_json(
+      Json{{"rooms", 5}, {"residents", 2}, {"days", 3}, {"start_weekday", "monday"}, {"seed", 7}});
   ASSERT_TRUE(ok) << ok.error().message();
   EXPECT_EQ(ok->start_weekday, Weekday::kMonday);
   EXPECT_EQ(household_request_from_json(to_json(*ok))->seed, 7u);
@@ -81,7 +87,8 @@ TEST(HouseholdDocument, ResidentsByPersonaIdAndUnknownIds) {
   ASSERT_FALSE(bad);
   EXPECT_TRUE(pointers(bad.error()).count("/residents/1"));
 
-  auto crowded = generate_household(request(1, 4, 1, 1), knowledge(), knowledge().personas, {}, {}, "hh_crowded");
+  auto crowded =
+      generate_household(request(1, 4, 1, 1), knowledge(), knowledge().personas, {}, {}, "hh_crowded");
   ASSERT_FALSE(crowded);
   EXPECT_TRUE(pointers(crowded.error()).count("/residents"));
 }

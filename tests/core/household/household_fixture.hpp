@@ -22,6 +22,8 @@ inline const HouseholdKnowledge& knowledge() {
   return k;
 }
 
-inline std::string shared_file(const std::string& relative) { return std::string(SOCSIM_SHARED_DIR) + "/" + relative; }
+inline std::string shared_file(const std::string& relative) {
+  return std::string(SOCSIM_SHARED_DIR) + "/" + relative;
+}
 
 }  // namespace socsim::household::testing

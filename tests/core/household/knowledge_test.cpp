@@ -22,7 +22,8 @@ std::set<std::string> words(const std::string& text) {
   std::set<std::string> out;
   std::string cur;
   for (char c : text + " ") {
-    if (std::isalpha(static_cast<unsigned char>(c))) cur += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (std::isalpha(static_cast<unsigned char>(c)))
+      cur += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     else {
       if (cur.size() > 3) out.insert(cur);
       cur.clear();
@@ -49,8 +50,9 @@ TEST(Knowledge, ShipsFiftyDiversePersonas) {
   EXPECT_GE(elderly, 5);
   EXPECT_GE(female, 20);
   EXPECT_LE(female, 30);
-  for (WorkPattern w : {WorkPattern::kCommute, WorkPattern::kRemote, WorkPattern::kNightShift, WorkPattern::kCollege,
-                        WorkPattern::kSchool, WorkPattern::kRetired, WorkPattern::kHomemaker, WorkPattern::kEveningShift})
+  for (WorkPattern w :
+       {WorkPattern::kCommute, WorkPattern::kRemote, WorkPattern::kNightShift, WorkPattern::kCollege,
+        WorkPattern::kSchool, WorkPattern::kRetired, WorkPattern::kHomemaker, WorkPattern::kEveningShift})
     EXPECT_GE(patterns[w], 2) << work_pattern_name(w);
   // No near-duplicates: occupation + lifestyle of any two personas share less than 35% of their words.
   for (std::size_t i = 0; i < k.personas.size(); ++i)
@@ -108,7 +110,8 @@ TEST(Knowledge, PriorsRespectAi2ThorCompatibility) {
     while (std::getline(ss, c, ',')) cols.push_back(c);
     if (cols.size() < 4 || cols[3].empty()) continue;
     std::stringstream rs(cols[3]);
-    while (std::getline(rs, c, ';')) compat[cols[0]].insert(c == "Shelf" ? "ShelvingUnit" : c == "SinkBasin" ? "Sink" : c);
+    while (std::getline(rs, c, ';'))
+      compat[cols[0]].insert(c == "Shelf" ? "ShelvingUnit" : c == "SinkBasin" ? "Sink" : c);
   }
   ASSERT_GT(compat.size(), 50u);
   const auto& k = knowledge();
@@ -160,8 +163,10 @@ TEST(Knowledge, PostedPersonasAreStoredOnceAndListed) {
   socsim::testing::TempDir dir;
   auto store = store::Store::open(dir.file("p.db"));
   ASSERT_TRUE(store);
-  Persona p{"Zed Example", 30, "non-binary", "Zed goes to bed at 11 pm and wakes at 7 am.", {"calm"},
-            "Zed is a librarian.", "Reads a lot.", "Cycles to work."};
+  Persona p{"Zed Example",  30,
+            "non-binary",   "Zed goes to bed at 11 pm and wakes at 7 am.",
+            {"calm"},       "Zed is a librarian.",
+            "Reads a lot.", "Cycles to work."};
   ASSERT_TRUE(store_persona(**store, p));
   auto again = store_persona(**store, p);
   ASSERT_FALSE(again);

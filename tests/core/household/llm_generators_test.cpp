@@ -15,8 +15,8 @@
 namespace socsim::household {
 namespace {
 
-using ::testing::HasSubstr;
 using socsim::testing::ScriptedServer;
+using ::testing::HasSubstr;
 using testing::knowledge;
 
 const char* kNewPersona = R"({"name": "Wanjiru Kamau", "age": 39, "gender": "female",
@@ -32,9 +32,10 @@ const char* kPlanDay0 = R"({"day": 0, "weekday": "Wednesday", "blocks": [
   {"start": "22:30", "end": "24:00", "kind": "sleep", "description": "sleeping"}]})";
 
 std::string activities_answer(const std::string& day, bool split_leave_home = false) {
-  const std::string away = split_leave_home
-                               ? R"({"start": "07:30", "end": "12:00", "activity": "leave home"}, {"start": "12:00", "end": "17:30", "activity": "leave home"},)"
-                               : R"({"start": "07:30", "end": "17:30", "activity": "leave home"},)";
+  const std::string away =
+      split_leave_home
+          ? R"({"start": "07:30", "end": "12:00", "activity": "leave home"}, {"start": "12:00", "end": "17:30", "activity": "leave home"},)"
+          : R"({"start": "07:30", "end": "17:30", "activity": "leave home"},)";
   return R"({"day": ")" + day + R"(", "activities": [
     {"start": "00:00", "end": "06:00", "activity": "sleeping"},
     {"start": "06:00", "end": "06:15", "activity": "getting out of bed"},
@@ -42,7 +43,8 @@ std::string activities_answer(const std::string& day, bool split_leave_home = fa
     {"start": "06:35", "end": "06:50", "activity": "getting dressed"},
     {"start": "06:50", "end": "07:15", "activity": "having breakfast"},
     {"start": "07:15", "end": "07:30", "activity": "brushing teeth"},
-    )" + away + R"(
+    )" + away +
+         R"(
     {"start": "17:30", "end": "17:45", "activity": "coming home"},
     {"start": "17:45", "end": "18:45", "activity": "cooking dinner"},
     {"start": "18:45", "end": "19:30", "activity": "having dinner"},
@@ -103,7 +105,8 @@ class HouseholdLlmTest : public ::testing::Test {
 };
 
 TEST_F(HouseholdLlmTest, AnswerSchemasCompileForEveryArtifact) {
-  for (const char* a : {"persona", "day_plan", "activity_schedule", "activity_database", "hint", "hint_interpretation"}) {
+  for (const char* a :
+       {"persona", "day_plan", "activity_schedule", "activity_database", "hint", "hint_interpretation"}) {
     auto s = answer_schema(a);
     ASSERT_TRUE(s) << a;
     EXPECT_FALSE((*s)->document().dump().find("$ref") != std::string::npos) << a << " is self-contained";
@@ -123,7 +126,8 @@ TEST_F(HouseholdLlmTest, PersonaValidIsAcceptedAndLogged) {
   EXPECT_EQ(server_.count(), 1);
   const auto seen = server_.seen();
   EXPECT_EQ(seen[0].body["response_format"]["json_schema"]["name"], "persona");
-  EXPECT_THAT(last_user_message(0), HasSubstr("Margit Halvorsen"));  // the existing personas are in the prompt
+  EXPECT_THAT(last_user_message(0),
+              HasSubstr("Margit Halvorsen"));  // the existing personas are in the prompt
   auto calls = llm::job_llm_calls(*store_, "job-household");
   ASSERT_TRUE(calls);
   EXPECT_EQ((*calls)["totals"]["calls"], 1);
@@ -180,9 +184,11 @@ TEST_F(HouseholdLlmTest, TwoDayLlmScheduleIsConsistentAndGrowsTheVocabulary) {
   EXPECT_TRUE(check_schedule(*s, amara(), knowledge()).empty());
   EXPECT_GT(vocab.name_count(), names_before);  // "untangling the fairy lights" joined
   // Sleep across midnight is one entry; time away is "leave home".
-  const auto away = std::count_if(s->entries.begin(), s->entries.end(), [](const ScheduleEntry& e) { return e.role == ActivityRole::kLeaveHome; });
+  const auto away = std::count_if(s->entries.begin(), s->entries.end(),
+                                  [](const ScheduleEntry& e) { return e.role == ActivityRole::kLeaveHome; });
   EXPECT_EQ(away, 2);
-  const auto overnight = std::find_if(s->entries.begin(), s->entries.end(), [](const ScheduleEntry& e) { return e.start == 22 * 60 + 30; });
+  const auto overnight = std::find_if(s->entries.begin(), s->entries.end(),
+                                      [](const ScheduleEntry& e) { return e.start == 22 * 60 + 30; });
   ASSERT_NE(overnight, s->entries.end());
   EXPECT_EQ(overnight->end, 1440 + 6 * 60);
   // The decomposer's prompt carried the plan with "leave home" and the activity list.
@@ -227,13 +233,15 @@ TEST_F(HouseholdLlmTest, ActivityDatabaseSumsAreRepairedAndUnknownTypesRejected)
   EXPECT_THAT(last_user_message(0), HasSubstr("- Mug:"));  // the scene prior lists what goes where
 
   Json wrong = Json::parse(kDatabase);
-  wrong["activities"][1]["locations"][0]["objects"][0]["receptacles"] = {{"Bathtub", 1.0}};  // not in a living room
+  wrong["activities"][1]["locations"][0]["objects"][0]["receptacles"] = {
+      {"Bathtub", 1.0}};  // not in a living room
   for (int i = 0; i < 3; ++i) server_.push_chat(ScriptedServer::chat(wrong.dump()));
   auto never = gen.generate(amara(), primaries, 10);
   ASSERT_FALSE(never);
   EXPECT_EQ(never.error().code, ErrorCode::kValidation);
   bool named = false;
-  for (const auto& f : never.error().errors) named = named || f.pointer.find("/activities/1/locations/0/objects/0/receptacles") == 0;
+  for (const auto& f : never.error().errors)
+    named = named || f.pointer.find("/activities/1/locations/0/objects/0/receptacles") == 0;
   EXPECT_TRUE(named) << never.error().message();
 }
 
@@ -247,7 +255,8 @@ class HouseholdLlmSceneTest : public HouseholdLlmTest {
     auto profile = make_resident_offline(amara(), knowledge(), {2, Weekday::kWednesday, 4}, vocab);
     ASSERT_TRUE(profile);
     pool_.push_back(std::make_shared<const ResidentProfile>(std::move(*profile)));
-    auto scene = configure_scene(std::make_shared<const House>(std::move(*house)), pool_, {1, 8}, knowledge());
+    auto scene =
+        configure_scene(std::make_shared<const House>(std::move(*house)), pool_, {1, 8}, knowledge());
     ASSERT_TRUE(scene) << scene.error().message();
     scene_ = std::make_unique<DynamicScene>(std::move(*scene));
   }
@@ -267,8 +276,10 @@ TEST_F(HouseholdLlmSceneTest, HintFromCoarseMemoryNamesAnActivityOfThatMemory) {
     if (e.start > t - kSecondsPerDay && e.end < t && e.room >= 0) remembered = scene_->entry(e).name;
   }
   ASSERT_FALSE(remembered.empty());
-  server_.push_chat(ScriptedServer::chat(R"({"used_recently": true, "hint": "I had it while juggling.", "activity": "juggling"})"));
-  server_.push_chat(ScriptedServer::chat(Json{{"used_recently", true}, {"hint", "I think I had it earlier."}, {"activity", remembered}}.dump()));
+  server_.push_chat(ScriptedServer::chat(
+      R"({"used_recently": true, "hint": "I had it while juggling.", "activity": "juggling"})"));
+  server_.push_chat(ScriptedServer::chat(
+      Json{{"used_recently", true}, {"hint", "I think I had it earlier."}, {"activity", remembered}}.dump()));
   LlmHintGenerator gen(settings_);
   auto h = gen.hint({scene_.get(), 0, "Mug", t, kSecondsPerDay});
   ASSERT_TRUE(h) << h.error().message();
@@ -283,11 +294,15 @@ TEST_F(HouseholdLlmSceneTest, HintFromCoarseMemoryNamesAnActivityOfThatMemory) {
 TEST_F(HouseholdLlmSceneTest, HintInterpretationGivesAReceptacleDistributionOrNamesTheBadField) {
   const House& h = scene_->house();
   ASSERT_GE(h.receptacles.size(), 2u);
-  const std::string a = h.entities[static_cast<std::size_t>(h.receptacles[0])].id, b = h.entities[static_cast<std::size_t>(h.receptacles[1])].id;
-  server_.push_chat(ScriptedServer::chat(Json{{"event", {{"activity", "having breakfast"}, {"room", "kitchen"}}},
-                                              {"receptacles", {{{"receptacle_id", a}, {"p", 0.7}}, {{"receptacle_id", b}, {"p", 0.3}}}}}.dump()));
+  const std::string a = h.entities[static_cast<std::size_t>(h.receptacles[0])].id,
+                    b = h.entities[static_cast<std::size_t>(h.receptacles[1])].id;
+  server_.push_chat(ScriptedServer::chat(
+      Json{{"event", {{"activity", "having breakfast"}, {"room", "kitchen"}}},
+           {"receptacles", {{{"receptacle_id", a}, {"p", 0.7}}, {{"receptacle_id", b}, {"p", 0.3}}}}}
+          .dump()));
   LlmHintInterpreter interp(settings_);
-  HintInterpretationQuery q{&h, "Mug", "I left it on the counter after breakfast.", 9 * 3600, Weekday::kWednesday};
+  HintInterpretationQuery q{&h, "Mug", "I left it on the counter after breakfast.", 9 * 3600,
+                            Weekday::kWednesday};
   auto r = interp.interpret(q);
   ASSERT_TRUE(r) << r.error().message();
   ASSERT_EQ(r->receptacles.size(), 2u);
@@ -295,7 +310,8 @@ TEST_F(HouseholdLlmSceneTest, HintInterpretationGivesAReceptacleDistributionOrNa
   EXPECT_NEAR(r->receptacles[0].second + r->receptacles[1].second, 1.0, 1e-9);
   EXPECT_THAT(last_user_message(0), HasSubstr(a + " | "));
 
-  const Json bogus = {{"event", {{"activity", ""}, {"room", ""}}}, {"receptacles", {{{"receptacle_id", "Nowhere|1"}, {"p", 1.0}}}}};
+  const Json bogus = {{"event", {{"activity", ""}, {"room", ""}}},
+                      {"receptacles", {{{"receptacle_id", "Nowhere|1"}, {"p", 1.0}}}}};
   for (int i = 0; i < 3; ++i) server_.push_chat(ScriptedServer::chat(bogus.dump()));
   q.hint = "No, I have not seen it today.";  // another request: the cached answer above does not apply
   auto never = interp.interpret(q);

@@ -49,7 +49,8 @@ TEST(PersonaGenerator, GeneratesValidDistinctPersonasThatScheduleConsistently) {
     auto s = generate_schedule_offline(p, knowledge(), {5, Weekday::kWednesday, 3}, vocab);
     ASSERT_TRUE(s) << p.name << ": " << s.error().message();
     const auto issues = check_schedule(*s, p, knowledge());
-    EXPECT_TRUE(issues.empty()) << p.name << " (" << p.occupation << "): " << (issues.empty() ? "" : issues[0].kind + " " + issues[0].detail);
+    EXPECT_TRUE(issues.empty()) << p.name << " (" << p.occupation
+                                << "): " << (issues.empty() ? "" : issues[0].kind + " " + issues[0].detail);
   }
   EXPECT_GE(occupations_seen.size(), 8u) << "work patterns should vary";
   EXPECT_LT(sum_similarity / pairs, 0.15) << "personas share few content words on average";
@@ -133,7 +134,8 @@ TEST(PersonaGenerator, ImpossibleConstraintsAreNamed) {
   ASSERT_FALSE(p.error().errors.empty());
   EXPECT_EQ(p.error().errors[0].pointer, "/constraints/occupation");
 
-  auto bad = persona_request_from_json(Json{{"count", 0}, {"constraints", {{"household_role", "uncle"}, {"min_age", 50}, {"max_age", 20}}}});
+  auto bad = persona_request_from_json(
+      Json{{"count", 0}, {"constraints", {{"household_role", "uncle"}, {"min_age", 50}, {"max_age", 20}}}});
   ASSERT_FALSE(bad);
   std::set<std::string> ptrs;
   for (const auto& f : bad.error().errors) ptrs.insert(f.pointer);

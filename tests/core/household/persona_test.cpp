@@ -45,7 +45,8 @@ TEST(Persona, BadFieldsAreNamedByJsonPointer) {
   ASSERT_FALSE(p);
   EXPECT_EQ(p.error().code, ErrorCode::kValidation);
   const auto ptrs = pointers(p.error());
-  for (const char* want : {"/personas/2/age", "/personas/2/personality/1", "/personas/2/thoughts", "/personas/2/hobby"})
+  for (const char* want :
+       {"/personas/2/age", "/personas/2/personality/1", "/personas/2/thoughts", "/personas/2/hobby"})
     EXPECT_NE(std::find(ptrs.begin(), ptrs.end(), want), ptrs.end()) << want;
 }
 
@@ -91,8 +92,10 @@ TEST(PersonaTraits, ReadsSleepTimesAndWorkPatternFromText) {
 }
 
 TEST(PersonaTraits, ChildrenGoToSchoolAndMentionsMatchWholeWords) {
-  Persona kid{"Lou", 8, "male", "Lou goes to bed at 8 pm and wakes at 7 am.", {"messy"}, "Lou is a third grader.", "Wants a bike.",
-              "Plays football after school."};
+  Persona kid{"Lou",           8,
+              "male",          "Lou goes to bed at 8 pm and wakes at 7 am.",
+              {"messy"},       "Lou is a third grader.",
+              "Wants a bike.", "Plays football after school."};
   const auto t = infer_traits(kid);
   EXPECT_EQ(t.work, WorkPattern::kSchool);
   EXPECT_TRUE(t.child);

@@ -26,8 +26,8 @@ std::optional<Json> read_peer(const std::string& name) {
   return *j;
 }
 
-const char* kHouses[] = {"zhiyuan_houses20_house_6.json", "zhiyuan_houses20_house_15.json", "quinlan_hallway_houses_3.json",
-                         "quinlan_hallway_houses_4.json"};
+const char* kHouses[] = {"zhiyuan_houses20_house_6.json", "zhiyuan_houses20_house_15.json",
+                         "quinlan_hallway_houses_3.json", "quinlan_hallway_houses_4.json"};
 
 TEST(ProcThor, RealHousesImportExportAndRoundTrip) {
   int seen = 0;
@@ -98,7 +98,8 @@ TEST(ProcThor, ExportMovesObjectsToAGivenPlacement) {
   auto h = import_procthor(*json, knowledge());
   ASSERT_TRUE(h);
   std::vector<int> placement(h->objects.size());
-  for (std::size_t o = 0; o < placement.size(); ++o) placement[o] = h->entities[static_cast<std::size_t>(h->objects[o])].parent;
+  for (std::size_t o = 0; o < placement.size(); ++o)
+    placement[o] = h->entities[static_cast<std::size_t>(h->objects[o])].parent;
   placement[0] = h->receptacles.back();
   auto moved = import_procthor(export_procthor(*h, &placement), knowledge());
   ASSERT_TRUE(moved);
@@ -108,13 +109,15 @@ TEST(ProcThor, ExportMovesObjectsToAGivenPlacement) {
     const Entity& e = moved->entities[static_cast<std::size_t>(o)];
     if (e.id != id) continue;
     found = true;
-    EXPECT_EQ(moved->entities[static_cast<std::size_t>(e.parent)].id, h->entities[static_cast<std::size_t>(h->receptacles.back())].id);
+    EXPECT_EQ(moved->entities[static_cast<std::size_t>(e.parent)].id,
+              h->entities[static_cast<std::size_t>(h->receptacles.back())].id);
   }
   EXPECT_TRUE(found);
 }
 
 TEST(ProcThor, BrokenHousesAreRefusedWithPointers) {
-  Json j = Json::parse(R"({"rooms":[{"id":"room|1","roomType":"Garage","floorPolygon":[{"x":0,"z":0},{"x":1}]}],
+  Json j =
+      Json::parse(R"({"rooms":[{"id":"room|1","roomType":"Garage","floorPolygon":[{"x":0,"z":0},{"x":1}]}],
                            "walls":[{"id":"w","roomId":"room|1","polygon":[{"x":0,"y":0,"z":0}]}],
                            "doors":[{"id":"d","room0":"room|1","room1":"room|9","wall0":"w","wall1":"w","holePolygon":[]}],
                            "objects":[]})");
@@ -122,8 +125,8 @@ TEST(ProcThor, BrokenHousesAreRefusedWithPointers) {
   ASSERT_FALSE(h);
   std::set<std::string> ptrs;
   for (const auto& f : h.error().errors) ptrs.insert(f.pointer);
-  for (const char* p : {"/rooms/0/roomType", "/rooms/0/floorPolygon", "/rooms/0/floorPolygon/1/z", "/walls/0/polygon",
-                        "/doors/0/room1", "/doors/0/holePolygon"})
+  for (const char* p : {"/rooms/0/roomType", "/rooms/0/floorPolygon", "/rooms/0/floorPolygon/1/z",
+                        "/walls/0/polygon", "/doors/0/room1", "/doors/0/holePolygon"})
     EXPECT_TRUE(ptrs.count(p)) << p;
   EXPECT_FALSE(import_procthor(Json::array(), knowledge()));
 }

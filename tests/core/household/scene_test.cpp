@@ -22,8 +22,10 @@ const std::vector<std::shared_ptr<const ResidentProfile>>& pool() {
   static const auto p = [] {
     std::vector<std::shared_ptr<const ResidentProfile>> out;
     auto vocab = ActivityVocabulary::initial(knowledge());
-    for (const char* id : {"grace-whitfield", "tobias-brenner", "aiyana-redcloud", "ben-okafor", "rosa-bianchi", "kofi-mensah"}) {
-      auto r = make_resident_offline(*knowledge().persona(id), knowledge(), {5, Weekday::kWednesday, 21}, vocab);
+    for (const char* id : {"grace-whitfield", "tobias-brenner", "aiyana-redcloud", "ben-okafor",
+                           "rosa-bianchi", "kofi-mensah"}) {
+      auto r =
+          make_resident_offline(*knowledge().persona(id), knowledge(), {5, Weekday::kWednesday, 21}, vocab);
       if (!r) throw std::runtime_error(r.error().message());
       out.push_back(std::make_shared<const ResidentProfile>(std::move(*r)));
     }
@@ -35,7 +37,8 @@ const std::vector<std::shared_ptr<const ResidentProfile>>& pool() {
 DynamicScene scene(int rooms, int residents, std::uint64_t seed) {
   auto h = generate_house({rooms, std::nullopt, seed}, knowledge());
   EXPECT_TRUE(h);
-  auto s = configure_scene(std::make_shared<const House>(std::move(*h)), pool(), {residents, seed}, knowledge());
+  auto s =
+      configure_scene(std::make_shared<const House>(std::move(*h)), pool(), {residents, seed}, knowledge());
   EXPECT_TRUE(s) << s.error().message();
   return std::move(*s);
 }
@@ -81,11 +84,15 @@ TEST(Scene, ObjectsMoveOntoReceptaclesOfTheEventsRoom) {
     EXPECT_EQ(to.kind, EntityKind::kReceptacle);
     EXPECT_EQ(r.time, e.end);
     EXPECT_NE(r.from, r.to);
-    const auto& prior = *s.residents()[static_cast<std::size_t>(e.resident)].profile->activity_db.find(s.entry(e).primary);
+    const auto& prior =
+        *s.residents()[static_cast<std::size_t>(e.resident)].profile->activity_db.find(s.entry(e).primary);
     bool allowed = false;
     for (const auto& l : prior.locations)
       for (const auto& o : l.objects)
-        if (o.type == s.house().entities[static_cast<std::size_t>(s.house().objects[static_cast<std::size_t>(r.object)])].type)
+        if (o.type ==
+            s.house()
+                .entities[static_cast<std::size_t>(s.house().objects[static_cast<std::size_t>(r.object)])]
+                .type)
           for (const auto& [rt, p] : o.receptacles) allowed |= rt == to.type && p > 0;
     EXPECT_TRUE(allowed);
   }
@@ -98,7 +105,8 @@ TEST(Scene, ObjectsMoveOntoReceptaclesOfTheEventsRoom) {
 TEST(Scene, IndexedPlacementAgreesWithReplayingTheEvents) {
   const auto s = scene(8, 3, 11);
   std::vector<int> replay(s.house().objects.size());
-  for (std::size_t o = 0; o < replay.size(); ++o) replay[o] = s.house().entities[static_cast<std::size_t>(s.house().objects[o])].parent;
+  for (std::size_t o = 0; o < replay.size(); ++o)
+    replay[o] = s.house().entities[static_cast<std::size_t>(s.house().objects[o])].parent;
   std::size_t next = 0;
   for (Seconds t = 0; t <= s.end(); t += 1800) {
     while (next < s.relocations().size() && s.relocations()[next].time <= t) {
@@ -149,7 +157,10 @@ TEST(Scene, HintsComeFromTheResidentsOwnRecentEvents) {
   int used = 0;
   for (const auto& r : s.relocations()) {
     const auto& e = s.events()[static_cast<std::size_t>(r.event)];
-    const auto& type = s.house().entities[static_cast<std::size_t>(s.house().objects[static_cast<std::size_t>(r.object)])].type;
+    const auto& type =
+        s.house()
+            .entities[static_cast<std::size_t>(s.house().objects[static_cast<std::size_t>(r.object)])]
+            .type;
     const Hint h = s.hint(e.resident, type, r.time + 60);
     ASSERT_TRUE(h.used) << type;
     EXPECT_EQ(s.events()[static_cast<std::size_t>(h.event)].resident, e.resident);

@@ -53,7 +53,8 @@ TEST(Schedule, FiftyPersonasFiveDaysWithoutInconsistencies) {
 
 TEST(Schedule, OtherSpansAndStartDaysAreConsistentToo) {
   for (const char* id : {"aiyana-redcloud", "ben-okafor", "hamid-rahimi", "mei-lin", "tevita-fifita"}) {
-    for (ScheduleRequest req : {ScheduleRequest{1, Weekday::kSunday, 3}, ScheduleRequest{14, Weekday::kMonday, 11}}) {
+    for (ScheduleRequest req :
+         {ScheduleRequest{1, Weekday::kSunday, 3}, ScheduleRequest{14, Weekday::kMonday, 11}}) {
       const auto s = make(persona(id), req);
       EXPECT_EQ(s.entries.back().end, req.days * 1440);
       for (const auto& issue : check_schedule(s, persona(id), knowledge()))
@@ -72,7 +73,8 @@ TEST(Schedule, WorkAndSchoolDaysDifferFromDaysOff) {
   int compared = 0;
   for (const auto& p : knowledge().personas) {
     const auto t = infer_traits(p);
-    if (t.work != WorkPattern::kCommute && t.work != WorkPattern::kSchool && t.work != WorkPattern::kCollege) continue;
+    if (t.work != WorkPattern::kCommute && t.work != WorkPattern::kSchool && t.work != WorkPattern::kCollege)
+      continue;
     const auto s = make(p, {7, Weekday::kMonday, 5});
     double work = 0, off = 0;
     int n_work = 0, n_off = 0;
@@ -83,7 +85,8 @@ TEST(Schedule, WorkAndSchoolDaysDifferFromDaysOff) {
     }
     if (n_work == 0 || n_off == 0) continue;
     const bool full_time = t.work_end - t.work_start >= 6 * 60;
-    EXPECT_GT(work / n_work, off / n_off + (full_time ? 120 : 0)) << p.name << " spends work days away longer than days off";
+    EXPECT_GT(work / n_work, off / n_off + (full_time ? 120 : 0))
+        << p.name << " spends work days away longer than days off";
     ++compared;
   }
   EXPECT_GE(compared, 20);
@@ -100,8 +103,10 @@ TEST(Schedule, NightShiftWorkersSleepByDay) {
       if (!t.work_days[static_cast<std::size_t>(d - 1)]) continue;
       bool asleep_at_noon = false, away_at_3am = false;
       for (const auto& e : s.entries) {
-        asleep_at_noon |= e.role == ActivityRole::kSleep && e.start <= d * 1440 + 720 && e.end > d * 1440 + 720;
-        away_at_3am |= e.role == ActivityRole::kLeaveHome && e.start <= d * 1440 + 180 && e.end > d * 1440 + 180;
+        asleep_at_noon |=
+            e.role == ActivityRole::kSleep && e.start <= d * 1440 + 720 && e.end > d * 1440 + 720;
+        away_at_3am |=
+            e.role == ActivityRole::kLeaveHome && e.start <= d * 1440 + 180 && e.end > d * 1440 + 180;
       }
       EXPECT_TRUE(asleep_at_noon) << id << " day " << d;
       EXPECT_TRUE(away_at_3am) << id << " day " << d;
@@ -128,7 +133,7 @@ TEST(Schedule, CheckerFindsBrokenSchedules) {
   auto s = make(p);
   ASSERT_TRUE(check_schedule(s, p, knowledge()).empty());
   auto broken = s;
-  broken.entries[3].end += 7;  // overlaps the next one
+  broken.entries[3].end += 7;                         // overlaps the next one
   broken.entries.erase(broken.entries.begin() + 10);  // leaves a gap
   std::set<std::string> kinds;
   for (const auto& i : check_schedule(broken, p, knowledge())) kinds.insert(i.kind);
@@ -144,7 +149,8 @@ TEST(Schedule, CheckerFindsBrokenSchedules) {
     }
   }
   for (auto& e : odd.entries)
-    if (e.start / 1440 == 1 && e.role == ActivityRole::kLeisure && e.start % 1440 < 23 * 60 && e.start % 1440 > 21 * 60) {
+    if (e.start / 1440 == 1 && e.role == ActivityRole::kLeisure && e.start % 1440 < 23 * 60 &&
+        e.start % 1440 > 21 * 60) {
       e.role = ActivityRole::kDinner;
       e.activity = dinner;
       break;
@@ -180,21 +186,26 @@ TEST(Vocabulary, GrowsAndMergesSynonyms) {
 class ScriptedPlanner : public DayPlanGenerator {
  public:
   explicit ScriptedPlanner(std::vector<PlanBlock> blocks) : blocks_(std::move(blocks)) {}
-  Result<DayPlan> plan_day(const Persona&, const DayPlanContext& c) override { return DayPlan{c.day, c.weekday, blocks_}; }
+  Result<DayPlan> plan_day(const Persona&, const DayPlanContext& c) override {
+    return DayPlan{c.day, c.weekday, blocks_};
+  }
   std::vector<PlanBlock> blocks_;
 };
 
 TEST(Schedule, PlansOfTheWrongShapeAreRefused) {
   auto vocab = ActivityVocabulary::initial(knowledge());
   OfflineDecomposer decomposer(knowledge());
-  ScriptedPlanner gap({{0, 420, "sleeping", BlockKind::kSleep}, {480, 1440, "a day at home", BlockKind::kHome}});
+  ScriptedPlanner gap(
+      {{0, 420, "sleeping", BlockKind::kSleep}, {480, 1440, "a day at home", BlockKind::kHome}});
   auto s = generate_schedule(persona("helen-park"), {1}, gap, decomposer, vocab);
   ASSERT_FALSE(s);
   ASSERT_FALSE(s.error().errors.empty());
   EXPECT_EQ(s.error().errors.front().pointer, "/blocks/1/start");
 
-  ScriptedPlanner fine({{0, 420, "sleeping", BlockKind::kSleep}, {420, 540, "morning", BlockKind::kHome},
-                        {540, 1020, "visiting the museum", BlockKind::kAway}, {1020, 1350, "evening", BlockKind::kHome},
+  ScriptedPlanner fine({{0, 420, "sleeping", BlockKind::kSleep},
+                        {420, 540, "morning", BlockKind::kHome},
+                        {540, 1020, "visiting the museum", BlockKind::kAway},
+                        {1020, 1350, "evening", BlockKind::kHome},
                         {1350, 1440, "sleeping", BlockKind::kSleep}});
   s = generate_schedule(persona("helen-park"), {2}, fine, decomposer, vocab);
   ASSERT_TRUE(s) << s.error().message();

@@ -37,7 +37,8 @@ TEST(Statistics, ReportHasThePapersShape) {
   std::cout << r.dump(1) << "\n";
   EXPECT_EQ(r["personas"], 50);
   EXPECT_EQ(r["days"], 5);
-  EXPECT_GT(r["activities"]["names"].get<int>(), r["activities"]["primaries"].get<int>()) << "synonyms were merged";
+  EXPECT_GT(r["activities"]["names"].get<int>(), r["activities"]["primaries"].get<int>())
+      << "synonyms were merged";
   double share = 0;
   for (const auto& [k, v] : r["objects_per_event"]["percent_by_count"].items()) share += v.get<double>();
   EXPECT_NEAR(share, 100.0, 0.1);
@@ -64,7 +65,8 @@ TEST(Statistics, LiesNearThePapersFigures) {
 // DynamicTHOR's 50 characters: compare ages and activities per persona over the same 5 days.
 TEST(Statistics, ComparableToDynamicThorData) {
   const auto dir = std::filesystem::path(testing::shared_file("peers/dsg"));
-  if (!std::filesystem::exists(dir / "character_schedules.csv")) GTEST_SKIP() << "peer data not present: " << dir;
+  if (!std::filesystem::exists(dir / "character_schedules.csv"))
+    GTEST_SKIP() << "peer data not present: " << dir;
   std::vector<double> ages;
   for (const auto& f : std::filesystem::directory_iterator(dir / "personas")) {
     std::ifstream in(f.path());
@@ -93,7 +95,8 @@ TEST(Statistics, ComparableToDynamicThorData) {
   for (const auto& [w, s] : names) per_persona += static_cast<double>(s.size());
   per_persona /= static_cast<double>(names.size());
   const Json& r = report();
-  std::cout << "DynamicTHOR: age mean " << mean << ", distinct activity names per persona " << per_persona << "\n";
+  std::cout << "DynamicTHOR: age mean " << mean << ", distinct activity names per persona " << per_persona
+            << "\n";
   EXPECT_NEAR(r["age"]["mean"].get<double>(), mean, 6.0);
   // Ours name every activity including sleep and the morning routine: allow up to twice theirs.
   const double ours = r["activities"]["per_persona_names"]["mean"].get<double>();

@@ -31,14 +31,14 @@ TEST_P(KnowledgeClassifyPrompt, FindsTheTypeAndNamesTheWordsThatDecidedIt) {
 INSTANTIATE_TEST_SUITE_P(
     Prompts, KnowledgeClassifyPrompt,
     ::testing::Values(
-        Case{"a quiet flat", "residential", "flat"},
-        Case{"the ER waiting room", "hospital", "'er'"},
+        Case{"a quiet flat", "residential", "flat"}, Case{"the ER waiting room", "hospital", "'er'"},
         Case{"warehouse picking aisles", "warehouse", "picking"},
         Case{"lunch at the canteen", "canteen", "canteen"},
         Case{"Patients queuing at the reception desk of a hospital", "hospital", "patient"},
         Case{"nurses walking between patient rooms near the ICU", "hospital", "icu"},
         Case{"an open-plan office with two meeting rooms", "office", "office"},
-        Case{"colleagues chatting by the printer before the board meeting in the conference room", "office", "conference room"},
+        Case{"colleagues chatting by the printer before the board meeting in the conference room", "office",
+             "conference room"},
         Case{"a supermarket checkout queue on Saturday", "retail", "supermarket"},
         Case{"shoppers browsing the shelves of a boutique", "retail", "boutique"},
         Case{"people ordering at a coffee shop counter", "canteen", "coffee shop"},
@@ -85,12 +85,15 @@ TEST(KnowledgeClassifyBuildingType, StrongerEvidenceGivesHigherConfidence) {
 }
 
 TEST(KnowledgeClassifyBuildingType, SceneGraphRoomNamesAreSplitAndClassified) {
-  const auto hospital = classify_building_type(std::vector<std::string>{"patient_room_01", "NurseStation", "corridor_2"});
+  const auto hospital =
+      classify_building_type(std::vector<std::string>{"patient_room_01", "NurseStation", "corridor_2"});
   EXPECT_EQ(hospital.type, "hospital");
   EXPECT_THAT(hospital.explanation, HasSubstr("patient room"));
-  const auto home = classify_building_type(std::vector<std::string>{"bedroom_1", "bedroom_2", "kitchen", "LivingRoom", "bathroom"});
+  const auto home = classify_building_type(
+      std::vector<std::string>{"bedroom_1", "bedroom_2", "kitchen", "LivingRoom", "bathroom"});
   EXPECT_EQ(home.type, "residential");
-  const auto shop = classify_building_type(std::vector<std::string>{"sales_floor", "stockroom", "checkout_1"});
+  const auto shop =
+      classify_building_type(std::vector<std::string>{"sales_floor", "stockroom", "checkout_1"});
   EXPECT_EQ(shop.type, "retail");
 }
 

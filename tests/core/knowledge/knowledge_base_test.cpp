@@ -293,7 +293,9 @@ TEST_F(KnowledgeBaseTest, EmbeddingsAreStoredOnceAndRefreshedWhenAnEntryChanges)
   EXPECT_EQ(*kb_->index_embeddings(Kind::kBehaviorNode), 0u);
 
   auto rows = store_->read([](store::Database& db) -> Result<std::int64_t> {
-    auto st = db.prepare("SELECT count(*) FROM knowledge_embeddings WHERE model = 'socsim-hashed-ngram-v1-128' AND length(vector) = 512");
+    auto st = db.prepare(
+        "SELECT count(*) FROM knowledge_embeddings WHERE model = 'socsim-hashed-ngram-v1-128' AND "
+        "length(vector) = 512");
     if (!st) return tl::unexpected(st.error());
     if (auto r = st->step(); !r) return tl::unexpected(r.error());
     return st->int64(0);

@@ -116,7 +116,8 @@ TEST_F(KnowledgeSeedDataTest, ThePaperFiveReferencesCarryTheirValuesInSi) {
 }
 
 TEST_F(KnowledgeSeedDataTest, EntriesConformToTheirJsonSchemas) {
-  for (const auto& [file, is_code] : {std::pair{"building_code.schema.json", true}, std::pair{"behavior_node.schema.json", false}}) {
+  for (const auto& [file, is_code] :
+       {std::pair{"building_code.schema.json", true}, std::pair{"behavior_node.schema.json", false}}) {
     const auto path = std::filesystem::path(SOCSIM_SOURCE_DIR) / "schemas" / file;
     auto doc = parse_json_untrusted(read_file(path));
     ASSERT_TRUE(doc) << path;
@@ -134,21 +135,46 @@ TEST_F(KnowledgeSeedDataTest, EntriesConformToTheirJsonSchemas) {
 }
 
 TEST_F(KnowledgeSeedDataTest, TheNodeLibraryHasEveryNodeTheCrowdEngineImplements) {
-  const std::map<std::string, NodeKind> required = {
-      {"GoTo", NodeKind::kAction}, {"RegularNav", NodeKind::kAction}, {"SetGoal", NodeKind::kAction},
-      {"UpdateGoal", NodeKind::kAction}, {"IsGoalReached", NodeKind::kCondition}, {"StopAndWait", NodeKind::kAction},
-      {"TimeExpired", NodeKind::kCondition}, {"LookAtAgent", NodeKind::kAction}, {"ApproachAgent", NodeKind::kAction},
-      {"FollowAgent", NodeKind::kAction}, {"AvoidAgent", NodeKind::kAction}, {"ConversationFormation", NodeKind::kAction},
-      {"SetGroupWalk", NodeKind::kAction}, {"IsAgentClose", NodeKind::kCondition}, {"IsRobotVisible", NodeKind::kCondition},
-      {"IsRobotClose", NodeKind::kCondition}, {"RandomChance", NodeKind::kCondition}, {"IsAtPosition", NodeKind::kCondition},
-      {"JoinQueue", NodeKind::kAction}, {"AdvanceQueue", NodeKind::kAction}, {"ServeAtCounter", NodeKind::kAction},
-      {"SitAt", NodeKind::kAction}, {"Wander", NodeKind::kAction}, {"Gather", NodeKind::kAction},
-      {"Evacuate", NodeKind::kAction}, {"WaitAt", NodeKind::kAction}, {"FollowVelocityField", NodeKind::kAction},
-      {"Sequence", NodeKind::kControl}, {"Fallback", NodeKind::kControl}, {"ReactiveSequence", NodeKind::kControl},
-      {"ReactiveFallback", NodeKind::kControl}, {"Parallel", NodeKind::kControl}, {"SubTree", NodeKind::kControl},
-      {"Inverter", NodeKind::kDecorator}, {"Repeat", NodeKind::kDecorator}, {"RetryUntilSuccessful", NodeKind::kDecorator},
-      {"Timeout", NodeKind::kDecorator}, {"Delay", NodeKind::kDecorator}, {"ForceSuccess", NodeKind::kDecorator},
-      {"ForceFailure", NodeKind::kDecorator}};
+  const std::map<std::string, NodeKind> required = {{"GoTo", NodeKind::kAction},
+                                                    {"RegularNav", NodeKind::kAction},
+                                                    {"SetGoal", NodeKind::kAction},
+                                                    {"UpdateGoal", NodeKind::kAction},
+                                                    {"IsGoalReached", NodeKind::kCondition},
+                                                    {"StopAndWait", NodeKind::kAction},
+                                                    {"TimeExpired", NodeKind::kCondition},
+                                                    {"LookAtAgent", NodeKind::kAction},
+                                                    {"ApproachAgent", NodeKind::kAction},
+                                                    {"FollowAgent", NodeKind::kAction},
+                                                    {"AvoidAgent", NodeKind::kAction},
+                                                    {"ConversationFormation", NodeKind::kAction},
+                                                    {"SetGroupWalk", NodeKind::kAction},
+                                                    {"IsAgentClose", NodeKind::kCondition},
+                                                    {"IsRobotVisible", NodeKind::kCondition},
+                                                    {"IsRobotClose", NodeKind::kCondition},
+                                                    {"RandomChance", NodeKind::kCondition},
+                                                    {"IsAtPosition", NodeKind::kCondition},
+                                                    {"JoinQueue", NodeKind::kAction},
+                                                    {"AdvanceQueue", NodeKind::kAction},
+                                                    {"ServeAtCounter", NodeKind::kAction},
+                                                    {"SitAt", NodeKind::kAction},
+                                                    {"Wander", NodeKind::kAction},
+                                                    {"Gather", NodeKind::kAction},
+                                                    {"Evacuate", NodeKind::kAction},
+                                                    {"WaitAt", NodeKind::kAction},
+                                                    {"FollowVelocityField", NodeKind::kAction},
+                                                    {"Sequence", NodeKind::kControl},
+                                                    {"Fallback", NodeKind::kControl},
+                                                    {"ReactiveSequence", NodeKind::kControl},
+                                                    {"ReactiveFallback", NodeKind::kControl},
+                                                    {"Parallel", NodeKind::kControl},
+                                                    {"SubTree", NodeKind::kControl},
+                                                    {"Inverter", NodeKind::kDecorator},
+                                                    {"Repeat", NodeKind::kDecorator},
+                                                    {"RetryUntilSuccessful", NodeKind::kDecorator},
+                                                    {"Timeout", NodeKind::kDecorator},
+                                                    {"Delay", NodeKind::kDecorator},
+                                                    {"ForceSuccess", NodeKind::kDecorator},
+                                                    {"ForceFailure", NodeKind::kDecorator}};
   for (const auto& [name, kind] : required) {
     const BehaviorNode* n = node_or_alias(name);
     ASSERT_NE(n, nullptr) << name;
@@ -210,11 +236,14 @@ std::map<std::string, std::vector<ModelPort>> node_models(const std::string& xml
       const std::string body = xml.substr(head_end, close - head_end);
       auto& ports = out[id];
       for (std::string port_tag : {"input_port", "output_port", "inout_port"}) {
-        for (auto p = body.find("<" + port_tag); p != std::string::npos; p = body.find("<" + port_tag, p + 1)) {
+        for (auto p = body.find("<" + port_tag); p != std::string::npos;
+             p = body.find("<" + port_tag, p + 1)) {
           const std::string element = body.substr(p, body.find('>', p) - p);
           std::string type = attribute(element, "type");
           if (type == "std::string") type = "string";
-          ports.push_back({port_tag == "input_port" ? "in" : port_tag == "output_port" ? "out" : "inout",
+          ports.push_back({port_tag == "input_port"    ? "in"
+                           : port_tag == "output_port" ? "out"
+                                                       : "inout",
                            attribute(element, "name"), type});
         }
       }
@@ -228,8 +257,9 @@ std::map<std::string, std::vector<ModelPort>> node_models(const std::string& xml
 TEST_F(KnowledgeSeedDataTest, HuNavSimTreesAndNodeModelsResolveAgainstTheLibrary) {
   const auto dir = std::filesystem::path(SOCSIM_SHARED_DIR) / "peers" / "hunav";
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "HuNavSim peer files not found at " << dir;
-  const std::set<std::string> structural = {"root", "TreeNodesModel", "BehaviorTree", "include", "input_port",
-                                            "output_port", "inout_port", "Action", "Condition", "Decorator", "Control"};
+  const std::set<std::string> structural = {"root",       "TreeNodesModel", "BehaviorTree", "include",
+                                            "input_port", "output_port",    "inout_port",   "Action",
+                                            "Condition",  "Decorator",      "Control"};
   int files = 0;
   std::set<std::string> checked;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
@@ -246,7 +276,8 @@ TEST_F(KnowledgeSeedDataTest, HuNavSimTreesAndNodeModelsResolveAgainstTheLibrary
       ASSERT_NE(node, nullptr) << id << " declared in " << entry.path().filename();
       checked.insert(id);
       for (const auto& mp : ports) {
-        const auto port = std::find_if(node->ports.begin(), node->ports.end(), [&](const Port& x) { return x.name == mp.name; });
+        const auto port = std::find_if(node->ports.begin(), node->ports.end(),
+                                       [&](const Port& x) { return x.name == mp.name; });
         ASSERT_NE(port, node->ports.end()) << id << "." << mp.name;
         EXPECT_EQ(std::string(to_string(port->direction)), mp.direction) << id << "." << mp.name;
         if (!mp.type.empty()) {

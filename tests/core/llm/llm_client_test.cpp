@@ -14,8 +14,8 @@
 namespace socsim::llm {
 namespace {
 
-using ::testing::HasSubstr;
 using socsim::testing::ScriptedServer;
+using ::testing::HasSubstr;
 using Clock = std::chrono::steady_clock;
 
 std::int64_t ms_since(Clock::time_point t) {
@@ -210,7 +210,8 @@ TEST(LlmClient, AnEndpointThatIsDownFailsFastNamingTheError) {
   EXPECT_LE(ms_since(start), 500);  // within the connect timeout: refused is not retried
   EXPECT_EQ(answer.error().code, ErrorCode::kUpstream);
   EXPECT_THAT(answer.error().detail, HasSubstr("127.0.0.1:" + std::to_string(port)));
-  EXPECT_THAT(answer.error().detail, HasSubstr("onnect"));  // "Failed to connect … Couldn't connect to server"
+  EXPECT_THAT(answer.error().detail,
+              HasSubstr("onnect"));  // "Failed to connect … Couldn't connect to server"
   EXPECT_EQ(answer.error().to_problem()["status"], 502);
 }
 
@@ -251,7 +252,8 @@ TEST(LlmClient, CancellationStopsARetryAfterWait) {
 
 TEST(LlmClient, ConcurrentCallsAreLimited) {
   ScriptedServer server;
-  for (int i = 0; i < 5; ++i) server.push_chat(ScriptedServer::delayed(ScriptedServer::chat(R"({"text": "hi"})"), 150));
+  for (int i = 0; i < 5; ++i)
+    server.push_chat(ScriptedServer::delayed(ScriptedServer::chat(R"({"text": "hi"})"), 150));
   auto config = quick_config(server.base_url());
   config.max_concurrency = 2;
   auto client = client_for(config);
@@ -268,7 +270,8 @@ TEST(LlmClient, ConcurrentCallsAreLimited) {
 
 TEST(LlmClient, RedirectsToAnotherOriginAreRefusedAndSameOriginOnesFollowed) {
   ScriptedServer server;
-  const std::string other_origin = "http://localhost:" + std::to_string(server.port()) + "/v1/chat/completions";
+  const std::string other_origin =
+      "http://localhost:" + std::to_string(server.port()) + "/v1/chat/completions";
   server.push_chat(ScriptedServer::Step{307, "", {{"Location", other_origin}}, 0, false});
   auto client = client_for(quick_config(server.base_url()));
   auto refused = client->chat(hello());
@@ -334,9 +337,11 @@ TEST(LlmClient, ModelMayBeChosenPerRequestButOnlyByAPlausibleName) {
 
 TEST(LlmClient, EmbeddingsComeBackInInputOrder) {
   ScriptedServer server;
-  const Json body = {{"object", "list"},
-                     {"data", {{{"index", 1}, {"embedding", {0.0, 1.0, 0.5}}}, {{"index", 0}, {"embedding", {1.0, 0.0, 0.25}}}}},
-                     {"usage", {{"prompt_tokens", 9}, {"total_tokens", 9}}}};
+  const Json body = {
+      {"object", "list"},
+      {"data",
+       {{{"index", 1}, {"embedding", {0.0, 1.0, 0.5}}}, {{"index", 0}, {"embedding", {1.0, 0.0, 0.25}}}}},
+      {"usage", {{"prompt_tokens", 9}, {"total_tokens", 9}}}};
   server.push("/v1/embeddings", ScriptedServer::Step{200, body.dump(), {}, 0, false});
   auto config = quick_config(server.base_url());
   config.embedding_model = "embed-small";
@@ -360,8 +365,13 @@ TEST(LlmClient, EmbeddingAnswersThatDoNotFitTheInputsAreRefused) {
   ScriptedServer server;
   server.push("/v1/embeddings",
               ScriptedServer::Step{200, R"({"data": [{"index": 0, "embedding": [1, 2]}]})", {}, 0, false});
-  server.push("/v1/embeddings",
-              ScriptedServer::Step{200, R"({"data": [{"index": 0, "embedding": [1, 2]}, {"index": 1, "embedding": [1]}]})", {}, 0, false});
+  server.push(
+      "/v1/embeddings",
+      ScriptedServer::Step{200,
+                           R"({"data": [{"index": 0, "embedding": [1, 2]}, {"index": 1, "embedding": [1]}]})",
+                           {},
+                           0,
+                           false});
   auto client = client_for(quick_config(server.base_url()));
   EmbeddingRequest r;
   r.inputs = {"a", "b"};

@@ -79,8 +79,9 @@ TEST(LlmConfig, EveryBadValueIsNamedByItsVariable) {
   EXPECT_EQ(c.error().code, ErrorCode::kValidation);
   std::vector<std::string> vars;
   for (const auto& e : c.error().errors) vars.push_back(e.parameter);
-  EXPECT_THAT(vars, ::testing::UnorderedElementsAre("SOCSIM_LLM_MAX_RETRIES", "SOCSIM_LLM_CONNECT_TIMEOUT_MS",
-                                                     "SOCSIM_LLM_STRUCTURED_OUTPUT", "SOCSIM_LLM_STRICT_SCHEMA"));
+  EXPECT_THAT(vars,
+              ::testing::UnorderedElementsAre("SOCSIM_LLM_MAX_RETRIES", "SOCSIM_LLM_CONNECT_TIMEOUT_MS",
+                                              "SOCSIM_LLM_STRUCTURED_OUTPUT", "SOCSIM_LLM_STRICT_SCHEMA"));
   EXPECT_THAT(c.error().detail, HasSubstr("SOCSIM_LLM_"));
 }
 

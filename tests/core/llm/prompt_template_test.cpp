@@ -68,7 +68,9 @@ TEST(PromptTemplates, PaperRequirementsAreInThePrompts) {
 }
 
 TEST(PromptTemplates, RenderingSubstitutesVerbatim) {
-  auto tpl = parse_prompt_template("t", "# t\nAnswers with: x\n\n## system\nBe {{ mood }}.\n\n## user\nSay {{what}} {{what}}; keep {\"a\": {\"b\": 1}} and {{ 3 }}.\n");
+  auto tpl = parse_prompt_template("t",
+                                   "# t\nAnswers with: x\n\n## system\nBe {{ mood }}.\n\n## user\nSay "
+                                   "{{what}} {{what}}; keep {\"a\": {\"b\": 1}} and {{ 3 }}.\n");
   ASSERT_TRUE(tpl.has_value()) << tpl.error().message();
   EXPECT_EQ(tpl->variables, (std::vector<std::string>{"mood", "what"}));
   auto messages = render_prompt(*tpl, {{"mood", "brief"}, {"what", "{{mood}}"}});

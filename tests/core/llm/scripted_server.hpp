@@ -38,7 +38,8 @@ class ScriptedServer {
       server_.Post(path, [this](const httplib::Request& req, httplib::Response& res) { handle(req, res); });
     port_ = server_.bind_to_any_port("127.0.0.1");
     thread_ = std::thread([this] { server_.listen_after_bind(); });
-    for (int i = 0; i < 200 && !server_.is_running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    for (int i = 0; i < 200 && !server_.is_running(); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   ~ScriptedServer() {
     {
@@ -72,18 +73,24 @@ class ScriptedServer {
   [[nodiscard]] int max_in_flight() const { return max_in_flight_.load(); }
 
   // A chat.completion whose message content is `content`.
-  static Step chat(const std::string& content, const std::string& finish_reason = "stop", int prompt_tokens = 120,
-                   int completion_tokens = 40) {
-    nlohmann::json body = {
-        {"id", "chatcmpl-test"},
-        {"object", "chat.completion"},
-        {"model", "scripted"},
-        {"choices", {{{"index", 0}, {"message", {{"role", "assistant"}, {"content", content}}}, {"finish_reason", finish_reason}}}},
-        {"usage", {{"prompt_tokens", prompt_tokens}, {"completion_tokens", completion_tokens}, {"total_tokens", prompt_tokens + completion_tokens}}}};
+  static Step chat(const std::string& content, const std::string& finish_reason = "stop",
+                   int prompt_tokens = 120, int completion_tokens = 40) {
+    nlohmann::json body = {{"id", "chatcmpl-test"},
+                           {"object", "chat.completion"},
+                           {"model", "scripted"},
+                           {"choices",
+                            {{{"index", 0},
+                              {"message", {{"role", "assistant"}, {"content", content}}},
+                              {"finish_reason", finish_reason}}}},
+                           {"usage",
+                            {{"prompt_tokens", prompt_tokens},
+                             {"completion_tokens", completion_tokens},
+                             {"total_tokens", prompt_tokens + completion_tokens}}}};
     return Step{200, body.dump(), {}, 0, false};
   }
   // An OpenAI-style error body.
-  static Step error(int status, const std::string& message, std::multimap<std::string, std::string> headers = {}) {
+  static Step error(int status, const std::string& message,
+                    std::multimap<std::string, std::string> headers = {}) {
     nlohmann::json body = {{"error", {{"message", message}, {"type", "scripted_error"}}}};
     return Step{status, body.dump(), std::move(headers), 0, false};
   }

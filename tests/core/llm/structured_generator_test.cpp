@@ -13,8 +13,8 @@
 namespace socsim::llm {
 namespace {
 
-using ::testing::HasSubstr;
 using socsim::testing::ScriptedServer;
+using ::testing::HasSubstr;
 
 // A persona answer schema, small enough to read in a test.
 const Json kPersonaSchema = Json::parse(R"({
@@ -111,12 +111,14 @@ TEST_F(StructuredGeneratorTest, AValidAnswerIsReturnedWithItsProvenance) {
   const Json& messages = seen[0].body["messages"];
   EXPECT_EQ(messages[0]["role"], "system");
   EXPECT_THAT(messages[0]["content"].get<std::string>(), HasSubstr("eight fields"));
-  EXPECT_THAT(messages[1]["content"].get<std::string>(), HasSubstr("Guidance for this character: a shift worker"));
+  EXPECT_THAT(messages[1]["content"].get<std::string>(),
+              HasSubstr("Guidance for this character: a shift worker"));
   EXPECT_EQ(seen[0].body["response_format"]["json_schema"]["name"], "persona");
 }
 
 TEST_F(StructuredGeneratorTest, FencedJsonWithProseAroundItIsAccepted) {
-  server_.push_chat(ScriptedServer::chat(std::string("Here is the character:\n```json\n") + kAda + "\n```\nEnjoy!"));
+  server_.push_chat(
+      ScriptedServer::chat(std::string("Here is the character:\n```json\n") + kAda + "\n```\nEnjoy!"));
   StructuredGenerator gen(*client_, store_.get());
   auto g = gen.generate(persona_request());
   ASSERT_TRUE(g.has_value()) << g.error().message();
@@ -161,8 +163,10 @@ TEST_F(StructuredGeneratorTest, SemanticRuleFailuresAreQuotedAndRepaired) {
     for (std::size_t i = 0; i < traits.size(); ++i)
       for (std::size_t j = i + 1; j < traits.size(); ++j)
         if (traits[i] == traits[j])
-          return fail(ErrorCode::kValidation, "repeated trait",
-                      {FieldError{"/personality/" + std::to_string(j), "repeats trait " + traits[j].dump(), {}, 0, 0}});
+          return fail(
+              ErrorCode::kValidation, "repeated trait",
+              {FieldError{
+                  "/personality/" + std::to_string(j), "repeats trait " + traits[j].dump(), {}, 0, 0}});
     return {};
   };
   StructuredGenerator gen(*client_, store_.get());
@@ -283,7 +287,8 @@ TEST(ExtractJsonAnswer, ReadsPlainFencedAndWrappedJson) {
   EXPECT_EQ(*extract_json_answer(R"( {"a": 1} )"), Json::parse(R"({"a": 1})"));
   EXPECT_EQ(*extract_json_answer("```json\n[1, 2]\n```"), Json::parse("[1, 2]"));
   EXPECT_EQ(*extract_json_answer("```\n{\"a\": 2}\n```"), Json::parse(R"({"a": 2})"));
-  EXPECT_EQ(*extract_json_answer("Sure! {\"a\": {\"b\": 3}} Hope that helps."), Json::parse(R"({"a": {"b": 3}})"));
+  EXPECT_EQ(*extract_json_answer("Sure! {\"a\": {\"b\": 3}} Hope that helps."),
+            Json::parse(R"({"a": {"b": 3}})"));
 }
 
 TEST(ExtractJsonAnswer, ReportsWhyNothingCouldBeRead) {

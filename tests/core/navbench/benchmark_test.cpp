@@ -32,7 +32,8 @@ TEST(Benchmark, ElevenTargetTypesAndSevenMethods) {
   for (const auto& t : target_types()) EXPECT_TRUE(knowledge().is_movable(t)) << t;
   std::vector<std::string> keys;
   for (const auto& m : methods()) keys.push_back(m.key);
-  EXPECT_EQ(keys, (std::vector<std::string>{"Uniform+Greedy", "SP+OSG", "SP+CEG", "Hint+OSG", "Hint+CEG", "Posterior+OSG", "Posterior+CEG"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{"Uniform+Greedy", "SP+OSG", "SP+CEG", "Hint+OSG", "Hint+CEG",
+                                            "Posterior+OSG", "Posterior+CEG"}));
 }
 
 TEST(Benchmark, SplitsHaveThePapersRoomsAndResidents) {
@@ -66,15 +67,19 @@ TEST(Benchmark, TasksTargetRecentlyMovedSingleObjectsOutOfSight) {
     std::set<household::Seconds> instants;
     for (const auto& task : tasks) {
       instants.insert(task.time);
-      EXPECT_NE(std::find(target_types().begin(), target_types().end(), task.target_type), target_types().end());
+      EXPECT_NE(std::find(target_types().begin(), target_types().end(), task.target_type),
+                target_types().end());
       int instances = 0, object = -1;
       for (std::size_t o = 0; o < t->house->objects.size(); ++o)
-        if (t->house->entities[static_cast<std::size_t>(t->house->objects[o])].type == task.target_type) ++instances, object = static_cast<int>(o);
+        if (t->house->entities[static_cast<std::size_t>(t->house->objects[o])].type == task.target_type)
+          ++instances, object = static_cast<int>(o);
       EXPECT_EQ(instances, 1);
       bool moved = false;
-      for (const auto& r : t->scene->relocations_between(task.time - request.recent + 1, task.time + 1)) moved = moved || r.object == object;
+      for (const auto& r : t->scene->relocations_between(task.time - request.recent + 1, task.time + 1))
+        moved = moved || r.object == object;
       EXPECT_TRUE(moved);
-      EXPECT_EQ(t->map->receptacles()[static_cast<std::size_t>(task.target_receptacle)].entity, t->scene->receptacle_at(object, task.time));
+      EXPECT_EQ(t->map->receptacles()[static_cast<std::size_t>(task.target_receptacle)].entity,
+                t->scene->receptacle_at(object, task.time));
       EXPECT_GE(task.time, household::kSecondsPerDay);
       EXPECT_GT(task.shortest, 0);
       EXPECT_EQ(task.shortest, shortest_steps(*t->map, task.start, task.target_receptacle));
@@ -135,7 +140,8 @@ TEST(Benchmark, ProgressIsReportedAndCancellingStops) {
   ASSERT_EQ(seen.size(), 3u);
   EXPECT_DOUBLE_EQ(*std::max_element(seen.begin(), seen.end()), 1.0);
   hooks.cancelled = [] { return true; };
-  auto cancelled = run_benchmark(small(Split::kNormal, 3, 3), knowledge(), small_pool(), small_counts(), hooks);
+  auto cancelled =
+      run_benchmark(small(Split::kNormal, 3, 3), knowledge(), small_pool(), small_counts(), hooks);
   ASSERT_FALSE(cancelled);
   EXPECT_EQ(cancelled.error().code, ErrorCode::kCancelled);
 }
@@ -146,7 +152,8 @@ TEST(Benchmark, RequestsAreValidatedFieldByField) {
   EXPECT_EQ(ok->split, Split::kHard);
   EXPECT_EQ(ok->scenes, 50);
   EXPECT_EQ(ok->seed, 7u);
-  auto bad = benchmark_request_from_json(Json{{"split", "easy"}, {"scenes", 0}, {"seed", -1}, {"colour", "red"}});
+  auto bad =
+      benchmark_request_from_json(Json{{"split", "easy"}, {"scenes", 0}, {"seed", -1}, {"colour", "red"}});
   ASSERT_FALSE(bad);
   std::set<std::string> pointers;
   for (const auto& e : bad.error().errors) pointers.insert(e.pointer);
@@ -169,7 +176,8 @@ TEST(Benchmark, AnEpisodeReplaysWithItsPathAndVisits) {
   EXPECT_EQ(j["shortest"], r->tasks.back().shortest);
   EXPECT_FALSE(j["house"]["rooms"].empty());
   EXPECT_EQ(j["house"]["grid"]["free"].get<std::string>().size(),
-            static_cast<std::size_t>(j["house"]["grid"]["width"].get<int>() * j["house"]["grid"]["depth"].get<int>()));
+            static_cast<std::size_t>(j["house"]["grid"]["width"].get<int>() *
+                                     j["house"]["grid"]["depth"].get<int>()));
   for (std::size_t m = 0; m < methods().size(); ++m) {
     const Json& e = j["methods"][methods()[m].key];
     EXPECT_EQ(e["steps"], r->outcomes.back()[m].steps);
@@ -181,13 +189,17 @@ TEST(Benchmark, AnEpisodeReplaysWithItsPathAndVisits) {
       const int step = v["step"];
       ASSERT_LE(step, e["steps"].get<int>());
       const auto& recs = j["house"]["receptacles"];
-      const auto rec = std::find_if(recs.begin(), recs.end(), [&](const Json& x) { return x["id"] == v["receptacle"]; });
+      const auto rec =
+          std::find_if(recs.begin(), recs.end(), [&](const Json& x) { return x["id"] == v["receptacle"]; });
       ASSERT_NE(rec, recs.end());
       const auto& at = e["path"][static_cast<std::size_t>(step)];
-      EXPECT_LE(std::hypot(at[0].get<double>() - (*rec)["x"].get<double>(), at[1].get<double>() - (*rec)["z"].get<double>()), 1.5 + 1e-9);
+      EXPECT_LE(std::hypot(at[0].get<double>() - (*rec)["x"].get<double>(),
+                           at[1].get<double>() - (*rec)["z"].get<double>()),
+                1.5 + 1e-9);
     }
   }
-  auto beyond = replay_task(request, static_cast<int>(r->tasks.size()), knowledge(), small_pool(), small_counts());
+  auto beyond =
+      replay_task(request, static_cast<int>(r->tasks.size()), knowledge(), small_pool(), small_counts());
   ASSERT_FALSE(beyond);
   EXPECT_EQ(beyond.error().code, ErrorCode::kNotFound);
 }

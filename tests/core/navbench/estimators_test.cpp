@@ -20,11 +20,16 @@ using testing::map_of;
 using testing::small_counts;
 using testing::small_pool;
 
-double sum(const std::vector<double>& p) { return std::accumulate(p.begin(), p.end(), 0.0); }
+double sum(const std::vector<double>& p) {
+  return std::accumulate(p.begin(), p.end(), 0.0);
+}
 
 household::House kitchen_and_bedroom() {
-  return hand_built_house({{RoomType::kKitchen, 0, 0, 4, 3}, {RoomType::kBedroom, 4, 0, 8, 3}}, {{0, 1, 4.0, 1.5}},
-                          {{"DiningTable", 0, 2.0, 1.5, 1.0, 1.0}, {"Bed", 1, 6.5, 1.5, 1.6, 2.0}, {"Dresser", 1, 5.0, 2.7, 1.0, 0.4}});
+  return hand_built_house({{RoomType::kKitchen, 0, 0, 4, 3}, {RoomType::kBedroom, 4, 0, 8, 3}},
+                          {{0, 1, 4.0, 1.5}},
+                          {{"DiningTable", 0, 2.0, 1.5, 1.0, 1.0},
+                           {"Bed", 1, 6.5, 1.5, 1.6, 2.0},
+                           {"Dresser", 1, 5.0, 2.7, 1.0, 0.4}});
 }
 
 TEST(Estimators, UniformIsFlat) {
@@ -57,7 +62,8 @@ TEST(Estimators, ScenePriorFollowsTheTrainingCounts) {
   const ScenePriorEstimator prior(std::make_shared<const PlacementCounts>(counts));
   // 5 mugs on 5 kitchen dining tables, backed off (one pseudo-count) to mugs per dining table,
   // backed off to mugs per receptacle (6/16, scaled by 0.01).
-  EXPECT_NEAR(prior.rate("Mug", "DiningTable", RoomType::kKitchen), (5.0 + (5.0 + 0.00375) / 6.0) / 6.0, 1e-12);
+  EXPECT_NEAR(prior.rate("Mug", "DiningTable", RoomType::kKitchen), (5.0 + (5.0 + 0.00375) / 6.0) / 6.0,
+              1e-12);
   const NavMap map = map_of(kitchen_and_bedroom());
   EstimateQuery q;
   q.map = &map;
@@ -104,7 +110,8 @@ TEST(Estimators, ScenePriorIgnoresTheTestScene) {
   q.hint = "Yes, I used the mug while having breakfast this morning and left it on the bed in the bedroom.";
   EXPECT_EQ(prior.estimate(q), before);
   household::House shuffled = *t->house;
-  for (int o : shuffled.objects) shuffled.entities[static_cast<std::size_t>(o)].parent = shuffled.receptacles.front();
+  for (int o : shuffled.objects)
+    shuffled.entities[static_cast<std::size_t>(o)].parent = shuffled.receptacles.front();
   const NavMap same_map = testing::map_of(shuffled);
   q.map = &same_map;
   EXPECT_EQ(prior.estimate(q), before);
@@ -118,7 +125,10 @@ TEST(Estimators, ScenePriorIgnoresTheTestScene) {
 
 TEST(Estimators, HintsAreReadFromTheResidentsWords) {
   const NavMap map = map_of(kitchen_and_bedroom());
-  auto r = read_hint("Yes, I used the mug while having breakfast this morning and left it on the dining table in the kitchen.", map);
+  auto r = read_hint(
+      "Yes, I used the mug while having breakfast this morning and left it on the dining table in the "
+      "kitchen.",
+      map);
   EXPECT_TRUE(r.used);
   EXPECT_EQ(r.receptacle_type, "DiningTable");
   ASSERT_TRUE(r.room);
@@ -135,7 +145,8 @@ TEST(Estimators, HintsAreReadFromTheResidentsWords) {
   EstimateQuery q;
   q.map = &map;
   q.target_type = "Mug";
-  q.hint = "Yes, I used the mug while getting dressed this morning and left it on the dresser in the bedroom.";
+  q.hint =
+      "Yes, I used the mug while getting dressed this morning and left it on the dresser in the bedroom.";
   const auto p = hint.estimate(q);
   EXPECT_NEAR(sum(p), 1.0, 1e-12);
   EXPECT_GE(p[2], 0.85);
@@ -164,7 +175,8 @@ TEST(Estimators, PosteriorNeverRulesOutTheTruthAndIsCalibrated) {
       q.model = &model;
       const auto p = posterior.estimate(q);
       ASSERT_NEAR(sum(p), 1.0, 1e-9);
-      ASSERT_GT(p[static_cast<std::size_t>(task.target_receptacle)], 0.0) << task.target_type << " at " << task.time;
+      ASSERT_GT(p[static_cast<std::size_t>(task.target_receptacle)], 0.0)
+          << task.target_type << " at " << task.time;
       truth += p[static_cast<std::size_t>(task.target_receptacle)];
       for (double x : p) sharpness += x * x;
       ++tasks;

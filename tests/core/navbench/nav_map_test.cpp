@@ -34,9 +34,9 @@ TEST(NavMap, FreeCellsAreInsideRoomsClearOfWallsAndFurniture) {
   const NavMap map = map_of(house);
   EXPECT_EQ(map.width(), 32);
   EXPECT_EQ(map.depth(), 12);
-  EXPECT_TRUE(map.free(cell_near(map, 0.1, 0.1)));    // 0.125 m from both walls
-  EXPECT_FALSE(map.free(cell_near(map, 2.1, 1.6)));   // under the table
-  EXPECT_FALSE(map.free(cell_near(map, 6.0, 2.6)));   // under the sofa
+  EXPECT_TRUE(map.free(cell_near(map, 0.1, 0.1)));   // 0.125 m from both walls
+  EXPECT_FALSE(map.free(cell_near(map, 2.1, 1.6)));  // under the table
+  EXPECT_FALSE(map.free(cell_near(map, 6.0, 2.6)));  // under the sofa
   EXPECT_TRUE(map.free(cell_near(map, 2.1, 0.3)));
   NavConfig wide;
   wide.wall_clearance = 0.2;
@@ -77,9 +77,9 @@ TEST(NavMap, SightStopsAtWallsAndPassesTheDoor) {
 TEST(NavMap, SeeingNeedsRangeFieldOfViewAndLineOfSight) {
   const NavMap map = map_of(two_rooms());
   const int cell = cell_near(map, 2.1, 0.1);  // centre (2.125, 0.125), 1.375 m below the table's centre
-  EXPECT_TRUE(map.sees(pose_of(cell, 1), {2.0, 1.5}));    // facing +z
-  EXPECT_FALSE(map.sees(pose_of(cell, 3), {2.0, 1.5}));   // facing away
-  EXPECT_FALSE(map.sees(pose_of(cell, 0), {2.0, 1.5}));   // 95° to the side: outside a 90° view
+  EXPECT_TRUE(map.sees(pose_of(cell, 1), {2.0, 1.5}));   // facing +z
+  EXPECT_FALSE(map.sees(pose_of(cell, 3), {2.0, 1.5}));  // facing away
+  EXPECT_FALSE(map.sees(pose_of(cell, 0), {2.0, 1.5}));  // 95° to the side: outside a 90° view
   EXPECT_FALSE(map.sees(pose_of(cell_near(map, 0.1, 0.1), 0), {2.0, 1.5}));  // 2.4 m away
   EXPECT_FALSE(map.sees(pose_of(cell_near(map, 3.6, 2.6), 0), {4.5, 2.6}));  // 0.9 m, but through the wall
   // The table is on the map with the poses that see it; the one above is among them.
@@ -111,7 +111,8 @@ TEST(NavMap, StepsInAnOpenRoomAreManhattanPlusTurns) {
           expected += turns(h, dz > 0 ? 1 : 3);
         const int poses[] = {pose_of(b, 0), pose_of(b, 1), pose_of(b, 2), pose_of(b, 3)};
         const int nearest = field.nearest(poses);
-        ASSERT_EQ(field.distance[static_cast<std::size_t>(nearest)], expected) << "from cell " << a << " heading " << h << " to " << b;
+        ASSERT_EQ(field.distance[static_cast<std::size_t>(nearest)], expected)
+            << "from cell " << a << " heading " << h << " to " << b;
         ASSERT_EQ(static_cast<int>(field.path_to(nearest).size()), expected);
       }
     }
@@ -130,7 +131,8 @@ TEST(NavMap, BreadthFirstStepsAgreeWithRelaxationAroundWalls) {
       if (d[static_cast<std::size_t>(p)] >= (1 << 28)) continue;
       for (int action = 0; action < 3; ++action) {
         const int q = map.act(p, action);
-        if (d[static_cast<std::size_t>(p)] + 1 < d[static_cast<std::size_t>(q)]) d[static_cast<std::size_t>(q)] = d[static_cast<std::size_t>(p)] + 1, changed = true;
+        if (d[static_cast<std::size_t>(p)] + 1 < d[static_cast<std::size_t>(q)])
+          d[static_cast<std::size_t>(q)] = d[static_cast<std::size_t>(p)] + 1, changed = true;
       }
     }
   }

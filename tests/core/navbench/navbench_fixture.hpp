@@ -19,8 +19,10 @@ inline const ResidentPool& small_pool() {
   static const ResidentPool pool = [] {
     ResidentPool out;
     auto vocab = household::ActivityVocabulary::initial(knowledge());
-    for (const char* id : {"grace-whitfield", "tobias-brenner", "aiyana-redcloud", "ben-okafor", "rosa-bianchi", "kofi-mensah"}) {
-      auto r = household::make_resident_offline(*knowledge().persona(id), knowledge(), {5, household::Weekday::kWednesday, 21}, vocab);
+    for (const char* id : {"grace-whitfield", "tobias-brenner", "aiyana-redcloud", "ben-okafor",
+                           "rosa-bianchi", "kofi-mensah"}) {
+      auto r = household::make_resident_offline(*knowledge().persona(id), knowledge(),
+                                                {5, household::Weekday::kWednesday, 21}, vocab);
       if (!r) throw std::runtime_error(r.error().message());
       out.push_back(std::make_shared<const household::ResidentProfile>(std::move(*r)));
     }
@@ -50,7 +52,7 @@ struct RoomBox {
 };
 struct DoorAt {
   int room0, room1;
-  double x, z;          // centre of the opening, on room0's wall
+  double x, z;  // centre of the opening, on room0's wall
   double width = 0.9;
 };
 struct Furniture {

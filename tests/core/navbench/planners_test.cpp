@@ -20,7 +20,7 @@ TEST(Planners, EachPicksByItsOwnRule) {
   // near & unlikely, middle & likely, far.
   const std::vector<Candidate> a = {{0, 0.10, 2}, {1, 0.60, 30}, {2, 0.30, 40}};
   EXPECT_EQ(GreedyPlanner().choose(a), 0u);
-  EXPECT_EQ(CegPlanner().choose(a), 0u);  // 0.05 per step beats 0.02 and 0.0075
+  EXPECT_EQ(CegPlanner().choose(a), 0u);     // 0.05 per step beats 0.02 and 0.0075
   EXPECT_EQ(OsgPlanner(0.5).choose(a), 1u);  // 0.5·1 − 0.5·0.75 = 0.125 beats 0.058 and −0.25
   const std::vector<Candidate> b = {{0, 0.05, 2}, {1, 0.60, 10}, {2, 0.35, 40}};
   EXPECT_EQ(GreedyPlanner().choose(b), 0u);
@@ -44,8 +44,9 @@ TEST(Planners, UniformProbabilitiesMakeEveryPlannerGreedy) {
 //  z=0 +--------------------------------------------------+
 //     x=0        x=2              x=5                x=9  x=10
 household::House corridor() {
-  return hand_built_house({{RoomType::kLivingRoom, 0, 0, 10, 2}}, {},
-                          {{"SideTable", 0, 2.0, 1.75}, {"SideTable", 0, 5.0, 1.75}, {"SideTable", 0, 9.0, 1.75}});
+  return hand_built_house(
+      {{RoomType::kLivingRoom, 0, 0, 10, 2}}, {},
+      {{"SideTable", 0, 2.0, 1.75}, {"SideTable", 0, 5.0, 1.75}, {"SideTable", 0, 9.0, 1.75}});
 }
 
 EpisodeResult search(const NavMap& map, const std::vector<double>& p, int target, const Planner& planner) {
@@ -66,7 +67,8 @@ TEST(Planners, CegAndOsgGoStraightToTheLikelyFarEnd) {
   const NavMap map = map_of(corridor());
   // The target is on table 0, which Greedy looks at first; CEG and OSG believe the far end.
   const auto far_first = [&](const Planner& planner) { return search(map, {0.05, 0.05, 0.9}, 0, planner); };
-  const auto greedy = far_first(GreedyPlanner()), ceg = far_first(CegPlanner()), osg = far_first(OsgPlanner(0.5));
+  const auto greedy = far_first(GreedyPlanner()), ceg = far_first(CegPlanner()),
+             osg = far_first(OsgPlanner(0.5));
   EXPECT_EQ(greedy.visited, (std::vector<int>{0}));
   EXPECT_EQ(greedy.steps, greedy.shortest);
   EXPECT_EQ(ceg.visited, (std::vector<int>{2, 1, 0}));  // back from the far end, the nearer first
@@ -75,17 +77,20 @@ TEST(Planners, CegAndOsgGoStraightToTheLikelyFarEnd) {
   EXPECT_LT(ceg.spl, greedy.spl);
 }
 
-//  Three rooms in a row: a fairly likely receptacle in a corner behind the start (0), the likeliest one in the
-//  next room (1) and an unlikely one two rooms away (2). CEG compares probability per step and
-//  takes the near one; OSG scales distances by the farthest candidate and takes the likeliest.
+//  Three rooms in a row: a fairly likely receptacle in a corner behind the start (0), the likeliest one in
+//  the next room (1) and an unlikely one two rooms away (2). CEG compares probability per step and takes the
+//  near one; OSG scales distances by the farthest candidate and takes the likeliest.
 TEST(Planners, CegAndOsgDisagreeWhereTheTradeIsClose) {
-  const auto house = hand_built_house(
-      {{RoomType::kKitchen, 0, 0, 4, 3}, {RoomType::kLivingRoom, 4, 0, 8, 3}, {RoomType::kBedroom, 8, 0, 12, 3}},
-      {{0, 1, 4.0, 1.5}, {1, 2, 8.0, 1.5}},
-      {{"CounterTop", 0, 0.4, 0.3}, {"Sofa", 1, 7.5, 2.7}, {"Bed", 2, 11.0, 2.5, 1.6, 0.8}});
+  const auto house =
+      hand_built_house({{RoomType::kKitchen, 0, 0, 4, 3},
+                        {RoomType::kLivingRoom, 4, 0, 8, 3},
+                        {RoomType::kBedroom, 8, 0, 12, 3}},
+                       {{0, 1, 4.0, 1.5}, {1, 2, 8.0, 1.5}},
+                       {{"CounterTop", 0, 0.4, 0.3}, {"Sofa", 1, 7.5, 2.7}, {"Bed", 2, 11.0, 2.5, 1.6, 0.8}});
   const NavMap map = map_of(house);
   const int start = pose_of(cell_near(map, 2.6, 2.6), 0);
-  const double d0 = shortest_steps(map, start, 0), d1 = shortest_steps(map, start, 1), d2 = shortest_steps(map, start, 2);
+  const double d0 = shortest_steps(map, start, 0), d1 = shortest_steps(map, start, 1),
+               d2 = shortest_steps(map, start, 2);
   ASSERT_LT(d0, d1);
   ASSERT_LT(d1, d2);
   const std::vector<double> p = {0.4, 0.6, 0.0};

@@ -9,9 +9,9 @@
 //   reception — visitors approach the counter, wait, and depart;
 //   normal operation — spotlight routines and ambient traffic move people between places.
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <cmath>
 #include <map>
 #include <set>
 
@@ -48,7 +48,8 @@ class Categories : public ::testing::Test {
     worlds_ = nullptr;
   }
 
-  static Simulated run(const world::World& w, const std::string& prompt, double seconds, std::uint64_t seed = 3) {
+  static Simulated run(const world::World& w, const std::string& prompt, double seconds,
+                       std::uint64_t seed = 3) {
     Simulated r;
     ProgramRequest req;
     req.prompt = prompt;
@@ -68,7 +69,10 @@ class Categories : public ::testing::Test {
     if (!runner) return r;
     r.runner = std::move(*runner);
     r.runner->run(
-        seconds, [&](double t, std::span<const PedestrianState> s) { r.frames.push_back(Frame{t, {s.begin(), s.end()}}); },
+        seconds,
+        [&](double t, std::span<const PedestrianState> s) {
+          r.frames.push_back(Frame{t, {s.begin(), s.end()}});
+        },
         2);
     EXPECT_THAT(r.runner->errors(), ::testing::IsEmpty());
     if (std::getenv("SOCSIM_DUMP_FRAMES") != nullptr) {
@@ -78,7 +82,8 @@ class Categories : public ::testing::Test {
         std::cerr << "t=" << f.t;
         for (const PedestrianState& s : f.states)
           std::cerr << " | " << s.id.value() << " " << s.role << " (" << std::round(s.pose.x * 10) / 10 << ","
-                    << std::round(s.pose.y * 10) / 10 << ") " << crowd::activity_name(s.activity) << " " << s.metadata.bt_node;
+                    << std::round(s.pose.y * 10) / 10 << ") " << crowd::activity_name(s.activity) << " "
+                    << s.metadata.bt_node;
         std::cerr << "\n";
       }
     }
@@ -153,7 +158,8 @@ TEST_F(Categories, QueueStandsInOrderInsideTheLaneAndIsServedOneAtATime) {
   for (const Frame& f : r.frames) {
     int at_counter = 0;
     for (const PedestrianState& s : f.states)
-      if (s.activity == Activity::kInteracting && dist(s.pose.x, s.pose.y, service.x, service.y) < 0.8) ++at_counter;
+      if (s.activity == Activity::kInteracting && dist(s.pose.x, s.pose.y, service.x, service.y) < 0.8)
+        ++at_counter;
     EXPECT_LE(at_counter, 1) << "t=" << f.t;
   }
   std::vector<std::uint32_t> served;
@@ -230,7 +236,8 @@ TEST_F(Categories, CoffeeBreakGroupsGatherWithinTwoMetresOfAPoint) {
       if (members >= 2 && near == members) gathered.insert(group);
     }
   }
-  EXPECT_EQ(gathered.size(), point_of.size()) << "groups that gathered: " << ::testing::PrintToString(gathered);
+  EXPECT_EQ(gathered.size(), point_of.size())
+      << "groups that gathered: " << ::testing::PrintToString(gathered);
   EXPECT_THAT(used(r, "gathering point"), ::testing::Contains("kitchenette_coffee_machine"));
 }
 
@@ -249,7 +256,8 @@ TEST_F(Categories, BottleneckDensityPeaksInFrontOfTheDoorway) {
   for (const Frame& f : r.frames) {
     int up = 0, down = 0;
     for (const PedestrianState& s : f.states) {
-      if (s.activity == Activity::kExited || dist(s.pose.x, s.pose.y, door.pose.x, door.pose.y) > 2.5) continue;
+      if (s.activity == Activity::kExited || dist(s.pose.x, s.pose.y, door.pose.x, door.pose.y) > 2.5)
+        continue;
       const auto z = w.zone_at({s.pose.x, s.pose.y});
       (z && *z == start_zone ? up : down) += 1;
     }
@@ -289,7 +297,8 @@ TEST_F(Categories, PartyGuestsClusterInTheLivingRoom) {
   }
   ASSERT_GT(samples, 0u);
   EXPECT_GE(static_cast<double>(inside) / static_cast<double>(samples), 0.8) << inside << " of " << samples;
-  EXPECT_GE(static_cast<double>(clustered) / static_cast<double>(samples), 0.7) << clustered << " of " << samples;
+  EXPECT_GE(static_cast<double>(clustered) / static_cast<double>(samples), 0.7)
+      << clustered << " of " << samples;
 }
 
 TEST_F(Categories, ReceptionVisitorsApproachWaitAndDepart) {
@@ -303,9 +312,9 @@ TEST_F(Categories, ReceptionVisitorsApproachWaitAndDepart) {
   const world::Point desk = at(r.runner->environment(), counters.front());
   struct Track {
     double first = -1.0, closest = 1e9;
-    double still = 0.0;           // s spent queuing or being served
+    double still = 0.0;  // s spent queuing or being served
     double closest_t = 0.0;
-    double after = 0.0;           // farthest from the desk after the closest approach
+    double after = 0.0;  // farthest from the desk after the closest approach
     bool left = false;
   };
   std::map<std::uint32_t, Track> tracks;
@@ -363,7 +372,8 @@ TEST_F(Categories, NormalOperationMovesPeopleBetweenPlaces) {
     }
   std::size_t moving = 0;
   for (const auto& [id, len] : path) moving += len > 3.0 ? 1 : 0;
-  EXPECT_GE(static_cast<double>(moving), 0.7 * static_cast<double>(path.size())) << moving << " of " << path.size();
+  EXPECT_GE(static_cast<double>(moving), 0.7 * static_cast<double>(path.size()))
+      << moving << " of " << path.size();
 }
 
 }  // namespace

@@ -68,7 +68,8 @@ class Fig6 : public ::testing::Test {
     worlds_ = nullptr;
   }
 
-  static Simulated run(const world::World& w, const std::string& prompt, double seconds, std::uint64_t seed = 3) {
+  static Simulated run(const world::World& w, const std::string& prompt, double seconds,
+                       std::uint64_t seed = 3) {
     Simulated r;
     ProgramRequest req;
     req.prompt = prompt;
@@ -88,7 +89,10 @@ class Fig6 : public ::testing::Test {
     if (!runner) return r;
     r.runner = std::move(*runner);
     r.runner->run(
-        seconds, [&](double t, std::span<const PedestrianState> s) { r.frames.push_back(Frame{t, {s.begin(), s.end()}}); },
+        seconds,
+        [&](double t, std::span<const PedestrianState> s) {
+          r.frames.push_back(Frame{t, {s.begin(), s.end()}});
+        },
         2);
     EXPECT_THAT(r.runner->errors(), ::testing::IsEmpty());
     return r;
@@ -130,7 +134,8 @@ std::size_t expect_orderly_queue(const Simulated& r, const world::World& w, cons
     std::vector<double> along;
     int at_counter = 0;
     for (const PedestrianState& s : f.states) {
-      if (s.activity == Activity::kInteracting && std::hypot(s.pose.x - q->service.x, s.pose.y - q->service.y) < 0.8)
+      if (s.activity == Activity::kInteracting &&
+          std::hypot(s.pose.x - q->service.x, s.pose.y - q->service.y) < 0.8)
         ++at_counter;
       if (s.activity != Activity::kQueuing || speed(s) > 0.25 || !has_tag(s, "queuing")) continue;
       const double d = (s.pose.x - q->head.x) * q->to_tail.x + (s.pose.y - q->head.y) * q->to_tail.y;
@@ -194,7 +199,8 @@ TEST_F(Fig6, ThePromptsPlaceIsHonouredOverTheDefaultCounter) {
     const std::string name = p["place"];
     const bool entity = std::any_of(office.entities().begin(), office.entities().end(),
                                     [&](const world::Entity& e) { return e.name == name; });
-    EXPECT_TRUE(entity || office.find_roi(name) || office.find_zone(name) || office.find_door(name)) << p.dump();
+    EXPECT_TRUE(entity || office.find_roi(name) || office.find_zone(name) || office.find_door(name))
+        << p.dump();
   }
 }
 

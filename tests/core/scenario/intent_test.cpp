@@ -49,7 +49,8 @@ TEST(Intent, EveryCategoryFromItsPhrases) {
 }
 
 TEST(Intent, MixedPromptsGiveSeveralCategoriesByClause) {
-  const Intent i = parse_intent("Patients queue at the reception desk while staff chat near the corridor intersection");
+  const Intent i =
+      parse_intent("Patients queue at the reception desk while staff chat near the corridor intersection");
   ASSERT_EQ(i.clauses.size(), 2u);
   EXPECT_EQ(i.clauses[0].categories.front().category, Category::kQueuing);
   EXPECT_EQ(i.clauses[1].categories.front().category, Category::kCoffeeBreak);
@@ -66,7 +67,8 @@ TEST(Intent, MixedPromptsGiveSeveralCategoriesByClause) {
 
 TEST(Intent, CountsInWordsAndDigitsBindToTheirRole) {
   const Intent i = parse_intent(
-      "Two nurses, about thirty visitors, a dozen patients, 5 staff members, a few doctors, several children and "
+      "Two nurses, about thirty visitors, a dozen patients, 5 staff members, a few doctors, several children "
+      "and "
       "twenty-five elderly people wait; a receptionist watches");
   ASSERT_NE(role(i, "nurse"), nullptr);
   EXPECT_EQ(role(i, "nurse")->count, 2u);
@@ -117,7 +119,8 @@ TEST(Intent, TimingStartAndDuration) {
 }
 
 TEST(Intent, PlaceMentions) {
-  const Intent i = parse_intent("Visitors wait near the elevator, nurses gather at the nurse station in the living room");
+  const Intent i =
+      parse_intent("Visitors wait near the elevator, nurses gather at the nurse station in the living room");
   std::vector<std::string> phrases;
   for (const Clause& c : i.clauses)
     for (const PlaceMention& m : c.places) phrases.push_back(m.preposition + ":" + m.phrase);

@@ -41,21 +41,30 @@ std::vector<std::string> pointers(const Error& e) {
 }
 
 TEST_F(Pipeline, RequestErrorsNameEveryBadField) {
-  const Json body = {{"prompt", ""},      {"seed", -1},          {"generator", "gpt"},     {"duration_s", 100000},
-                     {"agents", 0},       {"world_id", "wld_x"}, {"scene_graph", {{"rooms", Json::array()}}},
-                     {"domain", "castle"}, {"colour", "red"},    {"tags", {1}}};
+  const Json body = {{"prompt", ""},
+                     {"seed", -1},
+                     {"generator", "gpt"},
+                     {"duration_s", 100000},
+                     {"agents", 0},
+                     {"world_id", "wld_x"},
+                     {"scene_graph", {{"rooms", Json::array()}}},
+                     {"domain", "castle"},
+                     {"colour", "red"},
+                     {"tags", {1}}};
   auto r = scenario_request_from_json(body, config_);
   ASSERT_FALSE(r);
   EXPECT_EQ(r.error().code, ErrorCode::kValidation);
   const auto p = pointers(r.error());
-  for (const char* want : {"/prompt", "/seed", "/generator", "/duration_s", "/agents", "/domain", "/colour", "/tags/0", ""})
+  for (const char* want :
+       {"/prompt", "/seed", "/generator", "/duration_s", "/agents", "/domain", "/colour", "/tags/0", ""})
     EXPECT_THAT(p, ::testing::Contains(want)) << want;
 }
 
 TEST_F(Pipeline, AnOfflinePromptBecomesACardThatReplaysBitForBit) {
-  const Json body = {{"prompt", "Patients queue at the reception desk of a small clinic while two nurses chat"},
-                     {"seed", 11},
-                     {"duration_s", 12}};
+  const Json body = {
+      {"prompt", "Patients queue at the reception desk of a small clinic while two nurses chat"},
+      {"seed", 11},
+      {"duration_s", 12}};
   auto out = run(body);
   ASSERT_TRUE(out) << out.error().message();
   const auto& card = out->card;
@@ -99,7 +108,8 @@ TEST_F(Pipeline, AGivenWorldIsUsedAsItIs) {
   ASSERT_TRUE(first) << first.error().message();
   auto world = world::world_from_document(first->card.world);
   ASSERT_TRUE(world);
-  auto request = scenario_request_from_json({{"prompt", "everyone evacuates the building"}, {"seed", 1}, {"duration_s", 4}}, config_);
+  auto request = scenario_request_from_json(
+      {{"prompt", "everyone evacuates the building"}, {"seed", 1}, {"duration_s", 4}}, config_);
   ASSERT_TRUE(request);
   ScenarioServices s{*kb_, nullptr, config_, std::nullopt, {}, {}};
   auto out = run_scenario(*request, ScenarioWorld{*world, "office", Json::object()}, s);

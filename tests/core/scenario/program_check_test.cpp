@@ -44,13 +44,18 @@ Json tree(const std::string& body) {
 }
 
 Json queue_program() {
-  return Json{{"version", 1},
-              {"behavior_trees",
-               {{"visit", tree("<Sequence><JoinQueue agent_id=\"{id}\" queue=\"lobby_reception_counter_queue\" "
-                               "position=\"{place}\"/><ServeAtCounter agent_id=\"{id}\" counter=\"lobby_reception_counter\" "
-                               "queue=\"lobby_reception_counter_queue\" service_time=\"5\"/></Sequence>")}}},
-              {"agents", Json::array({Json{{"role", "adult"}, {"spawn", "lobby"}, {"count", 4}, {"behavior", "visit"}}})},
-              {"ambient_groups", Json::array({Json{{"name", "arrivals"}, {"start", {"corridor"}}, {"goal", {"lobby_waiting"}}, {"size", 6}}})}};
+  return Json{
+      {"version", 1},
+      {"behavior_trees",
+       {{"visit",
+         tree("<Sequence><JoinQueue agent_id=\"{id}\" queue=\"lobby_reception_counter_queue\" "
+              "position=\"{place}\"/><ServeAtCounter agent_id=\"{id}\" counter=\"lobby_reception_counter\" "
+              "queue=\"lobby_reception_counter_queue\" service_time=\"5\"/></Sequence>")}}},
+      {"agents",
+       Json::array({Json{{"role", "adult"}, {"spawn", "lobby"}, {"count", 4}, {"behavior", "visit"}}})},
+      {"ambient_groups",
+       Json::array(
+           {Json{{"name", "arrivals"}, {"start", {"corridor"}}, {"goal", {"lobby_waiting"}}, {"size", 6}}})}};
 }
 
 TEST_F(ProgramCheck, AValidProgramPasses) {
@@ -75,9 +80,12 @@ TEST_F(ProgramCheck, UnknownPlacesAreNamedWithValidNames) {
 TEST_F(ProgramCheck, UnknownNodesAndBadPortsAreErrorsInTheTree) {
   Json p = queue_program();
   p["behavior_trees"]["dance"] = tree("<DanceWildly agent_id=\"{id}\"/>");
-  p["behavior_trees"]["colour"] = tree("<JoinQueue agent_id=\"{id}\" queue=\"lobby_reception_counter_queue\" colour=\"red\" position=\"{p}\"/>");
+  p["behavior_trees"]["colour"] = tree(
+      "<JoinQueue agent_id=\"{id}\" queue=\"lobby_reception_counter_queue\" colour=\"red\" "
+      "position=\"{p}\"/>");
   p["behavior_trees"]["moon"] = tree("<WaitAt agent_id=\"{id}\" location=\"the_moon\" duration=\"5\"/>");
-  p["behavior_trees"]["lane"] = tree("<JoinQueue agent_id=\"{id}\" queue=\"lobby_waiting\" position=\"{p}\"/>");
+  p["behavior_trees"]["lane"] =
+      tree("<JoinQueue agent_id=\"{id}\" queue=\"lobby_waiting\" position=\"{p}\"/>");
   p["behavior_trees"]["negative"] = tree("<StopAndWait agent_id=\"{id}\" wait_duration=\"-3\"/>");
   const auto r = check_program(p, hospital(), ScenarioLimits{});
   ASSERT_FALSE(r.has_value());
@@ -85,7 +93,8 @@ TEST_F(ProgramCheck, UnknownNodesAndBadPortsAreErrorsInTheTree) {
   EXPECT_THAT(message_at(e, "/behavior_trees/dance/xml"), HasSubstr("DanceWildly")) << pointers(e);
   EXPECT_THAT(message_at(e, "/behavior_trees/colour/xml"), HasSubstr("colour")) << pointers(e);
   EXPECT_THAT(message_at(e, "/behavior_trees/moon/xml"), HasSubstr("the_moon")) << pointers(e);
-  EXPECT_THAT(message_at(e, "/behavior_trees/lane/xml"), AllOf(HasSubstr("queue_lane"), HasSubstr("lobby_reception_counter_queue")))
+  EXPECT_THAT(message_at(e, "/behavior_trees/lane/xml"),
+              AllOf(HasSubstr("queue_lane"), HasSubstr("lobby_reception_counter_queue")))
       << pointers(e);
   EXPECT_THAT(message_at(e, "/behavior_trees/negative/xml"), HasSubstr("negative")) << pointers(e);
   for (const FieldError& f : e.errors)
@@ -96,7 +105,7 @@ TEST_F(ProgramCheck, UnknownNodesAndBadPortsAreErrorsInTheTree) {
 
 TEST_F(ProgramCheck, ImpossibleCountsAreErrors) {
   Json p = queue_program();
-  p["agents"][0]["count"] = 5000;  // over the agent limit
+  p["agents"][0]["count"] = 5000;        // over the agent limit
   p["ambient_groups"][0]["size"] = 900;  // far more than the corridor holds
   ScenarioLimits limits;
   const auto r = check_program(p, hospital(), limits);
@@ -112,7 +121,8 @@ TEST_F(ProgramCheck, ImpossibleCountsAreErrors) {
   q["agents"][0]["count"] = 40;
   const auto s = check_program(q, hospital(), ScenarioLimits{});
   ASSERT_FALSE(s.has_value());
-  EXPECT_THAT(message_at(s.error(), "/agents/0/count"), AllOf(HasSubstr("do not fit"), HasSubstr("'lobby_entrance'")));
+  EXPECT_THAT(message_at(s.error(), "/agents/0/count"),
+              AllOf(HasSubstr("do not fit"), HasSubstr("'lobby_entrance'")));
 }
 
 TEST_F(ProgramCheck, RolesReferencesAndStructureAreCheckedAllAtOnce) {
@@ -123,13 +133,15 @@ TEST_F(ProgramCheck, RolesReferencesAndStructureAreCheckedAllAtOnce) {
   const auto r = check_program(p, hospital(), ScenarioLimits{});
   ASSERT_FALSE(r.has_value());
   // Structure first: a malformed program is reported by the parser with its pointer.
-  EXPECT_THAT(message_at(r.error(), "/ambient_groups/0/speed"), ::testing::Not(::testing::IsEmpty())) << pointers(r.error());
+  EXPECT_THAT(message_at(r.error(), "/ambient_groups/0/speed"), ::testing::Not(::testing::IsEmpty()))
+      << pointers(r.error());
 
   p["ambient_groups"][0].erase("speed");
   const auto s = check_program(p, hospital(), ScenarioLimits{});
   ASSERT_FALSE(s.has_value());
   EXPECT_THAT(message_at(s.error(), "/agents/0/role"), AllOf(HasSubstr("astronaut"), HasSubstr("/roles")));
-  EXPECT_THAT(message_at(s.error(), "/agents/0/behavior"), AllOf(HasSubstr("visit_twice"), HasSubstr("visit")));
+  EXPECT_THAT(message_at(s.error(), "/agents/0/behavior"),
+              AllOf(HasSubstr("visit_twice"), HasSubstr("visit")));
   EXPECT_GE(s.error().errors.size(), 2u);
 }
 
@@ -142,11 +154,13 @@ TEST_F(ProgramCheck, PositionsOutsideThePlanAndUnreachableRegionsAreErrors) {
 
   // Every name exists, but the start polygon lies outside the plan: the dry run finds it.
   Json q = queue_program();
-  q["ambient_groups"][0]["start"] = Json::array({Json::array({{-10.0, -10.0}, {-5.0, -10.0}, {-5.0, -5.0}, {-10.0, -5.0}})});
+  q["ambient_groups"][0]["start"] =
+      Json::array({Json::array({{-10.0, -10.0}, {-5.0, -10.0}, {-5.0, -5.0}, {-10.0, -5.0}})});
   const auto s = check_program(q, hospital(), ScenarioLimits{});
   ASSERT_FALSE(s.has_value());
   bool start_named = false;
-  for (const FieldError& f : s.error().errors) start_named = start_named || f.pointer.find("/ambient_groups/0/start") == 0;
+  for (const FieldError& f : s.error().errors)
+    start_named = start_named || f.pointer.find("/ambient_groups/0/start") == 0;
   EXPECT_TRUE(start_named) << pointers(s.error());
 }
 

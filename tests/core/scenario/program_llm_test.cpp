@@ -16,8 +16,8 @@
 namespace socsim::scenario {
 namespace {
 
-using ::testing::HasSubstr;
 using socsim::testing::ScriptedServer;
+using ::testing::HasSubstr;
 
 class ProgramLlm : public ::testing::Test {
  protected:
@@ -53,18 +53,29 @@ class ProgramLlm : public ::testing::Test {
     std::string corridor;
     for (const auto& z : world_->zones())
       if (z.type == "corridor") corridor = z.name;
-    const std::string lobby = world_->zones()[0].name == corridor ? world_->zones()[1].name : world_->zones()[0].name;
-    const std::string tree = "<root BTCPP_format=\"4\"><BehaviorTree ID=\"Nurse\"><WaitAt agent_id=\"{id}\" location=\"" +
-                             queue + "\" duration=\"30\"/></BehaviorTree></root>";
+    const std::string lobby =
+        world_->zones()[0].name == corridor ? world_->zones()[1].name : world_->zones()[0].name;
+    const std::string tree =
+        "<root BTCPP_format=\"4\"><BehaviorTree ID=\"Nurse\"><WaitAt agent_id=\"{id}\" location=\"" + queue +
+        "\" duration=\"30\"/></BehaviorTree></root>";
     return Json{{"spotlight_agents",
-                 {{{"id", "nurse"}, {"role", "nurse"}, {"spawn_roi", corridor}, {"behavior_tree", tree},
+                 {{{"id", "nurse"},
+                   {"role", "nurse"},
+                   {"spawn_roi", corridor},
+                   {"behavior_tree", tree},
                    {"parameters", {{"count", 2}, {"speed", 1.2}}}}}},
                 {"ambient_groups",
-                 {{{"name", "visitors"}, {"description", "visitors walking to the corridor"}, {"start_roi", lobby},
-                   {"goal_roi", corridor}, {"size", 6}, {"speed", 1.3}}}}};
+                 {{{"name", "visitors"},
+                   {"description", "visitors walking to the corridor"},
+                   {"start_roi", lobby},
+                   {"goal_roi", corridor},
+                   {"size", 6},
+                   {"speed", 1.3}}}}};
   }
 
-  std::string user_message(std::size_t call) const { return server_.seen().at(call).body["messages"].back()["content"]; }
+  std::string user_message(std::size_t call) const {
+    return server_.seen().at(call).body["messages"].back()["content"];
+  }
 
   ScriptedServer server_;
   socsim::testing::TempDir dir_;
@@ -126,7 +137,8 @@ TEST_F(ProgramLlm, AnAnswerThatNeverFitsTheWorldEndsWithAClearError) {
   EXPECT_EQ(g.error().code, ErrorCode::kValidation);
   EXPECT_EQ(server_.count(), 3);
   bool names_tree = false;
-  for (const auto& e : g.error().errors) names_tree = names_tree || e.pointer == "/spotlight_agents/0/behavior_tree";
+  for (const auto& e : g.error().errors)
+    names_tree = names_tree || e.pointer == "/spotlight_agents/0/behavior_tree";
   EXPECT_TRUE(names_tree) << g.error().message();
   EXPECT_THAT(g.error().message(), HasSubstr("TeleportTo"));
 }

@@ -34,9 +34,13 @@ class ProgramOffline : public ::testing::Test {
     r.agents = agents;
     auto g = generate_program_offline(w, worlds_->kb(), r, ScenarioLimits{});
     EXPECT_TRUE(g.has_value()) << prompt << " in " << w.name() << ": " << (g ? "" : g.error().message());
-    if (!g) return GeneratedProgram{Json::object({{"agents", Json::array()}, {"ambient_groups", Json::array()}}), Json::object(), {}};
+    if (!g)
+      return GeneratedProgram{
+          Json::object({{"agents", Json::array()}, {"ambient_groups", Json::array()}}), Json::object(), {}};
     if (std::getenv("SOCSIM_DUMP_PROGRAMS") != nullptr)
-      std::cerr << "=== " << prompt << " / " << w.name() << "\n" << g->program.dump(1) << "\n" << g->provenance.dump(1) << "\n";
+      std::cerr << "=== " << prompt << " / " << w.name() << "\n"
+                << g->program.dump(1) << "\n"
+                << g->provenance.dump(1) << "\n";
     return std::move(*g);
   }
   static testing::OfflineWorlds* worlds_;
@@ -58,7 +62,8 @@ std::set<std::string> places_of(const Json& program) {
     if (a.contains("spawn")) out.insert(a["spawn"].get<std::string>());
   for (const auto& [name, t] : program["behavior_trees"].items()) {
     const std::string xml = t["xml"].get<std::string>();
-    for (const char* port : {"queue=\"", "counter=\"", "point=\"", "region=\"", "location=\"", "seat=\"", "exit=\""}) {
+    for (const char* port :
+         {"queue=\"", "counter=\"", "point=\"", "region=\"", "location=\"", "seat=\"", "exit=\""}) {
       for (std::size_t at = xml.find(port); at != std::string::npos; at = xml.find(port, at + 1)) {
         const std::size_t b = at + std::string(port).size();
         out.insert(xml.substr(b, xml.find('"', b) - b));
@@ -85,7 +90,8 @@ TEST_F(ProgramOffline, EveryCategoryInEveryDomainPassesTheCheck) {
       ASSERT_FALSE(g.categories.empty()) << prompt;
       EXPECT_EQ(g.categories.front(), category) << prompt << " in " << domain;
       EXPECT_TRUE(check_program(g.program, w, ScenarioLimits{}).has_value()) << prompt << " in " << domain;
-      EXPECT_GT(g.program["agents"].size() + g.program["ambient_groups"].size(), 0u) << prompt << " in " << domain;
+      EXPECT_GT(g.program["agents"].size() + g.program["ambient_groups"].size(), 0u)
+          << prompt << " in " << domain;
     }
   }
 }
@@ -106,8 +112,8 @@ TEST_F(ProgramOffline, SamePromptUsesEachWorldsOwnPlaces) {
   EXPECT_TRUE(op.count("reception_reception_counter_queue")) << ::testing::PrintToString(op);
   for (const std::string& name : hp)
     if (!name.empty()) {
-      const bool in_hospital = hospital.find_roi(name) || hospital.find_entity(name) || hospital.find_zone(name) ||
-                               hospital.find_door(name);
+      const bool in_hospital = hospital.find_roi(name) || hospital.find_entity(name) ||
+                               hospital.find_zone(name) || hospital.find_door(name);
       EXPECT_TRUE(in_hospital) << name;
     }
   for (const std::string& name : op)
@@ -199,11 +205,14 @@ TEST_F(ProgramOffline, MissingPlacesFallBackAndSaySo) {
   const GeneratedProgram party = generate(office, "A house party in the living room");
   EXPECT_THAT(party.provenance["notes"].dump(), HasSubstr("no living room"));
   for (const std::string& name : places_of(party.program))
-    EXPECT_TRUE(office.find_roi(name) || office.find_entity(name) || office.find_zone(name) || office.find_door(name)) << name;
+    EXPECT_TRUE(office.find_roi(name) || office.find_entity(name) || office.find_zone(name) ||
+                office.find_door(name))
+        << name;
   // No elevator anywhere: the mention stays unresolved in the provenance.
   const GeneratedProgram lift = generate(office, "Visitors queue near the elevator");
   bool unresolved = false;
-  for (const Json& m : lift.provenance["place_mentions"]) unresolved = unresolved || (m["phrase"] == "elevator" && m["resolved"].is_null());
+  for (const Json& m : lift.provenance["place_mentions"])
+    unresolved = unresolved || (m["phrase"] == "elevator" && m["resolved"].is_null());
   EXPECT_TRUE(unresolved) << lift.provenance["place_mentions"].dump();
   // A residential plan has no queue lane: people wait by a POI, with a note.
   const GeneratedProgram queue = generate(worlds_->plan("residential"), "People queue");
@@ -212,7 +221,8 @@ TEST_F(ProgramOffline, MissingPlacesFallBackAndSaySo) {
 
 TEST_F(ProgramOffline, AnAlarmReachesEveryTreeAndProvenanceNamesTheKnowledge) {
   const world::World& w = worlds_->plan("hospital");
-  const GeneratedProgram g = generate(w, "Patients queue at the reception when the fire alarm sounds after 15 seconds");
+  const GeneratedProgram g =
+      generate(w, "Patients queue at the reception when the fire alarm sounds after 15 seconds");
   EXPECT_THAT(g.categories, ::testing::Contains("emergency"));
   for (const auto& [name, t] : g.program["behavior_trees"].items()) {
     const std::string xml = t["xml"].get<std::string>();

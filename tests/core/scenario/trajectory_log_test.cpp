@@ -29,9 +29,9 @@ crowd::PedestrianState state(std::uint32_t id, double x, double y, const std::st
 TrajectoryLog sample_log() {
   TrajectoryRecorder rec(0.1);
   for (int f = 0; f < 5; ++f) {
-    std::vector<crowd::PedestrianState> states = {state(2, 1.0 + f, 2.0, "nurse"), state(0, 0.5, f * 0.1, "visitor"),
-                                                  state(1, 3, 3, "visitor", f >= 3 ? crowd::Activity::kExited
-                                                                                   : crowd::Activity::kQueuing)};
+    std::vector<crowd::PedestrianState> states = {
+        state(2, 1.0 + f, 2.0, "nurse"), state(0, 0.5, f * 0.1, "visitor"),
+        state(1, 3, 3, "visitor", f >= 3 ? crowd::Activity::kExited : crowd::Activity::kQueuing)};
     rec.add(f * 0.1, states);
   }
   return std::move(rec).finish();

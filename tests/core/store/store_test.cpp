@@ -73,7 +73,8 @@ TEST(Store, AFailedWriteLeavesTheStoreAsItWas) {
     return true;
   });
   ASSERT_FALSE(r);
-  auto total = (*s)->read([](Database& db) { return scalar(db, "SELECT balance FROM account WHERE id = 2"); });
+  auto total =
+      (*s)->read([](Database& db) { return scalar(db, "SELECT balance FROM account WHERE id = 2"); });
   EXPECT_EQ(total.value(), 100) << "half of the failed transfer leaked into the store";
 }
 
@@ -153,7 +154,9 @@ TEST(Store, ReopeningKeepsCommittedData) {
   auto s = Store::open(dir.file("x.db"), opts);
   ASSERT_TRUE(s);
   EXPECT_TRUE((*s)->migration_report().applied.empty());
-  EXPECT_EQ((*s)->read([](Database& db) { return scalar(db, "SELECT balance FROM account WHERE id = 2"); }).value(), 130);
+  EXPECT_EQ(
+      (*s)->read([](Database& db) { return scalar(db, "SELECT balance FROM account WHERE id = 2"); }).value(),
+      130);
 }
 
 }  // namespace

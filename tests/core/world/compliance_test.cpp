@@ -21,7 +21,9 @@ class Compliance : public ::testing::Test {
     store_ = store::Store::open(dir_.file("kb.db")).value();
     kb_ = std::make_unique<knowledge::KnowledgeBase>(*store_);
   }
-  std::vector<knowledge::MergedConstraint> constraints(const std::string& type) { return kb_->constraints_for(type).value(); }
+  std::vector<knowledge::MergedConstraint> constraints(const std::string& type) {
+    return kb_->constraints_for(type).value();
+  }
   static const ComplianceCheck& check(const ComplianceReport& r, const std::string& name) {
     for (const auto& c : r.checks)
       if (c.name == name) return c;
@@ -126,8 +128,10 @@ TEST_F(Compliance, OccupantsAboveTheSingleExitLimitNeedTwoExitsHalfTheDiagonalAp
   EXPECT_EQ(check(r1, "exit_separation").status, CheckStatus::kNotApplicable);
 
   // A second exit beside the first is too close: the plan's diagonal is 13 × 8 → 15.26 m.
-  const std::string near = std::string(kClinic) + "  - {name: \"side\", pose: [3, 0], width: 1.2, connects: [\"lobby\"]}\n";
-  const ComplianceReport r2 = check_compliance(world_from_yaml(near).value(), "hospital", constraints("hospital"));
+  const std::string near =
+      std::string(kClinic) + "  - {name: \"side\", pose: [3, 0], width: 1.2, connects: [\"lobby\"]}\n";
+  const ComplianceReport r2 =
+      check_compliance(world_from_yaml(near).value(), "hospital", constraints("hospital"));
   EXPECT_EQ(check(r2, "exit_count").status, CheckStatus::kPass);
   const auto& apart = check(r2, "exit_separation");
   EXPECT_EQ(apart.status, CheckStatus::kFail);
@@ -136,8 +140,10 @@ TEST_F(Compliance, OccupantsAboveTheSingleExitLimitNeedTwoExitsHalfTheDiagonalAp
   EXPECT_THAT(apart.section, HasSubstr("1007.1.1"));
 
   // At the far end of room_b it is 13.0 m away: enough.
-  const std::string far = std::string(kClinic) + "  - {name: \"back\", pose: [13, 6], width: 1.2, connects: [\"room_b\"]}\n";
-  const ComplianceReport r3 = check_compliance(world_from_yaml(far).value(), "hospital", constraints("hospital"));
+  const std::string far =
+      std::string(kClinic) + "  - {name: \"back\", pose: [13, 6], width: 1.2, connects: [\"room_b\"]}\n";
+  const ComplianceReport r3 =
+      check_compliance(world_from_yaml(far).value(), "hospital", constraints("hospital"));
   EXPECT_EQ(check(r3, "exit_count").status, CheckStatus::kPass);
   EXPECT_EQ(check(r3, "exit_separation").status, CheckStatus::kPass);
   EXPECT_NEAR(*check(r3, "exit_separation").value, std::hypot(13.0, 2.0), 1e-9);
@@ -149,7 +155,8 @@ TEST_F(Compliance, OccupantsAboveTheSingleExitLimitNeedTwoExitsHalfTheDiagonalAp
 doors:
   - {name: "entrance", pose: [0, 4], width: 1.0, connects: ["office"]}
 )";
-  const ComplianceReport r4 = check_compliance(world_from_yaml(small).value(), "office", constraints("office"));
+  const ComplianceReport r4 =
+      check_compliance(world_from_yaml(small).value(), "office", constraints("office"));
   EXPECT_EQ(check(r4, "exit_count").status, CheckStatus::kPass);
   EXPECT_DOUBLE_EQ(check(r4, "exit_count").required, 1.0);
   EXPECT_EQ(check(r4, "exit_separation").status, CheckStatus::kNotApplicable);
@@ -186,7 +193,8 @@ doors:
   EXPECT_EQ(check(r, "built_in_storage_3b").status, CheckStatus::kNotApplicable);
   EXPECT_EQ(check(r, "escape_opening_area").status, CheckStatus::kNotChecked);
   EXPECT_EQ(check(r, "stair_clear_width").status, CheckStatus::kNotApplicable);
-  const DwellingRequirement need = dwelling_requirement(constraints("residential"), std::vector<double>{12.0, 10.0});
+  const DwellingRequirement need =
+      dwelling_requirement(constraints("residential"), std::vector<double>{12.0, 10.0});
   EXPECT_DOUBLE_EQ(need.gross_internal_area, 61.0);
   EXPECT_DOUBLE_EQ(need.storage_area, 2.0);
 }
@@ -211,14 +219,28 @@ TEST(ComplianceGeometry, ClearWidthAndInscribedCircleOfPolygons) {
   EXPECT_DOUBLE_EQ(clear_width(rect), 2.0);
   EXPECT_DOUBLE_EQ(inscribed_diameter(rect), 2.0);
   // A rotated 1.5 m wide rectangle.
-  const Polygon rotated{{{0, 0}, {3, 3}, {1.9393398282201788, 4.060660171779821}, {-1.0606601717798212, 1.0606601717798212}}, {}};
+  const Polygon rotated{
+      {{0, 0}, {3, 3}, {1.9393398282201788, 4.060660171779821}, {-1.0606601717798212, 1.0606601717798212}},
+      {}};
   EXPECT_NEAR(clear_width(rotated), 1.5, 1e-6);
   // An L-shaped corridor: arms 1.2 m and 2.4 m wide; the narrow arm decides.
   const Polygon ell{{{0, 0}, {10, 0}, {10, 1.2}, {2.4, 1.2}, {2.4, 8}, {0, 8}}, {}};
   EXPECT_NEAR(clear_width(ell), 1.2, 0.01);
   EXPECT_NEAR(inscribed_diameter(ell), 2.4, 0.01);
   // A room with a 0.8 m neck between two halls.
-  const Polygon neck{{{0, 0}, {4, 0}, {4, 1.6}, {6, 1.6}, {6, 0}, {10, 0}, {10, 4}, {6, 4}, {6, 2.4}, {4, 2.4}, {4, 4}, {0, 4}}, {}};
+  const Polygon neck{{{0, 0},
+                      {4, 0},
+                      {4, 1.6},
+                      {6, 1.6},
+                      {6, 0},
+                      {10, 0},
+                      {10, 4},
+                      {6, 4},
+                      {6, 2.4},
+                      {4, 2.4},
+                      {4, 4},
+                      {0, 4}},
+                     {}};
   EXPECT_NEAR(clear_width(neck), 0.8, 0.01);
 }
 

@@ -14,8 +14,8 @@
 namespace socsim::world {
 namespace {
 
-using ::testing::HasSubstr;
 using socsim::testing::ScriptedServer;
+using ::testing::HasSubstr;
 
 class FloorplanLlm : public ::testing::Test {
  protected:
@@ -108,7 +108,8 @@ TEST_F(FloorplanLlm, GeometryAndSceneGraphProblemsPointIntoTheAnswer) {
   // The lobby–corridor door dropped, and another door moved off every wall.
   for (std::size_t i = 0; i < bad["doors"].size(); ++i) {
     const auto& r = bad["doors"][i]["rooms"];
-    if (r.size() == 2 && ((r[0] == "lobby" && r[1] == "corridor") || (r[0] == "corridor" && r[1] == "lobby"))) {
+    if (r.size() == 2 &&
+        ((r[0] == "lobby" && r[1] == "corridor") || (r[0] == "corridor" && r[1] == "lobby"))) {
       bad["doors"].erase(i);
       break;
     }
@@ -129,7 +130,8 @@ TEST_F(FloorplanLlm, GeometryAndSceneGraphProblemsPointIntoTheAnswer) {
 
 TEST_F(FloorplanLlm, AnAnswerThatNeverValidatesEndsWithAClearErrorAfterTheRepairRounds) {
   Json bad = floor_plan_answer(*plan_);
-  bad["rooms"][1]["polygon"] = Json::array({Json::array({0, 0}), Json::array({4, 4}), Json::array({4, 0}), Json::array({0, 4})});
+  bad["rooms"][1]["polygon"] =
+      Json::array({Json::array({0, 0}), Json::array({4, 4}), Json::array({4, 0}), Json::array({0, 4})});
   for (int i = 0; i < 3; ++i) server_.push_chat(ScriptedServer::chat(bad.dump()));
   auto plan = generate_floor_plan_llm(*generator_, "", graph_, constraints_);
   ASSERT_FALSE(plan);

@@ -106,9 +106,11 @@ void expect_plans_valid_compliant_and_different(const std::vector<FloorPlan>& pl
 }
 
 TEST_F(FloorplanOffline, TwentyResidentialTenOfficeTenHospitalPlansAreValidCompliantAndDifferent) {
-  for (const auto& [domain, count] : std::vector<std::pair<std::string, int>>{{"residential", 20}, {"office", 10}, {"hospital", 10}}) {
+  for (const auto& [domain, count] :
+       std::vector<std::pair<std::string, int>>{{"residential", 20}, {"office", 10}, {"hospital", 10}}) {
     std::vector<FloorPlan> plans;
-    for (int seed = 1; seed <= count; ++seed) plans.push_back(generate(domain, static_cast<std::uint64_t>(seed)));
+    for (int seed = 1; seed <= count; ++seed)
+      plans.push_back(generate(domain, static_cast<std::uint64_t>(seed)));
     SCOPED_TRACE(domain);
     expect_plans_valid_compliant_and_different(plans);
   }
@@ -220,7 +222,8 @@ TEST_F(FloorplanOffline, EveryBuildingTypeHasAProgrammeThatLaysOut) {
 // main entrance, with an exit ROI just inside it; where one exit suffices there is one.
 TEST_F(FloorplanOffline, PlansGetASecondExitFarFromTheFirstWhereTheCodeAsksForIt) {
   std::map<std::string, int> two_exits;
-  for (const char* domain : {"office", "hospital", "canteen", "retail", "warehouse", "school", "airport", "residential"}) {
+  for (const char* domain :
+       {"office", "hospital", "canteen", "retail", "warehouse", "school", "airport", "residential"}) {
     for (std::uint64_t seed = 1; seed <= 6; ++seed) {
       const FloorPlan p = generate(domain, seed);
       SCOPED_TRACE(std::string(domain) + " seed " + std::to_string(seed));
@@ -249,7 +252,8 @@ TEST_F(FloorplanOffline, PlansGetASecondExitFarFromTheFirstWhereTheCodeAsksForIt
         for (const Zone& b : p.world.zones())
           for (const Point& u : a.polygon.outer)
             for (const Point& v : b.polygon.outer) diagonal = std::max(diagonal, geometry::distance(u, v));
-      EXPECT_GE(geometry::distance(Point{exits[0]->pose.x, exits[0]->pose.y}, Point{exits[1]->pose.x, exits[1]->pose.y}),
+      EXPECT_GE(geometry::distance(Point{exits[0]->pose.x, exits[0]->pose.y},
+                                   Point{exits[1]->pose.x, exits[1]->pose.y}),
                 diagonal / 2 - 1e-6);
       const std::string zone = p.world.zone(exits[1]->zone).name;
       const auto roi = p.world.find_roi(zone + "_emergency_exit");
@@ -326,7 +330,8 @@ TEST_F(FloorplanOffline, ExportsOfGeneratedPlansAreWellFormed) {
   EXPECT_GE(links, static_cast<int>(w.walls().size()));
   auto pedsim = parse_xml(export_pedsim(w));
   ASSERT_TRUE(pedsim) << pedsim.error().message();
-  const std::set<std::string> known = {"scenario", "obstacle", "waypoint", "queue", "attraction", "agent", "addwaypoint", "source"};
+  const std::set<std::string> known = {"scenario",   "obstacle", "waypoint",    "queue",
+                                       "attraction", "agent",    "addwaypoint", "source"};
   for (const auto& c : pedsim->children) EXPECT_TRUE(known.count(c.name)) << c.name;
 }
 

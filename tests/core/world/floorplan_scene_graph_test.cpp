@@ -13,7 +13,8 @@ namespace {
 using ::testing::HasSubstr;
 
 int count_type(const SceneGraph& g, const std::string& type) {
-  return static_cast<int>(std::count_if(g.rooms.begin(), g.rooms.end(), [&](const SceneRoom& r) { return r.type == type; }));
+  return static_cast<int>(
+      std::count_if(g.rooms.begin(), g.rooms.end(), [&](const SceneRoom& r) { return r.type == type; }));
 }
 
 std::vector<std::string> pointers(const Error& e) {
@@ -43,13 +44,16 @@ TEST(SceneGraph, EveryProblemIsNamedWithItsPointer) {
   auto bad = scene_graph_from_json(Json::parse(R"({"rooms": [{"name": "a", "type": "kitchen"}, {"name": "b"},
       {"name": "bad name!", "type": "x"}], "adjacency": [["a"]], "color": 1, "domain": "castle"})"));
   ASSERT_FALSE(bad);
-  EXPECT_THAT(pointers(bad.error()), ::testing::IsSupersetOf({"/rooms/1/type", "/rooms/2/name", "/adjacency/0", "/color", "/domain"}));
-  auto rules = scene_graph_from_json(Json::parse(R"({"rooms": [{"name": "a", "type": "kitchen"}, {"name": "a", "type": "bedroom"},
+  EXPECT_THAT(pointers(bad.error()), ::testing::IsSupersetOf({"/rooms/1/type", "/rooms/2/name",
+                                                              "/adjacency/0", "/color", "/domain"}));
+  auto rules = scene_graph_from_json(
+      Json::parse(R"({"rooms": [{"name": "a", "type": "kitchen"}, {"name": "a", "type": "bedroom"},
       {"name": "c", "type": "bedroom"}, {"name": "d", "type": "bathroom"}],
       "adjacency": [["a", "zz"], ["c", "c"], ["a", "c"], ["c", "a"]], "entrance": "nowhere"})"));
   ASSERT_FALSE(rules);
   EXPECT_THAT(pointers(rules.error()),
-              ::testing::UnorderedElementsAre("/rooms/1/name", "/adjacency/0/1", "/adjacency/1", "/adjacency/3", "/entrance"));
+              ::testing::UnorderedElementsAre("/rooms/1/name", "/adjacency/0/1", "/adjacency/1",
+                                              "/adjacency/3", "/entrance"));
   auto island = scene_graph_from_json(Json::parse(R"({"rooms": [{"name": "a", "type": "kitchen"},
       {"name": "b", "type": "bedroom"}, {"name": "c", "type": "bathroom"}], "adjacency": [["a", "b"]]})"));
   ASSERT_FALSE(island);
@@ -64,7 +68,8 @@ TEST(SceneGraph, ProgrammesPerBuildingType) {
   EXPECT_EQ(count_type(home, "bedroom"), 2);
   EXPECT_EQ(count_type(home, "living_room"), 1);
   // The kitchen opens onto the living room, everything else onto the hallway.
-  EXPECT_THAT(home.adjacency, ::testing::Contains(std::pair<std::string, std::string>{"living_room", "kitchen"}));
+  EXPECT_THAT(home.adjacency,
+              ::testing::Contains(std::pair<std::string, std::string>{"living_room", "kitchen"}));
   const SceneGraph office = room_program("office", {{"meeting_room", 4}});
   EXPECT_EQ(count_type(office, "meeting_room"), 4);
   EXPECT_EQ(office.entrance, "reception");
@@ -98,7 +103,8 @@ TEST(SceneGraph, PromptNumbersAndRoomWordsAreHonoured) {
   auto office = scene_graph_from_prompt("an office without a kitchenette and with 4 small meeting rooms");
   ASSERT_TRUE(office);
   EXPECT_EQ(count_type(office->graph, "meeting_room"), 4);
-  EXPECT_EQ(count_type(office->graph, "kitchenette"), 1);  // programme rooms stay; negation only drops additions
+  EXPECT_EQ(count_type(office->graph, "kitchenette"),
+            1);  // programme rooms stay; negation only drops additions
 
   auto given = scene_graph_from_prompt("a couple of toilets", std::string("canteen"));
   ASSERT_TRUE(given);
