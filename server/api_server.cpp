@@ -53,7 +53,8 @@ ApiServer::ApiServer(Services& services) : impl_(std::make_unique<Impl>(services
   const ServerConfig& cfg = ctx.config;
 
   http.new_task_queue = [n = cfg.threads] { return new httplib::ThreadPool(static_cast<std::size_t>(n)); };
-  http.set_payload_max_length(kBodyDrainFactor * cfg.max_body_bytes);  // POST routes enforce max_body (http_util)
+  http.set_payload_max_length(kBodyDrainFactor *
+                              cfg.max_body_bytes);  // POST routes enforce max_body (http_util)
   http.set_read_timeout(cfg.read_timeout_s, 0);
   http.set_write_timeout(cfg.write_timeout_s, 0);
   http.set_tcp_nodelay(true);  // small JSON replies must not wait for delayed ACKs (Nagle)
@@ -75,16 +76,18 @@ ApiServer::ApiServer(Services& services) : impl_(std::make_unique<Impl>(services
       if (impl_->ctx.keys.enabled() && !impl_->ctx.keys.authenticate(req.get_header_value("Authorization"))) {
         reply_problem(res,
                       Error(ErrorCode::kUnauthorized,
-                            "this server requires 'Authorization: Bearer <key>' for writes; the key is missing or unknown"),
+                            "this server requires 'Authorization: Bearer <key>' for writes; the key is "
+                            "missing or unknown"),
                       req.path);
         return httplib::Server::HandlerResponse::Handled;
       }
       // The body is not read yet: judge by the declared type.
       if (req.has_header("Content-Type") && !json_content_type(req.get_header_value("Content-Type"))) {
-        reply_problem(res,
-                      Error(ErrorCode::kUnsupportedMediaType,
-                            "send the body as application/json (got '" + req.get_header_value("Content-Type") + "')"),
-                      req.path);
+        reply_problem(
+            res,
+            Error(ErrorCode::kUnsupportedMediaType,
+                  "send the body as application/json (got '" + req.get_header_value("Content-Type") + "')"),
+            req.path);
         return httplib::Server::HandlerResponse::Handled;
       }
     }
@@ -92,17 +95,23 @@ ApiServer::ApiServer(Services& services) : impl_(std::make_unique<Impl>(services
   });
 
   // Every 4xx/5xx without a body (unknown route, body too large, …) becomes problem+json.
-  http.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
-    if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
-    std::string detail;
-    switch (res.status) {
-      case 404: detail = "no resource at " + req.method + " " + req.path; break;
-      case 413: detail = "the request body is larger than this server accepts"; break;
-      default: detail = "the request failed with HTTP status " + std::to_string(res.status);
-    }
-    reply_problem(res, Error(code_for_status(res.status), detail), req.path);
-    return httplib::Server::HandlerResponse::Handled;
-  }));
+  http.set_error_handler(
+      httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
+        if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+        std::string detail;
+        switch (res.status) {
+          case 404:
+            detail = "no resource at " + req.method + " " + req.path;
+            break;
+          case 413:
+            detail = "the request body is larger than this server accepts";
+            break;
+          default:
+            detail = "the request failed with HTTP status " + std::to_string(res.status);
+        }
+        reply_problem(res, Error(code_for_status(res.status), detail), req.path);
+        return httplib::Server::HandlerResponse::Handled;
+      }));
 
   http.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
     std::string what = "unknown exception";
@@ -112,16 +121,28 @@ ApiServer::ApiServer(Services& services) : impl_(std::make_unique<Impl>(services
       what = e.what();
     } catch (...) {
     }
-    log_line({{"level", "error"}, {"event", "exception"}, {"method", req.method}, {"path", req.path}, {"what", what}});
-    reply_problem(res, Error(ErrorCode::kInternal, "the server failed while handling this request"), req.path);
+    log_line({{"level", "error"},
+              {"event", "exception"},
+              {"method", req.method},
+              {"path", req.path},
+              {"what", what}});
+    reply_problem(res, Error(ErrorCode::kInternal, "the server failed while handling this request"),
+                  req.path);
   });
 
   http.set_logger([](const httplib::Request& req, const httplib::Response& res) {
-    Json line = {{"level", "info"},      {"event", "request"}, {"method", req.method},
-                 {"path", req.path},     {"status", res.status}, {"bytes_in", req.body.size()},
-                 {"bytes_out", res.body.size()}, {"client", req.remote_addr}};
+    Json line = {{"level", "info"},
+                 {"event", "request"},
+                 {"method", req.method},
+                 {"path", req.path},
+                 {"status", res.status},
+                 {"bytes_in", req.body.size()},
+                 {"bytes_out", res.body.size()},
+                 {"client", req.remote_addr}};
     if (t_request_start != std::chrono::steady_clock::time_point{}) {
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_request_start).count();
+      const double ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_request_start)
+              .count();
       line["duration_ms"] = std::round(ms * 1000.0) / 1000.0;
       t_request_start = {};
     }
@@ -155,7 +176,11 @@ Result<int> ApiServer::bind() {
   return port_;
 }
 
-void ApiServer::run() { impl_->http.listen_after_bind(); }
-void ApiServer::stop() { impl_->http.stop(); }
+void ApiServer::run() {
+  impl_->http.listen_after_bind();
+}
+void ApiServer::stop() {
+  impl_->http.stop();
+}
 
 }  // namespace socsim::server

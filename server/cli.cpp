@@ -15,7 +15,8 @@ namespace socsim::server {
 namespace {
 
 constexpr const char* kCardUsage =
-    "  card list             list cards   [--q TEXT] [--tag T] [--author A] [--domain D] [--page-size N] [--cursor C]\n"
+    "  card list             list cards   [--q TEXT] [--tag T] [--author A] [--domain D] [--page-size N] "
+    "[--cursor C]\n"
     "  card show ID          print a card as JSON\n"
     "  card export ID        write the card's export file  [-o FILE]\n"
     "  card import FILE      import an export file ('-' reads standard input)\n";
@@ -54,7 +55,9 @@ int card_command(const std::vector<std::string>& args) {
     if (!page) return cli_report(page.error());
     Json items = Json::array();
     for (const auto& c : page->items) items.push_back(cards::summary_json(c));
-    std::cout << Json{{"items", items}, {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}}.dump(2)
+    std::cout << Json{{"items", items},
+                      {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}}
+                     .dump(2)
               << "\n";
     return 0;
   }
@@ -97,7 +100,10 @@ int card_command(const std::vector<std::string>& args) {
     }
     auto outcome = catalogue.import_card(buf.str());
     if (!outcome) return cli_report(outcome.error());
-    std::cout << Json{{"id", outcome->card.id}, {"content_hash", outcome->card.content_hash}, {"created", outcome->created}}.dump()
+    std::cout << Json{{"id", outcome->card.id},
+                      {"content_hash", outcome->card.content_hash},
+                      {"created", outcome->created}}
+                     .dump()
               << "\n";
     return 0;
   }
@@ -109,21 +115,26 @@ int migrate_command(const std::vector<std::string>& args) {
   auto store = store::Store::open(cli_db_path(parse_cli(args)));
   if (!store) return cli_report(store.error());
   const auto& r = (*store)->migration_report();
-  std::cout << Json{{"db", (*store)->path()}, {"from_version", r.from_version}, {"to_version", r.to_version}, {"applied", r.applied}}.dump()
+  std::cout << Json{{"db", (*store)->path()},
+                    {"from_version", r.from_version},
+                    {"to_version", r.to_version},
+                    {"applied", r.applied}}
+                   .dump()
             << "\n";
   return 0;
 }
 
 int version_command(const std::vector<std::string>&) {
-  std::cout << "socsim " << build::kVersion << " (" << build::kGitSha << ", " << build::kFlavor << ", " << build::kCompiler
-            << ")\n";
+  std::cout << "socsim " << build::kVersion << " (" << build::kGitSha << ", " << build::kFlavor << ", "
+            << build::kCompiler << ")\n";
   return 0;
 }
 
 }  // namespace
 
 SOCSIM_COMMAND("card", kCardUsage, card_command);
-SOCSIM_COMMAND("migrate", "  migrate               apply pending migrations and print the schema version\n", migrate_command);
+SOCSIM_COMMAND("migrate", "  migrate               apply pending migrations and print the schema version\n",
+               migrate_command);
 SOCSIM_COMMAND("version", "  version               print version and build\n", version_command);
 
 std::optional<std::string> CliArgs::opt(const std::string& key) const {
@@ -185,7 +196,8 @@ int run_cli(const std::vector<std::string>& args) {
   if (it == commands().end()) {
     bool noun = false;
     for (const auto& [name, info] : commands()) noun = noun || name.rfind(cmd + " ", 0) == 0;
-    std::cerr << "socsim: unknown " << (noun ? "subcommand of '" + cmd + "'" : "command '" + cmd + "'") << "\n"
+    std::cerr << "socsim: unknown " << (noun ? "subcommand of '" + cmd + "'" : "command '" + cmd + "'")
+              << "\n"
               << usage();
     return 2;
   }

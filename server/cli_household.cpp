@@ -22,19 +22,25 @@ namespace hh = socsim::household;
 constexpr const char* kPersonaUsage =
     "  persona list                                   built-in and stored personas (id, age, occupation)\n"
     "  persona show ID                                one persona as JSON\n"
-    "  persona generate [--count N] [--seed S] [--min-age A] [--max-age B] [--occupation X] [--role R] [--gender G] [--store]\n"
-    "                                                 new personas (offline), printed as JSON; --store keeps them\n";
+    "  persona generate [--count N] [--seed S] [--min-age A] [--max-age B] [--occupation X] [--role R] "
+    "[--gender G] [--store]\n"
+    "                                                 new personas (offline), printed as JSON; --store keeps "
+    "them\n";
 
 constexpr const char* kHouseholdUsage =
-    "  household generate --rooms N | --house procthor.json  [--residents K | --personas a,b] [--days D] [--seed S]\n"
+    "  household generate --rooms N | --house procthor.json  [--residents K | --personas a,b] [--days D] "
+    "[--seed S]\n"
     "                     [--start-weekday W] [--generator offline|llm] [-o scene.json] [--store]\n"
     "                                                 a dynamic household scene; -o writes its document\n"
-    "  household objects SCENE --t T                  where every object is T seconds after 00:00 of the first day\n"
+    "  household objects SCENE --t T                  where every object is T seconds after 00:00 of the "
+    "first day\n"
     "  household export SCENE --format procthor [--t T] [-o house.json]\n"
     "                                                 the house as ProcTHOR JSON (objects placed as at T)\n";
 
 // Prints the error with every field it names; 2 for the caller's mistakes, 1 for ours.
-int report(const Error& e) { return cli_report(e); }
+int report(const Error& e) {
+  return cli_report(e);
+}
 
 std::optional<std::int64_t> integer_option(const CliArgs& a, const std::string& key, bool& bad) {
   auto v = a.opt(key);
@@ -92,7 +98,8 @@ int persona_command(const std::vector<std::string>& args) {
   if (verb == "list") {
     for (const auto& p : *all) {
       std::string occ = p.occupation.substr(0, 70);
-      std::cout << hh::persona_id(p) << "\t" << p.age << "\t" << p.gender << "\t" << occ << (p.occupation.size() > 70 ? "…" : "") << "\n";
+      std::cout << hh::persona_id(p) << "\t" << p.age << "\t" << p.gender << "\t" << occ
+                << (p.occupation.size() > 70 ? "…" : "") << "\n";
     }
     return 0;
   }
@@ -142,8 +149,10 @@ int persona_command(const std::vector<std::string>& args) {
 }
 
 // A household document from a file written with -o, or a stored household by id.
-Result<hh::HouseholdDocument> load_scene(store::Store& store, const std::string& scene, const hh::HouseholdKnowledge& k) {
-  Result<Json> json = std::filesystem::exists(scene) ? read_json_file(scene) : hh::load_household_document(store, scene);
+Result<hh::HouseholdDocument> load_scene(store::Store& store, const std::string& scene,
+                                         const hh::HouseholdKnowledge& k) {
+  Result<Json> json =
+      std::filesystem::exists(scene) ? read_json_file(scene) : hh::load_household_document(store, scene);
   if (!json) return tl::unexpected(json.error());
   return hh::household_document_from_json(*json, k);
 }
@@ -215,7 +224,8 @@ int household_command(const std::vector<std::string>& args) {
     Json summary = hh::household_summary_json(*doc, *scene);
     summary.erase("schedules");
     if (a.flag("--store"))
-      if (auto s = hh::store_household(**store, *doc, summary, "cli", std::nullopt); !s) return report(s.error());
+      if (auto s = hh::store_household(**store, *doc, summary, "cli", std::nullopt); !s)
+        return report(s.error());
     if (auto out = a.opt("-o")) {
       std::ofstream f(*out);
       f << hh::to_json(*doc).dump() << "\n";
@@ -241,7 +251,8 @@ int household_command(const std::vector<std::string>& args) {
     const auto t = integer_option(a, "--t", bad);
     if (bad) return 2;
     if (t && (*t < 0 || *t > scene->end()))
-      return report(Error(ErrorCode::kValidation, "--t must be between 0 and " + std::to_string(scene->end()) + " seconds"));
+      return report(Error(ErrorCode::kValidation,
+                          "--t must be between 0 and " + std::to_string(scene->end()) + " seconds"));
     if (verb == "objects") {
       if (!t) {
         std::cerr << "socsim: household objects needs --t SECONDS\n";

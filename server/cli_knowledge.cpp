@@ -11,9 +11,12 @@ namespace socsim::server {
 namespace {
 
 constexpr const char* kUsage =
-    "  knowledge search TEXT [--kind building_code|behavior_node] [--k 5]   retrieve entries (BM25 + offline embedding)\n"
-    "  knowledge classify TEXT                                            building type of a prompt, with the deciding words\n"
-    "  knowledge constraints TYPE [--jurisdiction J]                      constraints a floor plan of TYPE must meet\n";
+    "  knowledge search TEXT [--kind building_code|behavior_node] [--k 5]   retrieve entries (BM25 + offline "
+    "embedding)\n"
+    "  knowledge classify TEXT                                            building type of a prompt, with "
+    "the deciding words\n"
+    "  knowledge constraints TYPE [--jurisdiction J]                      constraints a floor plan of TYPE "
+    "must meet\n";
 
 int knowledge_command(const std::vector<std::string>& args) {
   const CliArgs a = parse_cli(args);

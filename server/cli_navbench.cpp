@@ -12,11 +12,14 @@ namespace socsim::server {
 namespace {
 
 constexpr const char* kUsage =
-    "  navbench --split normal|hard --scenes 50 --seed S [--out FILE]   object-goal navigation benchmark (Table I shape)\n"
-    "           [--tasks-per-scene 10] [--max-steps 200] [--training-houses 10000] [--threads 2] [--episodes]\n";
+    "  navbench --split normal|hard --scenes 50 --seed S [--out FILE]   object-goal navigation benchmark "
+    "(Table I shape)\n"
+    "           [--tasks-per-scene 10] [--max-steps 200] [--training-houses 10000] [--threads 2] "
+    "[--episodes]\n";
 
 // An integer option within [lo, hi]; prints the problem and returns nullopt when it is not one.
-std::optional<std::int64_t> int_option(const CliArgs& a, const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) {
+std::optional<std::int64_t> int_option(const CliArgs& a, const std::string& key, std::int64_t fallback,
+                                       std::int64_t lo, std::int64_t hi) {
   auto v = a.opt(key);
   if (!v) return fallback;
   try {

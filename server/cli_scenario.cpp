@@ -19,10 +19,13 @@ namespace {
 constexpr const char* kGenerateUsage =
     "  scenario generate --prompt TEXT [--world W.yaml | --scene-graph G.json] [--domain D] [--seed S]\n"
     "                    [--seconds T] [--agents N] [-o card.json] [--log traj.socsim-traj] [--store]\n"
-    "                                                                     offline text to scenario; --store adds the card\n"
-    "                                                                     and its log to the catalogue (--db)\n";
+    "                                                                     offline text to scenario; --store "
+    "adds the card\n"
+    "                                                                     and its log to the catalogue "
+    "(--db)\n";
 constexpr const char* kReplayUsage =
-    "  scenario replay CARD.json                                          re-run a card; exit 0 when bit-identical\n";
+    "  scenario replay CARD.json                                          re-run a card; exit 0 when "
+    "bit-identical\n";
 
 Result<std::string> read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -82,12 +85,13 @@ int generate_command(const std::vector<std::string>& args) {
   if (!store) return cli_report(store.error());
   knowledge::KnowledgeBase kb(**store);
   int shown = -1;  // progress on stderr, one line per tenth
-  scenario::ScenarioServices services{kb, nullptr, config, std::nullopt, {}, [&shown](double f, const std::string& m) {
-                                        const int tenth = static_cast<int>(f * 10);
-                                        if (tenth == shown) return;
-                                        shown = tenth;
-                                        std::cerr << "[" << static_cast<int>(f * 100) << "%] " << m << "\n";
-                                      }};
+  scenario::ScenarioServices services{
+      kb, nullptr, config, std::nullopt, {}, [&shown](double f, const std::string& m) {
+        const int tenth = static_cast<int>(f * 10);
+        if (tenth == shown) return;
+        shown = tenth;
+        std::cerr << "[" << static_cast<int>(f * 100) << "%] " << m << "\n";
+      }};
   auto outcome = scenario::run_scenario(*request, world, services);
   if (!outcome) return cli_report(outcome.error());
 
@@ -138,8 +142,8 @@ int replay_command(const std::vector<std::string>& args) {
   if (!out) return cli_report(out.error());
   const std::string expected = card->trajectory_log.value("sha256", "");
   const bool same = out->log.sha256() == expected;
-  std::cout << (same ? "identical" : "DIFFERENT") << " " << out->log.sha256() << " (card: " << expected << ", "
-            << out->log.frame_count() << " frames)\n";
+  std::cout << (same ? "identical" : "DIFFERENT") << " " << out->log.sha256() << " (card: " << expected
+            << ", " << out->log.frame_count() << " frames)\n";
   return same ? 0 : 1;
 }
 

@@ -19,10 +19,14 @@ namespace socsim::server {
 namespace {
 
 constexpr const char* kUsage =
-    "  world generate (--prompt TEXT | --scene-graph FILE) [--domain D] [--seed S] [--jurisdiction J] [-o world.yaml] [--report FILE]\n"
-    "                                                                     offline floor plan; compliance summary on stderr\n"
-    "  world validate FILE [--domain D] [--jurisdiction J]                 validation (line, field) and compliance report\n"
-    "  world export FILE --format sdf|pedsim|map|svg -o OUT               simulator/map export (map: OUT.pgm + OUT.yaml)\n";
+    "  world generate (--prompt TEXT | --scene-graph FILE) [--domain D] [--seed S] [--jurisdiction J] [-o "
+    "world.yaml] [--report FILE]\n"
+    "                                                                     offline floor plan; compliance "
+    "summary on stderr\n"
+    "  world validate FILE [--domain D] [--jurisdiction J]                 validation (line, field) and "
+    "compliance report\n"
+    "  world export FILE --format sdf|pedsim|map|svg -o OUT               simulator/map export (map: OUT.pgm "
+    "+ OUT.yaml)\n";
 
 Result<std::string> read_file(const std::string& path, const std::string& what) {
   std::ifstream in(path, std::ios::binary);
@@ -47,12 +51,16 @@ int usage(const std::string& why) {
 std::string summary_line(const world::ComplianceReport& r) {
   int pass = 0, failed = 0, other = 0;
   for (const auto& c : r.checks) {
-    if (c.status == world::CheckStatus::kPass) ++pass;
-    else if (c.status == world::CheckStatus::kFail) ++failed;
-    else ++other;
+    if (c.status == world::CheckStatus::kPass)
+      ++pass;
+    else if (c.status == world::CheckStatus::kFail)
+      ++failed;
+    else
+      ++other;
   }
-  return std::string(r.passed ? "compliant" : "NOT compliant") + " (" + r.building_type + "): " + std::to_string(pass) +
-         " pass, " + std::to_string(failed) + " fail, " + std::to_string(other) + " not applicable/checked/used";
+  return std::string(r.passed ? "compliant" : "NOT compliant") + " (" + r.building_type +
+         "): " + std::to_string(pass) + " pass, " + std::to_string(failed) + " fail, " +
+         std::to_string(other) + " not applicable/checked/used";
 }
 
 int generate(const CliArgs& a) {
@@ -94,12 +102,14 @@ int generate(const CliArgs& a) {
     std::cout << yaml;
   }
   if (auto report = a.opt("--report")) {
-    Json j = {{"compliance", world::to_json(plan->compliance)}, {"provenance", plan->provenance},
+    Json j = {{"compliance", world::to_json(plan->compliance)},
+              {"provenance", plan->provenance},
               {"scene_graph", world::to_json(plan->scene_graph)}};
     if (auto s = write_file(*report, j.dump(2) + "\n"); !s) return cli_report(s.error());
   }
-  std::cerr << plan->world.name() << ": " << plan->world.zones().size() << " zones, " << plan->world.doors().size()
-            << " doors, " << plan->world.area() << " m²; " << summary_line(plan->compliance) << "\n";
+  std::cerr << plan->world.name() << ": " << plan->world.zones().size() << " zones, "
+            << plan->world.doors().size() << " doors, " << plan->world.area() << " m²; "
+            << summary_line(plan->compliance) << "\n";
   return 0;
 }
 

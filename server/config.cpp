@@ -42,45 +42,70 @@ Status apply(ServerConfig& c, const std::string& flag, const std::string& value,
     }
     return {};
   };
-  if (flag == "--host") c.host = value;
-  else if (flag == "--port") return port(c.port);
-  else if (flag == "--ws-port") return port(c.ws_port);
-  else if (flag == "--public-host") c.public_host = value;
-  else if (flag == "--db") c.db = value;
-  else if (flag == "--web-root") c.web_root = value;
+  if (flag == "--host")
+    c.host = value;
+  else if (flag == "--port")
+    return port(c.port);
+  else if (flag == "--ws-port")
+    return port(c.ws_port);
+  else if (flag == "--public-host")
+    c.public_host = value;
+  else if (flag == "--db")
+    c.db = value;
+  else if (flag == "--web-root")
+    c.web_root = value;
   else if (flag == "--threads") {
     std::size_t t = 0;
     if (auto s = size(t, 1); !s) return s;
     c.threads = static_cast<int>(std::min<std::size_t>(t, 256));
-  } else if (flag == "--max-body") return size(c.max_body_bytes, 1024);
-  else if (flag == "--max-prompt") return size(c.max_prompt_bytes, 1);
-  else if (flag == "--max-page-size") return size(c.max_page_size, 1);
-  else if (flag == "--rate-limit") return real(c.rate_limit_rps);
-  else if (flag == "--rate-burst") return real(c.rate_limit_burst);
+  } else if (flag == "--max-body")
+    return size(c.max_body_bytes, 1024);
+  else if (flag == "--max-prompt")
+    return size(c.max_prompt_bytes, 1);
+  else if (flag == "--max-page-size")
+    return size(c.max_page_size, 1);
+  else if (flag == "--rate-limit")
+    return real(c.rate_limit_rps);
+  else if (flag == "--rate-burst")
+    return real(c.rate_limit_burst);
   else if (flag == "--api-keys") {
     auto keys = parse_api_keys(value);
     if (!keys) return bad(keys.error().detail);
     c.api_keys = std::move(*keys);
-  } else if (flag == "--llm-url") c.llm.base_url = value;
-  else if (flag == "--llm-model") c.llm.model = value;
+  } else if (flag == "--llm-url")
+    c.llm.base_url = value;
+  else if (flag == "--llm-model")
+    c.llm.model = value;
   else if (flag == "--job-workers") {
     std::size_t w = 0;
     if (auto s = size(w, 1); !s) return s;
     c.job_workers = static_cast<int>(std::min<std::size_t>(w, 64));
-  } else if (flag == "--max-scenario-agents") return size(c.max_scenario_agents, 1);
+  } else if (flag == "--max-scenario-agents")
+    return size(c.max_scenario_agents, 1);
   else if (flag == "--max-scenario-seconds") {
     if (auto s = real(c.max_scenario_seconds); !s) return s;
-    if (c.max_scenario_seconds < 1.0 || c.max_scenario_seconds > 86400.0) return bad("must be between 1 and 86400");
-  } else if (flag == "--max-simulations") return size(c.max_simulations, 1);
-  else if (flag == "--max-viewers") return size(c.max_viewers, 1);
-  else if (flag == "--max-sim-agents") return size(c.max_sim_agents, 1);
-  else if (flag == "--min-sim-speed") return real(c.min_sim_speed);
-  else if (flag == "--max-sim-speed") return real(c.max_sim_speed);
-  else if (flag == "--stream-hz") return real(c.stream_hz);
-  else if (flag == "--sim-idle") return real(c.sim_idle_s);
-  else if (flag == "--max-sim-duration") return real(c.max_sim_duration_s);
-  else if (flag == "--viewer-queue") return size(c.viewer_queue, 1);
-  else return fail(ErrorCode::kBadRequest, "unknown option " + flag + " (see socsim serve --help)");
+    if (c.max_scenario_seconds < 1.0 || c.max_scenario_seconds > 86400.0)
+      return bad("must be between 1 and 86400");
+  } else if (flag == "--max-simulations")
+    return size(c.max_simulations, 1);
+  else if (flag == "--max-viewers")
+    return size(c.max_viewers, 1);
+  else if (flag == "--max-sim-agents")
+    return size(c.max_sim_agents, 1);
+  else if (flag == "--min-sim-speed")
+    return real(c.min_sim_speed);
+  else if (flag == "--max-sim-speed")
+    return real(c.max_sim_speed);
+  else if (flag == "--stream-hz")
+    return real(c.stream_hz);
+  else if (flag == "--sim-idle")
+    return real(c.sim_idle_s);
+  else if (flag == "--max-sim-duration")
+    return real(c.max_sim_duration_s);
+  else if (flag == "--viewer-queue")
+    return size(c.viewer_queue, 1);
+  else
+    return fail(ErrorCode::kBadRequest, "unknown option " + flag + " (see socsim serve --help)");
   return {};
 }
 
@@ -91,7 +116,8 @@ const std::vector<FlagSpec>& serve_flags() {
       {"--host", "SOCSIM_HOST", "address to listen on (default 127.0.0.1; 0.0.0.0 for all)"},
       {"--port", "SOCSIM_PORT", "HTTP port (default 8080)"},
       {"--ws-port", "SOCSIM_WS_PORT", "WebSocket port (default 8081)"},
-      {"--public-host", "SOCSIM_PUBLIC_HOST", "host name clients use to reach this server (for URLs in /info)"},
+      {"--public-host", "SOCSIM_PUBLIC_HOST",
+       "host name clients use to reach this server (for URLs in /info)"},
       {"--db", "SOCSIM_DB", "SQLite file (default ./var/socsim.db)"},
       {"--web-root", "SOCSIM_WEB_ROOT", "static viewer files served at / (default ./web)"},
       {"--threads", "SOCSIM_THREADS", "HTTP worker threads (default 8)"},
@@ -102,18 +128,24 @@ const std::vector<FlagSpec>& serve_flags() {
       {"--rate-burst", "SOCSIM_RATE_BURST", "burst size of the per-client rate limit (default 100)"},
       {"--api-keys", "SOCSIM_API_KEYS", "name:secret[,name:secret…]; when set, writes need a Bearer key"},
       {"--job-workers", "SOCSIM_JOB_WORKERS", "threads running generation jobs (default 2)"},
-      {"--max-scenario-agents", "SOCSIM_MAX_SCENARIO_AGENTS", "people in one generated scenario (default 2000)"},
-      {"--max-scenario-seconds", "SOCSIM_MAX_SCENARIO_SECONDS", "simulated seconds of one generated scenario (default 600)"},
+      {"--max-scenario-agents", "SOCSIM_MAX_SCENARIO_AGENTS",
+       "people in one generated scenario (default 2000)"},
+      {"--max-scenario-seconds", "SOCSIM_MAX_SCENARIO_SECONDS",
+       "simulated seconds of one generated scenario (default 600)"},
       {"--max-simulations", "SOCSIM_MAX_SIMULATIONS", "live simulations running at once (default 4)"},
       {"--max-viewers", "SOCSIM_MAX_VIEWERS", "WebSocket viewers per live simulation (default 32)"},
       {"--max-sim-agents", "SOCSIM_MAX_SIM_AGENTS", "agents in one live simulation (default 10000)"},
       {"--min-sim-speed", "SOCSIM_MIN_SIM_SPEED", "slowest speed factor of a live simulation (default 0.1)"},
       {"--max-sim-speed", "SOCSIM_MAX_SIM_SPEED", "fastest speed factor of a live simulation (default 16)"},
       {"--stream-hz", "SOCSIM_STREAM_HZ", "most frames per second streamed to a viewer, 1-120 (default 20)"},
-      {"--sim-idle", "SOCSIM_SIM_IDLE", "seconds a live simulation runs without viewers before it ends (default 30)"},
-      {"--max-sim-duration", "SOCSIM_MAX_SIM_DURATION", "longest simulated time of a live program, seconds (default 3600)"},
-      {"--viewer-queue", "SOCSIM_VIEWER_QUEUE", "frames queued per slow viewer before the oldest is dropped (default 8)"},
-      {"--llm-url", "SOCSIM_LLM_URL", "OpenAI-compatible endpoint base URL, e.g. http://localhost:11434 (optional)"},
+      {"--sim-idle", "SOCSIM_SIM_IDLE",
+       "seconds a live simulation runs without viewers before it ends (default 30)"},
+      {"--max-sim-duration", "SOCSIM_MAX_SIM_DURATION",
+       "longest simulated time of a live program, seconds (default 3600)"},
+      {"--viewer-queue", "SOCSIM_VIEWER_QUEUE",
+       "frames queued per slow viewer before the oldest is dropped (default 8)"},
+      {"--llm-url", "SOCSIM_LLM_URL",
+       "OpenAI-compatible endpoint base URL, e.g. http://localhost:11434 (optional)"},
       {"--llm-model", "SOCSIM_LLM_MODEL", "model name for the LLM generator"},
   };
   return flags;
@@ -125,7 +157,8 @@ Result<std::vector<ApiKey>> parse_api_keys(const std::string& spec) {
   std::size_t start = 0;
   while (start <= spec.size()) {
     const std::size_t comma = spec.find(',', start);
-    const std::string item = spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::string item =
+        spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     start = comma == std::string::npos ? spec.size() + 1 : comma + 1;
     if (item.empty()) continue;
     const std::size_t colon = item.find(':');
@@ -134,7 +167,8 @@ Result<std::vector<ApiKey>> parse_api_keys(const std::string& spec) {
     ApiKey k{item.substr(0, colon), item.substr(colon + 1)};
     if (k.secret.size() < 16)
       return fail(ErrorCode::kBadRequest, "the secret of key '" + k.name + "' is shorter than 16 characters");
-    if (!names.insert(k.name).second) return fail(ErrorCode::kBadRequest, "key name '" + k.name + "' is used twice");
+    if (!names.insert(k.name).second)
+      return fail(ErrorCode::kBadRequest, "key name '" + k.name + "' is used twice");
     keys.push_back(std::move(k));
   }
   return keys;
@@ -150,7 +184,8 @@ std::map<std::string, std::string> current_environment() {
   return env;
 }
 
-Result<ServerConfig> load_config(const std::vector<std::string>& args, const std::map<std::string, std::string>& env) {
+Result<ServerConfig> load_config(const std::vector<std::string>& args,
+                                 const std::map<std::string, std::string>& env) {
   ServerConfig c;
   auto llm = llm::LlmConfig::from_environment([&env](const char* name) -> const char* {
     auto it = env.find(name);
@@ -179,9 +214,11 @@ Result<ServerConfig> load_config(const std::vector<std::string>& args, const std
     return fail(ErrorCode::kBadRequest, "--min-sim-speed must be above 0 and at most --max-sim-speed",
                 {{"", "bad speed range", "--min-sim-speed", 0, 0}});
   if (c.stream_hz < 1 || c.stream_hz > 120)
-    return fail(ErrorCode::kBadRequest, "--stream-hz must be between 1 and 120", {{"", "out of range", "--stream-hz", 0, 0}});
+    return fail(ErrorCode::kBadRequest, "--stream-hz must be between 1 and 120",
+                {{"", "out of range", "--stream-hz", 0, 0}});
   if (c.max_sim_duration_s <= 0)
-    return fail(ErrorCode::kBadRequest, "--max-sim-duration must be above 0", {{"", "out of range", "--max-sim-duration", 0, 0}});
+    return fail(ErrorCode::kBadRequest, "--max-sim-duration must be above 0",
+                {{"", "out of range", "--max-sim-duration", 0, 0}});
   if (auto s = c.llm.validate(); !s) return tl::unexpected(s.error());
   return c;
 }

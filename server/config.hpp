@@ -60,7 +60,8 @@ struct FlagSpec {
 const std::vector<FlagSpec>& serve_flags();
 
 // Reads environment then argv (argv[0] is the first flag, not the program name).
-Result<ServerConfig> load_config(const std::vector<std::string>& args, const std::map<std::string, std::string>& env);
+Result<ServerConfig> load_config(const std::vector<std::string>& args,
+                                 const std::map<std::string, std::string>& env);
 
 // "alice:s3cret,bob:hunter2" → keys; names must be unique, secrets at least 16 characters.
 Result<std::vector<ApiKey>> parse_api_keys(const std::string& spec);

@@ -18,47 +18,50 @@ void reply_problem(httplib::Response& res, const Error& error, const std::string
 }
 
 Result<Json> json_body(const std::string& body) {
-  if (body.empty()) return fail(ErrorCode::kBadRequest, "the request needs a JSON body", {{"", "empty body", "", 0, 0}});
+  if (body.empty())
+    return fail(ErrorCode::kBadRequest, "the request needs a JSON body", {{"", "empty body", "", 0, 0}});
   return parse_json_untrusted(body);
 }
 
-void post_with_body(httplib::Server& http, const std::string& pattern, std::size_t max_bytes, BodyHandler handler) {
-  http.Post(pattern, httplib::Server::HandlerWithContentReader(
-                         [max_bytes, handler = std::move(handler)](const httplib::Request& req, httplib::Response& res,
-                                                                   const httplib::ContentReader& reader) {
-                           const auto refuse = [&] {
-                             res.set_header("Connection", "close");
-                             reply_problem(res,
-                                           Error(ErrorCode::kPayloadTooLarge,
-                                                 "the request body is larger than " + std::to_string(max_bytes) +
-                                                     " bytes, the most this server accepts"),
-                                           req.path);
-                           };
-                           if (req.has_header("Content-Length") &&
-                               req.get_header_value<std::uint64_t>("Content-Length") > kBodyDrainFactor * max_bytes)
-                             return refuse();
-                           std::string body;
-                           std::size_t received = 0;
-                           bool too_large = false;
-                           const bool complete = reader([&](const char* data, std::size_t len) {
-                             received += len;
-                             if (received > max_bytes) {
-                               too_large = true;
-                               body.clear();
-                               return received <= kBodyDrainFactor * max_bytes;
-                             }
-                             body.append(data, len);
-                             return true;
-                           });
-                           if (too_large) return refuse();
-                           if (!complete) {
-                             res.set_header("Connection", "close");
-                             return reply_problem(
-                                 res, Error(ErrorCode::kBadRequest, "the request body could not be read completely"),
-                                 req.path);
-                           }
-                           handler(req, res, body);
-                         }));
+void post_with_body(httplib::Server& http, const std::string& pattern, std::size_t max_bytes,
+                    BodyHandler handler) {
+  http.Post(pattern,
+            httplib::Server::HandlerWithContentReader([max_bytes, handler = std::move(handler)](
+                                                          const httplib::Request& req, httplib::Response& res,
+                                                          const httplib::ContentReader& reader) {
+              const auto refuse = [&] {
+                res.set_header("Connection", "close");
+                reply_problem(res,
+                              Error(ErrorCode::kPayloadTooLarge, "the request body is larger than " +
+                                                                     std::to_string(max_bytes) +
+                                                                     " bytes, the most this server accepts"),
+                              req.path);
+              };
+              if (req.has_header("Content-Length") &&
+                  req.get_header_value<std::uint64_t>("Content-Length") > kBodyDrainFactor * max_bytes)
+                return refuse();
+              std::string body;
+              std::size_t received = 0;
+              bool too_large = false;
+              const bool complete = reader([&](const char* data, std::size_t len) {
+                received += len;
+                if (received > max_bytes) {
+                  too_large = true;
+                  body.clear();
+                  return received <= kBodyDrainFactor * max_bytes;
+                }
+                body.append(data, len);
+                return true;
+              });
+              if (too_large) return refuse();
+              if (!complete) {
+                res.set_header("Connection", "close");
+                return reply_problem(
+                    res, Error(ErrorCode::kBadRequest, "the request body could not be read completely"),
+                    req.path);
+              }
+              handler(req, res, body);
+            }));
 }
 
 std::optional<std::string> query(const httplib::Request& req, const std::string& name) {
@@ -74,26 +77,40 @@ Result<std::int64_t> query_int(const httplib::Request& req, const std::string& n
   auto [p, ec] = std::from_chars(v->data(), v->data() + v->size(), out);
   if (ec != std::errc() || p != v->data() + v->size() || out < min || out > max) {
     return fail(ErrorCode::kValidation, "query parameter '" + name + "' is out of range",
-                {{"", "must be an integer between " + std::to_string(min) + " and " + std::to_string(max), name, 0, 0}});
+                {{"", "must be an integer between " + std::to_string(min) + " and " + std::to_string(max),
+                  name, 0, 0}});
   }
   return out;
 }
 
 ErrorCode code_for_status(int status) {
   switch (status) {
-    case 400: return ErrorCode::kBadRequest;
-    case 401: return ErrorCode::kUnauthorized;
-    case 403: return ErrorCode::kForbidden;
-    case 404: return ErrorCode::kNotFound;
-    case 405: return ErrorCode::kMethodNotAllowed;
-    case 409: return ErrorCode::kConflict;
-    case 412: return ErrorCode::kPreconditionFailed;
-    case 413: return ErrorCode::kPayloadTooLarge;
-    case 415: return ErrorCode::kUnsupportedMediaType;
-    case 422: return ErrorCode::kValidation;
-    case 429: return ErrorCode::kRateLimited;
-    case 503: return ErrorCode::kStoreBusy;
-    default: return status >= 500 ? ErrorCode::kInternal : ErrorCode::kBadRequest;
+    case 400:
+      return ErrorCode::kBadRequest;
+    case 401:
+      return ErrorCode::kUnauthorized;
+    case 403:
+      return ErrorCode::kForbidden;
+    case 404:
+      return ErrorCode::kNotFound;
+    case 405:
+      return ErrorCode::kMethodNotAllowed;
+    case 409:
+      return ErrorCode::kConflict;
+    case 412:
+      return ErrorCode::kPreconditionFailed;
+    case 413:
+      return ErrorCode::kPayloadTooLarge;
+    case 415:
+      return ErrorCode::kUnsupportedMediaType;
+    case 422:
+      return ErrorCode::kValidation;
+    case 429:
+      return ErrorCode::kRateLimited;
+    case 503:
+      return ErrorCode::kStoreBusy;
+    default:
+      return status >= 500 ? ErrorCode::kInternal : ErrorCode::kBadRequest;
   }
 }
 

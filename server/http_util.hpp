@@ -23,7 +23,8 @@ Result<Json> json_body(const std::string& body);
 // client still receives its 413; beyond that the connection is cut.
 inline constexpr std::size_t kBodyDrainFactor = 8;
 using BodyHandler = std::function<void(const httplib::Request&, httplib::Response&, const std::string& body)>;
-void post_with_body(httplib::Server& http, const std::string& pattern, std::size_t max_bytes, BodyHandler handler);
+void post_with_body(httplib::Server& http, const std::string& pattern, std::size_t max_bytes,
+                    BodyHandler handler);
 std::optional<std::string> query(const httplib::Request& req, const std::string& name);
 // An integer query parameter within [min, max]; 422 naming the parameter otherwise.
 Result<std::int64_t> query_int(const httplib::Request& req, const std::string& name, std::int64_t fallback,

@@ -11,8 +11,8 @@ using store::Database;
 constexpr std::string_view kCursorPrefix = "j1.";
 
 Json row_to_json(store::Statement& st) {
-  Json j = {{"id", st.text(0)},       {"kind", st.text(1)},    {"status", st.text(2)},
-            {"progress", st.real(3)}, {"message", st.text(4)}, {"author", st.text(5)},
+  Json j = {{"id", st.text(0)},        {"kind", st.text(1)},    {"status", st.text(2)},
+            {"progress", st.real(3)},  {"message", st.text(4)}, {"author", st.text(5)},
             {"created_at", st.text(9)}};
   j["request"] = Json::parse(st.text(6));
   j["result"] = st.is_null(7) ? Json(nullptr) : Json::parse(st.text(7));
@@ -24,28 +24,38 @@ Json row_to_json(store::Statement& st) {
 }
 
 constexpr const char* kColumns =
-    "id, kind, status, progress, message, author, request, result, error, created_at, started_at, finished_at";
+    "id, kind, status, progress, message, author, request, result, error, created_at, started_at, "
+    "finished_at";
 
-Error not_found(const std::string& id) { return Error(ErrorCode::kNotFound, "no job with id '" + id + "'"); }
+Error not_found(const std::string& id) {
+  return Error(ErrorCode::kNotFound, "no job with id '" + id + "'");
+}
 }  // namespace
 
-bool is_job_id(std::string_view s) { return is_random_id(s, "job_"); }
+bool is_job_id(std::string_view s) {
+  return is_random_id(s, "job_");
+}
 
 JobRunner::JobRunner(store::Store& store, EventHub& events, int workers, std::size_t max_queued)
     : store_(store), events_(events), max_queued_(max_queued) {
   (void)store_.write([](Database& db) -> Result<bool> {
     auto st = db.prepare(
-        "UPDATE jobs SET status = 'failed', finished_at = ?, error = ? WHERE status IN ('queued', 'running')");
+        "UPDATE jobs SET status = 'failed', finished_at = ?, error = ? WHERE status IN ('queued', "
+        "'running')");
     if (!st) return tl::unexpected(st.error());
     st->bind(1, utc_now_rfc3339())
-        .bind(2, canonical_json(Error(ErrorCode::kInternal, "the server restarted before this job finished").to_problem()));
+        .bind(2,
+              canonical_json(
+                  Error(ErrorCode::kInternal, "the server restarted before this job finished").to_problem()));
     if (auto s = st->run(); !s) return tl::unexpected(s.error());
     return true;
   });
   for (int i = 0; i < std::max(1, workers); ++i) workers_.emplace_back([this] { work(); });
 }
 
-JobRunner::~JobRunner() { shutdown(); }
+JobRunner::~JobRunner() {
+  shutdown();
+}
 
 void JobRunner::shutdown() {
   {
@@ -57,23 +67,28 @@ void JobRunner::shutdown() {
   cv_.notify_all();
   for (auto& t : workers_) t.join();
   workers_.clear();
-  for (auto& p : queue_) (void)set_status(p.id, "cancelled", std::nullopt, Error(ErrorCode::kCancelled, "the server shut down").to_problem());
+  for (auto& p : queue_)
+    (void)set_status(p.id, "cancelled", std::nullopt,
+                     Error(ErrorCode::kCancelled, "the server shut down").to_problem());
   queue_.clear();
 }
 
-Result<std::string> JobRunner::submit(const std::string& kind, const Json& request, const std::string& author, JobFn fn) {
+Result<std::string> JobRunner::submit(const std::string& kind, const Json& request, const std::string& author,
+                                      JobFn fn) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (stopping_) return fail(ErrorCode::kStoreBusy, "the server is shutting down");
     if (queue_.size() >= max_queued_) {
-      Error e(ErrorCode::kRateLimited, "the job queue is full (" + std::to_string(max_queued_) + " waiting); retry later");
+      Error e(ErrorCode::kRateLimited,
+              "the job queue is full (" + std::to_string(max_queued_) + " waiting); retry later");
       e.retry_after_s = 5;
       return tl::unexpected(e);
     }
   }
   const std::string id = random_id("job_");
   auto r = store_.write([&](Database& db) -> Result<bool> {
-    auto st = db.prepare("INSERT INTO jobs(id, kind, status, author, request, created_at) VALUES (?, ?, 'queued', ?, ?, ?)");
+    auto st = db.prepare(
+        "INSERT INTO jobs(id, kind, status, author, request, created_at) VALUES (?, ?, 'queued', ?, ?, ?)");
     if (!st) return tl::unexpected(st.error());
     st->bind(1, id).bind(2, kind).bind(3, author).bind(4, canonical_json(request)).bind(5, utc_now_rfc3339());
     if (auto s = st->run(); !s) return tl::unexpected(s.error());
@@ -131,7 +146,8 @@ void JobRunner::run_one(Pending& job) {
       if (auto s = st->run(); !s) return tl::unexpected(s.error());
       return true;
     });
-    events_.publish("jobs", {{"type", "job.progress"}, {"id", job.id}, {"progress", f}, {"message", message}});
+    events_.publish("jobs",
+                    {{"type", "job.progress"}, {"id", job.id}, {"progress", f}, {"message", message}});
   });
   Result<Json> result = [&]() -> Result<Json> {
     try {
@@ -141,7 +157,8 @@ void JobRunner::run_one(Pending& job) {
     }
   }();
   if (job.cancel.cancelled()) {
-    (void)set_status(job.id, "cancelled", std::nullopt, Error(ErrorCode::kCancelled, "cancelled on request").to_problem());
+    (void)set_status(job.id, "cancelled", std::nullopt,
+                     Error(ErrorCode::kCancelled, "cancelled on request").to_problem());
   } else if (result) {
     (void)set_status(job.id, "succeeded", *result, std::nullopt);
   } else {
@@ -149,16 +166,22 @@ void JobRunner::run_one(Pending& job) {
   }
 }
 
-Status JobRunner::set_status(const std::string& id, const std::string& status, const std::optional<Json>& result,
-                             const std::optional<Json>& error) {
+Status JobRunner::set_status(const std::string& id, const std::string& status,
+                             const std::optional<Json>& result, const std::optional<Json>& error) {
   auto r = store_.write([&](Database& db) -> Result<bool> {
     auto st = db.prepare(
         "UPDATE jobs SET status = ?, result = ?, error = ?, finished_at = ?,"
         " progress = CASE WHEN ? = 'succeeded' THEN 1 ELSE progress END WHERE id = ?");
     if (!st) return tl::unexpected(st.error());
     st->bind(1, status);
-    if (result) st->bind(2, canonical_json(*result)); else st->bind_null(2);
-    if (error) st->bind(3, canonical_json(*error)); else st->bind_null(3);
+    if (result)
+      st->bind(2, canonical_json(*result));
+    else
+      st->bind_null(2);
+    if (error)
+      st->bind(3, canonical_json(*error));
+    else
+      st->bind_null(3);
     st->bind(4, utc_now_rfc3339()).bind(5, status).bind(6, id);
     if (auto s = st->run(); !s) return tl::unexpected(s.error());
     return true;
@@ -182,10 +205,12 @@ Result<Json> JobRunner::get(const std::string& id) {
 }
 
 Result<JobPage> JobRunner::list(std::size_t page_size, const std::optional<std::string>& cursor,
-                                const std::optional<std::string>& kind, const std::optional<std::string>& status) {
+                                const std::optional<std::string>& kind,
+                                const std::optional<std::string>& status) {
   std::optional<std::int64_t> before;
   if (cursor) {
-    const std::string digits = cursor->rfind(kCursorPrefix, 0) == 0 ? cursor->substr(kCursorPrefix.size()) : "";
+    const std::string digits =
+        cursor->rfind(kCursorPrefix, 0) == 0 ? cursor->substr(kCursorPrefix.size()) : "";
     if (digits.empty() || digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
       return fail(ErrorCode::kBadRequest, "the cursor is not one this server issued",
                   {{"", "use next_cursor from a previous page", "cursor", 0, 0}});
@@ -236,7 +261,8 @@ Status JobRunner::cancel(const std::string& id, const std::string& author, bool 
     if (it->id == id) {
       queue_.erase(it);
       lock.unlock();
-      return set_status(id, "cancelled", std::nullopt, Error(ErrorCode::kCancelled, "cancelled on request").to_problem());
+      return set_status(id, "cancelled", std::nullopt,
+                        Error(ErrorCode::kCancelled, "cancelled on request").to_problem());
     }
   }
   if (auto it = running_.find(id); it != running_.end()) it->second.cancel();
@@ -252,7 +278,8 @@ bool JobRunner::wait(const std::string& id, std::chrono::milliseconds timeout) {
       if (s != "queued" && s != "running") return true;
     }
     std::unique_lock<std::mutex> lock(mutex_);
-    if (done_cv_.wait_until(lock, std::min(deadline, std::chrono::steady_clock::now() + std::chrono::milliseconds(50))) ==
+    if (done_cv_.wait_until(
+            lock, std::min(deadline, std::chrono::steady_clock::now() + std::chrono::milliseconds(50))) ==
             std::cv_status::timeout &&
         std::chrono::steady_clock::now() >= deadline)
       return false;

@@ -19,7 +19,8 @@ namespace socsim::server {
 
 class JobContext {
  public:
-  JobContext(std::string id, llm::CancelToken cancel, std::function<void(double, const std::string&)> progress)
+  JobContext(std::string id, llm::CancelToken cancel,
+             std::function<void(double, const std::string&)> progress)
       : id_(std::move(id)), cancel_(std::move(cancel)), progress_(std::move(progress)) {}
   [[nodiscard]] const std::string& id() const { return id_; }
   [[nodiscard]] const llm::CancelToken& cancel_token() const { return cancel_; }
@@ -50,7 +51,8 @@ class JobRunner {
   JobRunner& operator=(const JobRunner&) = delete;
 
   // Records the job and queues it. kRateLimited (429) when the queue is full.
-  Result<std::string> submit(const std::string& kind, const Json& request, const std::string& author, JobFn fn);
+  Result<std::string> submit(const std::string& kind, const Json& request, const std::string& author,
+                             JobFn fn);
   // The job record: id, kind, status, progress, message, author, request, result, error, times.
   Result<Json> get(const std::string& id);
   Result<JobPage> list(std::size_t page_size, const std::optional<std::string>& cursor,

@@ -30,7 +30,9 @@ struct RegisterRoutes {
   RegisterRoutes(const char* name, RouteRegistrar fn) { route_groups()[name] = std::move(fn); }
 };
 struct RegisterCommand {
-  RegisterCommand(const char* name, const char* usage, CommandFn fn) { commands()[name] = {usage, std::move(fn)}; }
+  RegisterCommand(const char* name, const char* usage, CommandFn fn) {
+    commands()[name] = {usage, std::move(fn)};
+  }
 };
 
 }  // namespace socsim::server

@@ -7,7 +7,9 @@ namespace {
 
 constexpr const char* kCardPath = R"(/api/v1/cards/(crd_[0-9a-z]{20}|[^/]+))";
 
-std::string etag(const cards::Card& c) { return "\"" + c.content_hash + "\""; }
+std::string etag(const cards::Card& c) {
+  return "\"" + c.content_hash + "\"";
+}
 
 bool etag_matches(const std::string& if_none_match, const std::string& tag) {
   if (if_none_match.empty()) return false;
@@ -15,7 +17,8 @@ bool etag_matches(const std::string& if_none_match, const std::string& tag) {
   std::size_t pos = 0;
   while (pos < if_none_match.size()) {
     std::size_t comma = if_none_match.find(',', pos);
-    std::string item = if_none_match.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    std::string item =
+        if_none_match.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
     item.erase(0, item.find_first_not_of(' '));
     item.erase(item.find_last_not_of(' ') + 1);
     if (item.rfind("W/", 0) == 0) item = item.substr(2);
@@ -33,20 +36,23 @@ void reply_card(httplib::Response& res, int status, const cards::Card& card) {
   reply_json(res, status, cards::to_json(card));
 }
 
-Json event(const char* type, const cards::Card& card) { return {{"type", type}, {"card", cards::summary_json(card)}}; }
+Json event(const char* type, const cards::Card& card) {
+  return {{"type", type}, {"card", cards::summary_json(card)}};
+}
 
 void card_routes(httplib::Server& http, RouteContext& ctx) {
   const std::size_t max_body = ctx.config.max_body_bytes;
-  post_with_body(http, "/api/v1/cards", max_body, [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-    auto body = json_body(text);
-    if (!body) return reply_problem(res, body.error(), req.path);
-    auto content = cards::parse_card_content(*body, ctx.catalogue.limits());
-    if (!content) return reply_problem(res, content.error(), req.path);
-    auto card = ctx.catalogue.create(*content, ctx.author(req));
-    if (!card) return reply_problem(res, card.error(), req.path);
-    ctx.events.publish("cards", event("card.created", *card));
-    reply_card(res, 201, *card);
-  });
+  post_with_body(http, "/api/v1/cards", max_body,
+                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                   auto body = json_body(text);
+                   if (!body) return reply_problem(res, body.error(), req.path);
+                   auto content = cards::parse_card_content(*body, ctx.catalogue.limits());
+                   if (!content) return reply_problem(res, content.error(), req.path);
+                   auto card = ctx.catalogue.create(*content, ctx.author(req));
+                   if (!card) return reply_problem(res, card.error(), req.path);
+                   ctx.events.publish("cards", event("card.created", *card));
+                   reply_card(res, 201, *card);
+                 });
 
   http.Get("/api/v1/cards", [&ctx](const httplib::Request& req, httplib::Response& res) {
     cards::CardQuery q;
@@ -60,12 +66,15 @@ void card_routes(httplib::Server& http, RouteContext& ctx) {
     q.domain = query(req, "domain");
     q.cursor = query(req, "cursor");
     if (q.text && q.text->size() > 500)
-      return reply_problem(res, Error(ErrorCode::kValidation, "search text too long", {{"", "at most 500 bytes", "q", 0, 0}}), req.path);
+      return reply_problem(
+          res, Error(ErrorCode::kValidation, "search text too long", {{"", "at most 500 bytes", "q", 0, 0}}),
+          req.path);
     auto page = ctx.catalogue.list(q);
     if (!page) return reply_problem(res, page.error(), req.path);
     Json items = Json::array();
     for (const auto& c : page->items) items.push_back(cards::summary_json(c));
-    Json out = {{"items", items}, {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}};
+    Json out = {{"items", items},
+                {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}};
     reply_json(res, 200, out);
   });
 
@@ -92,24 +101,24 @@ void card_routes(httplib::Server& http, RouteContext& ctx) {
 
   post_with_body(http, std::string(kCardPath) + "/versions", max_body,
                  [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-    auto body = json_body(text);
-    if (!body) return reply_problem(res, body.error(), req.path);
-    auto card = ctx.catalogue.create_version(req.matches[1].str(), *body, ctx.author(req));
-    if (!card) return reply_problem(res, card.error(), req.path);
-    ctx.events.publish("cards", event("card.created", *card));
-    reply_card(res, 201, *card);
-  });
+                   auto body = json_body(text);
+                   if (!body) return reply_problem(res, body.error(), req.path);
+                   auto card = ctx.catalogue.create_version(req.matches[1].str(), *body, ctx.author(req));
+                   if (!card) return reply_problem(res, card.error(), req.path);
+                   ctx.events.publish("cards", event("card.created", *card));
+                   reply_card(res, 201, *card);
+                 });
 
   // GET /api/v1/cards/{id}/export (the card's own document, and the simulator formats) is served
   // by routes_scenario_exports.cpp.
 
   post_with_body(http, "/api/v1/cards/import", max_body,
                  [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-    auto outcome = ctx.catalogue.import_card(text);
-    if (!outcome) return reply_problem(res, outcome.error(), req.path);
-    if (outcome->created) ctx.events.publish("cards", event("card.created", outcome->card));
-    reply_card(res, outcome->created ? 201 : 200, outcome->card);
-  });
+                   auto outcome = ctx.catalogue.import_card(text);
+                   if (!outcome) return reply_problem(res, outcome.error(), req.path);
+                   if (outcome->created) ctx.events.publish("cards", event("card.created", outcome->card));
+                   reply_card(res, outcome->created ? 201 : 200, outcome->card);
+                 });
 }
 
 }  // namespace

@@ -49,9 +49,11 @@ class HouseholdState {
     auto json = hh::load_household_document(store_, id);
     if (!json) return tl::unexpected(json.error());
     auto doc = hh::household_document_from_json(*json, **k);
-    if (!doc) return fail(ErrorCode::kStore, "household '" + id + "' cannot be read back: " + doc.error().message());
+    if (!doc)
+      return fail(ErrorCode::kStore, "household '" + id + "' cannot be read back: " + doc.error().message());
     auto scene = hh::instantiate_household(*doc, **k);
-    if (!scene) return fail(ErrorCode::kStore, "household '" + id + "' cannot be rebuilt: " + scene.error().message());
+    if (!scene)
+      return fail(ErrorCode::kStore, "household '" + id + "' cannot be rebuilt: " + scene.error().message());
     auto loaded = std::make_shared<const Loaded>(Loaded{std::move(*doc), std::move(*scene)});
     std::lock_guard<std::mutex> lock(mutex_);
     cache_.emplace_front(id, loaded);
@@ -74,19 +76,25 @@ Json persona_item(const hh::Persona& p, bool builtin) {
   return j;
 }
 
-Result<std::vector<hh::Persona>> all_personas(store::Store& store) { return hh::list_stored_personas(store, true); }
+Result<std::vector<hh::Persona>> all_personas(store::Store& store) {
+  return hh::list_stored_personas(store, true);
+}
 
-Result<std::int64_t> seconds_param(const httplib::Request& req, const std::string& name, std::int64_t fallback, std::int64_t max) {
+Result<std::int64_t> seconds_param(const httplib::Request& req, const std::string& name,
+                                   std::int64_t fallback, std::int64_t max) {
   return query_int(req, name, fallback, 0, max);
 }
 
 Status llm_available(const RouteContext& ctx) {
   if (ctx.llm) return {};
-  return fail(ErrorCode::kValidation, "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
-              {FieldError{"/generator", "must be offline on this server", {}, 0, 0}});
+  return fail(
+      ErrorCode::kValidation,
+      "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
+      {FieldError{"/generator", "must be offline on this server", {}, 0, 0}});
 }
 
-hh::LlmSettings llm_settings(RouteContext& ctx, llm::StructuredGenerator& gen, const JobContext& job, const std::optional<std::string>& model) {
+hh::LlmSettings llm_settings(RouteContext& ctx, llm::StructuredGenerator& gen, const JobContext& job,
+                             const std::optional<std::string>& model) {
   hh::LlmSettings s;
   s.generator = &gen;
   s.model = model;
@@ -113,14 +121,19 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     for (const auto& p : *posted) posted_ids.insert(hh::persona_id(p));
     std::size_t start = 0;
     if (auto cursor = query(req, "cursor")) {
-      auto it = std::find_if(all->begin(), all->end(), [&](const hh::Persona& p) { return hh::persona_id(p) == *cursor; });
+      auto it = std::find_if(all->begin(), all->end(),
+                             [&](const hh::Persona& p) { return hh::persona_id(p) == *cursor; });
       if (it == all->end())
-        return reply_problem(res, Error(ErrorCode::kValidation, "unknown cursor", {{"", "must be a next_cursor from an earlier page", "cursor", 0, 0}}), req.path);
+        return reply_problem(res,
+                             Error(ErrorCode::kValidation, "unknown cursor",
+                                   {{"", "must be a next_cursor from an earlier page", "cursor", 0, 0}}),
+                             req.path);
       start = static_cast<std::size_t>(it - all->begin()) + 1;
     }
     Json items = Json::array();
     const std::size_t end = std::min(all->size(), start + static_cast<std::size_t>(*size));
-    for (std::size_t i = start; i < end; ++i) items.push_back(persona_item((*all)[i], !posted_ids.count(hh::persona_id((*all)[i]))));
+    for (std::size_t i = start; i < end; ++i)
+      items.push_back(persona_item((*all)[i], !posted_ids.count(hh::persona_id((*all)[i]))));
     Json next = end < all->size() ? Json(hh::persona_id((*all)[end - 1])) : Json(nullptr);
     reply_json(res, 200, {{"items", items}, {"total", all->size()}, {"next_cursor", next}});
   });
@@ -133,139 +146,174 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     if (!posted) return reply_problem(res, posted.error(), req.path);
     for (const auto& p : *all)
       if (hh::persona_id(p) == id) {
-        const bool builtin = std::none_of(posted->begin(), posted->end(), [&](const hh::Persona& q) { return hh::persona_id(q) == id; });
+        const bool builtin = std::none_of(posted->begin(), posted->end(),
+                                          [&](const hh::Persona& q) { return hh::persona_id(q) == id; });
         return reply_json(res, 200, persona_item(p, builtin));
       }
     reply_problem(res, Error(ErrorCode::kNotFound, "no persona '" + id + "'"), req.path);
   });
 
-  post_with_body(http, "/api/v1/personas", max_body, [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-    auto body = json_body(text);
-    if (!body) return reply_problem(res, body.error(), req.path);
-    auto p = hh::persona_from_json(*body);
-    if (!p) return reply_problem(res, p.error(), req.path);
-    if (auto s = hh::store_persona(ctx.store, *p); !s) return reply_problem(res, s.error(), req.path);
-    res.set_header("Location", "/api/v1/personas/" + hh::persona_id(*p));
-    reply_json(res, 201, persona_item(*p, false));
-  });
+  post_with_body(http, "/api/v1/personas", max_body,
+                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                   auto body = json_body(text);
+                   if (!body) return reply_problem(res, body.error(), req.path);
+                   auto p = hh::persona_from_json(*body);
+                   if (!p) return reply_problem(res, p.error(), req.path);
+                   if (auto s = hh::store_persona(ctx.store, *p); !s)
+                     return reply_problem(res, s.error(), req.path);
+                   res.set_header("Location", "/api/v1/personas/" + hh::persona_id(*p));
+                   reply_json(res, 201, persona_item(*p, false));
+                 });
 
-  post_with_body(http, "/api/v1/personas/generate", max_body, [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-    auto body = json_body(text);
-    if (!body) return reply_problem(res, body.error(), req.path);
-    if (!body->is_object()) return reply_problem(res, Error(ErrorCode::kValidation, "invalid request", {{"", "must be an object", "", 0, 0}}), req.path);
-    Json rest = *body;
-    const std::string generator = body->value("generator", "offline");
-    const bool store = body->value("store", false);
-    std::optional<std::string> model;
-    if (body->contains("model") && (*body)["model"].is_string()) model = (*body)["model"].get<std::string>();
-    for (const char* k : {"generator", "store", "model"}) rest.erase(k);
-    auto request = hh::persona_request_from_json(rest);
-    Error problems(ErrorCode::kValidation, "invalid persona request");
-    if (!request) problems = request.error();
-    for (const auto& [k, v] : body->items())
-      if (k != "count" && k != "seed" && k != "constraints" && k != "generator" && k != "store" && k != "model")
-        problems.errors.push_back({"/" + json_pointer_token(k), "is not a known field", {}, 0, 0});
-    if (generator != "offline" && generator != "llm") problems.errors.push_back({"/generator", "must be offline or llm", {}, 0, 0});
-    if (body->contains("store") && !(*body)["store"].is_boolean()) problems.errors.push_back({"/store", "must be true or false", {}, 0, 0});
-    if (!problems.errors.empty()) return reply_problem(res, problems, req.path);
-    auto existing = all_personas(ctx.store);
-    if (!existing) return reply_problem(res, existing.error(), req.path);
+  post_with_body(
+      http, "/api/v1/personas/generate", max_body,
+      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+        auto body = json_body(text);
+        if (!body) return reply_problem(res, body.error(), req.path);
+        if (!body->is_object())
+          return reply_problem(
+              res, Error(ErrorCode::kValidation, "invalid request", {{"", "must be an object", "", 0, 0}}),
+              req.path);
+        Json rest = *body;
+        const std::string generator = body->value("generator", "offline");
+        const bool store = body->value("store", false);
+        std::optional<std::string> model;
+        if (body->contains("model") && (*body)["model"].is_string())
+          model = (*body)["model"].get<std::string>();
+        for (const char* k : {"generator", "store", "model"}) rest.erase(k);
+        auto request = hh::persona_request_from_json(rest);
+        Error problems(ErrorCode::kValidation, "invalid persona request");
+        if (!request) problems = request.error();
+        for (const auto& [k, v] : body->items())
+          if (k != "count" && k != "seed" && k != "constraints" && k != "generator" && k != "store" &&
+              k != "model")
+            problems.errors.push_back({"/" + json_pointer_token(k), "is not a known field", {}, 0, 0});
+        if (generator != "offline" && generator != "llm")
+          problems.errors.push_back({"/generator", "must be offline or llm", {}, 0, 0});
+        if (body->contains("store") && !(*body)["store"].is_boolean())
+          problems.errors.push_back({"/store", "must be true or false", {}, 0, 0});
+        if (!problems.errors.empty()) return reply_problem(res, problems, req.path);
+        auto existing = all_personas(ctx.store);
+        if (!existing) return reply_problem(res, existing.error(), req.path);
 
-    auto finish = [&ctx, store](std::vector<hh::Persona> personas) -> Result<Json> {
-      Json items = Json::array();
-      for (const auto& p : personas) {
-        if (store)
-          if (auto s = hh::store_persona(ctx.store, p); !s) return tl::unexpected(s.error());
-        items.push_back(persona_item(p, false));
-      }
-      return Json{{"personas", items}, {"stored", store}};
-    };
-    if (generator == "offline") {
-      auto personas = hh::generate_personas_offline(*request, *existing);
-      if (!personas) return reply_problem(res, personas.error(), req.path);
-      auto out = finish(std::move(*personas));
-      if (!out) return reply_problem(res, out.error(), req.path);
-      return reply_json(res, store ? 201 : 200, *out);
-    }
-    if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
-    const hh::PersonaRequest r = *request;
-    auto id = ctx.jobs.submit("personas", *body, ctx.author(req), [&ctx, r, model, finish, existing = *existing](const JobContext& job) -> Result<Json> {
-      llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
-      job.progress(0.0, "asking the LLM for " + std::to_string(r.count) + " personas");
-      auto personas = hh::generate_personas_llm(r, existing, llm_settings(ctx, gen, job, model));
-      if (!personas) return tl::unexpected(personas.error());
-      return finish(std::move(*personas));
-    });
-    if (!id) return reply_problem(res, id.error(), req.path);
-    auto job = ctx.jobs.get(*id);
-    if (!job) return reply_problem(res, job.error(), req.path);
-    res.set_header("Location", "/api/v1/jobs/" + *id);
-    reply_json(res, 202, *job);
-  });
+        auto finish = [&ctx, store](std::vector<hh::Persona> personas) -> Result<Json> {
+          Json items = Json::array();
+          for (const auto& p : personas) {
+            if (store)
+              if (auto s = hh::store_persona(ctx.store, p); !s) return tl::unexpected(s.error());
+            items.push_back(persona_item(p, false));
+          }
+          return Json{{"personas", items}, {"stored", store}};
+        };
+        if (generator == "offline") {
+          auto personas = hh::generate_personas_offline(*request, *existing);
+          if (!personas) return reply_problem(res, personas.error(), req.path);
+          auto out = finish(std::move(*personas));
+          if (!out) return reply_problem(res, out.error(), req.path);
+          return reply_json(res, store ? 201 : 200, *out);
+        }
+        if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+        const hh::PersonaRequest r = *request;
+        auto id = ctx.jobs.submit(
+            "personas", *body, ctx.author(req),
+            [&ctx, r, model, finish, existing = *existing](const JobContext& job) -> Result<Json> {
+              llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
+              job.progress(0.0, "asking the LLM for " + std::to_string(r.count) + " personas");
+              auto personas = hh::generate_personas_llm(r, existing, llm_settings(ctx, gen, job, model));
+              if (!personas) return tl::unexpected(personas.error());
+              return finish(std::move(*personas));
+            });
+        if (!id) return reply_problem(res, id.error(), req.path);
+        auto job = ctx.jobs.get(*id);
+        if (!job) return reply_problem(res, job.error(), req.path);
+        res.set_header("Location", "/api/v1/jobs/" + *id);
+        reply_json(res, 202, *job);
+      });
 
   // ---- households ----
-  post_with_body(http, "/api/v1/households", max_body, [&ctx, state](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-    auto body = json_body(text);
-    if (!body) return reply_problem(res, body.error(), req.path);
-    auto request = hh::household_request_from_json(*body);
-    if (!request) return reply_problem(res, request.error(), req.path);
-    if (request->generator == "llm")
-      if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
-    auto k = state->knowledge();
-    if (!k) return reply_problem(res, k.error(), req.path);
-    // What can be checked at once is: the house imports, the personas exist, they fit the bedrooms.
-    auto house = hh::household_house(*request, **k);
-    if (!house) return reply_problem(res, house.error(), req.path);
-    auto personas = all_personas(ctx.store);
-    if (!personas) return reply_problem(res, personas.error(), req.path);
-    Error problems(ErrorCode::kValidation, "invalid household request");
-    for (std::size_t i = 0; i < request->resident_ids.size(); ++i)
-      if (std::none_of(personas->begin(), personas->end(), [&](const hh::Persona& p) { return hh::persona_id(p) == request->resident_ids[i]; }))
-        problems.errors.push_back({"/residents/" + std::to_string(i), "no persona '" + request->resident_ids[i] + "'", {}, 0, 0});
-    const int bedrooms = std::min<int>(4, static_cast<int>(house->rooms_of(hh::RoomType::kBedroom).size()));
-    if (request->resident_count > bedrooms)
-      problems.errors.push_back({"/residents", "this house has room for " + std::to_string(bedrooms) + " residents (one bedroom each)", {}, 0, 0});
-    if (!problems.errors.empty()) return reply_problem(res, problems, req.path);
+  post_with_body(
+      http, "/api/v1/households", max_body,
+      [&ctx, state](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+        auto body = json_body(text);
+        if (!body) return reply_problem(res, body.error(), req.path);
+        auto request = hh::household_request_from_json(*body);
+        if (!request) return reply_problem(res, request.error(), req.path);
+        if (request->generator == "llm")
+          if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+        auto k = state->knowledge();
+        if (!k) return reply_problem(res, k.error(), req.path);
+        // What can be checked at once is: the house imports, the personas exist, they fit the bedrooms.
+        auto house = hh::household_house(*request, **k);
+        if (!house) return reply_problem(res, house.error(), req.path);
+        auto personas = all_personas(ctx.store);
+        if (!personas) return reply_problem(res, personas.error(), req.path);
+        Error problems(ErrorCode::kValidation, "invalid household request");
+        for (std::size_t i = 0; i < request->resident_ids.size(); ++i)
+          if (std::none_of(personas->begin(), personas->end(), [&](const hh::Persona& p) {
+                return hh::persona_id(p) == request->resident_ids[i];
+              }))
+            problems.errors.push_back({"/residents/" + std::to_string(i),
+                                       "no persona '" + request->resident_ids[i] + "'",
+                                       {},
+                                       0,
+                                       0});
+        const int bedrooms =
+            std::min<int>(4, static_cast<int>(house->rooms_of(hh::RoomType::kBedroom).size()));
+        if (request->resident_count > bedrooms)
+          problems.errors.push_back(
+              {"/residents",
+               "this house has room for " + std::to_string(bedrooms) + " residents (one bedroom each)",
+               {},
+               0,
+               0});
+        if (!problems.errors.empty()) return reply_problem(res, problems, req.path);
 
-    const hh::HouseholdRequest r = *request;
-    const std::string author = ctx.author(req);
-    Json job_request = *body;
-    if (job_request.contains("house")) job_request["house"] = "(ProcTHOR house, " + std::to_string(house->rooms.size()) + " rooms)";
-    auto id = ctx.jobs.submit("household", job_request, author, [&ctx, state, r, author, personas = *personas](const JobContext& job) -> Result<Json> {
-      auto knowledge = state->knowledge();
-      if (!knowledge) return tl::unexpected(knowledge.error());
-      std::unique_ptr<llm::StructuredGenerator> gen;
-      std::unique_ptr<hh::LlmDayPlanner> planner;
-      std::unique_ptr<hh::LlmDecomposer> decomposer;
-      std::unique_ptr<hh::LlmActivityDatabaseGenerator> dbgen;
-      hh::ProfileGenerators gens;
-      if (r.generator == "llm") {
-        gen = std::make_unique<llm::StructuredGenerator>(*ctx.llm, &ctx.store);
-        const auto settings = llm_settings(ctx, *gen, job, r.model);
-        planner = std::make_unique<hh::LlmDayPlanner>(**knowledge, settings);
-        decomposer = std::make_unique<hh::LlmDecomposer>(**knowledge, settings);
-        dbgen = std::make_unique<hh::LlmActivityDatabaseGenerator>(**knowledge, settings);
-        gens = {planner.get(), decomposer.get(), dbgen.get()};
-      }
-      const std::string household = hh::household_id(r, job.id());
-      auto doc = hh::generate_household(r, **knowledge, personas, gens,
-                                        [&job](double f, const std::string& m) { job.progress(f * 0.95, m); }, household);
-      if (!doc) return tl::unexpected(doc.error());
-      if (job.cancelled()) return fail(ErrorCode::kCancelled, "cancelled");
-      auto scene = hh::instantiate_household(*doc, **knowledge);
-      if (!scene) return tl::unexpected(scene.error());
-      Json summary = hh::household_summary_json(*doc, *scene);
-      summary.erase("schedules");
-      if (auto s = hh::store_household(ctx.store, *doc, summary, author, job.id()); !s) return tl::unexpected(s.error());
-      job.progress(1.0, "stored as " + household);
-      return Json{{"household_id", household}, {"summary", summary}, {"links", {{"household", "/api/v1/households/" + household}}}};
-    });
-    if (!id) return reply_problem(res, id.error(), req.path);
-    auto job = ctx.jobs.get(*id);
-    if (!job) return reply_problem(res, job.error(), req.path);
-    res.set_header("Location", "/api/v1/jobs/" + *id);
-    reply_json(res, 202, *job);
-  });
+        const hh::HouseholdRequest r = *request;
+        const std::string author = ctx.author(req);
+        Json job_request = *body;
+        if (job_request.contains("house"))
+          job_request["house"] = "(ProcTHOR house, " + std::to_string(house->rooms.size()) + " rooms)";
+        auto id = ctx.jobs.submit(
+            "household", job_request, author,
+            [&ctx, state, r, author, personas = *personas](const JobContext& job) -> Result<Json> {
+              auto knowledge = state->knowledge();
+              if (!knowledge) return tl::unexpected(knowledge.error());
+              std::unique_ptr<llm::StructuredGenerator> gen;
+              std::unique_ptr<hh::LlmDayPlanner> planner;
+              std::unique_ptr<hh::LlmDecomposer> decomposer;
+              std::unique_ptr<hh::LlmActivityDatabaseGenerator> dbgen;
+              hh::ProfileGenerators gens;
+              if (r.generator == "llm") {
+                gen = std::make_unique<llm::StructuredGenerator>(*ctx.llm, &ctx.store);
+                const auto settings = llm_settings(ctx, *gen, job, r.model);
+                planner = std::make_unique<hh::LlmDayPlanner>(**knowledge, settings);
+                decomposer = std::make_unique<hh::LlmDecomposer>(**knowledge, settings);
+                dbgen = std::make_unique<hh::LlmActivityDatabaseGenerator>(**knowledge, settings);
+                gens = {planner.get(), decomposer.get(), dbgen.get()};
+              }
+              const std::string household = hh::household_id(r, job.id());
+              auto doc = hh::generate_household(
+                  r, **knowledge, personas, gens,
+                  [&job](double f, const std::string& m) { job.progress(f * 0.95, m); }, household);
+              if (!doc) return tl::unexpected(doc.error());
+              if (job.cancelled()) return fail(ErrorCode::kCancelled, "cancelled");
+              auto scene = hh::instantiate_household(*doc, **knowledge);
+              if (!scene) return tl::unexpected(scene.error());
+              Json summary = hh::household_summary_json(*doc, *scene);
+              summary.erase("schedules");
+              if (auto s = hh::store_household(ctx.store, *doc, summary, author, job.id()); !s)
+                return tl::unexpected(s.error());
+              job.progress(1.0, "stored as " + household);
+              return Json{{"household_id", household},
+                          {"summary", summary},
+                          {"links", {{"household", "/api/v1/households/" + household}}}};
+            });
+        if (!id) return reply_problem(res, id.error(), req.path);
+        auto job = ctx.jobs.get(*id);
+        if (!job) return reply_problem(res, job.error(), req.path);
+        res.set_header("Location", "/api/v1/jobs/" + *id);
+        reply_json(res, 202, *job);
+      });
 
   http.Get("/api/v1/households", [&ctx](const httplib::Request& req, httplib::Response& res) {
     auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
@@ -276,15 +324,20 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     Json items = Json::array();
     for (std::size_t i = 0; i < rows->size() && i < static_cast<std::size_t>(*size); ++i) {
       const auto& r = (*rows)[i];
-      items.push_back({{"id", r.id}, {"job_id", r.job_id ? Json(*r.job_id) : Json(nullptr)}, {"author", r.author}, {"generator", r.generator},
-                       {"created_at", r.created_at}, {"summary", r.summary}});
+      items.push_back({{"id", r.id},
+                       {"job_id", r.job_id ? Json(*r.job_id) : Json(nullptr)},
+                       {"author", r.author},
+                       {"generator", r.generator},
+                       {"created_at", r.created_at},
+                       {"summary", r.summary}});
     }
     Json next = rows->size() > static_cast<std::size_t>(*size) ? Json(items.back()["id"]) : Json(nullptr);
     reply_json(res, 200, {{"items", items}, {"next_cursor", next}});
   });
 
   const std::string base = R"(/api/v1/households/(hh_[0-9a-f]{1,36}|[^/]+))";
-  auto with_household = [state](const httplib::Request& req, httplib::Response& res) -> std::shared_ptr<const HouseholdState::Loaded> {
+  auto with_household = [state](const httplib::Request& req,
+                                httplib::Response& res) -> std::shared_ptr<const HouseholdState::Loaded> {
     auto loaded = state->household(req.matches[1].str());
     if (!loaded) {
       reply_problem(res, loaded.error(), req.path);
@@ -298,7 +351,9 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     if (!h) return;
     Json out = hh::household_summary_json(h->document, h->scene);
     out["house"] = hh::house_plan_json(h->scene.house());
-    out["links"] = {{"objects", req.path + "/objects?t=0"}, {"events", req.path + "/events"}, {"statistics", req.path + "/statistics"},
+    out["links"] = {{"objects", req.path + "/objects?t=0"},
+                    {"events", req.path + "/events"},
+                    {"statistics", req.path + "/statistics"},
                     {"export", req.path + "/export?format=procthor"}};
     reply_json(res, 200, out);
   });
@@ -307,7 +362,10 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     auto h = with_household(req, res);
     if (!h) return;
     if (!query(req, "t"))
-      return reply_problem(res, Error(ErrorCode::kValidation, "say when", {{"", "is required (seconds from 00:00 of the first day)", "t", 0, 0}}), req.path);
+      return reply_problem(res,
+                           Error(ErrorCode::kValidation, "say when",
+                                 {{"", "is required (seconds from 00:00 of the first day)", "t", 0, 0}}),
+                           req.path);
     auto t = seconds_param(req, "t", 0, h->scene.end());
     if (!t) return reply_problem(res, t.error(), req.path);
     reply_json(res, 200, hh::objects_at_json(h->scene, *t));
@@ -321,8 +379,12 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     if (!from) return reply_problem(res, from.error(), req.path);
     auto to = seconds_param(req, "to", end, end);
     if (!to) return reply_problem(res, to.error(), req.path);
-    if (*to < *from) return reply_problem(res, Error(ErrorCode::kValidation, "empty window", {{"", "must not be before from", "to", 0, 0}}), req.path);
-    auto resident = query_int(req, "resident", -1, -1, static_cast<std::int64_t>(h->scene.residents().size()) - 1);
+    if (*to < *from)
+      return reply_problem(
+          res, Error(ErrorCode::kValidation, "empty window", {{"", "must not be before from", "to", 0, 0}}),
+          req.path);
+    auto resident =
+        query_int(req, "resident", -1, -1, static_cast<std::int64_t>(h->scene.residents().size()) - 1);
     if (!resident) return reply_problem(res, resident.error(), req.path);
     auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
                           static_cast<std::int64_t>(ctx.config.max_page_size));
@@ -331,29 +393,40 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     if (!cursor) return reply_problem(res, cursor.error(), req.path);
     std::vector<int> picked;
     for (int e : h->scene.events_between(*from, *to))
-      if (*resident < 0 || h->scene.events()[static_cast<std::size_t>(e)].resident == *resident) picked.push_back(e);
+      if (*resident < 0 || h->scene.events()[static_cast<std::size_t>(e)].resident == *resident)
+        picked.push_back(e);
     Json items = Json::array();
     const auto first = static_cast<std::size_t>(*cursor);
     const std::size_t last = std::min(picked.size(), first + static_cast<std::size_t>(*size));
     for (std::size_t i = first; i < last; ++i) items.push_back(hh::event_json(h->scene, picked[i]));
-    reply_json(res, 200, {{"items", items}, {"total", picked.size()}, {"next_cursor", last < picked.size() ? Json(std::to_string(last)) : Json(nullptr)}});
+    reply_json(res, 200,
+               {{"items", items},
+                {"total", picked.size()},
+                {"next_cursor", last < picked.size() ? Json(std::to_string(last)) : Json(nullptr)}});
   });
 
   http.Get(base + "/hint", [&ctx, with_household](const httplib::Request& req, httplib::Response& res) {
     auto h = with_household(req, res);
     if (!h) return;
-    auto resident = query_int(req, "resident", 0, 0, static_cast<std::int64_t>(h->scene.residents().size()) - 1);
+    auto resident =
+        query_int(req, "resident", 0, 0, static_cast<std::int64_t>(h->scene.residents().size()) - 1);
     if (!resident) return reply_problem(res, resident.error(), req.path);
     auto object = query(req, "object");
     if (!object || object->empty() || object->size() > 200)
-      return reply_problem(res, Error(ErrorCode::kValidation, "name the object", {{"", "an object type (Mug) or id is required", "object", 0, 0}}), req.path);
+      return reply_problem(res,
+                           Error(ErrorCode::kValidation, "name the object",
+                                 {{"", "an object type (Mug) or id is required", "object", 0, 0}}),
+                           req.path);
     auto t = seconds_param(req, "t", h->scene.end(), h->scene.end());
     if (!t) return reply_problem(res, t.error(), req.path);
     auto lookback = query_int(req, "lookback", hh::kSecondsPerDay, 60, 28 * hh::kSecondsPerDay);
     if (!lookback) return reply_problem(res, lookback.error(), req.path);
     const std::string generator = query(req, "generator").value_or("offline");
     if (generator != "offline" && generator != "llm")
-      return reply_problem(res, Error(ErrorCode::kValidation, "unknown generator", {{"", "must be offline or llm", "generator", 0, 0}}), req.path);
+      return reply_problem(res,
+                           Error(ErrorCode::kValidation, "unknown generator",
+                                 {{"", "must be offline or llm", "generator", 0, 0}}),
+                           req.path);
     hh::HintQuery q{&h->scene, static_cast<int>(*resident), *object, *t, *lookback};
     Result<hh::Hint> hint = fail(ErrorCode::kInternal, "no hint");
     if (generator == "llm") {
@@ -367,10 +440,23 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     }
     if (!hint) return reply_problem(res, hint.error(), req.path);
     const auto& house = h->scene.house();
-    reply_json(res, 200, {{"resident", *resident}, {"object", *object}, {"t", *t}, {"generator", generator}, {"used", hint->used},
-                          {"text", hint->text}, {"activity", hint->activity}, {"room", hint->room_id}, {"receptacle", hint->receptacle_id},
-                          {"when", hint->used || hint->event >= 0 ? Json(hint->when) : Json(nullptr)},
-                          {"object_id", hint->object >= 0 ? Json(house.entities[static_cast<std::size_t>(house.objects[static_cast<std::size_t>(hint->object)])].id) : Json(nullptr)}});
+    reply_json(res, 200,
+               {{"resident", *resident},
+                {"object", *object},
+                {"t", *t},
+                {"generator", generator},
+                {"used", hint->used},
+                {"text", hint->text},
+                {"activity", hint->activity},
+                {"room", hint->room_id},
+                {"receptacle", hint->receptacle_id},
+                {"when", hint->used || hint->event >= 0 ? Json(hint->when) : Json(nullptr)},
+                {"object_id", hint->object >= 0
+                                  ? Json(house
+                                             .entities[static_cast<std::size_t>(
+                                                 house.objects[static_cast<std::size_t>(hint->object)])]
+                                             .id)
+                                  : Json(nullptr)}});
   });
 
   http.Get(base + "/export", [with_household](const httplib::Request& req, httplib::Response& res) {
@@ -378,7 +464,10 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     if (!h) return;
     const std::string format = query(req, "format").value_or("procthor");
     if (format != "procthor")
-      return reply_problem(res, Error(ErrorCode::kValidation, "unknown export format", {{"", "must be procthor", "format", 0, 0}}), req.path);
+      return reply_problem(
+          res,
+          Error(ErrorCode::kValidation, "unknown export format", {{"", "must be procthor", "format", 0, 0}}),
+          req.path);
     Json out;
     if (query(req, "t")) {
       auto t = seconds_param(req, "t", 0, h->scene.end());

@@ -14,14 +14,19 @@ void job_routes(httplib::Server& http, RouteContext& ctx) {
                           static_cast<std::int64_t>(ctx.config.max_page_size));
     if (!size) return reply_problem(res, size.error(), req.path);
     auto status = query(req, "status");
-    if (status && *status != "queued" && *status != "running" && *status != "succeeded" && *status != "failed" &&
-        *status != "cancelled")
-      return reply_problem(res, Error(ErrorCode::kValidation, "unknown job status",
-                                      {{"", "one of queued, running, succeeded, failed, cancelled", "status", 0, 0}}),
-                           req.path);
-    auto page = ctx.jobs.list(static_cast<std::size_t>(*size), query(req, "cursor"), query(req, "kind"), status);
+    if (status && *status != "queued" && *status != "running" && *status != "succeeded" &&
+        *status != "failed" && *status != "cancelled")
+      return reply_problem(
+          res,
+          Error(ErrorCode::kValidation, "unknown job status",
+                {{"", "one of queued, running, succeeded, failed, cancelled", "status", 0, 0}}),
+          req.path);
+    auto page =
+        ctx.jobs.list(static_cast<std::size_t>(*size), query(req, "cursor"), query(req, "kind"), status);
     if (!page) return reply_problem(res, page.error(), req.path);
-    reply_json(res, 200, {{"items", page->items}, {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}});
+    reply_json(res, 200,
+               {{"items", page->items},
+                {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}});
   });
 
   http.Get(kJobPath, [&ctx](const httplib::Request& req, httplib::Response& res) {

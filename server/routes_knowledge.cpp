@@ -21,7 +21,9 @@ void knowledge_routes(httplib::Server& http, RouteContext& ctx) {
   http.Get("/api/v1/knowledge/search", [&ctx](const httplib::Request& req, httplib::Response& res) {
     auto q = query(req, "q");
     if (!q || q->empty())
-      return reply_problem(res, Error(ErrorCode::kValidation, "say what to look for", {{"", "is required", "q", 0, 0}}), req.path);
+      return reply_problem(
+          res, Error(ErrorCode::kValidation, "say what to look for", {{"", "is required", "q", 0, 0}}),
+          req.path);
     auto kinds = kinds_of(req);
     if (!kinds) return reply_problem(res, kinds.error(), req.path);
     auto k = query_int(req, "k", 5, 1, 50);
@@ -43,11 +45,12 @@ void knowledge_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, {{"items", items}});
   });
 
-  http.Get(R"(/api/v1/knowledge/building-codes/([^/]+))", [&ctx](const httplib::Request& req, httplib::Response& res) {
-    auto c = ctx.knowledge.building_code(req.matches[1].str());
-    if (!c) return reply_problem(res, c.error(), req.path);
-    reply_json(res, 200, knowledge::to_json(*c));
-  });
+  http.Get(R"(/api/v1/knowledge/building-codes/([^/]+))",
+           [&ctx](const httplib::Request& req, httplib::Response& res) {
+             auto c = ctx.knowledge.building_code(req.matches[1].str());
+             if (!c) return reply_problem(res, c.error(), req.path);
+             reply_json(res, 200, knowledge::to_json(*c));
+           });
 
   http.Get("/api/v1/knowledge/behavior-nodes", [&ctx](const httplib::Request& req, httplib::Response& res) {
     auto list = ctx.knowledge.behavior_nodes();
@@ -57,16 +60,20 @@ void knowledge_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, {{"items", items}});
   });
 
-  http.Get(R"(/api/v1/knowledge/behavior-nodes/([^/]+))", [&ctx](const httplib::Request& req, httplib::Response& res) {
-    auto n = ctx.knowledge.behavior_node(req.matches[1].str());
-    if (!n) return reply_problem(res, n.error(), req.path);
-    reply_json(res, 200, knowledge::to_json(*n));
-  });
+  http.Get(R"(/api/v1/knowledge/behavior-nodes/([^/]+))",
+           [&ctx](const httplib::Request& req, httplib::Response& res) {
+             auto n = ctx.knowledge.behavior_node(req.matches[1].str());
+             if (!n) return reply_problem(res, n.error(), req.path);
+             reply_json(res, 200, knowledge::to_json(*n));
+           });
 
   http.Get("/api/v1/knowledge/constraints", [&ctx](const httplib::Request& req, httplib::Response& res) {
     auto type = query(req, "building_type");
     if (!type)
-      return reply_problem(res, Error(ErrorCode::kValidation, "name a building type", {{"", "is required", "building_type", 0, 0}}), req.path);
+      return reply_problem(
+          res,
+          Error(ErrorCode::kValidation, "name a building type", {{"", "is required", "building_type", 0, 0}}),
+          req.path);
     auto list = ctx.knowledge.constraints_for(*type, query(req, "jurisdiction").value_or(""));
     if (!list) return reply_problem(res, list.error(), req.path);
     Json items = Json::array();
@@ -78,10 +85,16 @@ void knowledge_routes(httplib::Server& http, RouteContext& ctx) {
     auto text = query(req, "text");
     auto rooms = query(req, "rooms");
     if (!text && !rooms)
-      return reply_problem(res, Error(ErrorCode::kValidation, "give a prompt (?text=) or room names (?rooms=a,b,c)",
-                                      {{"", "text or rooms is required", "text", 0, 0}}), req.path);
+      return reply_problem(
+          res,
+          Error(ErrorCode::kValidation, "give a prompt (?text=) or room names (?rooms=a,b,c)",
+                {{"", "text or rooms is required", "text", 0, 0}}),
+          req.path);
     if ((text && text->size() > 4000) || (rooms && rooms->size() > 4000))
-      return reply_problem(res, Error(ErrorCode::kValidation, "too long", {{"", "at most 4000 bytes", text ? "text" : "rooms", 0, 0}}), req.path);
+      return reply_problem(res,
+                           Error(ErrorCode::kValidation, "too long",
+                                 {{"", "at most 4000 bytes", text ? "text" : "rooms", 0, 0}}),
+                           req.path);
     if (text) return reply_json(res, 200, knowledge::to_json(knowledge::classify_building_type(*text)));
     std::vector<std::string> names;
     std::size_t start = 0;

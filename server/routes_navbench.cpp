@@ -48,50 +48,58 @@ class NavbenchInputs {
   store::Store& store_;
   std::mutex mutex_;
   std::shared_ptr<const household::HouseholdKnowledge> knowledge_;
-  std::deque<std::pair<std::tuple<std::uint64_t, int, std::uint64_t>, std::shared_ptr<const navbench::BenchmarkInputs>>> cache_;
+  std::deque<std::pair<std::tuple<std::uint64_t, int, std::uint64_t>,
+                       std::shared_ptr<const navbench::BenchmarkInputs>>>
+      cache_;
 };
 
 void navbench_routes(httplib::Server& http, RouteContext& ctx) {
   auto inputs = std::make_shared<NavbenchInputs>(ctx.store);
 
-  post_with_body(http, "/api/v1/navbench", ctx.config.max_body_bytes,
-                 [&ctx, inputs](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-                   auto body = json_body(text);
-                   if (!body) return reply_problem(res, body.error(), req.path);
-                   auto request = navbench::benchmark_request_from_json(*body);
-                   if (!request) return reply_problem(res, request.error(), req.path);
-                   const navbench::BenchmarkRequest r = *request;
-                   auto id = ctx.jobs.submit("navbench", navbench::to_json(r), ctx.author(req),
-                                             [r, inputs](const JobContext& job) -> Result<Json> {
-                                               job.progress(0.0, "preparing residents and the scene prior");
-                                               auto k = inputs->knowledge();
-                                               if (!k) return tl::unexpected(k.error());
-                                               auto in = inputs->inputs(r);
-                                               if (!in) return tl::unexpected(in.error());
-                                               navbench::RunHooks hooks;
-                                               hooks.progress = [&job](double f, const std::string& m) { job.progress(f, m); };
-                                               hooks.cancelled = [&job] { return job.cancelled(); };
-                                               auto result = navbench::run_benchmark(r, **k, (*in)->pool, (*in)->counts, hooks);
-                                               if (!result) return tl::unexpected(result.error());
-                                               Json out = navbench::to_json(*result, true);
-                                               out["table"] = navbench::format_table(*result);
-                                               return out;
-                                             });
-                   if (!id) return reply_problem(res, id.error(), req.path);
-                   auto job = ctx.jobs.get(*id);
-                   if (!job) return reply_problem(res, job.error(), req.path);
-                   res.set_header("Location", "/api/v1/jobs/" + *id);
-                   reply_json(res, 202, *job);
-                 });
+  post_with_body(
+      http, "/api/v1/navbench", ctx.config.max_body_bytes,
+      [&ctx, inputs](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+        auto body = json_body(text);
+        if (!body) return reply_problem(res, body.error(), req.path);
+        auto request = navbench::benchmark_request_from_json(*body);
+        if (!request) return reply_problem(res, request.error(), req.path);
+        const navbench::BenchmarkRequest r = *request;
+        auto id = ctx.jobs.submit(
+            "navbench", navbench::to_json(r), ctx.author(req),
+            [r, inputs](const JobContext& job) -> Result<Json> {
+              job.progress(0.0, "preparing residents and the scene prior");
+              auto k = inputs->knowledge();
+              if (!k) return tl::unexpected(k.error());
+              auto in = inputs->inputs(r);
+              if (!in) return tl::unexpected(in.error());
+              navbench::RunHooks hooks;
+              hooks.progress = [&job](double f, const std::string& m) { job.progress(f, m); };
+              hooks.cancelled = [&job] { return job.cancelled(); };
+              auto result = navbench::run_benchmark(r, **k, (*in)->pool, (*in)->counts, hooks);
+              if (!result) return tl::unexpected(result.error());
+              Json out = navbench::to_json(*result, true);
+              out["table"] = navbench::format_table(*result);
+              return out;
+            });
+        if (!id) return reply_problem(res, id.error(), req.path);
+        auto job = ctx.jobs.get(*id);
+        if (!job) return reply_problem(res, job.error(), req.path);
+        res.set_header("Location", "/api/v1/jobs/" + *id);
+        reply_json(res, 202, *job);
+      });
 
-  http.Get(R"(/api/v1/navbench/([^/]+)/episodes/([^/]+))", [&ctx, inputs](const httplib::Request& req, httplib::Response& res) {
+  http.Get(R"(/api/v1/navbench/([^/]+)/episodes/([^/]+))", [&ctx, inputs](const httplib::Request& req,
+                                                                          httplib::Response& res) {
     const std::string id = req.matches[1].str(), n_text = req.matches[2].str();
     auto job = ctx.jobs.get(id);
     if (!job) return reply_problem(res, job.error(), req.path);
     if ((*job)["kind"] != "navbench")
-      return reply_problem(res, Error(ErrorCode::kNotFound, "job " + id + " is not a navigation benchmark"), req.path);
+      return reply_problem(res, Error(ErrorCode::kNotFound, "job " + id + " is not a navigation benchmark"),
+                           req.path);
     if ((*job)["status"] != "succeeded")
-      return reply_problem(res, Error(ErrorCode::kConflict, "the benchmark has not finished (status " + (*job)["status"].get<std::string>() + ")"),
+      return reply_problem(res,
+                           Error(ErrorCode::kConflict, "the benchmark has not finished (status " +
+                                                           (*job)["status"].get<std::string>() + ")"),
                            req.path);
     int n = -1;
     try {
@@ -102,21 +110,27 @@ void navbench_routes(httplib::Server& http, RouteContext& ctx) {
       n = -1;
     }
     if (n < 0)
-      return reply_problem(res, Error(ErrorCode::kValidation, "the episode number must be a non-negative integer", {{"", "not a number", "n", 0, 0}}),
+      return reply_problem(res,
+                           Error(ErrorCode::kValidation, "the episode number must be a non-negative integer",
+                                 {{"", "not a number", "n", 0, 0}}),
                            req.path);
     const auto method = query(req, "method");
     if (method) {
       bool known = false;
       for (const auto& m : navbench::methods()) known = known || m.key == *method;
       if (!known)
-        return reply_problem(res, Error(ErrorCode::kValidation, "unknown method", {{"", "one of the keys of the result's methods", "method", 0, 0}}),
+        return reply_problem(res,
+                             Error(ErrorCode::kValidation, "unknown method",
+                                   {{"", "one of the keys of the result's methods", "method", 0, 0}}),
                              req.path);
     }
     auto request = navbench::benchmark_request_from_json((*job)["request"]);
     if (!request) return reply_problem(res, request.error(), req.path);
     const auto tasks = (*job)["result"].value("tasks", 0);
     if (n >= tasks)
-      return reply_problem(res, Error(ErrorCode::kNotFound, "the benchmark has " + std::to_string(tasks) + " episodes; there is no episode " + n_text),
+      return reply_problem(res,
+                           Error(ErrorCode::kNotFound, "the benchmark has " + std::to_string(tasks) +
+                                                           " episodes; there is no episode " + n_text),
                            req.path);
     auto k = inputs->knowledge();
     if (!k) return reply_problem(res, k.error(), req.path);

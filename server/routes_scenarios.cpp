@@ -31,7 +31,8 @@ Error nested(Error e, const std::string& prefix) {
 }
 
 // The world the request names (inline or by id); nullopt when it is to be laid out.
-Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx, const scenario::ScenarioRequest& r) {
+Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
+                                                           const scenario::ScenarioRequest& r) {
   if (r.world) {
     Result<world::World> w = r.world->is_string() ? world::world_from_yaml(r.world->get<std::string>())
                                                   : world::world_from_document(*r.world);
@@ -52,7 +53,9 @@ Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx, co
       return tl::unexpected(e);
     }
     auto w = world::world_from_yaml(stored->world_yaml);
-    if (!w) return fail(ErrorCode::kInternal, "stored world '" + *r.world_id + "' no longer validates: " + w.error().message());
+    if (!w)
+      return fail(ErrorCode::kInternal,
+                  "stored world '" + *r.world_id + "' no longer validates: " + w.error().message());
     return scenario::ScenarioWorld{std::move(*w), r.domain.value_or(stored->domain),
                                    Json{{"source", "world_id"}, {"world_id", *r.world_id}}};
   }
@@ -60,45 +63,55 @@ Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx, co
 }
 
 void scenario_routes(httplib::Server& http, RouteContext& ctx) {
-  post_with_body(http, "/api/v1/scenarios", ctx.config.max_body_bytes,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-    auto body = json_body(text);
-    if (!body) return reply_problem(res, body.error(), req.path);
-    const auto config = scenario_config(ctx.config);
-    auto request = scenario::scenario_request_from_json(*body, config);
-    if (!request) return reply_problem(res, request.error(), req.path);
-    if (request->generator == "llm" && !ctx.llm)
-      return reply_problem(res, Error(ErrorCode::kValidation,
-                                      "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
-                                      {{"/generator", "must be offline on this server", "", 0, 0}}), req.path);
-    auto world = given_world(ctx, *request);
-    if (!world) return reply_problem(res, world.error(), req.path);
-    const std::string author = ctx.author(req);
-    auto id = ctx.jobs.submit(
-        "scenario.generate", *body, author,
-        [&ctx, request = *request, world = std::move(*world), config, author](const JobContext& job) -> Result<Json> {
-          std::optional<llm::StructuredGenerator> gen;
-          if (ctx.llm) gen.emplace(*ctx.llm, &ctx.store);
-          scenario::ScenarioServices s{ctx.knowledge, gen ? &*gen : nullptr, config, job.id(), job.cancel_token(),
-                                       [&job](double f, const std::string& m) { job.progress(f, m); }};
-          auto outcome = scenario::run_scenario(request, world, s);
-          if (!outcome) return tl::unexpected(outcome.error());
-          if (auto saved = scenario::save_trajectory_log(ctx.store, outcome->log); !saved) return tl::unexpected(saved.error());
-          auto card = ctx.catalogue.create(outcome->card, author);
-          if (!card) return tl::unexpected(card.error());
-          ctx.events.publish("cards", {{"type", "card.created"}, {"card", cards::summary_json(*card)}});
-          return Json{{"card_id", card->id},
-                      {"location", "/api/v1/cards/" + card->id},
-                      {"title", card->content.title},
-                      {"categories", outcome->card.provenance.value("categories", Json::array())},
-                      {"trajectory_log", outcome->card.trajectory_log}};
-        });
-    if (!id) return reply_problem(res, id.error(), req.path);
-    auto job = ctx.jobs.get(*id);
-    if (!job) return reply_problem(res, job.error(), req.path);
-    res.set_header("Location", "/api/v1/jobs/" + *id);
-    reply_json(res, 202, *job);
-  });
+  post_with_body(
+      http, "/api/v1/scenarios", ctx.config.max_body_bytes,
+      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+        auto body = json_body(text);
+        if (!body) return reply_problem(res, body.error(), req.path);
+        const auto config = scenario_config(ctx.config);
+        auto request = scenario::scenario_request_from_json(*body, config);
+        if (!request) return reply_problem(res, request.error(), req.path);
+        if (request->generator == "llm" && !ctx.llm)
+          return reply_problem(res,
+                               Error(ErrorCode::kValidation,
+                                     "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the "
+                                     "offline generator is available",
+                                     {{"/generator", "must be offline on this server", "", 0, 0}}),
+                               req.path);
+        auto world = given_world(ctx, *request);
+        if (!world) return reply_problem(res, world.error(), req.path);
+        const std::string author = ctx.author(req);
+        auto id = ctx.jobs.submit(
+            "scenario.generate", *body, author,
+            [&ctx, request = *request, world = std::move(*world), config,
+             author](const JobContext& job) -> Result<Json> {
+              std::optional<llm::StructuredGenerator> gen;
+              if (ctx.llm) gen.emplace(*ctx.llm, &ctx.store);
+              scenario::ScenarioServices s{ctx.knowledge,
+                                           gen ? &*gen : nullptr,
+                                           config,
+                                           job.id(),
+                                           job.cancel_token(),
+                                           [&job](double f, const std::string& m) { job.progress(f, m); }};
+              auto outcome = scenario::run_scenario(request, world, s);
+              if (!outcome) return tl::unexpected(outcome.error());
+              if (auto saved = scenario::save_trajectory_log(ctx.store, outcome->log); !saved)
+                return tl::unexpected(saved.error());
+              auto card = ctx.catalogue.create(outcome->card, author);
+              if (!card) return tl::unexpected(card.error());
+              ctx.events.publish("cards", {{"type", "card.created"}, {"card", cards::summary_json(*card)}});
+              return Json{{"card_id", card->id},
+                          {"location", "/api/v1/cards/" + card->id},
+                          {"title", card->content.title},
+                          {"categories", outcome->card.provenance.value("categories", Json::array())},
+                          {"trajectory_log", outcome->card.trajectory_log}};
+            });
+        if (!id) return reply_problem(res, id.error(), req.path);
+        auto job = ctx.jobs.get(*id);
+        if (!job) return reply_problem(res, job.error(), req.path);
+        res.set_header("Location", "/api/v1/jobs/" + *id);
+        reply_json(res, 202, *job);
+      });
 
   http.Get(kTrajectoryPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
     const std::string sha = req.matches[1];
@@ -118,34 +131,38 @@ void scenario_routes(httplib::Server& http, RouteContext& ctx) {
     res.set_content(*blob, "application/vnd.socsim.trajectory+zlib");
   });
 
-  post_with_body(http, kReplayPath, ctx.config.max_body_bytes,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string&) {
-    const std::string card_id = req.matches[1];
-    auto card = ctx.catalogue.get(card_id);
-    if (!card) return reply_problem(res, card.error(), req.path);
-    if (!card->content.trajectory_log.is_object())
-      return reply_problem(res, Error(ErrorCode::kValidation, "the card has no trajectory log to replay",
-                                      {{"/trajectory_log", "only scenario cards (POST /api/v1/scenarios) replay", "", 0, 0}}),
-                           req.path);
-    auto id = ctx.jobs.submit("scenario.replay", Json{{"card_id", card_id}}, ctx.author(req),
-                              [content = card->content, card_id](const JobContext& job) -> Result<Json> {
-                                auto out = scenario::replay_card(
-                                    content, [&job](double f, const std::string& m) { job.progress(f, m); },
-                                    job.cancel_token());
-                                if (!out) return tl::unexpected(out.error());
-                                const std::string expected = content.trajectory_log.value("sha256", "");
-                                return Json{{"card_id", card_id},
-                                            {"expected_sha256", expected},
-                                            {"sha256", out->log.sha256()},
-                                            {"identical", out->log.sha256() == expected},
-                                            {"frames", out->log.frame_count()}};
-                              });
-    if (!id) return reply_problem(res, id.error(), req.path);
-    auto job = ctx.jobs.get(*id);
-    if (!job) return reply_problem(res, job.error(), req.path);
-    res.set_header("Location", "/api/v1/jobs/" + *id);
-    reply_json(res, 202, *job);
-  });
+  post_with_body(
+      http, kReplayPath, ctx.config.max_body_bytes,
+      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string&) {
+        const std::string card_id = req.matches[1];
+        auto card = ctx.catalogue.get(card_id);
+        if (!card) return reply_problem(res, card.error(), req.path);
+        if (!card->content.trajectory_log.is_object())
+          return reply_problem(
+              res,
+              Error(ErrorCode::kValidation, "the card has no trajectory log to replay",
+                    {{"/trajectory_log", "only scenario cards (POST /api/v1/scenarios) replay", "", 0, 0}}),
+              req.path);
+        auto id =
+            ctx.jobs.submit("scenario.replay", Json{{"card_id", card_id}}, ctx.author(req),
+                            [content = card->content, card_id](const JobContext& job) -> Result<Json> {
+                              auto out = scenario::replay_card(
+                                  content, [&job](double f, const std::string& m) { job.progress(f, m); },
+                                  job.cancel_token());
+                              if (!out) return tl::unexpected(out.error());
+                              const std::string expected = content.trajectory_log.value("sha256", "");
+                              return Json{{"card_id", card_id},
+                                          {"expected_sha256", expected},
+                                          {"sha256", out->log.sha256()},
+                                          {"identical", out->log.sha256() == expected},
+                                          {"frames", out->log.frame_count()}};
+                            });
+        if (!id) return reply_problem(res, id.error(), req.path);
+        auto job = ctx.jobs.get(*id);
+        if (!job) return reply_problem(res, job.error(), req.path);
+        res.set_header("Location", "/api/v1/jobs/" + *id);
+        reply_json(res, 202, *job);
+      });
 }
 
 }  // namespace

@@ -13,11 +13,12 @@ RouteContext::RouteContext(Services& s)
       jobs(*s.jobs),
       knowledge(*s.knowledge),
       llm(s.llm.get()),
-      catalogue(s.store, [&] {
-        cards::CardLimits limits;
-        limits.max_prompt_bytes = s.config.max_prompt_bytes;
-        return limits;
-      }()),
+      catalogue(s.store,
+                [&] {
+                  cards::CardLimits limits;
+                  limits.max_prompt_bytes = s.config.max_prompt_bytes;
+                  return limits;
+                }()),
       keys(s.config.api_keys) {}
 
 std::string RouteContext::author(const httplib::Request& req) const {
@@ -40,42 +41,47 @@ namespace {
 void system_routes(httplib::Server& http, RouteContext& ctx) {
   http.Get("/api/v1/health", [&ctx](const httplib::Request& req, httplib::Response& res) {
     auto count = ctx.catalogue.count();
-    const double uptime = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.services.started).count();
+    const double uptime =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.services.started).count();
     if (!count) {
-      reply_problem(res, Error(ErrorCode::kStore, "the database is not answering: " + count.error().detail), req.path);
+      reply_problem(res, Error(ErrorCode::kStore, "the database is not answering: " + count.error().detail),
+                    req.path);
       return;
     }
-    reply_json(res, 200,
-               {{"status", "ok"},
-                {"database", {{"status", "ok"}, {"schema_version", ctx.store.schema_version()}, {"cards", *count}}},
-                {"uptime_s", std::round(uptime * 10.0) / 10.0}});
+    reply_json(
+        res, 200,
+        {{"status", "ok"},
+         {"database", {{"status", "ok"}, {"schema_version", ctx.store.schema_version()}, {"cards", *count}}},
+         {"uptime_s", std::round(uptime * 10.0) / 10.0}});
   });
 
   http.Get("/api/v1/info", [&ctx](const httplib::Request& req, httplib::Response& res) {
     const auto& c = ctx.config;
     Json generators = Json::array();
     generators.push_back({{"name", "offline"}, {"available", true}, {"default", true}});
-    generators.push_back({{"name", "llm"},
-                          {"available", ctx.llm != nullptr},
-                          {"default", false},
-                          {"model", c.llm.model.empty() ? Json(nullptr) : Json(c.llm.model)},
-                          {"embedding_model", c.llm.embedding_model.empty() ? Json(nullptr) : Json(c.llm.embedding_model)}});
-    reply_json(res, 200,
-               {{"name", "socsim"},
-                {"version", build::kVersion},
-                {"build", {{"git_sha", build::kGitSha}, {"flavor", build::kFlavor}, {"compiler", build::kCompiler}}},
-                {"api", "/api/v1"},
-                {"openapi", "/api/v1/openapi.yaml"},
-                {"generators", generators},
-                {"websocket_url", "ws://" + ctx.public_host(req) + ":" + std::to_string(c.ws_port) + "/ws"},
-                {"auth", {{"writes_require_key", ctx.keys.enabled()}, {"scheme", "Bearer"}}},
-                {"limits",
-                 {{"max_body_bytes", c.max_body_bytes},
-                  {"max_prompt_bytes", c.max_prompt_bytes},
-                  {"max_page_size", c.max_page_size},
-                  {"rate_limit_rps", c.rate_limit_rps},
-                  {"rate_limit_burst", c.rate_limit_burst}}},
-                {"schema_version", ctx.store.schema_version()}});
+    generators.push_back(
+        {{"name", "llm"},
+         {"available", ctx.llm != nullptr},
+         {"default", false},
+         {"model", c.llm.model.empty() ? Json(nullptr) : Json(c.llm.model)},
+         {"embedding_model", c.llm.embedding_model.empty() ? Json(nullptr) : Json(c.llm.embedding_model)}});
+    reply_json(
+        res, 200,
+        {{"name", "socsim"},
+         {"version", build::kVersion},
+         {"build", {{"git_sha", build::kGitSha}, {"flavor", build::kFlavor}, {"compiler", build::kCompiler}}},
+         {"api", "/api/v1"},
+         {"openapi", "/api/v1/openapi.yaml"},
+         {"generators", generators},
+         {"websocket_url", "ws://" + ctx.public_host(req) + ":" + std::to_string(c.ws_port) + "/ws"},
+         {"auth", {{"writes_require_key", ctx.keys.enabled()}, {"scheme", "Bearer"}}},
+         {"limits",
+          {{"max_body_bytes", c.max_body_bytes},
+           {"max_prompt_bytes", c.max_prompt_bytes},
+           {"max_page_size", c.max_page_size},
+           {"rate_limit_rps", c.rate_limit_rps},
+           {"rate_limit_burst", c.rate_limit_burst}}},
+         {"schema_version", ctx.store.schema_version()}});
   });
 
   http.Get("/api/v1/openapi.yaml", [](const httplib::Request& req, httplib::Response& res) {
@@ -92,7 +98,8 @@ void system_routes(httplib::Server& http, RouteContext& ctx) {
     const auto& files = embedded_schemas();
     auto it = files.find(req.matches[1].str());
     if (it == files.end() || it->first.find("..") != std::string::npos) {
-      reply_problem(res, Error(ErrorCode::kNotFound, "no schema named '" + req.matches[1].str() + "'"), req.path);
+      reply_problem(res, Error(ErrorCode::kNotFound, "no schema named '" + req.matches[1].str() + "'"),
+                    req.path);
       return;
     }
     const bool yaml = it->first.size() > 5 && it->first.substr(it->first.size() - 5) == ".yaml";

@@ -26,7 +26,9 @@ std::string base64(std::string_view bytes) {
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
   for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const auto b = [&](std::size_t k) { return i + k < bytes.size() ? static_cast<unsigned char>(bytes[i + k]) : 0u; };
+    const auto b = [&](std::size_t k) {
+      return i + k < bytes.size() ? static_cast<unsigned char>(bytes[i + k]) : 0u;
+    };
     const unsigned v = (b(0) << 16) | (b(1) << 8) | b(2);
     out += kAlphabet[(v >> 18) & 63];
     out += kAlphabet[(v >> 12) & 63];
@@ -43,7 +45,8 @@ struct StoredWorld {
 };
 
 constexpr const char* kColumns =
-    "id, name, domain, generator, seed, author, request, scene_graph, world_yaml, compliance, provenance, content_hash, "
+    "id, name, domain, generator, seed, author, request, scene_graph, world_yaml, compliance, provenance, "
+    "content_hash, "
     "created_at";
 
 StoredWorld row(store::Statement& st) {
@@ -65,18 +68,19 @@ StoredWorld row(store::Statement& st) {
 }
 
 Json summary(const StoredWorld& w) {
-  return Json{{"id", w.id},
-              {"name", w.name},
-              {"domain", w.domain},
-              {"generator", w.generator},
-              {"seed", w.seed},
-              {"author", w.author},
-              {"created_at", w.created_at},
-              {"compliant", w.compliance.value("passed", false)},
-              {"links",
-               {{"self", "/api/v1/worlds/" + w.id},
-                {"world_yaml", "/api/v1/worlds/" + w.id + "/world.yaml"},
-                {"export", "/api/v1/worlds/" + w.id + "/export?format={sdf|pedsim|map|map-pgm|map-yaml|svg}"}}}};
+  return Json{
+      {"id", w.id},
+      {"name", w.name},
+      {"domain", w.domain},
+      {"generator", w.generator},
+      {"seed", w.seed},
+      {"author", w.author},
+      {"created_at", w.created_at},
+      {"compliant", w.compliance.value("passed", false)},
+      {"links",
+       {{"self", "/api/v1/worlds/" + w.id},
+        {"world_yaml", "/api/v1/worlds/" + w.id + "/world.yaml"},
+        {"export", "/api/v1/worlds/" + w.id + "/export?format={sdf|pedsim|map|map-pgm|map-yaml|svg}"}}}};
 }
 
 // Stores a generated plan; returns its id.
@@ -97,11 +101,19 @@ Result<StoredWorld> store_world(store::Store& db, const world::FloorPlan& plan, 
   w.content_hash = sha256_hex(w.world_yaml);
   w.created_at = utc_now_rfc3339();
   auto s = db.write([&](Database& d) -> Status {
-    auto st = d.prepare(std::string("INSERT INTO worlds (") + kColumns + ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?)");
+    auto st =
+        d.prepare(std::string("INSERT INTO worlds (") + kColumns + ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?)");
     if (!st) return tl::unexpected(st.error());
-    st->bind(1, w.id).bind(2, w.name).bind(3, w.domain).bind(4, w.generator).bind(5, w.seed).bind(6, w.author);
+    st->bind(1, w.id)
+        .bind(2, w.name)
+        .bind(3, w.domain)
+        .bind(4, w.generator)
+        .bind(5, w.seed)
+        .bind(6, w.author);
     st->bind(7, canonical_json(w.request)).bind(8, canonical_json(w.scene_graph)).bind(9, w.world_yaml);
-    st->bind(10, canonical_json(w.compliance)).bind(11, canonical_json(w.provenance)).bind(12, w.content_hash);
+    st->bind(10, canonical_json(w.compliance))
+        .bind(11, canonical_json(w.provenance))
+        .bind(12, w.content_hash);
     st->bind(13, w.created_at);
     return st->run();
   });
@@ -124,7 +136,9 @@ Result<StoredWorld> load_world(store::Store& db, const std::string& id) {
 // The stored text always built before it was stored; a failure here is a broken invariant.
 Result<world::World> world_of(const StoredWorld& w) {
   auto world = world::world_from_yaml(w.world_yaml);
-  if (!world) return fail(ErrorCode::kInternal, "stored world '" + w.id + "' no longer validates: " + world.error().message());
+  if (!world)
+    return fail(ErrorCode::kInternal,
+                "stored world '" + w.id + "' no longer validates: " + world.error().message());
   return world;
 }
 
@@ -140,22 +154,24 @@ Json world_json(const StoredWorld& w, const world::World& world) {
 }
 
 Result<std::vector<knowledge::MergedConstraint>> constraints(RouteContext& ctx, const std::string& domain,
-                                                            const std::string& jurisdiction) {
+                                                             const std::string& jurisdiction) {
   return ctx.knowledge.constraints_for(domain, jurisdiction);
 }
 
 Status llm_available(const RouteContext& ctx) {
   if (ctx.llm) return {};
-  return fail(ErrorCode::kValidation,
-              "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
-              {FieldError{"/generator", "must be offline on this server", {}, 0, 0}});
+  return fail(
+      ErrorCode::kValidation,
+      "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
+      {FieldError{"/generator", "must be offline on this server", {}, 0, 0}});
 }
 
 // Building type for checking a posted world: ?domain=, else classified from zone names and types.
 Result<std::string> domain_for(const httplib::Request& req, const world::World& w) {
   if (auto d = query(req, "domain")) {
     if (!knowledge::is_building_type(*d))
-      return fail(ErrorCode::kValidation, "unknown building type", {{"", "not a building type: '" + *d + "'", "domain", 0, 0}});
+      return fail(ErrorCode::kValidation, "unknown building type",
+                  {{"", "not a building type: '" + *d + "'", "domain", 0, 0}});
     return *d;
   }
   std::vector<std::string> names;
@@ -166,58 +182,64 @@ Result<std::string> domain_for(const httplib::Request& req, const world::World& 
 void world_routes(httplib::Server& http, RouteContext& ctx) {
   const std::size_t max_body = ctx.config.max_body_bytes;
 
-  post_with_body(http, "/api/v1/worlds", max_body, [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-    auto body = json_body(text);
-    if (!body) return reply_problem(res, body.error(), req.path);
-    auto request = world::floor_plan_request_from_json(*body);
-    if (!request) return reply_problem(res, request.error(), req.path);
-    auto resolved = world::resolve_scene_graph(*request);
-    if (!resolved) return reply_problem(res, resolved.error(), req.path);
-    auto cs = constraints(ctx, resolved->graph.domain, request->jurisdiction);
-    if (!cs) return reply_problem(res, cs.error(), req.path);
+  post_with_body(
+      http, "/api/v1/worlds", max_body,
+      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+        auto body = json_body(text);
+        if (!body) return reply_problem(res, body.error(), req.path);
+        auto request = world::floor_plan_request_from_json(*body);
+        if (!request) return reply_problem(res, request.error(), req.path);
+        auto resolved = world::resolve_scene_graph(*request);
+        if (!resolved) return reply_problem(res, resolved.error(), req.path);
+        auto cs = constraints(ctx, resolved->graph.domain, request->jurisdiction);
+        if (!cs) return reply_problem(res, cs.error(), req.path);
 
-    if (request->generator == "offline") {
-      world::OfflineOptions o;
-      o.seed = request->seed;
-      auto plan = world::generate_floor_plan(resolved->graph, *cs, o);
-      if (!plan) return reply_problem(res, plan.error(), req.path);
-      plan->provenance["classification"] = resolved->classification;
-      auto w = store_world(ctx.store, *plan, *body, ctx.author(req), "offline", request->seed);
-      if (!w) return reply_problem(res, w.error(), req.path);
-      ctx.events.publish("worlds", {{"type", "world.created"}, {"world", summary(*w)}});
-      res.set_header("Location", "/api/v1/worlds/" + w->id);
-      Json out = summary(*w);
-      out["compliance"] = w->compliance;
-      return reply_json(res, 201, out);
-    }
-
-    if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
-    const std::string author = ctx.author(req);
-    auto id = ctx.jobs.submit(
-        "world.generate", *body, author,
-        [&ctx, request = *request, resolved = *resolved, cs = *cs, body = *body, author](const JobContext& job) -> Result<Json> {
-          llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
-          job.progress(0.0, "asking the LLM for a " + resolved.graph.domain + " floor plan of " +
-                                std::to_string(resolved.graph.rooms.size()) + " rooms");
-          world::LlmFloorPlanOptions o;
-          o.model = request.model;
-          o.seed = static_cast<std::int64_t>(request.seed);
-          o.job_id = job.id();
-          o.cancel = job.cancel_token();
-          auto plan = world::generate_floor_plan_llm(gen, request.prompt.value_or(""), resolved.graph, cs, o);
-          if (!plan) return tl::unexpected(plan.error());
-          plan->provenance["classification"] = resolved.classification;
-          auto w = store_world(ctx.store, *plan, body, author, "llm", request.seed);
-          if (!w) return tl::unexpected(w.error());
+        if (request->generator == "offline") {
+          world::OfflineOptions o;
+          o.seed = request->seed;
+          auto plan = world::generate_floor_plan(resolved->graph, *cs, o);
+          if (!plan) return reply_problem(res, plan.error(), req.path);
+          plan->provenance["classification"] = resolved->classification;
+          auto w = store_world(ctx.store, *plan, *body, ctx.author(req), "offline", request->seed);
+          if (!w) return reply_problem(res, w.error(), req.path);
           ctx.events.publish("worlds", {{"type", "world.created"}, {"world", summary(*w)}});
-          return Json{{"world_id", w->id}, {"location", "/api/v1/worlds/" + w->id}, {"compliant", w->compliance["passed"]}};
-        });
-    if (!id) return reply_problem(res, id.error(), req.path);
-    auto job = ctx.jobs.get(*id);
-    if (!job) return reply_problem(res, job.error(), req.path);
-    res.set_header("Location", "/api/v1/jobs/" + *id);
-    reply_json(res, 202, *job);
-  });
+          res.set_header("Location", "/api/v1/worlds/" + w->id);
+          Json out = summary(*w);
+          out["compliance"] = w->compliance;
+          return reply_json(res, 201, out);
+        }
+
+        if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+        const std::string author = ctx.author(req);
+        auto id = ctx.jobs.submit(
+            "world.generate", *body, author,
+            [&ctx, request = *request, resolved = *resolved, cs = *cs, body = *body,
+             author](const JobContext& job) -> Result<Json> {
+              llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
+              job.progress(0.0, "asking the LLM for a " + resolved.graph.domain + " floor plan of " +
+                                    std::to_string(resolved.graph.rooms.size()) + " rooms");
+              world::LlmFloorPlanOptions o;
+              o.model = request.model;
+              o.seed = static_cast<std::int64_t>(request.seed);
+              o.job_id = job.id();
+              o.cancel = job.cancel_token();
+              auto plan =
+                  world::generate_floor_plan_llm(gen, request.prompt.value_or(""), resolved.graph, cs, o);
+              if (!plan) return tl::unexpected(plan.error());
+              plan->provenance["classification"] = resolved.classification;
+              auto w = store_world(ctx.store, *plan, body, author, "llm", request.seed);
+              if (!w) return tl::unexpected(w.error());
+              ctx.events.publish("worlds", {{"type", "world.created"}, {"world", summary(*w)}});
+              return Json{{"world_id", w->id},
+                          {"location", "/api/v1/worlds/" + w->id},
+                          {"compliant", w->compliance["passed"]}};
+            });
+        if (!id) return reply_problem(res, id.error(), req.path);
+        auto job = ctx.jobs.get(*id);
+        if (!job) return reply_problem(res, job.error(), req.path);
+        res.set_header("Location", "/api/v1/jobs/" + *id);
+        reply_json(res, 202, *job);
+      });
 
   http.Get("/api/v1/worlds", [&ctx](const httplib::Request& req, httplib::Response& res) {
     auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
@@ -225,10 +247,13 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
     if (!size) return reply_problem(res, size.error(), req.path);
     std::optional<std::int64_t> before;
     if (auto cursor = query(req, "cursor")) {
-      const std::string digits = cursor->rfind(kCursorPrefix, 0) == 0 ? cursor->substr(kCursorPrefix.size()) : "";
+      const std::string digits =
+          cursor->rfind(kCursorPrefix, 0) == 0 ? cursor->substr(kCursorPrefix.size()) : "";
       if (digits.empty() || digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
-        return reply_problem(res, Error(ErrorCode::kBadRequest, "the cursor is not one this server issued",
-                                        {{"", "use next_cursor from a previous page", "cursor", 0, 0}}), req.path);
+        return reply_problem(res,
+                             Error(ErrorCode::kBadRequest, "the cursor is not one this server issued",
+                                   {{"", "use next_cursor from a previous page", "cursor", 0, 0}}),
+                             req.path);
       before = std::stoll(digits);
     }
     const auto domain = query(req, "domain");
@@ -272,26 +297,31 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, world_json(*w, *world));
   });
 
-  http.Get(std::string(kWorldPath) + "/world.yaml", [&ctx](const httplib::Request& req, httplib::Response& res) {
-    auto w = load_world(ctx.store, req.matches[1].str());
-    if (!w) return reply_problem(res, w.error(), req.path);
-    res.set_header("ETag", "\"" + w->content_hash + "\"");
-    res.set_header("Content-Disposition", "inline; filename=\"" + w->id + ".world.yaml\"");
-    res.set_content(w->world_yaml, "application/yaml");
-  });
+  http.Get(std::string(kWorldPath) + "/world.yaml",
+           [&ctx](const httplib::Request& req, httplib::Response& res) {
+             auto w = load_world(ctx.store, req.matches[1].str());
+             if (!w) return reply_problem(res, w.error(), req.path);
+             res.set_header("ETag", "\"" + w->content_hash + "\"");
+             res.set_header("Content-Disposition", "inline; filename=\"" + w->id + ".world.yaml\"");
+             res.set_content(w->world_yaml, "application/yaml");
+           });
 
   http.Get(std::string(kWorldPath) + "/export", [&ctx](const httplib::Request& req, httplib::Response& res) {
     const auto format = query(req, "format");
     static const std::vector<std::string> kFormats = {"sdf", "pedsim", "map", "map-pgm", "map-yaml", "svg"};
     if (!format || std::find(kFormats.begin(), kFormats.end(), *format) == kFormats.end())
-      return reply_problem(res, Error(ErrorCode::kValidation, "choose an export format",
-                                      {{"", "one of sdf, pedsim, map, map-pgm, map-yaml, svg", "format", 0, 0}}), req.path);
+      return reply_problem(res,
+                           Error(ErrorCode::kValidation, "choose an export format",
+                                 {{"", "one of sdf, pedsim, map, map-pgm, map-yaml, svg", "format", 0, 0}}),
+                           req.path);
     auto w = load_world(ctx.store, req.matches[1].str());
     if (!w) return reply_problem(res, w.error(), req.path);
     auto world = world_of(*w);
     if (!world) return reply_problem(res, world.error(), req.path);
     const std::string file = w->id;
-    auto attach = [&](const std::string& name) { res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\""); };
+    auto attach = [&](const std::string& name) {
+      res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\"");
+    };
     if (*format == "sdf") {
       attach(file + ".sdf");
       return res.set_content(world::export_sdf(*world), "application/xml");
@@ -312,33 +342,36 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
       attach(file + ".yaml");
       return res.set_content(map.yaml, "application/yaml");
     }
-    reply_json(res, 200, {{"image_file", mo.image_file}, {"pgm_base64", base64(map.pgm)}, {"yaml", map.yaml}});
+    reply_json(res, 200,
+               {{"image_file", mo.image_file}, {"pgm_base64", base64(map.pgm)}, {"yaml", map.yaml}});
   });
 
-  post_with_body(http, "/api/v1/worlds/validate", max_body, [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-    auto world = world::world_from_yaml(text);
-    if (!world) {
-      // Everything wrong with the posted document is a validation finding, syntax included.
-      Error e = world.error();
-      if (e.code == ErrorCode::kBadRequest) e.code = ErrorCode::kValidation;
-      return reply_problem(res, e, req.path);
-    }
-    auto domain = domain_for(req, *world);
-    if (!domain) return reply_problem(res, domain.error(), req.path);
-    auto cs = constraints(ctx, *domain, query(req, "jurisdiction").value_or(""));
-    if (!cs) return reply_problem(res, cs.error(), req.path);
-    const world::ComplianceReport report = world::check_compliance(*world, *domain, *cs);
-    reply_json(res, 200, {{"valid", true},
-                          {"name", world->name()},
-                          {"zones", world->zones().size()},
-                          {"doors", world->doors().size()},
-                          {"walls", world->walls().size()},
-                          {"rois", world->rois().size()},
-                          {"entities", world->entities().size()},
-                          {"area", world->area()},
-                          {"compliance", world::to_json(report)},
-                          {"knowledge", world::knowledge_provenance(*cs)}});
-  });
+  post_with_body(http, "/api/v1/worlds/validate", max_body,
+                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                   auto world = world::world_from_yaml(text);
+                   if (!world) {
+                     // Everything wrong with the posted document is a validation finding, syntax included.
+                     Error e = world.error();
+                     if (e.code == ErrorCode::kBadRequest) e.code = ErrorCode::kValidation;
+                     return reply_problem(res, e, req.path);
+                   }
+                   auto domain = domain_for(req, *world);
+                   if (!domain) return reply_problem(res, domain.error(), req.path);
+                   auto cs = constraints(ctx, *domain, query(req, "jurisdiction").value_or(""));
+                   if (!cs) return reply_problem(res, cs.error(), req.path);
+                   const world::ComplianceReport report = world::check_compliance(*world, *domain, *cs);
+                   reply_json(res, 200,
+                              {{"valid", true},
+                               {"name", world->name()},
+                               {"zones", world->zones().size()},
+                               {"doors", world->doors().size()},
+                               {"walls", world->walls().size()},
+                               {"rois", world->rois().size()},
+                               {"entities", world->entities().size()},
+                               {"area", world->area()},
+                               {"compliance", world::to_json(report)},
+                               {"knowledge", world::knowledge_provenance(*cs)}});
+                 });
 }
 
 }  // namespace

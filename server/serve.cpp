@@ -21,8 +21,10 @@ namespace socsim::server {
 
 namespace {
 void print_serve_help() {
-  std::cout << "usage: socsim serve [options]\n\nEvery option can also be set by its environment variable.\n\n";
-  for (const auto& f : serve_flags()) std::cout << "  " << f.flag << " <value>   (" << f.env << ")\n      " << f.help << "\n";
+  std::cout
+      << "usage: socsim serve [options]\n\nEvery option can also be set by its environment variable.\n\n";
+  for (const auto& f : serve_flags())
+    std::cout << "  " << f.flag << " <value>   (" << f.env << ")\n      " << f.help << "\n";
   std::cout << "  SOCSIM_LLM_API_KEY   bearer key sent to the LLM endpoint (environment only)\n";
 }
 }  // namespace
@@ -99,6 +101,7 @@ int serve_command(const std::vector<std::string>& args) {
   return 0;
 }
 
-SOCSIM_COMMAND("serve", "  serve                 run the REST + WebSocket daemon (socsim serve --help)\n", serve_command);
+SOCSIM_COMMAND("serve", "  serve                 run the REST + WebSocket daemon (socsim serve --help)\n",
+               serve_command);
 
 }  // namespace socsim::server

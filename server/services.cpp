@@ -13,7 +13,8 @@ Result<std::unique_ptr<Services>> Services::create(ServerConfig config, store::S
       llm::LlmClient* c = s->llm.get();
       const std::string model = s->config.llm.embedding_model;
       embeddings.model = model;
-      embeddings.embed = [c, model](const std::vector<std::string>& texts) -> Result<std::vector<knowledge::Embedding>> {
+      embeddings.embed =
+          [c, model](const std::vector<std::string>& texts) -> Result<std::vector<knowledge::Embedding>> {
         llm::EmbeddingRequest req;
         req.inputs = texts;
         req.model = model;

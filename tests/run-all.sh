@@ -7,6 +7,8 @@ bash deploy/install-deps.sh --with-browser
 # Browser and schema tests: playwright-core (driving Debian's chromium) and ajv, pinned by the lockfile.
 (cd tests/e2e && npm ci --no-audit --no-fund --loglevel=error)
 
+bash tests/check-format.sh
+
 jobs=$(nproc 2>/dev/null || echo 2)
 for preset in dev asan; do
   echo "=== ${preset}: configure and build"

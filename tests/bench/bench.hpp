@@ -36,7 +36,9 @@ struct Registration {
 std::map<std::string, std::pair<std::string, BenchFn>>& registry();
 
 // Prints one result line.
-inline void emit(const nlohmann::json& line) { std::cout << line.dump() << std::endl; }
+inline void emit(const nlohmann::json& line) {
+  std::cout << line.dump() << std::endl;
+}
 
 // Percentile (0..100) of samples by nearest rank; sorts a copy.
 double percentile(std::vector<double> samples, double p);

@@ -18,7 +18,8 @@ using socsim::bench::percentile;
 int run(const Args& a) {
   const int clients = static_cast<int>(a.integer("clients", 8));
   const int requests = static_cast<int>(a.integer("requests", 2000));
-  const auto dir = std::filesystem::temp_directory_path() / ("socsim-bench-api-" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("socsim-bench-api-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   socsim::server::ServerConfig cfg;
@@ -70,7 +71,8 @@ int run(const Args& a) {
         for (int i = next++; i < requests; i = next++) {
           const auto s = std::chrono::steady_clock::now();
           one_request(client, i);
-          local.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s).count());
+          local.push_back(
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s).count());
         }
         std::lock_guard<std::mutex> lock(m);
         p.ms.insert(p.ms.end(), local.begin(), local.end());
@@ -91,8 +93,9 @@ int run(const Args& a) {
   phases.push_back(measure("GET /api/v1/cards/{id}", [&](httplib::Client& c, int i) {
     c.Get(("/api/v1/cards/" + ids[static_cast<std::size_t>(i) % ids.size()]).c_str());
   }));
-  phases.push_back(measure("GET /api/v1/cards?q=reception&page_size=20",
-                           [&](httplib::Client& c, int) { c.Get("/api/v1/cards?q=reception&page_size=20"); }));
+  phases.push_back(measure("GET /api/v1/cards?q=reception&page_size=20", [&](httplib::Client& c, int) {
+    c.Get("/api/v1/cards?q=reception&page_size=20");
+  }));
   std::cout.clear();
   for (const auto& p : phases) {
     emit({{"bench", "api"},
@@ -112,6 +115,8 @@ int run(const Args& a) {
   return 0;
 }
 
-SOCSIM_BENCH("api", "request latency percentiles over loopback HTTP [--clients 8] [--requests 2000] [--threads 8]", run);
+SOCSIM_BENCH("api",
+             "request latency percentiles over loopback HTTP [--clients 8] [--requests 2000] [--threads 8]",
+             run);
 
 }  // namespace

@@ -36,12 +36,13 @@ CrowdSimulation make_crowd(std::size_t n, unsigned threads, bool walls, bool gro
   const double size = static_cast<double>(side);
   socsim::Rng rng(seed);
   if (walls) {
-    const std::vector<Vec2> box = {{-0.5, -0.5}, {size + 0.5, -0.5}, {size + 0.5, size + 0.5}, {-0.5, size + 0.5}};
+    const std::vector<Vec2> box = {
+        {-0.5, -0.5}, {size + 0.5, -0.5}, {size + 0.5, size + 0.5}, {-0.5, size + 0.5}};
     (void)sim->add_polyline(box, true);
     for (double px = 4.0; px < size - 2.0; px += 8.0) {
       for (double py = 4.0; py < size - 2.0; py += 8.0) {
-        const std::vector<Vec2> pillar = {{px - 0.25, py - 0.25}, {px + 0.25, py - 0.25}, {px + 0.25, py + 0.25},
-                                          {px - 0.25, py + 0.25}};
+        const std::vector<Vec2> pillar = {
+            {px - 0.25, py - 0.25}, {px + 0.25, py - 0.25}, {px + 0.25, py + 0.25}, {px - 0.25, py + 0.25}};
         (void)sim->add_polyline(pillar, true);
       }
     }
@@ -96,15 +97,17 @@ SOCSIM_BENCH("crowd", "--agents N --steps S --threads T [--walls] [--groups] [--
                const double seconds = socsim::bench::seconds_since(t0);
                // CPU time of all threads: on a shared machine the wall clock also counts waiting.
                const double cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
-               socsim::bench::emit({{"bench", "crowd"},
-                                    {"agents", n},
-                                    {"threads", threads},
-                                    {"steps", steps},
-                                    {"walls", walls},
-                                    {"groups", groups},
-                                    {"agent_steps_per_s", static_cast<double>(n) * static_cast<double>(steps) / seconds},
-                                    {"ms_per_step", 1000.0 * seconds / static_cast<double>(steps)},
-                                    {"cpu_us_per_agent_step", 1e6 * cpu_seconds / (static_cast<double>(n) * static_cast<double>(steps))}});
+               socsim::bench::emit(
+                   {{"bench", "crowd"},
+                    {"agents", n},
+                    {"threads", threads},
+                    {"steps", steps},
+                    {"walls", walls},
+                    {"groups", groups},
+                    {"agent_steps_per_s", static_cast<double>(n) * static_cast<double>(steps) / seconds},
+                    {"ms_per_step", 1000.0 * seconds / static_cast<double>(steps)},
+                    {"cpu_us_per_agent_step",
+                     1e6 * cpu_seconds / (static_cast<double>(n) * static_cast<double>(steps))}});
 
                const auto m = static_cast<std::size_t>(a.integer("reference-agents", 2000));
                if (m == 0) return 0;

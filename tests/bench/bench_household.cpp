@@ -43,7 +43,9 @@ int run_household(const bench::Args& a) {
   const auto days = static_cast<int>(a.integer("days", 5));
   const auto threads = static_cast<int>(std::max<std::int64_t>(1, a.integer("threads", 2)));
   const auto seed = static_cast<std::uint64_t>(a.integer("seed", 1));
-  const std::string db = a.str("db", (std::filesystem::temp_directory_path() / ("socsim-bench-household-" + std::to_string(::getpid()) + ".db")).string());
+  const std::string db = a.str("db", (std::filesystem::temp_directory_path() /
+                                      ("socsim-bench-household-" + std::to_string(::getpid()) + ".db"))
+                                         .string());
 
   const auto t0 = std::chrono::steady_clock::now();
   auto store = store::Store::open(db);
@@ -53,7 +55,8 @@ int run_household(const bench::Args& a) {
   }
   auto knowledge = load_household_knowledge(**store);
   (*store)->close();
-  if (!a.has("db")) std::filesystem::remove(db), std::filesystem::remove(db + "-wal"), std::filesystem::remove(db + "-shm");
+  if (!a.has("db"))
+    std::filesystem::remove(db), std::filesystem::remove(db + "-wal"), std::filesystem::remove(db + "-shm");
   if (!knowledge) {
     std::cerr << knowledge.error().message() << "\n";
     return 1;
@@ -97,8 +100,9 @@ int run_household(const bench::Args& a) {
       local.residents += scene->residents().size();
       local.rooms += shared->rooms.size();
       local.objects += shared->objects.size();
-      local.digest ^= fnv1a64(std::to_string(i) + ":" + std::to_string(scene->relocations().size()) + ":" +
-                              std::to_string(scene->relocations().empty() ? 0 : scene->relocations().back().to));
+      local.digest ^=
+          fnv1a64(std::to_string(i) + ":" + std::to_string(scene->relocations().size()) + ":" +
+                  std::to_string(scene->relocations().empty() ? 0 : scene->relocations().back().to));
       if (i % 50 == 0 && !shared->objects.empty()) {
         Rng q(hs, 9);
         constexpr int kQueries = 2000;
@@ -152,6 +156,8 @@ int run_household(const bench::Args& a) {
   return all.failures == 0 ? 0 : 1;
 }
 
-SOCSIM_BENCH("household", "dynamic household scenes: --houses N --days D [--threads T] [--seed S] [--db FILE]", run_household);
+SOCSIM_BENCH("household",
+             "dynamic household scenes: --houses N --days D [--threads T] [--seed S] [--db FILE]",
+             run_household);
 
 }  // namespace

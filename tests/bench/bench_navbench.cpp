@@ -18,7 +18,9 @@ int run_navbench(const bench::Args& a) {
   const auto seed = static_cast<std::uint64_t>(a.integer("seed", 1));
   const auto threads = static_cast<int>(std::max<std::int64_t>(1, a.integer("threads", 2)));
   const auto training = static_cast<int>(a.integer("training-houses", 10000));
-  const std::string db = a.str("db", (std::filesystem::temp_directory_path() / ("socsim-bench-navbench-" + std::to_string(::getpid()) + ".db")).string());
+  const std::string db = a.str("db", (std::filesystem::temp_directory_path() /
+                                      ("socsim-bench-navbench-" + std::to_string(::getpid()) + ".db"))
+                                         .string());
 
   const auto t0 = std::chrono::steady_clock::now();
   auto store = store::Store::open(db);
@@ -28,7 +30,8 @@ int run_navbench(const bench::Args& a) {
   }
   auto knowledge = navbench::load_benchmark_knowledge(**store);
   (*store)->close();
-  if (!a.has("db")) std::filesystem::remove(db), std::filesystem::remove(db + "-wal"), std::filesystem::remove(db + "-shm");
+  if (!a.has("db"))
+    std::filesystem::remove(db), std::filesystem::remove(db + "-wal"), std::filesystem::remove(db + "-shm");
   if (!knowledge) {
     std::cerr << knowledge.error().message() << "\n";
     return 1;
@@ -48,8 +51,9 @@ int run_navbench(const bench::Args& a) {
     return 1;
   }
   auto shared_counts = std::make_shared<const navbench::PlacementCounts>(std::move(*counts));
-  nlohmann::json line = {{"bench", "navbench"}, {"scenes_per_split", scenes}, {"seed", seed}, {"threads", threads},
-                         {"training_houses", training}, {"residents_s", pool_s}, {"training_s", training_s}};
+  nlohmann::json line = {{"bench", "navbench"},     {"scenes_per_split", scenes},  {"seed", seed},
+                         {"threads", threads},      {"training_houses", training}, {"residents_s", pool_s},
+                         {"training_s", training_s}};
   std::size_t tasks = 0;
   std::vector<std::string> tables;
   for (auto split : {navbench::Split::kNormal, navbench::Split::kHard}) {
@@ -74,7 +78,9 @@ int run_navbench(const bench::Args& a) {
   return 0;
 }
 
-SOCSIM_BENCH("navbench", "object-goal navigation benchmark, both splits: [--scenes 50] [--seed 1] [--threads 2] [--training-houses 10000] [--db FILE]",
+SOCSIM_BENCH("navbench",
+             "object-goal navigation benchmark, both splits: [--scenes 50] [--seed 1] [--threads 2] "
+             "[--training-houses 10000] [--db FILE]",
              run_navbench);
 
 }  // namespace

@@ -136,7 +136,8 @@ int run(const socsim::bench::Args& a) {
 // Offline generation of a 10-room hospital plan (lobby, corridor, 3 patient rooms, nurse station,
 // 2 treatment rooms, 2 toilets), one seed per run, against the seeded knowledge store.
 int floor_plans(int runs) {
-  const auto db = std::filesystem::temp_directory_path() / ("socsim-bench-world-" + std::to_string(::getpid()) + ".db");
+  const auto db =
+      std::filesystem::temp_directory_path() / ("socsim-bench-world-" + std::to_string(::getpid()) + ".db");
   int status = 0;
   {
     auto store = socsim::store::Store::open(db.string());
@@ -187,5 +188,6 @@ int floor_plans(int runs) {
 }  // namespace
 
 SOCSIM_BENCH("world",
-             "world build+validate (10 rooms), 256x256 geodesic field, world.yaml round trip, offline 10-room floor plan",
+             "world build+validate (10 rooms), 256x256 geodesic field, world.yaml round trip, offline "
+             "10-room floor plan",
              run);

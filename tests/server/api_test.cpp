@@ -16,7 +16,9 @@ const char* kCard = R"({"title":"Reception rush","description":"Patients queue a
   "tags":["queue","hospital"],"prompt":"patients queue at the reception desk","seed":7,
   "generator":{"name":"offline"},"domain":"hospital","world":{"zones":[]},"metrics":{"agents":12}})";
 
-Json body_of(const httplib::Result& r) { return Json::parse(r->body); }
+Json body_of(const httplib::Result& r) {
+  return Json::parse(r->body);
+}
 
 void expect_problem(const httplib::Result& r, int status) {
   ASSERT_TRUE(r) << "no response";
@@ -88,8 +90,9 @@ TEST(Api, MalformedJsonIs400NamingThePosition) {
 
 TEST(Api, SchemaViolationIs422WithAPointerPerBadField) {
   TestServer s;
-  auto r = s.client().Post("/api/v1/cards", R"({"title": 3, "seed": "x", "tags": ["ok", "BAD TAG"], "colour": 1})",
-                           "application/json");
+  auto r =
+      s.client().Post("/api/v1/cards", R"({"title": 3, "seed": "x", "tags": ["ok", "BAD TAG"], "colour": 1})",
+                      "application/json");
   expect_problem(r, 422);
   std::set<std::string> pointers;
   const Json problem = body_of(r);
@@ -141,15 +144,19 @@ TEST(Api, WritesNeedAKeyWhenKeysAreSetAndOnlyTheAuthorDeletes) {
   auto none = c.Post("/api/v1/cards", kCard, "application/json");
   expect_problem(none, 401);
   EXPECT_EQ(none->get_header_value("WWW-Authenticate"), "Bearer realm=\"socsim\"");
-  expect_problem(c.Post("/api/v1/cards", {{"Authorization", "Bearer wrong-secret-0123456789"}}, kCard, "application/json"), 401);
-  auto ok = c.Post("/api/v1/cards", {{"Authorization", "Bearer alice-secret-0123456789"}}, kCard, "application/json");
+  expect_problem(c.Post("/api/v1/cards", {{"Authorization", "Bearer wrong-secret-0123456789"}}, kCard,
+                        "application/json"),
+                 401);
+  auto ok = c.Post("/api/v1/cards", {{"Authorization", "Bearer alice-secret-0123456789"}}, kCard,
+                   "application/json");
   ASSERT_TRUE(ok);
   ASSERT_EQ(ok->status, 201);
   const std::string id = body_of(ok)["id"];
   EXPECT_EQ(body_of(ok)["author"], "alice");
   auto read = c.Get(("/api/v1/cards/" + id).c_str());
   EXPECT_EQ(read->status, 200) << "reads of cards need no key";
-  expect_problem(c.Delete(("/api/v1/cards/" + id).c_str(), {{"Authorization", "Bearer bob-secret-0123456789"}}), 403);
+  expect_problem(
+      c.Delete(("/api/v1/cards/" + id).c_str(), {{"Authorization", "Bearer bob-secret-0123456789"}}), 403);
   auto del = c.Delete(("/api/v1/cards/" + id).c_str(), {{"Authorization", "Bearer alice-secret-0123456789"}});
   ASSERT_TRUE(del);
   EXPECT_EQ(del->status, 204);
@@ -163,7 +170,8 @@ TEST(Api, PageWalkVisitsEveryCardExactlyOnce) {
   for (int i = 0; i < 17; ++i) {
     Json card = Json::parse(kCard);
     card["title"] = "card " + std::to_string(i);
-    created.insert(body_of(c.Post("/api/v1/cards", card.dump(), "application/json"))["id"].get<std::string>());
+    created.insert(
+        body_of(c.Post("/api/v1/cards", card.dump(), "application/json"))["id"].get<std::string>());
   }
   std::set<std::string> seen;
   std::string url = "/api/v1/cards?page_size=5";

@@ -20,7 +20,8 @@ TEST(Config, DefaultsMatchTheReadme) {
 }
 
 TEST(Config, FlagsOverrideEnvironment) {
-  auto c = load_config({"--port", "9000", "--db=/tmp/x.db"}, {{"SOCSIM_PORT", "7000"}, {"SOCSIM_WS_PORT", "7001"}});
+  auto c = load_config({"--port", "9000", "--db=/tmp/x.db"},
+                       {{"SOCSIM_PORT", "7000"}, {"SOCSIM_WS_PORT", "7001"}});
   ASSERT_TRUE(c) << c.error().message();
   EXPECT_EQ(c->port, 9000);
   EXPECT_EQ(c->ws_port, 7001);

@@ -28,9 +28,14 @@ std::set<std::string> pointers(const Json& problem) {
 }
 
 Json persona(const std::string& name, int age) {
-  return {{"name", name}, {"age", age}, {"gender", "female"}, {"routine", "She goes to bed at 11 pm and gets up at 7 am."},
-          {"personality", {"curious"}}, {"occupation", "She is a potter with a studio in the garden."},
-          {"thoughts", "She is preparing a market stall."}, {"lifestyle", "She lives alone and grows tomatoes."}};
+  return {{"name", name},
+          {"age", age},
+          {"gender", "female"},
+          {"routine", "She goes to bed at 11 pm and gets up at 7 am."},
+          {"personality", {"curious"}},
+          {"occupation", "She is a potter with a studio in the garden."},
+          {"thoughts", "She is preparing a market stall."},
+          {"lifestyle", "She lives alone and grows tomatoes."}};
 }
 
 TEST(HouseholdApi, PersonasArePaginatedPostedAndGenerated) {
@@ -62,16 +67,20 @@ TEST(HouseholdApi, PersonasArePaginatedPostedAndGenerated) {
   EXPECT_TRUE(pointers(Json::parse(bad->body)).count("/age"));
   EXPECT_EQ(get_json(c, "/api/v1/personas?page_size=100")["total"], 51);
 
-  auto gen = c.Post("/api/v1/personas/generate", R"({"count": 3, "seed": 8, "constraints": {"household_role": "grandparent"}})", "application/json");
+  auto gen = c.Post("/api/v1/personas/generate",
+                    R"({"count": 3, "seed": 8, "constraints": {"household_role": "grandparent"}})",
+                    "application/json");
   ASSERT_TRUE(gen);
   ASSERT_EQ(gen->status, 200) << gen->body;
   Json g = Json::parse(gen->body);
   ASSERT_EQ(g["personas"].size(), 3u);
   for (const auto& p : g["personas"]) EXPECT_GE(p["age"].get<int>(), 55);
-  auto stored = c.Post("/api/v1/personas/generate", R"({"count": 2, "seed": 8, "store": true})", "application/json");
+  auto stored =
+      c.Post("/api/v1/personas/generate", R"({"count": 2, "seed": 8, "store": true})", "application/json");
   EXPECT_EQ(stored->status, 201);
   EXPECT_EQ(get_json(c, "/api/v1/personas?page_size=100")["total"], 53);
-  auto wrong = c.Post("/api/v1/personas/generate", R"({"count": 0, "constraints": {"gender": "robot"}, "colour": 1})", "application/json");
+  auto wrong = c.Post("/api/v1/personas/generate",
+                      R"({"count": 0, "constraints": {"gender": "robot"}, "colour": 1})", "application/json");
   EXPECT_EQ(wrong->status, 422);
   const auto ptrs = pointers(Json::parse(wrong->body));
   for (const char* want : {"/count", "/constraints/gender", "/colour"}) EXPECT_TRUE(ptrs.count(want)) << want;
@@ -83,7 +92,8 @@ TEST(HouseholdApi, PersonasArePaginatedPostedAndGenerated) {
 TEST(HouseholdApi, HouseholdJobStoresASceneThatAnswersQueries) {
   TestServer s;
   auto c = s.client();
-  auto post = c.Post("/api/v1/households", R"({"rooms": 6, "residents": 2, "days": 2, "seed": 7})", "application/json");
+  auto post = c.Post("/api/v1/households", R"({"rooms": 6, "residents": 2, "days": 2, "seed": 7})",
+                     "application/json");
   ASSERT_TRUE(post);
   ASSERT_EQ(post->status, 202) << post->body;
   const std::string location = post->get_header_value("Location");
@@ -115,7 +125,9 @@ TEST(HouseholdApi, HouseholdJobStoresASceneThatAnswersQueries) {
     cursor = page["next_cursor"];
   }
   ASSERT_FALSE(events.empty());
-  std::sort(events.begin(), events.end(), [](const Json& a, const Json& b) { return a["end"] != b["end"] ? a["end"] < b["end"] : a["index"] < b["index"]; });
+  std::sort(events.begin(), events.end(), [](const Json& a, const Json& b) {
+    return a["end"] != b["end"] ? a["end"] < b["end"] : a["index"] < b["index"];
+  });
   const std::int64_t t = 86400 + 13 * 3600;
   for (const auto& e : events)
     if (e["end"].get<std::int64_t>() <= t)
@@ -154,12 +166,15 @@ TEST(HouseholdApi, HouseholdJobStoresASceneThatAnswersQueries) {
 TEST(HouseholdApi, BadHouseholdRequestsAreNamed) {
   TestServer s;
   auto c = s.client();
-  auto r = c.Post("/api/v1/households", R"({"rooms": 0, "days": 100, "residents": ["ben-okafor", 4]})", "application/json");
+  auto r = c.Post("/api/v1/households", R"({"rooms": 0, "days": 100, "residents": ["ben-okafor", 4]})",
+                  "application/json");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 422);
   const auto p = pointers(Json::parse(r->body));
-  for (const char* want : {"/rooms", "/days", "/residents/1"}) EXPECT_TRUE(p.count(want)) << want << " in " << r->body;
-  auto unknown = c.Post("/api/v1/households", R"({"rooms": 5, "residents": ["ben-okafor", "no-such-person"]})", "application/json");
+  for (const char* want : {"/rooms", "/days", "/residents/1"})
+    EXPECT_TRUE(p.count(want)) << want << " in " << r->body;
+  auto unknown = c.Post("/api/v1/households",
+                        R"({"rooms": 5, "residents": ["ben-okafor", "no-such-person"]})", "application/json");
   EXPECT_EQ(unknown->status, 422);
   EXPECT_TRUE(pointers(Json::parse(unknown->body)).count("/residents/1"));
   auto house = c.Post("/api/v1/households", R"({"house": {"rooms": "many"}})", "application/json");

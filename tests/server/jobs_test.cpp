@@ -64,7 +64,8 @@ TEST(Jobs, CancelStopsARunningJob) {
   TestServer s;
   auto& jobs = *s.services().jobs;
   auto id = jobs.submit("long", Json::object(), "anonymous", [](const JobContext& ctx) -> Result<Json> {
-    for (int i = 0; i < 10000 && !ctx.cancelled(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    for (int i = 0; i < 10000 && !ctx.cancelled(); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
     return Json{{"finished", true}};
   });
   ASSERT_TRUE(id);
@@ -94,7 +95,9 @@ TEST(Jobs, ListPagesThroughEveryJob) {
   auto& jobs = *s.services().jobs;
   std::set<std::string> ids;
   for (int i = 0; i < 7; ++i) {
-    auto id = jobs.submit("tiny", {{"i", i}}, "anonymous", [i](const JobContext&) -> Result<Json> { return Json{{"i", i}}; });
+    auto id = jobs.submit("tiny", {{"i", i}}, "anonymous", [i](const JobContext&) -> Result<Json> {
+      return Json{{"i", i}};
+    });
     ASSERT_TRUE(id);
     ids.insert(*id);
   }
@@ -119,11 +122,14 @@ TEST(Jobs, ARestartMarksInterruptedJobsFailed) {
   {
     JobRunner runner(*store, hub, 1);
     std::atomic<bool> started{false};
-    id = runner.submit("slow", Json::object(), "anonymous", [&](const JobContext& ctx) -> Result<Json> {
-           started = true;
-           while (!ctx.cancelled()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
-           return Json::object();
-         }).value();
+    id = runner
+             .submit("slow", Json::object(), "anonymous",
+                     [&](const JobContext& ctx) -> Result<Json> {
+                       started = true;
+                       while (!ctx.cancelled()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                       return Json::object();
+                     })
+             .value();
     while (!started) std::this_thread::sleep_for(std::chrono::milliseconds(2));
     // Simulate a crash: the row says running when the next process starts.
     ASSERT_TRUE(store->write([&](store::Database& db) -> Result<bool> {

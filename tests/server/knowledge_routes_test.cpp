@@ -28,7 +28,8 @@ TEST(KnowledgeRoutes, QueueAtCounterFindsTheQueueingNodes) {
   auto c = s.client();
   Json r = get_json(c, "/api/v1/knowledge/search?q=queue+at+counter&kind=behavior_node&k=3");
   std::set<std::string> top;
-  for (const auto& h : r["results"]["behavior_node"]["hits"]) top.insert(h["provenance"]["id"].get<std::string>());
+  for (const auto& h : r["results"]["behavior_node"]["hits"])
+    top.insert(h["provenance"]["id"].get<std::string>());
   EXPECT_EQ(top, (std::set<std::string>{"JoinQueue", "AdvanceQueue", "ServeAtCounter"}));
 }
 

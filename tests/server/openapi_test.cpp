@@ -31,7 +31,8 @@ TEST(OpenApi, EveryDocumentedOperationIsServed) {
                                                : c.Delete(url.c_str());
       ++operations;
       ASSERT_TRUE(res) << method << " " << url;
-      EXPECT_EQ(res->body.find("no resource at"), std::string::npos) << method << " " << url << " is documented but not served";
+      EXPECT_EQ(res->body.find("no resource at"), std::string::npos)
+          << method << " " << url << " is documented but not served";
     }
   }
   EXPECT_GE(operations, 15);

@@ -35,7 +35,10 @@ TEST(Scenarios, APromptBecomesACardWithItsTrajectoryLogAndReplaysIdentically) {
   TestServer s;
   auto c = s.client();
   const Json job = finished_job(
-      s, c, post(c, "/api/v1/scenarios", {{"prompt", "visitors queue at the reception desk of a clinic"}, {"seed", 7}, {"duration_s", 10}}));
+      s, c,
+      post(
+          c, "/api/v1/scenarios",
+          {{"prompt", "visitors queue at the reception desk of a clinic"}, {"seed", 7}, {"duration_s", 10}}));
   ASSERT_EQ(job["status"], "succeeded") << job.dump();
   EXPECT_EQ(job["progress"], 1.0);
   const std::string card_id = job["result"]["card_id"];
@@ -79,7 +82,9 @@ TEST(Scenarios, BadRequestsNameTheirFields) {
       {{{"prompt", "a queue"}, {"generator", "llm"}}, "/generator"},
       {{{"prompt", "a queue"}, {"world_id", "wld_aaaaaaaaaaaaaaaaaaaa"}}, "/world_id"},
       {{{"prompt", "a queue"}, {"world", {{"zones", Json::array()}}}}, "/world"},
-      {{{"prompt", "a queue"}, {"world", "zones: [\n  {name: a}\n"}}, "/world", 400},  // YAML syntax: line named
+      {{{"prompt", "a queue"}, {"world", "zones: [\n  {name: a}\n"}},
+       "/world",
+       400},  // YAML syntax: line named
   };
   for (const auto& k : cases) {
     auto r = post(c, "/api/v1/scenarios", k.body);
@@ -99,12 +104,17 @@ TEST(Scenarios, AgentCountsAndDurationsAreBoundedByConfig) {
   config.max_scenario_seconds = 8;
   TestServer s(config);
   auto c = s.client();
-  auto r = post(c, "/api/v1/scenarios", {{"prompt", "a crowd of two hundred people walks through"}, {"agents", 11}, {"duration_s", 9}});
+  auto r =
+      post(c, "/api/v1/scenarios",
+           {{"prompt", "a crowd of two hundred people walks through"}, {"agents", 11}, {"duration_s", 9}});
   ASSERT_EQ(r->status, 422) << r->body;
   EXPECT_THAT(r->body, HasSubstr("\"/agents\""));
   EXPECT_THAT(r->body, HasSubstr("\"/duration_s\""));
   // Within the bounds, a prompt asking for more people gets at most the configured number.
-  const Json job = finished_job(s, c, post(c, "/api/v1/scenarios", {{"prompt", "a crowd of two hundred people walks through"}, {"duration_s", 3}}));
+  const Json job =
+      finished_job(s, c,
+                   post(c, "/api/v1/scenarios",
+                        {{"prompt", "a crowd of two hundred people walks through"}, {"duration_s", 3}}));
   ASSERT_EQ(job["status"], "succeeded") << job.dump();
   EXPECT_LE(job["result"]["trajectory_log"]["agents"].get<int>(), 10);
 }
@@ -116,9 +126,12 @@ TEST(Scenarios, AStoredWorldIsUsedByItsId) {
   ASSERT_EQ(w->status, 201) << w->body;
   const std::string world_id = Json::parse(w->body)["id"];
   const Json job = finished_job(
-      s, c, post(c, "/api/v1/scenarios", {{"prompt", "a fire drill: everyone evacuates"}, {"world_id", world_id}, {"duration_s", 5}}));
+      s, c,
+      post(c, "/api/v1/scenarios",
+           {{"prompt", "a fire drill: everyone evacuates"}, {"world_id", world_id}, {"duration_s", 5}}));
   ASSERT_EQ(job["status"], "succeeded") << job.dump();
-  const Json card = Json::parse(c.Get(("/api/v1/cards/" + job["result"]["card_id"].get<std::string>()).c_str())->body);
+  const Json card =
+      Json::parse(c.Get(("/api/v1/cards/" + job["result"]["card_id"].get<std::string>()).c_str())->body);
   EXPECT_EQ(card["provenance"]["world_id"], world_id);
   EXPECT_EQ(card["domain"], "office");
 }
@@ -139,22 +152,33 @@ TEST(Scenarios, AnLlmJobRecordsItsPromptsTokensAndCacheHits) {
   std::string zone_a = world["zones"][0]["name"], zone_b = world["zones"][1]["name"];
   const Json answer = {
       {"spotlight_agents",
-       {{{"id", "nurse"}, {"role", "nurse"}, {"spawn_roi", zone_a},
-         {"behavior_tree", "<root BTCPP_format=\"4\"><BehaviorTree ID=\"N\"><WaitAt agent_id=\"{id}\" location=\"" + zone_b +
-                               "\" duration=\"20\"/></BehaviorTree></root>"}}}},
+       {{{"id", "nurse"},
+         {"role", "nurse"},
+         {"spawn_roi", zone_a},
+         {"behavior_tree",
+          "<root BTCPP_format=\"4\"><BehaviorTree ID=\"N\"><WaitAt agent_id=\"{id}\" location=\"" + zone_b +
+              "\" duration=\"20\"/></BehaviorTree></root>"}}}},
       {"ambient_groups",
-       {{{"name", "visitors"}, {"description", "visitors walking in"}, {"start_roi", zone_a}, {"goal_roi", zone_b},
-         {"size", 4}, {"speed", 1.2}}}}};
+       {{{"name", "visitors"},
+         {"description", "visitors walking in"},
+         {"start_roi", zone_a},
+         {"goal_roi", zone_b},
+         {"size", 4},
+         {"speed", 1.2}}}}};
   llm.push_chat(socsim::testing::ScriptedServer::chat(answer.dump(), "stop", 900, 150));
-  const Json body = {{"prompt", "a nurse waits while visitors walk in"}, {"world_id", world_id}, {"generator", "llm"},
-                     {"seed", 2}, {"duration_s", 4}};
+  const Json body = {{"prompt", "a nurse waits while visitors walk in"},
+                     {"world_id", world_id},
+                     {"generator", "llm"},
+                     {"seed", 2},
+                     {"duration_s", 4}};
   const Json job = finished_job(s, c, post(c, "/api/v1/scenarios", body));
   ASSERT_EQ(job["status"], "succeeded") << job.dump();
   ASSERT_TRUE(job["llm"].is_object()) << job.dump();
   EXPECT_EQ(job["llm"]["totals"]["prompt_tokens"], 900);
   EXPECT_EQ(job["llm"]["calls"][0]["artifact"], "scenario_program");
   EXPECT_THAT(job["llm"]["calls"][0]["prompt"].dump(), HasSubstr("a nurse waits while visitors walk in"));
-  const Json card = Json::parse(c.Get(("/api/v1/cards/" + job["result"]["card_id"].get<std::string>()).c_str())->body);
+  const Json card =
+      Json::parse(c.Get(("/api/v1/cards/" + job["result"]["card_id"].get<std::string>()).c_str())->body);
   EXPECT_EQ(card["generator"]["name"], "llm");
   EXPECT_EQ(card["generator"]["model"], "scripted");
   EXPECT_EQ(card["provenance"]["program"]["llm"]["prompt_tokens"], 900);
@@ -165,7 +189,8 @@ TEST(Scenarios, AnLlmJobRecordsItsPromptsTokensAndCacheHits) {
   ASSERT_EQ(again["status"], "succeeded") << again.dump();
   EXPECT_EQ(llm.count(), 1);
   EXPECT_EQ(again["llm"]["totals"]["cache_hits"], 1);
-  const Json card2 = Json::parse(c.Get(("/api/v1/cards/" + again["result"]["card_id"].get<std::string>()).c_str())->body);
+  const Json card2 =
+      Json::parse(c.Get(("/api/v1/cards/" + again["result"]["card_id"].get<std::string>()).c_str())->body);
   EXPECT_EQ(card2["provenance"]["program"]["llm"]["cache_hits"], 1);
   EXPECT_EQ(card2["trajectory_log"]["sha256"], card["trajectory_log"]["sha256"]);
 }

@@ -54,7 +54,8 @@ TEST(Worlds, OfflineGenerationIsStoredWithComplianceAndProvenance) {
     EXPECT_TRUE(check.contains("section") && check.contains("required") && check.contains("status"));
   }
   bool ibc_corridor = false;
-  for (const auto& k : w["provenance"]["knowledge"]) ibc_corridor = ibc_corridor || k["ref_id"] == "ibc2018_1020_corridor_i2";
+  for (const auto& k : w["provenance"]["knowledge"])
+    ibc_corridor = ibc_corridor || k["ref_id"] == "ibc2018_1020_corridor_i2";
   EXPECT_TRUE(ibc_corridor);
   EXPECT_EQ(w["provenance"]["classification"]["type"], "hospital");
 
@@ -76,13 +77,16 @@ TEST(Worlds, OfflineGenerationIsStoredWithComplianceAndProvenance) {
 TEST(Worlds, ExportsInEveryFormat) {
   TestServer s;
   auto c = s.client();
-  Json graph = {{"domain", "office"},
-                {"rooms", Json::array({{{"name", "hall"}, {"type", "corridor"}}, {{"name", "desk_area"}, {"type", "open_office"}},
-                                       {{"name", "meet"}, {"type", "meeting_room"}}})},
-                {"adjacency", Json::array({Json::array({"hall", "desk_area"}), Json::array({"hall", "meet"})})}};
+  Json graph = {
+      {"domain", "office"},
+      {"rooms", Json::array({{{"name", "hall"}, {"type", "corridor"}},
+                             {{"name", "desk_area"}, {"type", "open_office"}},
+                             {{"name", "meet"}, {"type", "meeting_room"}}})},
+      {"adjacency", Json::array({Json::array({"hall", "desk_area"}), Json::array({"hall", "meet"})})}};
   auto r = post(c, "/api/v1/worlds", {{"scene_graph", graph}, {"seed", 2}, {"generator", "offline"}});
   ASSERT_EQ(r->status, 201) << r->body;
-  const std::string base = "/api/v1/worlds/" + Json::parse(r->body)["id"].get<std::string>() + "/export?format=";
+  const std::string base =
+      "/api/v1/worlds/" + Json::parse(r->body)["id"].get<std::string>() + "/export?format=";
   auto sdf = c.Get((base + "sdf").c_str());
   EXPECT_EQ(sdf->status, 200);
   EXPECT_THAT(sdf->body, HasSubstr("<sdf version=\"1.7\">"));
@@ -108,15 +112,18 @@ TEST(Worlds, BadRequestsNameTheirFields) {
   auto c = s.client();
   auto neither = post(c, "/api/v1/worlds", {{"seed", 1}});
   EXPECT_EQ(neither->status, 422);
-  auto both = post(c, "/api/v1/worlds", {{"prompt", "a house"}, {"scene_graph", {{"rooms", Json::array()}}}, {"seed", -1}});
+  auto both = post(c, "/api/v1/worlds",
+                   {{"prompt", "a house"}, {"scene_graph", {{"rooms", Json::array()}}}, {"seed", -1}});
   EXPECT_EQ(both->status, 422);
   std::vector<std::string> pointers;
   const Json problem = Json::parse(both->body);
   for (const auto& e : problem["errors"]) pointers.push_back(e["pointer"]);
   EXPECT_THAT(pointers, ::testing::IsSupersetOf({"/prompt", "/seed"}));
-  auto graph = post(c, "/api/v1/worlds",
-                    {{"scene_graph", {{"rooms", Json::array({{{"name", "a"}, {"type", "kitchen"}}, {{"name", "b"}, {"type", "bedroom"}}})},
-                                      {"adjacency", Json::array({Json::array({"a", "zz"})})}}}});
+  auto graph = post(
+      c, "/api/v1/worlds",
+      {{"scene_graph",
+        {{"rooms", Json::array({{{"name", "a"}, {"type", "kitchen"}}, {{"name", "b"}, {"type", "bedroom"}}})},
+         {"adjacency", Json::array({Json::array({"a", "zz"})})}}}});
   EXPECT_EQ(graph->status, 422);
   EXPECT_EQ(Json::parse(graph->body)["errors"][0]["pointer"], "/scene_graph/adjacency/0/1");
   auto llm = post(c, "/api/v1/worlds", {{"prompt", "an office"}, {"generator", "llm"}});
@@ -137,7 +144,8 @@ TEST(Worlds, ListIsPaginatedNewestFirst) {
   ASSERT_EQ(first["items"].size(), 2u);
   EXPECT_EQ(first["items"][0]["id"], ids[2]);
   ASSERT_TRUE(first["next_cursor"].is_string());
-  const Json second = json_of(c.Get(("/api/v1/worlds?page_size=2&cursor=" + first["next_cursor"].get<std::string>()).c_str()));
+  const Json second = json_of(
+      c.Get(("/api/v1/worlds?page_size=2&cursor=" + first["next_cursor"].get<std::string>()).c_str()));
   ASSERT_EQ(second["items"].size(), 1u);
   EXPECT_EQ(second["items"][0]["id"], ids[0]);
   EXPECT_TRUE(second["next_cursor"].is_null());
@@ -192,19 +200,29 @@ TEST(Worlds, BrokenWorldYamlGives422NamingLineAndField) {
   const std::string two = "zones:\n  - {name: a, polygon: [[0, 0], [5, 0], [5, 5], [0, 5]]}\n";
   const std::vector<Broken> cases = {
       {"zone without polygon", "zones:\n  - name: office\n    type: office\n", "/zones/0/polygon", 2},
-      {"self-crossing polygon", "zones:\n  - name: x\n    polygon: [[0, 0], [5, 5], [5, 0], [0, 5]]\n", "/zones/0/polygon", 3},
+      {"self-crossing polygon", "zones:\n  - name: x\n    polygon: [[0, 0], [5, 5], [5, 0], [0, 5]]\n",
+       "/zones/0/polygon", 3},
       {"door on no wall", two + "doors:\n  - {name: d, pose: [2.5, 2.5], width: 1}\n", "/doors/0/pose", 4},
-      {"ROI outside every zone", two + "segmentation:\n  - {name: q, kind: queue_lane, polygon: [[20, 20], [21, 20], [21, 24]]}\n",
+      {"ROI outside every zone",
+       two + "segmentation:\n  - {name: q, kind: queue_lane, polygon: [[20, 20], [21, 20], [21, 24]]}\n",
        "/segmentation/0/polygon", 4},
-      {"duplicate name", two + "entities:\n  - {type: chair, name: a, pose: [1, 1]}\n", "/entities/0/name", 4},
-      {"unknown field", "zones:\n  - name: a\n    colour: blue\n    polygon: [[0, 0], [5, 0], [5, 5], [0, 5]]\n", "/zones/0/colour", 3},
-      {"text where a number belongs", two + "doors:\n  - {name: d, pose: [5, 2], width: broad}\n", "/doors/0/width", 4},
-      {"overlapping zones", two + "  - {name: b, polygon: [[4, 0], [9, 0], [9, 5], [4, 5]]}\n", "/zones/1/polygon", 3},
+      {"duplicate name", two + "entities:\n  - {type: chair, name: a, pose: [1, 1]}\n", "/entities/0/name",
+       4},
+      {"unknown field",
+       "zones:\n  - name: a\n    colour: blue\n    polygon: [[0, 0], [5, 0], [5, 5], [0, 5]]\n",
+       "/zones/0/colour", 3},
+      {"text where a number belongs", two + "doors:\n  - {name: d, pose: [5, 2], width: broad}\n",
+       "/doors/0/width", 4},
+      {"overlapping zones", two + "  - {name: b, polygon: [[4, 0], [9, 0], [9, 5], [4, 5]]}\n",
+       "/zones/1/polygon", 3},
       {"unreachable zone", two + "  - {name: b, polygon: [[5, 0], [9, 0], [9, 5], [5, 5]]}\n", "/zones/1", 3},
-      {"door to an unknown zone", two + "doors:\n  - {name: d, pose: [5, 2], width: 1, connects: [a, garage]}\n",
-       "/doors/0/connects/1", 4},
-      {"entity outside every zone", two + "entities:\n  - {type: bed, name: bed_1, pose: [30, 30]}\n", "/entities/0/pose", 4},
-      {"unknown ROI kind", two + "segmentation:\n  - {name: r, kind: dancefloor, polygon: [[1, 1], [2, 1], [2, 2]]}\n",
+      {"door to an unknown zone",
+       two + "doors:\n  - {name: d, pose: [5, 2], width: 1, connects: [a, garage]}\n", "/doors/0/connects/1",
+       4},
+      {"entity outside every zone", two + "entities:\n  - {type: bed, name: bed_1, pose: [30, 30]}\n",
+       "/entities/0/pose", 4},
+      {"unknown ROI kind",
+       two + "segmentation:\n  - {name: r, kind: dancefloor, polygon: [[1, 1], [2, 1], [2, 2]]}\n",
        "/segmentation/0/kind", 4},
       {"unknown unit", "units: {length: furlong}\n" + two, "/units/length", 1},
   };
@@ -219,7 +237,8 @@ TEST(Worlds, BrokenWorldYamlGives422NamingLineAndField) {
     EXPECT_TRUE(named) << k.what << ": " << r->body;
   }
   // Broken YAML syntax is a finding too: 422 with its line.
-  auto syntax = c.Post("/api/v1/worlds/validate", "zones:\n  - {name: a, polygon: [[0, 0], [1, 0]\n", "text/yaml");
+  auto syntax =
+      c.Post("/api/v1/worlds/validate", "zones:\n  - {name: a, polygon: [[0, 0], [1, 0]\n", "text/yaml");
   EXPECT_EQ(syntax->status, 422);
   EXPECT_GT(Json::parse(syntax->body)["errors"][0].value("line", 0), 0);
   // The server is still up.
@@ -251,7 +270,8 @@ TEST(Worlds, LlmEndpointDownFailsTheJobNamingItWhileOfflineStillWorks) {
   TestServer s(config);
   auto c = s.client();
   const auto start = std::chrono::steady_clock::now();
-  auto r = post(c, "/api/v1/worlds", {{"prompt", "an office with 2 meeting rooms"}, {"generator", "llm"}, {"seed", 1}});
+  auto r = post(c, "/api/v1/worlds",
+                {{"prompt", "an office with 2 meeting rooms"}, {"generator", "llm"}, {"seed", 1}});
   ASSERT_EQ(r->status, 202) << r->body;
   const std::string location = r->get_header_value("Location");
   const std::string job = Json::parse(r->body)["id"];
@@ -264,7 +284,8 @@ TEST(Worlds, LlmEndpointDownFailsTheJobNamingItWhileOfflineStillWorks) {
   EXPECT_EQ(j["error"]["status"], 502);
   EXPECT_THAT(j["error"]["detail"].get<std::string>(), HasSubstr("127.0.0.1:" + std::to_string(port)));
 
-  auto offline = post(c, "/api/v1/worlds", {{"prompt", "an office with 2 meeting rooms"}, {"generator", "offline"}, {"seed", 1}});
+  auto offline = post(c, "/api/v1/worlds",
+                      {{"prompt", "an office with 2 meeting rooms"}, {"generator", "offline"}, {"seed", 1}});
   EXPECT_EQ(offline->status, 201) << offline->body;
 }
 
