@@ -586,7 +586,11 @@ Result<Json> SimulationSession::control(const Json& command) {
   Json st = status_locked();
   Json message = {{"type", "status"}};
   for (const char* k : {"status", "t", "speed", "paused", "frame_hz"}) message[k] = st[k];
-  broadcast_locked(text_locked(message));
+  // A viewer that does not read keeps only the latest statuses (commands cannot grow its queue).
+  auto status_message = std::make_shared<WireMessage>();
+  status_message->bytes = message.dump(-1, ' ', false, Json::error_handler_t::replace);
+  status_message->droppable = true;
+  broadcast_locked(status_message);
   return st;
 }
 

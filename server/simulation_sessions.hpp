@@ -39,12 +39,14 @@ struct SimulationLimits {
 
 enum class WireFormat : std::uint8_t { kJson, kBinary };
 
-// One message to viewers. Frames may be dropped for a slow viewer; other messages may not.
+// One message to viewers. Frames (and superseded messages such as "status") may be dropped for a
+// slow viewer; hello, targets and end may not.
 struct WireMessage {
   std::string bytes;
   bool binary = false;
   bool frame = false;
-  bool last = false;  // "end": the viewer's connection closes after it
+  bool droppable = false;  // implied by frame
+  bool last = false;       // "end": the viewer's connection closes after it
 };
 using WirePtr = std::shared_ptr<const WireMessage>;
 

@@ -93,12 +93,6 @@ std::optional<std::string> query_value(std::string_view target, std::string_view
   return std::nullopt;
 }
 
-WirePtr text_message(const Json& j) {
-  auto m = std::make_shared<WireMessage>();
-  m->bytes = j.dump(-1, ' ', false, Json::error_handler_t::replace);
-  return m;
-}
-
 class Session : public std::enable_shared_from_this<Session> {
  public:
   Session(tcp::socket socket, Shared& shared) : ws_(std::move(socket)), shared_(shared) {}
@@ -126,13 +120,16 @@ class Session : public std::enable_shared_from_this<Session> {
     if (closed_ || close_after_) return;
     const std::size_t limit =
         simulation_ ? shared_.options.max_queued_simulation_frames : shared_.options.max_queued_frames;
-    if (message->frame && queue_.size() >= limit) {
-      // Drop the oldest frame for a slow reader; hello, status, targets and end are kept.
-      auto oldest = std::find_if(queue_.begin(), queue_.end(), [](const WirePtr& m) { return m->frame; });
+    const auto droppable = [](const WirePtr& m) { return m->frame || m->droppable; };
+    if (droppable(message) && queue_.size() >= limit) {
+      // Drop the oldest frame (or status, error) for a slow reader; hello, targets and end are kept.
+      auto oldest = std::find_if(queue_.begin(), queue_.end(), droppable);
       if (oldest != queue_.end()) {
+        if ((*oldest)->frame) {
+          ++dropped_;
+          if (counters_) ++counters_->dropped;
+        }
         queue_.erase(oldest);
-        ++dropped_;
-        if (counters_) ++counters_->dropped;
       }
     }
     queue_.push_back(std::move(message));
@@ -248,7 +245,10 @@ class Session : public std::enable_shared_from_this<Session> {
     Json problem = done.error().to_problem("/ws/simulations/" + simulation_->id());
     problem["type"] = "error";
     problem["problem"] = done.error().to_problem()["type"];
-    enqueue(text_message(problem));
+    auto m = std::make_shared<WireMessage>();
+    m->bytes = problem.dump(-1, ' ', false, Json::error_handler_t::replace);
+    m->droppable = true;  // a client that sends bad commands and never reads cannot grow its queue
+    enqueue(std::move(m));
   }
 
   void write_next() {

@@ -501,6 +501,26 @@ TEST(Simulations, ASlowViewerDoesNotSlowAnother) {
   EXPECT_LE(d.ws->stats().frames_queued, 2 * 8u + 4u) << "queues stay bounded";
 }
 
+TEST(Simulations, CommandsFromAViewerThatNeverReadsCannotGrowItsQueue) {
+  Daemon d;
+  const std::string id = d.start({{"program", walkers()}});
+  Viewer spammer(d.ws_port, ws_path(id), "", 4096);
+  ASSERT_TRUE(spammer.read());
+  // Each bad command is answered with an error, each pause/resume with a status to every viewer;
+  // the spammer reads none of them.
+  for (int i = 0; i < 20000; ++i) {
+    spammer.command({{"action", "fly"}});
+    spammer.command({{"action", i % 2 ? "resume" : "pause"}});
+  }
+  spammer.command({{"action", "speed"}, {"value", 3}});  // the last command, to know when all were handled
+  for (int i = 0; i < 1000 && d.get("/api/v1/simulations/" + id)["speed"] != 3.0; ++i)
+    std::this_thread::sleep_for(20ms);
+  const Json st = d.get("/api/v1/simulations/" + id);
+  ASSERT_EQ(st["speed"], 3.0);
+  EXPECT_EQ(st["status"], "running");
+  EXPECT_LE(d.ws->stats().frames_queued, 8u + 2u) << "errors and statuses are dropped like frames";
+}
+
 // A card with a recorded log, built as the scenario pipeline would (runner → recorder → store).
 std::string recorded_card(testing::TestServer& s, double seconds, std::string* sha) {
   auto program = crowd::program_from_json(walkers(2)).value();
