@@ -53,7 +53,8 @@ struct Shared {
   SimulationSessions* simulations;
   std::shared_ptr<IoGate> gate = std::make_shared<IoGate>();
   std::set<std::shared_ptr<Session>> sessions;  // touched only on the I/O thread
-  Shared(WsOptions o, EventHub& e, SimulationSessions* sims) : options(std::move(o)), events(e), simulations(sims) {
+  Shared(WsOptions o, EventHub& e, SimulationSessions* sims)
+      : options(std::move(o)), events(e), simulations(sims) {
     gate->io = &io;
   }
 };
@@ -86,7 +87,8 @@ std::optional<std::string> query_value(std::string_view target, std::string_view
     const auto amp = rest.find('&');
     const std::string_view pair = rest.substr(0, amp);
     const auto eq = pair.find('=');
-    if (pair.substr(0, eq) == name) return std::string(eq == std::string_view::npos ? "" : pair.substr(eq + 1));
+    if (pair.substr(0, eq) == name)
+      return std::string(eq == std::string_view::npos ? "" : pair.substr(eq + 1));
     if (amp == std::string_view::npos) break;
     rest = rest.substr(amp + 1);
   }
@@ -98,8 +100,9 @@ class Session : public std::enable_shared_from_this<Session> {
   Session(tcp::socket socket, Shared& shared) : ws_(std::move(socket)), shared_(shared) {}
 
   void start() {
-    http::async_read(ws_.next_layer(), buffer_, request_,
-                     [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_request(ec); });
+    http::async_read(
+        ws_.next_layer(), buffer_, request_,
+        [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_request(ec); });
   }
 
   [[nodiscard]] const std::string& topic() const { return topic_; }
@@ -154,13 +157,15 @@ class Session : public std::enable_shared_from_this<Session> {
     if (ec) return finish();
     const std::string target(request_.target());
     const std::string path = target.substr(0, target.find('?'));
-    if (path == "/ws" || path == "/ws/catalogue") topic_ = "cards";
-    else if (path == "/ws/jobs") topic_ = "jobs";
+    if (path == "/ws" || path == "/ws/catalogue")
+      topic_ = "cards";
+    else if (path == "/ws/jobs")
+      topic_ = "jobs";
     else if (path.rfind(kSimulationPath, 0) == 0 && websocket::is_upgrade(request_))
       return on_simulation_request(target, path.substr(kSimulationPath.size()));
     if (!websocket::is_upgrade(request_) || topic_.empty())
-      return refuse(Error(ErrorCode::kNotFound,
-                          "WebSocket endpoints: /ws/catalogue, /ws/jobs, /ws/simulations/{id}"));
+      return refuse(
+          Error(ErrorCode::kNotFound, "WebSocket endpoints: /ws/catalogue, /ws/jobs, /ws/simulations/{id}"));
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
   }
@@ -168,18 +173,21 @@ class Session : public std::enable_shared_from_this<Session> {
   // /ws/simulations/{id}[?format=json|binary]: attach as a viewer before accepting, so an unknown,
   // ended or full session is refused with an HTTP problem.
   void on_simulation_request(const std::string& target, const std::string& id) {
-    if (!shared_.simulations) return refuse(Error(ErrorCode::kNotFound, "no simulation with id '" + id + "'"));
+    if (!shared_.simulations)
+      return refuse(Error(ErrorCode::kNotFound, "no simulation with id '" + id + "'"));
     auto session = shared_.simulations->find(id);
     if (!session) return refuse(session.error());
     WireFormat format = WireFormat::kJson;
     std::string protocol;
     if (auto q = query_value(target, "format")) {
-      if (*q == "binary") format = WireFormat::kBinary;
+      if (*q == "binary")
+        format = WireFormat::kBinary;
       else if (*q != "json")
         return refuse(Error(ErrorCode::kValidation, "unknown frame format",
                             {FieldError{"", "must be json or binary", "format", 0, 0}}));
     }
-    for (const std::string& p : offered_protocols(std::string(request_[http::field::sec_websocket_protocol]))) {
+    for (const std::string& p :
+         offered_protocols(std::string(request_[http::field::sec_websocket_protocol]))) {
       if (p == kBinaryProtocol || p == kJsonProtocol) {  // the client's first known choice wins
         protocol = p;
         format = p == kBinaryProtocol ? WireFormat::kBinary : WireFormat::kJson;
@@ -208,8 +216,8 @@ class Session : public std::enable_shared_from_this<Session> {
       res.set(http::field::server, "socsim");
       if (!protocol.empty()) res.set(http::field::sec_websocket_protocol, protocol);
     }));
-    ws_.auto_fragment(false);           // one WebSocket frame per message: fewer writes
-    ws_.read_message_max(64 * 1024);    // control commands are small
+    ws_.auto_fragment(false);         // one WebSocket frame per message: fewer writes
+    ws_.read_message_max(64 * 1024);  // control commands are small
     ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
   }
 
@@ -220,7 +228,9 @@ class Session : public std::enable_shared_from_this<Session> {
       if (!queue_.empty() && !writing_) write_next();
     } else {
       ws_.text(true);
-      send(nlohmann::json{{"type", "hello"}, {"server", "socsim"}, {"version", build::kVersion}, {"topic", topic_}}.dump());
+      send(nlohmann::json{
+          {"type", "hello"}, {"server", "socsim"}, {"version", build::kVersion}, {"topic", topic_}}
+               .dump());
     }
     read_loop();
   }
@@ -240,7 +250,8 @@ class Session : public std::enable_shared_from_this<Session> {
   // answered to this viewer only.
   void on_command(const std::string& text) {
     auto command = parse_json_untrusted(text);
-    Result<Json> done = command ? simulation_->control(*command) : Result<Json>(tl::unexpected(command.error()));
+    Result<Json> done =
+        command ? simulation_->control(*command) : Result<Json>(tl::unexpected(command.error()));
     if (done) return;
     Json problem = done.error().to_problem("/ws/simulations/" + simulation_->id());
     problem["type"] = "error";
@@ -263,17 +274,19 @@ class Session : public std::enable_shared_from_this<Session> {
     queue_.pop_front();
     if (current_->last) close_after_ = true;
     ws_.binary(current_->binary);
-    ws_.async_write(asio::buffer(current_->bytes), [self = shared_from_this()](beast::error_code ec, std::size_t) {
-      if (ec) return self->finish();
-      if (self->counters_ && self->current_->frame) ++self->counters_->delivered;
-      self->write_next();
-    });
+    ws_.async_write(asio::buffer(current_->bytes),
+                    [self = shared_from_this()](beast::error_code ec, std::size_t) {
+                      if (ec) return self->finish();
+                      if (self->counters_ && self->current_->frame) ++self->counters_->delivered;
+                      self->write_next();
+                    });
   }
 
   // After a simulation's "end": a normal close, then forget the session.
   void close() {
     queue_.clear();
-    ws_.async_close(websocket::close_code::normal, [self = shared_from_this()](beast::error_code) { self->finish(); });
+    ws_.async_close(websocket::close_code::normal,
+                    [self = shared_from_this()](beast::error_code) { self->finish(); });
   }
 
   // Forgets the session. The socket is not closed under a pending operation (Beast's stream
@@ -293,7 +306,7 @@ class Session : public std::enable_shared_from_this<Session> {
   http::request<http::string_body> request_;
   std::deque<WirePtr> queue_;
   WirePtr current_;
-  std::string topic_;  // "cards" or "jobs", from the path
+  std::string topic_;                              // "cards" or "jobs", from the path
   std::shared_ptr<SimulationSession> simulation_;  // set for /ws/simulations/{id}
   std::unique_ptr<ViewerLease> lease_;
   std::shared_ptr<ViewerCounters> counters_;
@@ -314,7 +327,8 @@ class Session : public std::enable_shared_from_this<Session> {
 }  // namespace
 
 struct WsServer::Impl {
-  Impl(WsOptions o, EventHub& e, SimulationSessions* sims) : shared(std::move(o), e, sims), acceptor(shared.io) {}
+  Impl(WsOptions o, EventHub& e, SimulationSessions* sims)
+      : shared(std::move(o), e, sims), acceptor(shared.io) {}
   Shared shared;
   tcp::acceptor acceptor;
   std::thread thread;
@@ -345,7 +359,9 @@ WsServer::WsServer(WsOptions options, Services& services)
           }(),
           services.events, services.simulations.get()) {}
 
-WsServer::~WsServer() { stop(); }
+WsServer::~WsServer() {
+  stop();
+}
 
 Result<int> WsServer::bind() {
   beast::error_code ec;
@@ -382,12 +398,13 @@ WsStats WsServer::stats() {
 
 void WsServer::start() {
   Impl* impl = impl_.get();
-  impl->subscription = impl->shared.events.subscribe([impl](const std::string& topic, const std::string& payload) {
-    asio::post(impl->shared.io, [impl, topic, payload] {
-      for (const auto& s : impl->shared.sessions)
-        if (s->topic() == topic) s->send(payload);
-    });
-  });
+  impl->subscription =
+      impl->shared.events.subscribe([impl](const std::string& topic, const std::string& payload) {
+        asio::post(impl->shared.io, [impl, topic, payload] {
+          for (const auto& s : impl->shared.sessions)
+            if (s->topic() == topic) s->send(payload);
+        });
+      });
   impl->accept();
   impl->thread = std::thread([impl] { impl->shared.io.run(); });
 }
