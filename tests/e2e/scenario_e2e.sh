@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Text to scenario as a lab meets it from the shell: the real `socsim serve`, curl, a real
 # SQLite file. Usage: scenario_e2e.sh /path/to/socsim
+# (No `producer | grep -q` under pipefail: grep's early exit would fail the producer with SIGPIPE.)
 # Covers: POST /scenarios → job with progress → card; the log downloads and its hash is the
 # card's; replay job identical; CSV/HuNavSim/pedsim exports; a live session of the card streams
 # frames over WebSocket (Python standard library client) and takes pause/seek/stop; the CLI's
@@ -70,10 +71,13 @@ echo "ok - replay identical"
 
 # 4. Exports.
 curl -fsS "$BASE/cards/$CARD/export?format=csv" -o "$WORK/traj.csv"
-head -1 "$WORK/traj.csv" | grep -q '^t,id,x,y,vx,vy,state' || fail "CSV header"
+grep -q '^t,id,x,y,vx,vy,state' <(head -1 "$WORK/traj.csv") || fail "CSV header"
 [ "$(wc -l < "$WORK/traj.csv")" -gt 100 ] || fail "CSV too short"
-curl -fsS "$BASE/cards/$CARD/export?format=pedsim" | grep -q '<scenario' || fail "pedsim export"
-curl -fsS "$BASE/cards/$CARD/export?format=hunav" -o "$WORK/hunav.tar" && tar tf "$WORK/hunav.tar" | grep -q '\.yaml$' || fail "hunav export"
+curl -fsS "$BASE/cards/$CARD/export?format=pedsim" -o "$WORK/scenario.xml" || fail "pedsim export"
+grep -q '<scenario' "$WORK/scenario.xml" || fail "pedsim export is not a scenario"
+curl -fsS "$BASE/cards/$CARD/export?format=hunav" -o "$WORK/hunav.tar" || fail "hunav export"
+tar tf "$WORK/hunav.tar" > "$WORK/hunav.list" || fail "hunav export is not a tar"
+grep -q '\.yaml$' "$WORK/hunav.list" || fail "hunav export has no agents YAML"
 echo "ok - CSV, pedsim and HuNavSim exports"
 
 # 5. A live session of the card: frames over WebSocket, then stop.
@@ -125,7 +129,8 @@ echo "ok - the card streams live over WebSocket and stops on request"
 
 # 6. The CLI agrees on an exported card, and the card survives a restart.
 curl -fsS "$BASE/cards/$CARD/export" -o "$WORK/card.json"
-"$SOCSIM" scenario replay "$WORK/card.json" | grep -q "^identical $SHA" || fail "CLI replay"
+"$SOCSIM" scenario replay "$WORK/card.json" > "$WORK/replay.txt" || fail "CLI replay: $(cat "$WORK/replay.txt")"
+grep -q "^identical $SHA" "$WORK/replay.txt" || fail "CLI replay: $(cat "$WORK/replay.txt")"
 kill -TERM "$PID"; wait "$PID" || true; PID=""
 start
 [ "$(curl -fsS "$BASE/cards/$CARD" | json 'd["trajectory_log"]["sha256"]')" = "$SHA" ] || fail "card after restart"
