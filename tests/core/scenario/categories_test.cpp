@@ -29,16 +29,8 @@ namespace {
 using crowd::Activity;
 using crowd::PedestrianState;
 
-struct Frame {
-  double t = 0.0;
-  std::vector<PedestrianState> states;
-};
-
-struct Simulated {
-  GeneratedProgram generated;
-  std::unique_ptr<crowd::ScenarioRunner> runner;
-  std::vector<Frame> frames;
-};
+using testing::Frame;
+using testing::Simulated;
 
 class Categories : public ::testing::Test {
  protected:
@@ -50,44 +42,7 @@ class Categories : public ::testing::Test {
 
   static Simulated run(const world::World& w, const std::string& prompt, double seconds,
                        std::uint64_t seed = 3) {
-    Simulated r;
-    ProgramRequest req;
-    req.prompt = prompt;
-    req.seed = seed;
-    req.duration_s = seconds;
-    auto g = generate_program_offline(w, worlds_->kb(), req, ScenarioLimits{});
-    EXPECT_TRUE(g.has_value()) << (g ? "" : g.error().message());
-    if (!g) return r;
-    r.generated = std::move(*g);
-    auto program = crowd::program_from_json(r.generated.program);
-    EXPECT_TRUE(program.has_value());
-    crowd::RunnerOptions o;
-    o.seed = seed;
-    o.record_metrics = false;
-    auto runner = crowd::ScenarioRunner::create(&w, *program, o);
-    EXPECT_TRUE(runner.has_value()) << (runner ? "" : runner.error().message());
-    if (!runner) return r;
-    r.runner = std::move(*runner);
-    r.runner->run(
-        seconds,
-        [&](double t, std::span<const PedestrianState> s) {
-          r.frames.push_back(Frame{t, {s.begin(), s.end()}});
-        },
-        2);
-    EXPECT_THAT(r.runner->errors(), ::testing::IsEmpty());
-    if (std::getenv("SOCSIM_DUMP_FRAMES") != nullptr) {
-      std::cerr << r.generated.program.dump(1) << "\n" << r.generated.provenance["notes"].dump() << "\n";
-      for (const Frame& f : r.frames) {
-        if (std::fmod(f.t + 1e-9, 2.0) > 0.1) continue;
-        std::cerr << "t=" << f.t;
-        for (const PedestrianState& s : f.states)
-          std::cerr << " | " << s.id.value() << " " << s.role << " (" << std::round(s.pose.x * 10) / 10 << ","
-                    << std::round(s.pose.y * 10) / 10 << ") " << crowd::activity_name(s.activity) << " "
-                    << s.metadata.bt_node;
-        std::cerr << "\n";
-      }
-    }
-    return r;
+    return testing::simulate(w, worlds_->kb(), prompt, seconds, seed);
   }
 
   // The places the generator used for a purpose ("queue lane", "doorway" …).

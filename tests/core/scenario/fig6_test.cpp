@@ -21,16 +21,8 @@ namespace {
 using crowd::Activity;
 using crowd::PedestrianState;
 
-struct Frame {
-  double t = 0.0;
-  std::vector<PedestrianState> states;
-};
-
-struct Simulated {
-  GeneratedProgram generated;
-  std::unique_ptr<crowd::ScenarioRunner> runner;
-  std::vector<Frame> frames;
-};
+using testing::Frame;
+using testing::Simulated;
 
 // A 20 m corridor with a water dispenser and its queue lane, a door to the outside at one end and
 // an office off it: no reception, no counter.
@@ -70,32 +62,7 @@ class Fig6 : public ::testing::Test {
 
   static Simulated run(const world::World& w, const std::string& prompt, double seconds,
                        std::uint64_t seed = 3) {
-    Simulated r;
-    ProgramRequest req;
-    req.prompt = prompt;
-    req.seed = seed;
-    req.duration_s = seconds;
-    auto g = generate_program_offline(w, worlds_->kb(), req, ScenarioLimits{});
-    EXPECT_TRUE(g.has_value()) << (g ? "" : g.error().message());
-    if (!g) return r;
-    r.generated = std::move(*g);
-    auto program = crowd::program_from_json(r.generated.program);
-    EXPECT_TRUE(program.has_value());
-    crowd::RunnerOptions o;
-    o.seed = seed;
-    o.record_metrics = false;
-    auto runner = crowd::ScenarioRunner::create(&w, *program, o);
-    EXPECT_TRUE(runner.has_value()) << (runner ? "" : runner.error().message());
-    if (!runner) return r;
-    r.runner = std::move(*runner);
-    r.runner->run(
-        seconds,
-        [&](double t, std::span<const PedestrianState> s) {
-          r.frames.push_back(Frame{t, {s.begin(), s.end()}});
-        },
-        2);
-    EXPECT_THAT(r.runner->errors(), ::testing::IsEmpty());
-    return r;
+    return testing::simulate(w, worlds_->kb(), prompt, seconds, seed);
   }
 
   static std::vector<std::string> used(const Simulated& r, const std::string& purpose) {

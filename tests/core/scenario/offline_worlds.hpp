@@ -1,14 +1,22 @@
 #pragma once
-// Worlds and knowledge for the offline scenario-generator tests: the seeded knowledge store in a
+// Worlds, knowledge and runs for the offline scenario-generator tests: the seeded knowledge store in a
 // temporary database, floor plans of the offline generator by domain and seed, and a small hall
 // with two doors to the outside (the generated plans have one entrance).
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
+#include <vector>
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "core/crowd/scenario_runner.hpp"
 #include "core/knowledge/knowledge_base.hpp"
+#include "core/scenario/program_offline.hpp"
 #include "core/store/store.hpp"
 #include "core/world/floorplan_offline.hpp"
 #include "core/world/world_yaml.hpp"
@@ -81,5 +89,63 @@ entities:
   std::map<std::string, std::unique_ptr<world::World>> worlds_;
   std::unique_ptr<world::World> two_exits_;
 };
+
+using crowd::PedestrianState;
+
+// One frame of a run (every second decision step: 10 Hz).
+struct Frame {
+  double t = 0.0;
+  std::vector<PedestrianState> states;
+};
+
+struct Simulated {
+  GeneratedProgram generated;
+  std::unique_ptr<crowd::ScenarioRunner> runner;
+  std::vector<Frame> frames;
+};
+
+// Generates the offline program for a prompt and runs it, keeping the frames (SOCSIM_DUMP_FRAMES=1
+// prints the program and the positions every 2 s).
+inline Simulated simulate(const world::World& w, const knowledge::KnowledgeBase& kb,
+                          const std::string& prompt, double seconds, std::uint64_t seed = 3) {
+  Simulated r;
+  ProgramRequest req;
+  req.prompt = prompt;
+  req.seed = seed;
+  req.duration_s = seconds;
+  auto g = generate_program_offline(w, kb, req, ScenarioLimits{});
+  EXPECT_TRUE(g.has_value()) << (g ? "" : g.error().message());
+  if (!g) return r;
+  r.generated = std::move(*g);
+  auto program = crowd::program_from_json(r.generated.program);
+  EXPECT_TRUE(program.has_value());
+  crowd::RunnerOptions o;
+  o.seed = seed;
+  o.record_metrics = false;
+  auto runner = crowd::ScenarioRunner::create(&w, *program, o);
+  EXPECT_TRUE(runner.has_value()) << (runner ? "" : runner.error().message());
+  if (!runner) return r;
+  r.runner = std::move(*runner);
+  r.runner->run(
+      seconds,
+      [&](double t, std::span<const PedestrianState> s) {
+        r.frames.push_back(Frame{t, {s.begin(), s.end()}});
+      },
+      2);
+  EXPECT_THAT(r.runner->errors(), ::testing::IsEmpty());
+  if (std::getenv("SOCSIM_DUMP_FRAMES") != nullptr) {
+    std::cerr << r.generated.program.dump(1) << "\n" << r.generated.provenance["notes"].dump() << "\n";
+    for (const Frame& f : r.frames) {
+      if (std::fmod(f.t + 1e-9, 2.0) > 0.1) continue;
+      std::cerr << "t=" << f.t;
+      for (const PedestrianState& s : f.states)
+        std::cerr << " | " << s.id.value() << " " << s.role << " (" << std::round(s.pose.x * 10) / 10 << ","
+                  << std::round(s.pose.y * 10) / 10 << ") " << crowd::activity_name(s.activity) << " "
+                  << s.metadata.bt_node;
+      std::cerr << "\n";
+    }
+  }
+  return r;
+}
 
 }  // namespace socsim::scenario::testing
