@@ -16,6 +16,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/llm/llm_client.hpp"
+
 namespace socsim::testing {
 
 class ScriptedServer {
@@ -150,5 +152,19 @@ class ScriptedServer {
   std::atomic<int> in_flight_{0};
   std::atomic<int> max_in_flight_{0};
 };
+
+// A client for generator tests against a ScriptedServer: short timeouts, no retries, two repair
+// rounds, model "test-model".
+inline std::unique_ptr<llm::LlmClient> scripted_client(const std::string& url) {
+  llm::LlmConfig config;
+  config.base_url = url;
+  config.model = "test-model";
+  config.connect_timeout_ms = 500;
+  config.attempt_timeout_ms = 2000;
+  config.deadline_ms = 4000;
+  config.max_retries = 0;
+  config.repair_rounds = 2;
+  return llm::LlmClient::create(config).value();
+}
 
 }  // namespace socsim::testing

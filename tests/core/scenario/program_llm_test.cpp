@@ -28,23 +28,11 @@ class ProgramLlm : public ::testing::Test {
     world::OfflineOptions o;
     o.seed = 3;
     world_ = world::generate_floor_plan(world::room_program("hospital"), constraints, o).value().world;
-    client_ = make_client(server_.base_url());
+    client_ = socsim::testing::scripted_client(server_.base_url());
     generator_ = std::make_unique<llm::StructuredGenerator>(*client_, store_.get());
     request_.prompt = "two nurses wait near the reception while visitors walk to the corridor";
     request_.seed = 4;
     request_.duration_s = 5;
-  }
-
-  static std::unique_ptr<llm::LlmClient> make_client(const std::string& url) {
-    llm::LlmConfig config;
-    config.base_url = url;
-    config.model = "test-model";
-    config.connect_timeout_ms = 500;
-    config.attempt_timeout_ms = 2000;
-    config.deadline_ms = 4000;
-    config.max_retries = 0;
-    config.repair_rounds = 2;
-    return llm::LlmClient::create(config).value();
   }
 
   // A valid answer built from the world's own names.
@@ -161,7 +149,7 @@ TEST_F(ProgramLlm, AnEndpointThatIsDownGivesAnUpstreamErrorNamingIt) {
     ScriptedServer closed;
     port = closed.port();
   }
-  auto client = make_client("http://127.0.0.1:" + std::to_string(port));
+  auto client = socsim::testing::scripted_client("http://127.0.0.1:" + std::to_string(port));
   llm::StructuredGenerator gen(*client, nullptr);
   auto g = generate_program_llm(gen, *world_, *kb_, request_, limits_);
   ASSERT_FALSE(g);

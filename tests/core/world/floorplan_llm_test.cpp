@@ -24,23 +24,11 @@ class FloorplanLlm : public ::testing::Test {
     kb_ = std::make_unique<knowledge::KnowledgeBase>(*store_);
     constraints_ = kb_->constraints_for("hospital").value();
     graph_ = room_program("hospital");
-    client_ = make_client(server_.base_url());
+    client_ = socsim::testing::scripted_client(server_.base_url());
     generator_ = std::make_unique<llm::StructuredGenerator>(*client_, store_.get());
     OfflineOptions o;
     o.seed = 5;
     plan_ = generate_floor_plan(graph_, constraints_, o).value().world;  // a known-good answer to replay
-  }
-
-  static std::unique_ptr<llm::LlmClient> make_client(const std::string& url) {
-    llm::LlmConfig config;
-    config.base_url = url;
-    config.model = "test-model";
-    config.connect_timeout_ms = 500;
-    config.attempt_timeout_ms = 2000;
-    config.deadline_ms = 4000;
-    config.max_retries = 0;
-    config.repair_rounds = 2;
-    return llm::LlmClient::create(config).value();
   }
 
   std::string user_message(std::size_t call) const {
@@ -148,7 +136,7 @@ TEST_F(FloorplanLlm, AnEndpointThatIsDownGivesAnUpstreamErrorNamingIt) {
     ScriptedServer closed;
     port = closed.port();
   }
-  auto client = make_client("http://127.0.0.1:" + std::to_string(port));
+  auto client = socsim::testing::scripted_client("http://127.0.0.1:" + std::to_string(port));
   llm::StructuredGenerator gen(*client, nullptr);
   auto plan = generate_floor_plan_llm(gen, "", graph_, constraints_);
   ASSERT_FALSE(plan);
