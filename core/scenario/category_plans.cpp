@@ -25,6 +25,21 @@ double dist(crowd::Vec2 a, crowd::Vec2 b) {
 std::string num(double v) {
   return format_number(round1(v));
 }
+
+// Join the lane's queue, advance, and be served at the counter one at a time (queuing and reception).
+void queue_and_serve(TreeXml& t, const std::string& lane, const std::string& counter, double service,
+                     double spread) {
+  t.leaf("JoinQueue", {{"agent_id", "{id}"},
+                       {"time_step", "{dt}"},
+                       {"queue", lane},
+                       {"spacing", "0.7"},
+                       {"position", "{place}"}});
+  t.leaf("ServeAtCounter", {{"agent_id", "{id}"},
+                            {"counter", counter},
+                            {"queue", lane},
+                            {"service_time", num(service)},
+                            {"service_spread", num(spread)}});
+}
 std::size_t sum(const std::vector<People>& people) {
   std::size_t n = 0;
   for (const People& p : people) n += p.count;
@@ -430,16 +445,7 @@ Status plan_queuing(Draft& d, const Activity& a, Rng& rng) {
   const double spread = round1(rng.uniform(0.5, 1.5));
   auto tree = d.add_tree(C::kQueuing, "queue_" + lane->name, [&](TreeXml& t) {
     t.open("Sequence");
-    t.leaf("JoinQueue", {{"agent_id", "{id}"},
-                         {"time_step", "{dt}"},
-                         {"queue", lane->name},
-                         {"spacing", "0.7"},
-                         {"position", "{place}"}});
-    t.leaf("ServeAtCounter", {{"agent_id", "{id}"},
-                              {"counter", counter},
-                              {"queue", lane->name},
-                              {"service_time", num(service)},
-                              {"service_spread", num(std::min(spread, service))}});
+    queue_and_serve(t, lane->name, counter, service, std::min(spread, service));
     if (!waiting.empty()) {
       t.open("Fallback");
       t.leaf("SitAt",
@@ -563,16 +569,7 @@ Status plan_reception(Draft& d, const Activity& a, Rng& rng) {
   // Approach (walk in from the neighbouring zones), queue, register at the counter, depart.
   auto tree = d.add_tree(C::kReception, "check_in_" + lane->name, [&](TreeXml& t) {
     t.open("Sequence");
-    t.leaf("JoinQueue", {{"agent_id", "{id}"},
-                         {"time_step", "{dt}"},
-                         {"queue", lane->name},
-                         {"spacing", "0.7"},
-                         {"position", "{place}"}});
-    t.leaf("ServeAtCounter", {{"agent_id", "{id}"},
-                              {"counter", counter},
-                              {"queue", lane->name},
-                              {"service_time", num(service)},
-                              {"service_spread", num(std::min(1.0, service))}});
+    queue_and_serve(t, lane->name, counter, service, std::min(1.0, service));
     if (exit != nullptr) {
       if (!exit->region.empty() && exit->region != exit->name)
         t.leaf("GoTo",
