@@ -7,6 +7,7 @@
 
 #include "core/common/rng.hpp"
 #include "core/crowd/fast_math.hpp"
+#include "core/crowd/neighbour_gather.hpp"
 #include "core/crowd/social_kernel.hpp"
 
 namespace socsim::crowd {
@@ -175,16 +176,19 @@ struct NeighbourArrays {
   const std::int32_t* group;
   const std::uint32_t* id;     // agent index of each entry (nullptr: the entry index is the agent)
   const std::uint8_t* active;  // nullptr: all entries are active
+  std::uint32_t readable;      // entries of x, y, vx, vy that may be read (see GatherQuery)
 };
 
 // Collects the neighbours of one agent within the cut-off, runs the kernel batch by batch and
-// sums the quantised forces exactly. The collection is branch-free: every candidate is written,
-// and the batch only grows when it is within the cut-off. Group repulsion and the body force act
-// only between touching agents and are computed in double precision.
+// sums the quantised forces exactly (core/crowd/neighbour_gather.hpp fills the batch). Group
+// repulsion and the body force act only between touching agents — the few candidates the gather
+// lists as close — and are computed in double precision.
 class NeighbourSums {
  public:
+  // `max_radius` bounds every neighbour's radius: only candidates closer than r + max_radius can
+  // touch, and only those are re-examined in double precision by flush().
   NeighbourSums(std::uint32_t id, double x, double y, double vx, double vy, double r, std::int32_t group,
-                double cutoff, const ForceParameters& fp, double body_stiffness)
+                double cutoff, double max_radius, const ForceParameters& fp, double body_stiffness)
       : id_(id),
         x_(x),
         y_(y),
@@ -193,6 +197,8 @@ class NeighbourSums {
         r_(r),
         group_(group),
         cutoff2_(cutoff * cutoff),
+        // Widened by 1e-5 (relative) so the float-rounded offsets flush() tests can never exceed it.
+        close2_((r + max_radius) * (r + max_radius) * (1.0 + 1e-5) + 2.0 * kTiny2),
         repulsion_factor_(fp.group_repulsion_factor),
         body_stiffness_(body_stiffness),
         params_{static_cast<float>(fp.lambda),      static_cast<float>(fp.gamma),
@@ -201,31 +207,43 @@ class NeighbourSums {
 
   [[nodiscard]] std::uint32_t id() const { return id_; }
 
-  // Visits entries [k0, k1) of `a`; `self` is the owner's own entry, which is skipped.
-  void scan(const NeighbourArrays& a, std::uint32_t k0, std::uint32_t k1, std::uint32_t self) {
+  // Visits the candidate ranges of `a` in order; `self` is the owner's own entry, which is skipped.
+  void scan(const NeighbourArrays& a, GatherRange* ranges, int count, std::uint32_t self) {
     arrays_ = &a;
-    if (a.active == nullptr) {
-      gather<true>(a, k0, k1, self);
-    } else {
-      gather<false>(a, k0, k1, self);
+    const GatherQuery q{a.x, a.y,      a.vx,    a.vy, x_,       y_,        vx_,
+                        vy_, cutoff2_, close2_, self, a.active, a.readable};
+    GatherBatch b{batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, slot_, close_, kBatch, count_, close_count_};
+    int done = 0;
+    while (true) {
+      done += gather_neighbours(q, ranges + done, count - done, b);
+      count_ = b.count;
+      close_count_ = b.close_count;
+      if (done == count) break;
+      flush();  // the batch is full
+      b.count = b.close_count = 0;
     }
   }
 
   void flush() {
     if (count_ == 0) return;
     const NeighbourArrays& a = *arrays_;
-    for (int m = 0; m < count_; ++m) {
+    bool tied = false;  // a coincident pair needs a tie direction (else the kernel reads zeros)
+    for (int c = 0; c < close_count_; ++c) {
+      const int m = close_[c];
       // From the single-precision offsets: the same in the grid and the reference scan.
       const double fdx = batch_.dx[m];
       const double fdy = batch_.dy[m];
       const double d2 = fdx * fdx + fdy * fdy;
-      batch_.tie_x[m] = 0.0f;
-      batch_.tie_y[m] = 0.0f;
       const std::uint32_t k = slot_[m];
       const double reach = r_ + a.r[k];
       if (d2 >= reach * reach) continue;
       const std::uint32_t who = a.id != nullptr ? a.id[k] : k;
       if (d2 <= kTiny2) {  // coincident: part along a fixed per-pair direction
+        if (!tied) {
+          std::fill(std::begin(batch_.tie_x), std::end(batch_.tie_x), 0.0f);
+          std::fill(std::begin(batch_.tie_y), std::end(batch_.tie_y), 0.0f);
+          tied = true;
+        }
         const Vec2 u = tie_break_direction(id_, who);
         batch_.dx[m] = 0.0f;
         batch_.dy[m] = 0.0f;
@@ -236,12 +254,11 @@ class NeighbourSums {
     }
     // Pad to whole vectors with inert entries (all zero: the kernel returns 0 for them).
     const int padded = (count_ + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
-    for (int m = count_; m < padded; ++m) {
-      batch_.dx[m] = batch_.dy[m] = batch_.dvx[m] = batch_.dvy[m] = 0.0f;
-      batch_.tie_x[m] = batch_.tie_y[m] = 0.0f;
-    }
-    social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, batch_.tie_x, batch_.tie_y,
-                  batch_.fx, batch_.fy);
+    for (int m = count_; m < padded; ++m) batch_.dx[m] = batch_.dy[m] = batch_.dvx[m] = batch_.dvy[m] = 0.0f;
+    static constexpr float kNoTies[kBatch] = {};
+    social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy,
+                  tied ? batch_.tie_x : kNoTies, tied ? batch_.tie_y : kNoTies, batch_.fx, batch_.fy);
+    close_count_ = 0;
     std::int64_t sx = 0;
     std::int64_t sy = 0;
     for (int m = 0; m < padded; ++m) {  // padding entries are 0
@@ -261,43 +278,6 @@ class NeighbourSums {
   FixedSum body_x, body_y;
 
  private:
-  // The hot loop: locals with __restrict so the compiler keeps the array pointers in registers
-  // instead of reloading them after every store into the batch.
-  template <bool kAllActive>
-  void gather(const NeighbourArrays& a, std::uint32_t k0, std::uint32_t k1, std::uint32_t self) {
-    const double* __restrict xs = a.x;
-    const double* __restrict ys = a.y;
-    const double* __restrict vxs = a.vx;
-    const double* __restrict vys = a.vy;
-    const std::uint8_t* __restrict act = a.active;
-    float* __restrict bdx = batch_.dx;
-    float* __restrict bdy = batch_.dy;
-    float* __restrict bdvx = batch_.dvx;
-    float* __restrict bdvy = batch_.dvy;
-    std::uint32_t* __restrict bslot = slot_;
-    const double x = x_, y = y_, vx = vx_, vy = vy_, cut2 = cutoff2_;
-    int m = count_;
-    for (std::uint32_t k = k0; k < k1; ++k) {
-      const double dx = xs[k] - x;
-      const double dy = ys[k] - y;
-      const double d2 = dx * dx + dy * dy;
-      bool take = (d2 <= cut2) & (k != self);
-      if constexpr (!kAllActive) take = take & (act[k] != 0);
-      bdx[m] = static_cast<float>(dx);
-      bdy[m] = static_cast<float>(dy);
-      bdvx[m] = static_cast<float>(vx - vxs[k]);
-      bdvy[m] = static_cast<float>(vy - vys[k]);
-      bslot[m] = k;
-      m += take ? 1 : 0;
-      if (m == kBatch) {
-        count_ = m;
-        flush();
-        m = 0;
-      }
-    }
-    count_ = m;
-  }
-
   void touching(double dx, double dy, double d2, double reach, std::int32_t gj, std::uint32_t idj) {
     if (group_ >= 0 && gj == group_) {  // LightSFM: Σ (p_i − p_j) over touching group members
       repulsion_x.add(-repulsion_factor_ * dx);
@@ -324,13 +304,15 @@ class NeighbourSums {
   std::uint32_t id_;
   double x_, y_, vx_, vy_, r_;
   std::int32_t group_;
-  double cutoff2_, repulsion_factor_, body_stiffness_;
+  double cutoff2_, close2_, repulsion_factor_, body_stiffness_;
   SocialParams params_;
   const NeighbourArrays* arrays_ = nullptr;
   int count_ = 0;
+  int close_count_ = 0;  // batch entries that may touch the agent (listed in close_)
   std::int64_t social_x_ = 0;
   std::int64_t social_y_ = 0;
   std::uint32_t slot_[kBatch];
+  std::uint8_t close_[kBatch];
   PairBatch batch_;
 };
 
@@ -600,7 +582,9 @@ void CrowdSimulation::prepare_step() {
   std::fill(group_cx_.begin(), group_cx_.end(), 0.0);
   std::fill(group_cy_.begin(), group_cy_.end(), 0.0);
   std::fill(group_size_.begin(), group_size_.end(), 0u);
+  max_radius_ = 0.0;
   for (std::size_t i = 0; i < size(); ++i) {
+    if (active_[i]) max_radius_ = std::max(max_radius_, radius_[i]);
     const std::int32_t g = group_[i];
     if (g < 0 || !active_[i]) continue;
     group_cx_[static_cast<std::size_t>(g)] += px_[i];
@@ -667,10 +651,12 @@ void CrowdSimulation::build_cells() {
     c.order[k] = static_cast<std::uint32_t>(i);
     c.cell_of[i] = k;  // from here on: the agent's position in the sorted arrays
   }
-  c.x.resize(active);
-  c.y.resize(active);
-  c.vx.resize(active);
-  c.vy.resize(active);
+  // Three inert entries past the end (far away, never within the cut-off) so the vector gather
+  // may read whole groups of four.
+  c.x.assign(active + 3, 1e30);
+  c.y.assign(active + 3, 1e30);
+  c.vx.assign(active + 3, 0.0);
+  c.vy.assign(active + 3, 0.0);
   c.r.resize(active);
   c.group.resize(active);
   c.id.resize(active);
@@ -713,23 +699,30 @@ struct GridScan {
     const auto clamp_y = [&](double v) { return floor_clamp(v, ny - 1); };
     const std::int64_t y_lo = clamp_y((y - c - origin_y) * inv_cell);
     const std::int64_t y_hi = clamp_y((y + c - origin_y) * inv_cell);
-    for (std::int64_t row = y_lo; row <= y_hi; ++row) {
+    // Cells are at least a third of the cut-off tall, so a scan spans at most 8 rows (10 leaves
+    // room for rounding).
+    std::array<GatherRange, 10> ranges{};
+    int count = 0;
+    for (std::int64_t row = y_lo; row <= y_hi && count < static_cast<int>(ranges.size()); ++row) {
       const double band_lo = origin_y + static_cast<double>(row) * cell;
       const double gap = std::max({0.0, band_lo - y, y - (band_lo + cell)}) - 1e-9;
       const double half = gap > 0.0 ? std::sqrt(std::max(0.0, c * c - gap * gap)) + 1e-9 : c;
       const std::int64_t x_lo = clamp_x((x - half - origin_x) * inv_cell);
       const std::int64_t x_hi = clamp_x((x + half - origin_x) * inv_cell);
-      const std::uint32_t k0 = start[static_cast<std::size_t>(row * nx + x_lo)];
-      const std::uint32_t k1 = start[static_cast<std::size_t>(row * nx + x_hi + 1)];
-      s.scan(arrays, k0, k1, self);
+      ranges[static_cast<std::size_t>(count++)] = {start[static_cast<std::size_t>(row * nx + x_lo)],
+                                                   start[static_cast<std::size_t>(row * nx + x_hi + 1)]};
     }
+    s.scan(arrays, ranges.data(), count, self);
   }
 };
 
 struct FullScan {
   std::uint32_t n;
   NeighbourArrays arrays;
-  void operator()(NeighbourSums& s, double /*x*/, double /*y*/) const { s.scan(arrays, 0, n, s.id()); }
+  void operator()(NeighbourSums& s, double /*x*/, double /*y*/) const {
+    GatherRange all{0, n};
+    s.scan(arrays, &all, 1, s.id());
+  }
 };
 
 }  // namespace
@@ -837,7 +830,8 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   // Social, group-repulsion and body forces from neighbours within the cut-off.
   const std::int32_t g = group_[i];
   {
-    NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, fp, config_.body_stiffness);
+    NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, max_radius_, fp,
+                       config_.body_stiffness);
     neighbours(sums, x, y);
     sums.flush();
     f.social = sums.social();
@@ -914,7 +908,7 @@ void CrowdSimulation::finish_step() {
       vx_[i] = nvx_[i];
       vy_[i] = nvy_[i];
       if (vx_[i] * vx_[i] + vy_[i] * vy_[i] > 1e-12) {
-        const double yaw = std::atan2(vy_[i], vx_[i]);
+        const double yaw = fast_atan2(vy_[i], vx_[i]);
         omega_[i] = wrap_angle(yaw - yaw_[i]) / dt;
         yaw_[i] = yaw;
       } else {
@@ -945,17 +939,17 @@ void CrowdSimulation::step() {
   prepare_step();
   build_cells();
   const CellIndex& c = *cells_;
-  const GridScan scan{
-      c.start,
-      c.cell_of,
-      c.origin_x,
-      c.origin_y,
-      c.cell,
-      c.inv_cell,
-      config_.neighbor_cutoff,
-      c.nx,
-      c.ny,
-      {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.group.data(), c.id.data(), nullptr}};
+  const GridScan scan{c.start,
+                      c.cell_of,
+                      c.origin_x,
+                      c.origin_y,
+                      c.cell,
+                      c.inv_cell,
+                      config_.neighbor_cutoff,
+                      c.nx,
+                      c.ny,
+                      {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.group.data(),
+                       c.id.data(), nullptr, static_cast<std::uint32_t>(c.x.size())}};
   pool_->parallel_for(c.order.size(), 128, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) advance_agent(c.order[k], scan, nullptr);
   });
@@ -966,7 +960,7 @@ void CrowdSimulation::step_reference() {
   prepare_step();
   const FullScan scan{static_cast<std::uint32_t>(size()),
                       {px_.data(), py_.data(), vx_.data(), vy_.data(), radius_.data(), group_.data(), nullptr,
-                       active_.data()}};
+                       active_.data(), static_cast<std::uint32_t>(size())}};
   pool_->parallel_for(size(), 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
       if (active_[i]) advance_agent(static_cast<std::uint32_t>(i), scan, nullptr);
@@ -980,7 +974,7 @@ ForceBreakdown CrowdSimulation::forces(AgentId id) {
   prepare_step();  // group centres and wall grid of the current state; the O(N) scan gives the same forces
   const FullScan scan{static_cast<std::uint32_t>(size()),
                       {px_.data(), py_.data(), vx_.data(), vy_.data(), radius_.data(), group_.data(), nullptr,
-                       active_.data()}};
+                       active_.data(), static_cast<std::uint32_t>(size())}};
   advance_agent(id.value(), scan, &out);
   return out;
 }

@@ -146,6 +146,7 @@ class CrowdSimulation {
   std::vector<double> npx_, npy_, nvx_, nvy_;
   // Per-agent parameters.
   std::vector<double> radius_, v0_, vmax_;
+  double max_radius_ = 0.0;  // largest radius of an active agent (set by prepare_step)
   std::vector<std::uint16_t> role_;
   std::vector<std::int32_t> group_;  // dense group index, -1 = alone
   std::vector<std::uint8_t> active_;

@@ -9,10 +9,11 @@
 // (selects only, no branches); every lane computes the same IEEE operations a scalar loop would.
 namespace socsim::crowd {
 
-// On x86-64 an AVX2 clone (8 lanes) is picked at load time where the CPU has it. AVX2 alone
-// brings no FMA, and -ffp-contract=off forbids it anyway, so both clones give identical bits.
+// On x86-64 an AVX-512 clone (16 lanes) or an AVX2 clone (8 lanes) is picked at load time where
+// the CPU has it. -ffp-contract=off forbids fused multiply-adds, so every clone computes the same
+// IEEE operations and gives identical bits (tests/core/crowd compares them with the scalar clone).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
+__attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
 void social_kernel(const SocialParams& p, int count, const float* __restrict dx, const float* __restrict dy,
                    const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,

@@ -159,7 +159,7 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
         sx += d->x;
         sy += d->y;
       }
-      const double len = std::hypot(sx, sy);
+      const double len = std::sqrt(sx * sx + sy * sy);
       if (len < 1e-9) {
         kind[at(i, j)] = goal ? 2 : 0;
         continue;
@@ -184,7 +184,7 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
           sx += f.values_[at(ni, nj)].x;
           sy += f.values_[at(ni, nj)].y;
         }
-        const double len = std::hypot(sx, sy);
+        const double len = std::sqrt(sx * sx + sy * sy);
         if (len < 1e-9) continue;
         f.values_[at(i, j)] = {sx / len, sy / len};
         next[at(i, j)] = 1;
@@ -253,8 +253,8 @@ Vec2 velocity_field_goal(const VelocityField& field, Vec2 position, double dt, d
   Vec2 goal{position.x + vel.x * dt, position.y + vel.y * dt};
   const double dx = goal.x - position.x;
   const double dy = goal.y - position.y;
-  const double d = std::hypot(dx, dy);
-  const double speed = std::hypot(vel.x, vel.y);
+  const double d = std::sqrt(dx * dx + dy * dy);
+  const double speed = std::sqrt(vel.x * vel.x + vel.y * vel.y);
   if (speed > 0.0 && d < 2.0 * tolerance && d > 0.0) {
     goal = {position.x + dx * 2.0 * tolerance / d, position.y + dy * 2.0 * tolerance / d};
   }

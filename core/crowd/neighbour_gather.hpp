@@ -1,0 +1,46 @@
+#pragma once
+// Collecting the neighbours of one agent within the cut-off into a pair batch (the step's hottest
+// loop): a scalar version and, on x86-64 CPUs with AVX2, a 4-wide one that gives the same bits.
+#include <cstdint>
+
+namespace socsim::crowd {
+
+// Candidates are entries of the cell-sorted arrays; the agent's own entry is `self`.
+struct GatherQuery {
+  const double *x, *y, *vx, *vy;  // candidate positions and velocities
+  double px, py, pvx, pvy;        // the agent's
+  double cutoff2;                 // take candidates with d² <= cutoff2
+  double close2;                  // and list those with d² < close2 (they may touch the agent)
+  std::uint32_t self;
+  const std::uint8_t* active = nullptr;  // per candidate, 0 = skip; nullptr: all are active
+  // Entries of x, y, vx, vy that may be read (>= every k1): reading up to 3 entries past k1 lets
+  // the vector version finish a range without a scalar tail; the extra lanes are never taken.
+  std::uint32_t readable = 0;
+};
+
+// The batch being filled: per taken candidate the single-precision offset (x_k − px, y_k − py),
+// relative velocity (pvx − vx_k, pvy − vy_k) and entry index; `close` lists batch positions of
+// close candidates. Arrays hold `capacity` entries.
+struct GatherBatch {
+  float *dx, *dy, *dvx, *dvy;
+  std::uint32_t* slot;
+  std::uint8_t* close;
+  int capacity;
+  int count = 0;
+  int close_count = 0;
+};
+
+// A run of consecutive candidates [begin, end) (one row of grid cells).
+struct GatherRange {
+  std::uint32_t begin, end;
+};
+
+// Visits the ranges in order until done or the batch is full; returns how many ranges were
+// finished (fewer than `count` when the batch filled up: the next range's `begin` is advanced to
+// the first candidate not visited). Entries past `count` may be overwritten with scratch values.
+int gather_neighbours(const GatherQuery& q, GatherRange* ranges, int count, GatherBatch& b);
+
+// The portable version, always available (tests compare it with the dispatched one).
+int gather_neighbours_scalar(const GatherQuery& q, GatherRange* ranges, int count, GatherBatch& b);
+
+}  // namespace socsim::crowd

@@ -1,0 +1,170 @@
+// The step's vectorised pieces give the same bits as their portable forms: the neighbour gather
+// (AVX2 where the CPU has it) against the scalar loop, and the pair kernel's lanes against the
+// same pair computed alone.
+#include "core/crowd/neighbour_gather.hpp"
+
+#include <array>
+#include <bit>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/common/rng.hpp"
+#include "core/crowd/social_kernel.hpp"
+
+namespace socsim::crowd {
+namespace {
+
+struct Candidates {
+  std::vector<double> x, y, vx, vy;
+};
+
+Candidates random_candidates(Rng& rng, std::size_t n) {
+  Candidates c;
+  for (std::size_t k = 0; k < n; ++k) {
+    c.x.push_back(rng.uniform(-4.0, 4.0));
+    c.y.push_back(rng.uniform(-4.0, 4.0));
+    c.vx.push_back(rng.uniform(-1.5, 1.5));
+    c.vy.push_back(rng.uniform(-1.5, 1.5));
+  }
+  c.x[n / 2] = 0.1;  // one coincident with the agent's position and one within touching reach
+  c.y[n / 2] = -0.2;
+  c.x[n / 3] = 0.4;
+  c.y[n / 3] = -0.2;
+  return c;
+}
+
+struct Collected {
+  std::vector<float> dx, dy, dvx, dvy;
+  std::vector<std::uint32_t> slot;
+  std::vector<int> close;
+};
+
+// Gathers all ranges, emptying the batch whenever it fills, as NeighbourSums does.
+template <class Gather>
+Collected collect(const GatherQuery& q, std::vector<GatherRange> ranges, int capacity, Gather gather) {
+  std::vector<float> dx(capacity), dy(capacity), dvx(capacity), dvy(capacity);
+  std::vector<std::uint32_t> slot(capacity);
+  std::vector<std::uint8_t> close(capacity);
+  GatherBatch b{dx.data(), dy.data(), dvx.data(), dvy.data(), slot.data(), close.data(), capacity};
+  Collected out;
+  int done = 0;
+  const auto drain = [&] {
+    for (int m = 0; m < b.count; ++m) {
+      out.dx.push_back(dx[m]);
+      out.dy.push_back(dy[m]);
+      out.dvx.push_back(dvx[m]);
+      out.dvy.push_back(dvy[m]);
+      out.slot.push_back(slot[m]);
+    }
+    for (int c = 0; c < b.close_count; ++c) out.close.push_back(static_cast<int>(slot[close[c]]));
+    b.count = b.close_count = 0;
+  };
+  const int count = static_cast<int>(ranges.size());
+  while (true) {
+    done += gather(q, ranges.data() + done, count - done, b);
+    drain();
+    if (done == count) break;
+  }
+  return out;
+}
+
+TEST(NeighbourGather, DispatchedGatherMatchesScalarBitForBit) {
+  Rng rng(11);
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::size_t n = 40 + rng.below(200);
+    Candidates c = random_candidates(rng, n);
+    const auto self = static_cast<std::uint32_t>(rng.below(n));
+    const GatherQuery q{c.x.data(),
+                        c.y.data(),
+                        c.vx.data(),
+                        c.vy.data(),
+                        0.1,
+                        -0.2,
+                        0.3,
+                        0.7,
+                        3.0 * 3.0,
+                        0.5 * 0.5,
+                        self,
+                        nullptr,
+                        static_cast<std::uint32_t>(n)};
+    // Rows of every length 0–13, and ranges that end at the arrays' end (no room for a 4-wide read).
+    std::vector<GatherRange> ranges;
+    std::uint32_t k = 0;
+    while (k < n) {
+      const auto len = std::min<std::uint32_t>(static_cast<std::uint32_t>(rng.below(14)),
+                                               static_cast<std::uint32_t>(n) - k);
+      ranges.push_back({k, k + len});
+      k += len + static_cast<std::uint32_t>(rng.below(3));
+    }
+    const int capacity = trial % 2 == 0 ? kBatch : 9;  // small batches fill mid-range
+    const Collected a = collect(q, ranges, capacity, gather_neighbours);
+    const Collected b = collect(q, ranges, capacity, gather_neighbours_scalar);
+    ASSERT_EQ(a.slot, b.slot) << "trial " << trial;
+    ASSERT_EQ(a.close, b.close) << "trial " << trial;
+    for (std::size_t m = 0; m < a.slot.size(); ++m) {
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(a.dx[m]), std::bit_cast<std::uint32_t>(b.dx[m]));
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(a.dy[m]), std::bit_cast<std::uint32_t>(b.dy[m]));
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(a.dvx[m]), std::bit_cast<std::uint32_t>(b.dvx[m]));
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(a.dvy[m]), std::bit_cast<std::uint32_t>(b.dvy[m]));
+    }
+    // What was taken: exactly the candidates within the cut-off, without the agent itself.
+    std::vector<std::uint32_t> expected;
+    for (const GatherRange& r : ranges) {
+      for (std::uint32_t j = r.begin; j < r.end; ++j) {
+        const double dx = c.x[j] - 0.1;
+        const double dy = c.y[j] + 0.2;
+        if (j != self && dx * dx + dy * dy <= 9.0) expected.push_back(j);
+      }
+    }
+    EXPECT_EQ(a.slot, expected) << "trial " << trial;
+  }
+}
+
+TEST(NeighbourGather, InactiveCandidatesAreSkipped) {
+  Rng rng(3);
+  Candidates c = random_candidates(rng, 32);
+  std::vector<std::uint8_t> active(32, 1);
+  for (std::size_t k = 0; k < 32; k += 3) active[k] = 0;
+  const GatherQuery q{c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), 0.0,           0.0, 0.0,
+                      0.0,        100.0,      0.0,         99,          active.data(), 32};
+  const Collected got = collect(q, {{0, 32}}, kBatch, gather_neighbours);
+  ASSERT_EQ(got.slot.size(), 21u);
+  for (std::uint32_t k : got.slot) EXPECT_NE(k % 3, 0u);
+}
+
+TEST(SocialKernel, EveryLaneEqualsThePairComputedAlone) {
+  Rng rng(17);
+  const SocialParams p{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, 2.1f};
+  PairBatch batch{};
+  for (int m = 0; m < kBatch; ++m) {
+    batch.dx[m] = static_cast<float>(rng.uniform(-3.0, 3.0));
+    batch.dy[m] = static_cast<float>(rng.uniform(-3.0, 3.0));
+    batch.dvx[m] = static_cast<float>(rng.uniform(-2.0, 2.0));
+    batch.dvy[m] = static_cast<float>(rng.uniform(-2.0, 2.0));
+  }
+  batch.dx[5] = batch.dy[5] = 0.0f;  // coincident: the tie direction applies
+  batch.tie_x[5] = 0.6f;
+  batch.tie_y[5] = 0.8f;
+  social_kernel(p, kBatch, batch.dx, batch.dy, batch.dvx, batch.dvy, batch.tie_x, batch.tie_y, batch.fx,
+                batch.fy);
+  int nonzero = 0;
+  for (int m = 0; m < kBatch; ++m) {
+    PairBatch one{};  // the pair in lane 0, the other lanes inert
+    one.dx[0] = batch.dx[m];
+    one.dy[0] = batch.dy[m];
+    one.dvx[0] = batch.dvx[m];
+    one.dvy[0] = batch.dvy[m];
+    one.tie_x[0] = batch.tie_x[m];
+    one.tie_y[0] = batch.tie_y[m];
+    social_kernel(p, kBatchLanes, one.dx, one.dy, one.dvx, one.dvy, one.tie_x, one.tie_y, one.fx, one.fy);
+    EXPECT_EQ(batch.fx[m], one.fx[0]) << "lane " << m;
+    EXPECT_EQ(batch.fy[m], one.fy[0]) << "lane " << m;
+    for (int l = 1; l < kBatchLanes; ++l) EXPECT_EQ(one.fx[l], 0) << "inert lane " << l;
+    nonzero += batch.fx[m] != 0 || batch.fy[m] != 0;
+  }
+  EXPECT_GT(nonzero, kBatch / 2);  // the forces are not trivially zero
+}
+
+}  // namespace
+}  // namespace socsim::crowd
