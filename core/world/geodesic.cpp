@@ -1,8 +1,9 @@
 #include "core/world/geodesic.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
-#include <queue>
+#include <vector>
 
 #include "core/geometry/planar.hpp"
 
@@ -10,7 +11,76 @@ namespace socsim::world {
 
 namespace {
 constexpr float kInf = std::numeric_limits<float>::infinity();
-}
+
+// The marching front: a 4-ary min-heap of cells keyed by their trial distance, with each cell's
+// place recorded so that a lowered distance moves the cell up instead of adding a second entry.
+// Ties go to the lower cell index, so the order (and every distance) is reproducible.
+class Front {
+ public:
+  Front(const std::vector<double>& key, std::size_t cells) : key_(key), place_(cells, kAbsent) {}
+  [[nodiscard]] bool empty() const { return heap_.empty(); }
+
+  // Adds the cell or, when it is already waiting, moves it up to its (lowered) key.
+  void push_or_lower(std::uint32_t cell) {
+    std::size_t at = place_[cell];
+    if (at == kAbsent) {
+      at = heap_.size();
+      heap_.push_back(cell);
+    }
+    up(at, cell);
+  }
+
+  std::uint32_t pop() {
+    const std::uint32_t top = heap_.front();
+    place_[top] = kDone;
+    const std::uint32_t last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) down(0, last);
+    return top;
+  }
+
+ private:
+  static constexpr std::uint32_t kAbsent = UINT32_MAX;
+  static constexpr std::uint32_t kDone = UINT32_MAX - 1;
+
+  [[nodiscard]] bool before(std::uint32_t a, std::uint32_t b) const {
+    return key_[a] < key_[b] || (key_[a] == key_[b] && a < b);
+  }
+  void put(std::size_t at, std::uint32_t cell) {
+    heap_[at] = cell;
+    place_[cell] = static_cast<std::uint32_t>(at);
+  }
+  void up(std::size_t at, std::uint32_t cell) {
+    while (at > 0) {
+      const std::size_t parent = (at - 1) / 4;
+      if (!before(cell, heap_[parent])) break;
+      put(at, heap_[parent]);
+      at = parent;
+    }
+    put(at, cell);
+  }
+  void down(std::size_t at, std::uint32_t cell) {
+    const std::size_t n = heap_.size();
+    while (true) {
+      const std::size_t first = 4 * at + 1;
+      if (first >= n) break;
+      std::size_t best = first;
+      const std::size_t last = std::min(first + 4, n);
+      for (std::size_t c = first + 1; c < last; ++c)
+        if (before(heap_[c], heap_[best])) best = c;
+      if (!before(heap_[best], cell)) break;
+      put(at, heap_[best]);
+      at = best;
+    }
+    put(at, cell);
+  }
+
+  const std::vector<double>& key_;
+  std::vector<std::uint32_t> place_;
+  std::vector<std::uint32_t> heap_;
+};
+
+}  // namespace
 
 GeodesicField GeodesicField::from_points(const OccupancyGrid& grid, std::span<const Point> sources) {
   std::vector<std::pair<Cell, float>> seeds;
@@ -95,10 +165,7 @@ void GeodesicField::march(const OccupancyGrid& grid, std::vector<std::pair<Cell,
   const double h = resolution_;
   const double two_h2 = 2.0 * h * h;
 
-  using Item = std::pair<double, std::uint32_t>;
-  std::vector<Item> heap_store;
-  heap_store.reserve(n / 4 + seeds.size());
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> heap(std::greater<>{}, std::move(heap_store));
+  Front front(trial, pn);
   auto padded = [pw](Cell c) {
     return static_cast<std::size_t>(c.y + 1) * static_cast<std::size_t>(pw) +
            static_cast<std::size_t>(c.x + 1);
@@ -107,18 +174,17 @@ void GeodesicField::march(const OccupancyGrid& grid, std::vector<std::pair<Cell,
     const std::size_t i = padded(c);
     if (d < trial[i]) {
       trial[i] = d;
-      heap.emplace(d, static_cast<std::uint32_t>(i));
+      front.push_or_lower(static_cast<std::uint32_t>(i));
     }
   }
-  has_source_ = !heap.empty();
+  has_source_ = !front.empty();
   const std::size_t stride = static_cast<std::size_t>(pw);
 
-  while (!heap.empty()) {
-    const auto [d, i] = heap.top();
-    heap.pop();
-    if (!open[i] || d > trial[i]) continue;
+  while (!front.empty()) {
+    const std::size_t i = front.pop();
+    if (!open[i]) continue;  // a blocked seed
     open[i] = 0;
-    known[i] = d;
+    known[i] = trial[i];
     const std::size_t nbrs[4] = {i - 1, i + 1, i - stride, i + stride};
     for (const std::size_t j : nbrs) {
       if (!open[j]) continue;
@@ -130,7 +196,7 @@ void GeodesicField::march(const OccupancyGrid& grid, std::vector<std::pair<Cell,
       const double t = diff >= h ? lo + h : 0.5 * (lo + hi + std::sqrt(two_h2 - diff * diff));
       if (t < trial[j]) {
         trial[j] = t;
-        heap.emplace(t, static_cast<std::uint32_t>(j));
+        front.push_or_lower(static_cast<std::uint32_t>(j));
       }
     }
   }
@@ -198,7 +264,7 @@ std::optional<Point> GeodesicField::descent(Point p) const {
   };
   const double dx = axis({c.x - 1, c.y}, {c.x + 1, c.y});
   const double dy = axis({c.x, c.y - 1}, {c.x, c.y + 1});
-  const double len = std::hypot(dx, dy);
+  const double len = std::sqrt(dx * dx + dy * dy);
   if (len < 1e-9) return std::nullopt;
   return Point{-dx / len, -dy / len};
 }
