@@ -3,19 +3,13 @@
 // step and the receptacles visited. A screenshot lands in tests/e2e/artifacts/navbench.png.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { existsSync, mkdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, repoRoot } from './server.mjs';
-
-const chromiumPath = '/usr/bin/chromium';
-const artifacts = join(repoRoot, 'tests', 'e2e', 'artifacts');
-const skip = !existsSync(chromiumPath) && 'Debian chromium is not installed (bash deploy/install-deps.sh --with-browser)';
+import { startServer } from './server.mjs';
+import { artifacts, browserSkip as skip, launchBrowser } from './browser.mjs';
 let server, browser, job;
 
 before(async () => {
   if (skip) return;
-  const { chromium } = await import('playwright-core');
-  mkdirSync(artifacts, { recursive: true });
   server = await startServer();
   const queued = await server.post('/api/v1/navbench', { split: 'normal', scenes: 3, seed: 5, training_houses: 60 });
   assert.equal(queued.status, 202, JSON.stringify(queued.body));
@@ -25,11 +19,7 @@ before(async () => {
     await new Promise((r) => setTimeout(r, 250));
   }
   assert.equal(job.status, 'succeeded', JSON.stringify(job.error));
-  browser = await chromium.launch({
-    executablePath: chromiumPath,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
-      '--disable-sync', '--no-first-run', '--disable-quic'],
-  });
+  browser = await launchBrowser();
 });
 
 after(async () => {

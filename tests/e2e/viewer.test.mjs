@@ -3,30 +3,22 @@
 // A screenshot per test lands in tests/e2e/artifacts/.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { existsSync, mkdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, repoRoot } from './server.mjs';
+import { startServer } from './server.mjs';
+import { artifacts, browserSkip as skip, launchBrowser } from './browser.mjs';
 
-const chromiumPath = '/usr/bin/chromium';
-const artifacts = join(repoRoot, 'tests', 'e2e', 'artifacts');
-let server, browser, chromium;
+let server, browser;
 
 const card = (title, prompt, tags, domain) => ({
   title, prompt, tags, domain, description: `${title}: ${prompt}.`, seed: 1, generator: { name: 'offline' },
 });
 
 before(async () => {
-  if (!existsSync(chromiumPath)) return;
-  ({ chromium } = await import('playwright-core'));
-  mkdirSync(artifacts, { recursive: true });
+  if (skip) return;
   server = await startServer();
   await server.post('/api/v1/cards', card('Morning check-in', 'patients queue at the reception desk', ['queue'], 'hospital'));
   await server.post('/api/v1/cards', card('Fire drill', 'everyone evacuates through the two exits', ['emergency'], 'office'));
-  browser = await chromium.launch({
-    executablePath: chromiumPath,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
-      '--disable-sync', '--no-first-run', '--disable-quic'],
-  });
+  browser = await launchBrowser();
 });
 
 after(async () => {
@@ -34,7 +26,7 @@ after(async () => {
   await server?.stop();
 });
 
-test('catalogue lists, searches and opens cards', { skip: !existsSync(chromiumPath) && 'Debian chromium is not installed (bash deploy/install-deps.sh --with-browser)' }, async () => {
+test('catalogue lists, searches and opens cards', { skip }, async () => {
   const page = await browser.newPage();
   await page.goto(server.base + '/');
   await page.waitForSelector('#cards li');
@@ -50,7 +42,7 @@ test('catalogue lists, searches and opens cards', { skip: !existsSync(chromiumPa
   await page.close();
 });
 
-test('a card with a world shows its floor plan', { skip: !existsSync(chromiumPath) && 'Debian chromium is not installed' }, async () => {
+test('a card with a world shows its floor plan', { skip }, async () => {
   const world = {
     name: 'two_rooms', units: { length: 'm', angle: 'rad' }, origin: [0, 0],
     zones: [{ name: 'lobby', type: 'lobby', polygon: [[0, 0], [8, 0], [8, 6], [0, 6]] },
@@ -78,7 +70,7 @@ test('a card with a world shows its floor plan', { skip: !existsSync(chromiumPat
   await page.close();
 });
 
-test('a card created elsewhere appears live, and share links open it', { skip: !existsSync(chromiumPath) && 'Debian chromium is not installed' }, async () => {
+test('a card created elsewhere appears live, and share links open it', { skip }, async () => {
   const page = await browser.newPage();
   await page.goto(server.base + '/');
   await page.waitForSelector('#live.on');
