@@ -8,23 +8,8 @@
 # `scenario replay` agrees on an exported card; the card survives a restart.
 set -euo pipefail
 SOCSIM=${1:?usage: scenario_e2e.sh /path/to/socsim}
-WORK=$(mktemp -d)
-PID=""
-cleanup() { [ -n "$PID" ] && kill -9 "$PID" 2>/dev/null || true; rm -rf "$WORK"; }
-trap cleanup EXIT
-fail() { echo "FAIL: $*" >&2; [ -f "$WORK/server.log" ] && tail -n 20 "$WORK/server.log" >&2; exit 1; }
-free_port() { python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
-json() { python3 -c "import json,sys; d=json.load(sys.stdin); print($1)"; }
-
-PORT=$(free_port); WS_PORT=$(free_port)
-BASE="http://127.0.0.1:$PORT/api/v1"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 DB="$WORK/socsim.db"
-start() {
-  "$SOCSIM" serve --port "$PORT" --ws-port "$WS_PORT" --db "$DB" --web-root "$WORK" --rate-limit 0 >>"$WORK/server.log" 2>&1 &
-  PID=$!
-  for _ in $(seq 1 100); do curl -fsS "$BASE/health" >/dev/null 2>&1 && return 0; sleep 0.1; done
-  fail "server did not answer /health"
-}
 wait_job() {  # prints the finished job document
   local id=$1 doc status
   for _ in $(seq 1 600); do
