@@ -11,8 +11,9 @@ namespace {
 
 constexpr std::array<std::string_view, 8> kBuildingTypes = {
     "residential", "office", "hospital", "canteen", "retail", "warehouse", "school", "airport"};
-constexpr std::array<std::string_view, 8> kSiUnits = {"m",        "m²",         "m³/person", "m²/person",
-                                                      "m/person", "persons/m²", "m/s",       "persons"};
+// "ratio": a dimensionless fraction (e.g. of a plan's diagonal).
+constexpr std::array<std::string_view, 9> kSiUnits = {
+    "m", "m²", "m³/person", "m²/person", "m/person", "persons/m²", "m/s", "persons", "ratio"};
 constexpr std::array<std::string_view, 3> kOrigins = {"btcpp", "hunavsim", "socsim"};
 constexpr std::array<std::string_view, 5> kPortTypes = {"int", "unsigned", "double", "bool", "string"};
 

@@ -128,6 +128,7 @@ class Checker {
     report.building_type = building_type_;
     report.occupant_load = occupant_load_;
     for (const auto& m : constraints_) {
+      if (is_exit_rule(m.constraint.name)) continue;  // thresholds of exit_checks() below
       ComplianceCheck c;
       c.name = m.constraint.name;
       c.applies_to = m.constraint.applies_to;
@@ -147,13 +148,11 @@ class Checker {
       if (c.status == CheckStatus::kFail) report.passed = false;
       report.checks.push_back(std::move(c));
     }
-    // Number and separation of exits (IBC 2018 §1006.3.3, §1007.1.1): built into the checker, as
-    // the store has no entry for them; dwellings (IRC) need one egress door and are not checked.
-    if (!residential_) {
-      for (ComplianceCheck c : exit_checks()) {
-        if (c.status == CheckStatus::kFail) report.passed = false;
-        report.checks.push_back(std::move(c));
-      }
+    // Number and separation of exits (IBC 2018 §1006.3.3, §1007.1.1), from the store's
+    // single-exit limits; dwellings (IRC) need one egress door, and their entries set no limits.
+    for (ComplianceCheck c : exit_checks()) {
+      if (c.status == CheckStatus::kFail) report.passed = false;
+      report.checks.push_back(std::move(c));
     }
     return report;
   }
@@ -519,34 +518,37 @@ class Checker {
         "total width of the exits against " + num(occupant_load_) + " occupants × the per-occupant width";
   }
 
-  // IBC 2018 Table 1006.3.3(2), stories with one exit (first story above grade plane): the
-  // largest occupant load and exit access travel distance one exit may serve.
-  struct SingleExitLimit {
-    double occupants;
-    double travel_m;
-    const char* occupancy;
-  };
-  SingleExitLimit single_exit_limit() const {
-    if (building_type_ == "hospital") return {10, 22.86, "I-2"};  // H-4, H-5, I, R-1, R-2, R-4: 10, 75 ft
-    if (building_type_ == "warehouse") return {29, 30.48, "S"};   // S: 29, 100 ft
-    return {49, 22.86, "A, B, E, F, M, U"};                       // 49, 75 ft
+  static bool is_exit_rule(std::string_view name) {
+    return name == "single_exit_occupant_load" || name == "single_exit_travel_distance" ||
+           name == "exit_separation_diagonal_fraction";
   }
 
+  // The exit count against the single-exit limits (occupants, travel distance) and, where two
+  // exits are required, their separation; none when the store gives no single-exit limits.
   std::vector<ComplianceCheck> exit_checks() {
-    auto base = [](std::string name, std::string unit, std::string section, std::string title) {
+    const MergedConstraint* occupants = find(constraints_, "single_exit_occupant_load");
+    const MergedConstraint* travel = find(constraints_, "single_exit_travel_distance");
+    const MergedConstraint* spread = find(constraints_, "exit_separation_diagonal_fraction");
+    if (occupants == nullptr || travel == nullptr) return {};
+    auto base = [](std::string name, std::string unit, std::string title, const MergedConstraint& from) {
       ComplianceCheck c;
       c.name = std::move(name);
       c.applies_to = "building";
       c.type = "min";
       c.unit = std::move(unit);
-      c.ref_id = "ibc2018_1006_1007_exits";
+      c.ref_id = from.ref_id;
       c.title = std::move(title);
-      c.section = std::move(section);
-      c.jurisdiction = "US";
-      c.confidence = 1.0;
+      for (const auto& src : from.sources) {
+        if (src.section.empty()) continue;
+        if (!c.section.empty()) c.section += "; ";
+        c.section += src.section;
+      }
+      c.jurisdiction = from.jurisdiction;
+      c.confidence = from.constraint.confidence;
       return c;
     };
-    const SingleExitLimit limit = single_exit_limit();
+    const double max_occupants = occupants->constraint.value;
+    const double max_travel = travel->constraint.value;
     const auto ex = exits();
     std::string names;
     for (auto i : ex) names += (names.empty() ? "" : ", ") + world_.doors()[i].name;
@@ -556,29 +558,29 @@ class Checker {
       const double d = travel_distance({i}).first;
       far = far ? std::min(*far, d) : d;
     }
-    const bool crowded = occupant_load_ > limit.occupants + kEps;
-    const bool distant = far && *far > limit.travel_m + kEps;
+    const bool crowded = occupant_load_ > max_occupants + kEps;
+    const bool distant = far && *far > max_travel + kEps;
 
-    ComplianceCheck count = base("exit_count", "exits", "1006.3.3, Table 1006.3.3(2) Stories with one exit",
-                                 "IBC 2018 1006.3: number of exits from a story");
+    ComplianceCheck count = base("exit_count", "exits", "number of exits from a story", *occupants);
     count.required = crowded || distant ? 2.0 : 1.0;
     measure(count, {{names.empty() ? "exits" : names, static_cast<double>(ex.size())}});
     count.detail =
-        "doors to the outside against the single-exit limit of occupancy " + std::string(limit.occupancy) +
-        " (" + num(limit.occupants) + " occupants, " + num2(limit.travel_m) +
-        " m travel): " + num(occupant_load_) + " occupants" +
-        (far ? ", " + num2(*far) + " m of travel to the best single exit" : std::string(", no exit")) +
-        " (built-in rule; the knowledge store holds no entry for it)";
+        "doors to the outside against the single-exit limit (" + num(max_occupants) + " occupants, " +
+        num2(max_travel) + " m travel, " + occupants->ref_id + "): " + num(occupant_load_) + " occupants" +
+        (far ? ", " + num2(*far) + " m of travel to the best single exit" : std::string(", no exit"));
 
-    ComplianceCheck apart = base("exit_separation", "m", "1007.1.1 Two exits or exit access doorways",
-                                 "IBC 2018 1007.1.1: separation of two exits");
+    const double fraction = spread != nullptr ? spread->constraint.value : 0.0;
+    ComplianceCheck apart =
+        base("exit_separation", "m", "separation of two exits", spread != nullptr ? *spread : *occupants);
     double diagonal = 0.0;
     for (const auto& a : world_.zones())
       for (const auto& b : world_.zones())
         for (const Point& p : a.polygon.outer)
           for (const Point& q : b.polygon.outer) diagonal = std::max(diagonal, geometry::distance(p, q));
-    apart.required = diagonal / 2.0;
-    if (count.required < 2.0 || ex.size() < 2) {
+    apart.required = diagonal * fraction;
+    if (spread == nullptr) {
+      not_checked(apart, "the knowledge store gives no separation rule");
+    } else if (count.required < 2.0 || ex.size() < 2) {
       not_applicable(apart, count.required < 2.0 ? "one exit suffices" : "fewer than two exits to separate");
     } else {
       double best = -1.0;
@@ -594,10 +596,9 @@ class Checker {
           }
         }
       measure(apart, {{pair, best}});
-      apart.detail =
-          "straight line between the centres of the two exits farthest apart against half the building's "
-          "overall diagonal (" +
-          num2(diagonal) + " m; unsprinklered)";
+      apart.detail = "straight line between the centres of the two exits farthest apart against " +
+                     num2(fraction) + " of the building's overall diagonal (" + num2(diagonal) +
+                     " m; unsprinklered)";
     }
     return {std::move(count), std::move(apart)};
   }

@@ -174,7 +174,7 @@ TEST_F(KnowledgeBaseTest, UpdatedBuildingCodeIsReindexed) {
   ASSERT_TRUE(r);
   ASSERT_EQ(r->hits.size(), 1u);
   EXPECT_EQ(r->hits.front().provenance.id, "aushfg_icu_room");
-  EXPECT_EQ(kb_->building_codes()->size(), 62u);  // updated in place, not duplicated
+  EXPECT_EQ(kb_->building_codes()->size(), 65u);  // updated in place, not duplicated
 }
 
 TEST_F(KnowledgeBaseTest, HospitalConstraintsIncludeCorridorAndDoorWidthsFromHospitalCodes) {
