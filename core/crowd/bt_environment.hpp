@@ -33,7 +33,7 @@ struct Place {
 
 struct EnvironmentOptions {
   double navigation_resolution = 0.1;  // m per cell of the routing grid (coarsened above max_cells)
-  // m kept from walls by routes: an adult's radius (0.3 m) plus a margin, so that routes do not
+  // m kept from walls by routes: an adult's radius (0.23 m) plus a margin, so that routes do not
   // hug door jambs and corners where the wall force would stall the agent. Still passes a 0.9 m door.
   double navigation_inflation = 0.4;
   std::size_t navigation_max_cells = 400'000;
@@ -102,7 +102,11 @@ class BtEnvironment {
   // --- social state --------------------------------------------------------------------------
   void speak(AgentId id, std::string message);
   [[nodiscard]] std::optional<double> last_spoke(AgentId id) const { return agents_.at(id.value()).spoke_at; }
-  void set_group(AgentId id, std::int64_t group) { agents_.at(id.value()).group = group; }
+  // The reported group and the simulation's group forces.
+  void set_group(AgentId id, std::int64_t group) {
+    agents_.at(id.value()).group = group;
+    (void)sim_.set_group(id, group);
+  }
   [[nodiscard]] std::int64_t group(AgentId id) const { return agents_.at(id.value()).group; }
   // Heading as reported: towards the face point while the agent stays somewhere (standing,
   // queuing, sitting, talking, waiting) or moves slower than 0.25 m/s, else its walking yaw.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/common/rng.hpp"
@@ -153,6 +154,20 @@ bool walk_clears(Vec2 p, Vec2 e, double len, Vec2 a, Vec2 b, double r) {
          point_segment_distance(p, a, b) >= r && point_segment_distance(q, a, b) >= r;
 }
 
+// Whether v, a point of wall o (usually one of its ends), is o's nearest point to p. An end of a
+// wall that touches other walls pushes only when it is the nearest point of all of them: then a
+// polyline — a wall cut into segments, a circle of many sides — pushes from its nearest point
+// like one smooth wall, not once more from every vertex in reach; a corner seen from outside still
+// pushes (once).
+bool nearest_point_is(Vec2 p, Vec2 v, const WallSegment& o) {
+  const double da = (v.x - o.a.x) * (v.x - o.a.x) + (v.y - o.a.y) * (v.y - o.a.y);
+  const double db = (v.x - o.b.x) * (v.x - o.b.x) + (v.y - o.b.y) * (v.y - o.b.y);
+  const Vec2 end = da <= db ? o.a : o.b;
+  const Vec2 other = da <= db ? o.b : o.a;
+  if (std::min(da, db) > 1e-18) return false;  // v inside o (a T-junction): o's own point is nearer
+  return (p.x - end.x) * (other.x - end.x) + (p.y - end.y) * (other.y - end.y) <= 0.0;
+}
+
 // Touching-pair forces (group repulsion, body force) are summed in 64-bit fixed point (2^-32 m/s²
 // resolution), like the quantised social forces: integer addition is associative, so the sum
 // does not depend on the order neighbours are visited in, and the cell-list step and the O(N²)
@@ -187,8 +202,11 @@ class NeighbourSums {
  public:
   // `max_radius` bounds every neighbour's radius: only candidates closer than r + max_radius can
   // touch, and only those are re-examined in double precision by flush().
+  // (ex, ey): the unit walking direction, (0, 0) without a goal; it defines the band in which
+  // headway() looks for the nearest person ahead.
   NeighbourSums(std::uint32_t id, double x, double y, double vx, double vy, double r, std::int32_t group,
-                double cutoff, double max_radius, const ForceParameters& fp, double body_stiffness)
+                double cutoff, double max_radius, const ForceParameters& fp, double body_stiffness, double ex,
+                double ey)
       : id_(id),
         x_(x),
         y_(y),
@@ -201,6 +219,11 @@ class NeighbourSums {
         close2_((r + max_radius) * (r + max_radius) * (1.0 + 1e-5) + 2.0 * kTiny2),
         repulsion_factor_(fp.group_repulsion_factor),
         body_stiffness_(body_stiffness),
+        ex_(static_cast<float>(ex)),
+        ey_(static_cast<float>(ey)),
+        heading_(ex != 0.0 || ey != 0.0),
+        speed_along_(static_cast<float>(vx * ex + vy * ey)),
+        band_(static_cast<float>(r)),
         params_{static_cast<float>(fp.lambda),      static_cast<float>(fp.gamma),
                 static_cast<float>(1.0 / fp.gamma), static_cast<float>(fp.n),
                 static_cast<float>(fp.n_prime),     static_cast<float>(fp.social_factor)} {}
@@ -252,6 +275,9 @@ class NeighbourSums {
       }
       touching(a.x[k] - x_, a.y[k] - y_, d2, reach, a.group[k], who);
     }
+    if (heading_)
+      headway2_ = nearest_ahead2(count_, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ex_, ey_, band_,
+                                 speed_along_, kOncoming, headway2_);
     // Pad to whole vectors with inert entries (all zero: the kernel returns 0 for them).
     const int padded = (count_ + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
     for (int m = count_; m < padded; ++m) batch_.dx[m] = batch_.dy[m] = batch_.dvx[m] = batch_.dvy[m] = 0.0f;
@@ -274,10 +300,16 @@ class NeighbourSums {
     return {static_cast<double>(social_x_) / kForceQuantum, static_cast<double>(social_y_) / kForceQuantum};
   }
 
+  // Centre distance to the nearest person ahead in the walking band (band_) who does not come
+  // towards the agent; +inf when there is none
+  // within the cut-off. A minimum, so independent of the order neighbours are visited in.
+  [[nodiscard]] double headway() const { return std::sqrt(static_cast<double>(headway2_)); }
+
   FixedSum repulsion_x, repulsion_y;
   FixedSum body_x, body_y;
 
  private:
+  static constexpr float kOncoming = 0.1f;  // m/s along the walking direction
   void touching(double dx, double dy, double d2, double reach, std::int32_t gj, std::uint32_t idj) {
     if (group_ >= 0 && gj == group_) {  // LightSFM: Σ (p_i − p_j) over touching group members
       repulsion_x.add(-repulsion_factor_ * dx);
@@ -305,6 +337,14 @@ class NeighbourSums {
   double x_, y_, vx_, vy_, r_;
   std::int32_t group_;
   double cutoff2_, close2_, repulsion_factor_, body_stiffness_;
+  float ex_, ey_;
+  bool heading_;
+  float speed_along_;
+  // Someone counts as ahead when their centre is within the agent's own radius of its walking
+  // line: for equal bodies, when they overlap by more than half their widths. People offset by
+  // more pass by turning their shoulders (staggered rows); the social force keeps them apart.
+  float band_;
+  float headway2_ = std::numeric_limits<float>::infinity();
   SocialParams params_;
   const NeighbourArrays* arrays_ = nullptr;
   int count_ = 0;
@@ -397,18 +437,7 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
     return fail(ErrorCode::kValidation, "invalid agent",
                 {field("/desired_speed", "too fast for dt and wall_cutoff")});
 
-  std::int32_t group = -1;
-  if (spec.group_id >= 0) {
-    auto [it, inserted] =
-        group_index_.try_emplace(spec.group_id, static_cast<std::int32_t>(group_ids_.size()));
-    if (inserted) {
-      group_ids_.push_back(spec.group_id);
-      group_cx_.push_back(0.0);
-      group_cy_.push_back(0.0);
-      group_size_.push_back(0);
-    }
-    group = it->second;
-  }
+  const std::int32_t group = group_slot(spec.group_id);
   meta.activity = spec.activity;
   meta.intent = spec.intent;
   meta.tags = spec.tags;
@@ -540,6 +569,28 @@ Status CrowdSimulation::set_active(AgentId id, bool active) {
   return {};
 }
 
+std::int32_t CrowdSimulation::group_slot(std::int64_t group_id) {
+  if (group_id < 0) return -1;
+  auto [it, inserted] = group_index_.try_emplace(group_id, static_cast<std::int32_t>(group_ids_.size()));
+  if (inserted) {
+    group_ids_.push_back(group_id);
+    group_cx_.push_back(0.0);
+    group_cy_.push_back(0.0);
+    group_size_.push_back(0);
+  }
+  return it->second;
+}
+
+Status CrowdSimulation::set_group(AgentId id, std::int64_t group_id) {
+  if (auto ok = check_id(id, "set_group"); !ok) return ok;
+  if (group_id < -1)
+    return fail(ErrorCode::kValidation, "invalid group",
+                {field("/group_id", "must be -1 (no group) or a non-negative id")});
+  group_[id.value()] = group_slot(group_id);
+  meta_[id.value()].group_id = group_id;
+  return {};
+}
+
 std::optional<Goal> CrowdSimulation::current_goal(AgentId id) const {
   const std::uint32_t i = id.value();
   if (i >= size() || !has_goal_[i]) return std::nullopt;
@@ -567,15 +618,15 @@ PedestrianState CrowdSimulation::state(AgentId id) const {
 void CrowdSimulation::prepare_step() {
   if (walls_dirty_) {
     wall_grid_ = WallGrid(walls_, config_.wall_cutoff);
-    wall_free_ends_.assign(walls_.size(), 0);
+    wall_link_start_.assign(1, 0);
+    wall_links_.clear();
     for (std::size_t w = 0; w < walls_.size(); ++w) {
-      const auto attached = [&](Vec2 end) {
+      for (const Vec2 end : {walls_[w].a, walls_[w].b}) {
         for (std::uint32_t o : wall_grid_.near(end.x, end.y))
-          if (o != w && point_segment_distance(end, walls_[o].a, walls_[o].b) <= 1e-9) return true;
-        return false;
-      };
-      wall_free_ends_[w] =
-          static_cast<std::uint8_t>((attached(walls_[w].a) ? 0 : 1) | (attached(walls_[w].b) ? 0 : 2));
+          if (o != w && point_segment_distance(end, walls_[o].a, walls_[o].b) <= 1e-9)
+            wall_links_.push_back(o);
+        wall_link_start_.push_back(static_cast<std::uint32_t>(wall_links_.size()));
+      }
     }
     walls_dirty_ = false;
   }
@@ -740,8 +791,9 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   const double dt = config_.dt;
   ForceBreakdown f;
 
-  // Desired force: relax towards the desired speed along the goal direction (LightSFM
-  // computeDesiredForce); brake with −v/τ when there is no goal or it is reached.
+  // Desired force (computed after the neighbour scan): relax towards the desired speed along the
+  // goal direction (LightSFM computeDesiredForce); brake with −v/τ when there is no goal or it is
+  // reached.
   double ex = 0.0;
   double ey = 0.0;
   double goal_distance = 0.0;
@@ -758,15 +810,9 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
       heading = true;
     }
   }
-  if (heading) {
-    f.desired = {fp.desired_factor * (ex * v0_[i] - vx) / fp.relaxation_time,
-                 fp.desired_factor * (ey * v0_[i] - vy) / fp.relaxation_time};
-  } else {
-    f.desired = {-vx / fp.relaxation_time, -vy / fp.relaxation_time};
-  }
-
   // Obstacle force: the nearest point of every wall within the cut-off pushes with
-  // A·exp(−(d − r)/σ). A vertex shared by two walls counts once. When the nearest point is a
+  // A·exp(−(d − r)/σ). An end shared with other walls pushes (once) only where it is the nearest
+  // point of all of them (nearest_point_is). When the nearest point is a
   // free wall end (a door jamb) and the body clears that wall walking straight to its goal, the
   // end only pushes across the walking direction: it steers, it does not brake (nor push from
   // behind once passed). See docs/crowd.md, "doorways".
@@ -788,8 +834,16 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
       const double dy = y - q.y;
       const double d2 = dx * dx + dy * dy;
       if (d2 > wc2) continue;
-      if (t == 0.0 || t == 1.0) {
+      const unsigned end_bit = t == 0.0 ? 1u : (t == 1.0 ? 2u : 0u);  // nearest point at an end
+      bool free_end = false;
+      if (end_bit != 0) {
         const Vec2 v = t == 0.0 ? s.a : s.b;
+        const std::size_t e = 2 * static_cast<std::size_t>(w) + (end_bit - 1);
+        free_end = wall_link_start_[e] == wall_link_start_[e + 1];
+        bool hidden = false;
+        for (std::uint32_t k = wall_link_start_[e]; k < wall_link_start_[e + 1] && !hidden; ++k)
+          hidden = !nearest_point_is({x, y}, v, walls_[wall_links_[k]]);
+        if (hidden) continue;
         bool seen = false;
         for (std::size_t k = 0; k < vertex_count; ++k) seen = seen || vertices[k] == v;
         if (seen) continue;
@@ -816,8 +870,6 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
       double fx = magnitude * nx;
       double fy = magnitude * ny;
       const double along = nx * ex + ny * ey;  // component along the walking direction (0 without a goal)
-      const unsigned end_bit = t == 0.0 ? 1u : (t == 1.0 ? 2u : 0u);  // nearest point at an end
-      const bool free_end = (wall_free_ends_[w] & end_bit) != 0;
       if (free_end && along != 0.0 && walk_clears({x, y}, {ex, ey}, sweep, s.a, s.b, r)) {
         fx -= magnitude * along * ex;
         fy -= magnitude * along * ey;
@@ -831,9 +883,19 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   const std::int32_t g = group_[i];
   {
     NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, max_radius_, fp,
-                       config_.body_stiffness);
+                       config_.body_stiffness, ex, ey);
     neighbours(sums, x, y);
     sums.flush();
+    if (heading) {
+      // The desired speed, capped by the headway to the person ahead (speed–headway adaptation).
+      double v0 = v0_[i];
+      if (fp.headway_time > 0.0)
+        v0 = std::min(v0, std::max(0.0, (sums.headway() - fp.headway_distance) / fp.headway_time));
+      f.desired = {fp.desired_factor * (ex * v0 - vx) / fp.relaxation_time,
+                   fp.desired_factor * (ey * v0 - vy) / fp.relaxation_time};
+    } else {
+      f.desired = {-vx / fp.relaxation_time, -vy / fp.relaxation_time};
+    }
     f.social = sums.social();
     f.group = {sums.repulsion_x.value(), sums.repulsion_y.value()};
     f.body = {sums.body_x.value(), sums.body_y.value()};

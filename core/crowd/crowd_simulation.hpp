@@ -92,6 +92,8 @@ class CrowdSimulation {
   Status set_bt_node(AgentId id, std::string node);
   // An inactive agent is frozen and invisible to the others (e.g. after leaving by an exit).
   Status set_active(AgentId id, bool active);
+  // Moves the agent into group `group_id` (-1: no group); group forces apply from the next step.
+  Status set_group(AgentId id, std::int64_t group_id);
 
   // --- running ------------------------------------------------------------------------------
   void step();
@@ -124,6 +126,8 @@ class CrowdSimulation {
   struct CellIndex;
   struct AgentMeta;
   Status check_id(AgentId id, const char* what) const;
+  // The dense index of a group id (created on first use); -1 for no group.
+  std::int32_t group_slot(std::int64_t group_id);
   void prepare_step();
   void finish_step();
   void build_cells();
@@ -137,8 +141,11 @@ class CrowdSimulation {
 
   std::vector<WallSegment> walls_;
   WallGrid wall_grid_;
-  // Per wall: bit 0 = end a, bit 1 = end b is free (touches no other wall), as at a door jamb.
-  std::vector<std::uint8_t> wall_free_ends_;
+  // The walls touching each wall end (end a of wall w is 2w, end b is 2w + 1): the links of end
+  // e are wall_links_[wall_link_start_[e] .. wall_link_start_[e + 1]). A free end (a door jamb)
+  // has none.
+  std::vector<std::uint32_t> wall_link_start_;
+  std::vector<std::uint32_t> wall_links_;
   bool walls_dirty_ = false;
 
   // Frozen state (read during a step) and the next state (written by it).

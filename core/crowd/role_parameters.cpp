@@ -63,6 +63,8 @@ Status validate(const RoleParameters& r, const std::string& p) {
                    {"/forces/n", f.n, 0.0, 100.0, false},
                    {"/forces/n_prime", f.n_prime, 0.0, 100.0, false},
                    {"/forces/relaxation_time", f.relaxation_time, 0.01, 100.0, false},
+                   {"/forces/headway_distance", f.headway_distance, 0.0, 10.0, false},
+                   {"/forces/headway_time", f.headway_time, 0.0, 100.0, false},
                    {"/proxemics/intimate_radius", r.proxemics.intimate_radius, 0.0, 100.0, false},
                    {"/proxemics/comfort_radius", r.proxemics.comfort_radius, 0.0, 100.0, false},
                    {"/proxemics/social_radius", r.proxemics.social_radius, 0.0, 100.0, false},
@@ -98,7 +100,9 @@ Json to_json(const RoleParameters& r) {
         {"gamma", f.gamma},
         {"n", f.n},
         {"n_prime", f.n_prime},
-        {"relaxation_time", f.relaxation_time}}},
+        {"relaxation_time", f.relaxation_time},
+        {"headway_distance", f.headway_distance},
+        {"headway_time", f.headway_time}}},
       {"proxemics",
        {{"intimate_radius", r.proxemics.intimate_radius},
         {"comfort_radius", r.proxemics.comfort_radius},
@@ -132,7 +136,7 @@ Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParame
     check.only_keys(*f, fp,
                     {"desired_factor", "obstacle_factor", "obstacle_sigma", "social_factor",
                      "group_gaze_factor", "group_coherence_factor", "group_repulsion_factor", "lambda",
-                     "gamma", "n", "n_prime", "relaxation_time"});
+                     "gamma", "n", "n_prime", "relaxation_time", "headway_distance", "headway_time"});
     ForceParameters& x = r.forces;
     read(check, *f, fp, "desired_factor", x.desired_factor);
     read(check, *f, fp, "obstacle_factor", x.obstacle_factor);
@@ -146,6 +150,8 @@ Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParame
     read(check, *f, fp, "n", x.n);
     read(check, *f, fp, "n_prime", x.n_prime);
     read(check, *f, fp, "relaxation_time", x.relaxation_time);
+    read(check, *f, fp, "headway_distance", x.headway_distance);
+    read(check, *f, fp, "headway_time", x.headway_time);
   }
   if (const Json* x = check.object(j, p, "proxemics", false)) {
     const std::string xp = JsonChecker::child(p, "proxemics");
@@ -165,15 +171,16 @@ Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParame
 
 RoleTable RoleTable::defaults() {
   RoleTable t;
-  // Weidmann (1993): free walking speed 1.34 ± 0.26 m/s. Radius 0.3 m lies in the 0.25–0.35 m
-  // range of Helbing, Farkas & Vicsek (2000).
-  t.roles_.push_back(role("adult", {1.34, 0.26, 0.5, 2.2}, 0.3));
+  // Weidmann (1993): free walking speed 1.34 ± 0.26 m/s. Radius 0.23 m: circles of that size,
+  // packed hexagonally, reach Weidmann's jam density of 5.4 persons/m² (and 0.46 m is about the
+  // shoulder breadth of adults); larger bodies jam a crowd long before real ones do.
+  t.roles_.push_back(role("adult", {1.34, 0.26, 0.5, 2.2}, 0.23));
   // Bohannon & Williams Andrews (2011), normal gait speed, ages 80–99: 0.94–0.97 m/s.
-  t.roles_.push_back(role("elderly", {0.95, 0.20, 0.4, 1.5}, 0.3));
+  t.roles_.push_back(role("elderly", {0.95, 0.20, 0.4, 1.5}, 0.23));
   // Assumed: staff walk with purpose, in the upper part of Weidmann's distribution.
-  t.roles_.push_back(role("staff", {1.45, 0.20, 0.8, 2.2}, 0.3));
+  t.roles_.push_back(role("staff", {1.45, 0.20, 0.8, 2.2}, 0.23));
   // Assumed: recreational jogging pace of about 10 km/h.
-  t.roles_.push_back(role("jogger", {2.7, 0.4, 1.8, 4.0}, 0.3));
+  t.roles_.push_back(role("jogger", {2.7, 0.4, 1.8, 4.0}, 0.23));
   // Assumed: slower than adults, with a larger footprint for the pram.
   t.roles_.push_back(role("stroller_pusher", {1.1, 0.2, 0.5, 1.6}, 0.45));
   return t;

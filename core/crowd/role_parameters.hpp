@@ -28,6 +28,13 @@ struct ForceParameters {
   double n = 2.0;                       // angular decay of the sideways term
   double n_prime = 3.0;                 // angular decay of the deceleration term (nPrime)
   double relaxation_time = 0.5;         // s
+  // Speed–headway adaptation (an addition to LightSFM, after Seyfried et al. 2005 and Tordeux,
+  // Chraibi & Seyfried 2016): the desired speed is capped at (s − headway_distance)/headway_time,
+  // s being the centre distance to the nearest person straight ahead who is not coming towards the
+  // agent. Defaults calibrated on Weidmann's fundamental diagram (docs/crowd.md); headway_time = 0
+  // turns it off (pure LightSFM).
+  double headway_distance = 0.4;  // m
+  double headway_time = 0.5;      // s
   friend bool operator==(const ForceParameters&, const ForceParameters&) = default;
 };
 
@@ -43,7 +50,7 @@ struct SpeedDistribution {
 struct RoleParameters {
   std::string name;
   SpeedDistribution speed;
-  double radius = 0.3;            // m
+  double radius = 0.23;           // m
   double max_speed_factor = 1.0;  // |v| <= factor · desired speed (LightSFM clamps at 1.0)
   ForceParameters forces;
   Proxemics proxemics;

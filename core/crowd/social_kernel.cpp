@@ -1,6 +1,8 @@
 #include "core/crowd/social_kernel.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <climits>
 #include <cmath>
 
 #include "core/crowd/fast_math.hpp"
@@ -57,6 +59,29 @@ void social_kernel(const SocialParams& p, int count, const float* __restrict dx,
     fx[m] = static_cast<std::int32_t>(gx);
     fy[m] = static_cast<std::int32_t>(gy);
   }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+float nearest_ahead2(int count, const float* __restrict dx, const float* __restrict dy,
+                     const float* __restrict dvx, const float* __restrict dvy, float ex, float ey, float band,
+                     float speed_along, float oncoming, float best) {
+  // d² >= 0, and the bits of non-negative floats order like the floats: an integer minimum
+  // vectorises where a float one would need -ffast-math.
+  const float band2 = band * band;
+  std::int32_t least = std::bit_cast<std::int32_t>(best);
+  for (int m = 0; m < count; ++m) {
+    const float ox = dx[m];
+    const float oy = dy[m];
+    const float ahead = ox * ex + oy * ey;
+    const float side = ox * ey - oy * ex;
+    const float toward = speed_along - (dvx[m] * ex + dvy[m] * ey);
+    const std::int32_t d2 = std::bit_cast<std::int32_t>(ox * ox + oy * oy);
+    const bool counts = (ahead > 0.0f) & (side * side < band2) & (toward >= -oncoming);  // no branches
+    least = std::min(least, counts ? d2 : INT32_MAX);
+  }
+  return std::bit_cast<float>(least);
 }
 
 }  // namespace socsim::crowd

@@ -39,4 +39,13 @@ void social_kernel(const SocialParams& p, int count, const float* __restrict dx,
                    const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,
                    const float* __restrict tie_y, std::int32_t* __restrict fx, std::int32_t* __restrict fy);
 
+// The speed–headway search over the same batch: the smallest squared distance d² to a neighbour
+// straight ahead — (dx, dy)·e > 0, its centre within `band` of the walking line through the agent
+// along the unit direction e, and not walking towards the agent (v_j·e ≥ −oncoming, with
+// v_j·e = speed_along − dv·e) — or `best` when none is nearer. A minimum of floats, so the order
+// of the batch does not matter.
+float nearest_ahead2(int count, const float* __restrict dx, const float* __restrict dy,
+                     const float* __restrict dvx, const float* __restrict dvy, float ex, float ey, float band,
+                     float speed_along, float oncoming, float best);
+
 }  // namespace socsim::crowd

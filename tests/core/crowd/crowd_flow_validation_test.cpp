@@ -95,11 +95,14 @@ double tangential_speed(const Ring& ring, std::size_t i) {
 }
 
 // Weidmann's fundamental diagram (speed against density, pedestrians in corridors) at 0.5–4
-// persons/m². Stated tolerance: 0.4 m/s around the curve at every density (the empirical
-// fundamental diagrams themselves differ by up to about this much in the middle range, e.g.
-// Weidmann 1993 against Mori & Tsukaguchi 1987), and speeds must fall with density. Measured
-// (seeds as below): 1.25, 1.18, 0.98, 0.35, 0.01 m/s against 1.30, 1.06, 0.61, 0.33, 0.16 — the
-// model is too fast at 2 /m² (+0.39 m/s, at the edge of the tolerance) and jams at 4 /m².
+// persons/m². Stated tolerance: 0.2 m/s around the curve at every density — about how far the
+// published diagrams lie apart in this range (the SFPE handbook's v = 1.40·(1 − 0.266ρ) differs
+// from Weidmann's by up to 0.16 m/s between 0.5 and 4 /m²) — and speeds must fall with density.
+// The speed–headway parameters were calibrated on this curve (docs/crowd.md), so this test keeps
+// the calibration; the counter-flow, bottleneck and RiMEA tests check the model independently.
+// Measured (seeds as below): 1.14, 0.95, 0.70, 0.42, 0.22 m/s against 1.30, 1.06, 0.61, 0.33,
+// 0.16 — a little slow in free flow (no overtaking in a 2.5 m ring: platoons form behind slow
+// walkers) and a little fast in dense crowds.
 TEST(CrowdFlowValidation, SpeedDensityFollowsWeidmann) {
   double previous = 10.0;
   for (double density : {0.5, 1.0, 2.0, 3.0, 4.0}) {
@@ -118,7 +121,7 @@ TEST(CrowdFlowValidation, SpeedDensityFollowsWeidmann) {
     const double speed = sum / static_cast<double>(samples);
     std::cout << "density " << density << " /m²: " << speed << " m/s (Weidmann " << weidmann(density)
               << ")\n";
-    EXPECT_NEAR(speed, weidmann(density), 0.4) << "density " << density;
+    EXPECT_NEAR(speed, weidmann(density), 0.2) << "density " << density;
     EXPECT_LT(speed, previous);
     previous = speed;
   }
@@ -152,28 +155,30 @@ double lane_order(const Ring& ring) {
   return counted > 0 ? sum / static_cast<double>(counted) : 0.0;
 }
 
-// Counter-flow at 1 person/m², half the crowd each way, randomly mixed at the start: lanes
-// start to form — φ must rise by at least 0.15 above the mixed value. Measured: 0.21 → 0.44 after
-// 60 s with a mean speed of only 0.12 m/s: lanes stay partial and the flow nearly jams, unlike
-// the bidirectional experiments of Zhang et al. (2012) where lanes form within seconds at this
-// density (a weakness of LightSFM's cut-off social force, recorded in docs/crowd.md).
+// Counter-flow at 1 person/m², half the crowd each way, randomly mixed at the start. In the
+// bidirectional experiments of Zhang et al. (2012, J. Stat. Mech. P02002) lanes form within seconds
+// at this density and people keep walking. Three seeds; for each, after 60 s: φ at least 0.4 (from
+// about 0.2 mixed) and a mean speed along the corridor of at least 0.5 m/s (no jam). Measured over
+// seeds 70–79: φ 0.51–0.74, speed 0.63–0.81 m/s.
 TEST(CrowdFlowValidation, CounterFlowFormsLanes) {
-  const auto n = static_cast<std::size_t>(std::round(1.0 * ring_area(6.0)));
-  Ring ring = make_ring(6.0, n, 0.5, 77);
-  const double mixed = lane_order(ring);
-  for (int k = 0; k < 1200; ++k) {  // 60 s
-    if (k % 2 == 0) steer(ring);
-    ring.sim.step();
+  for (std::uint64_t seed : {70, 75, 77}) {
+    const auto n = static_cast<std::size_t>(std::round(1.0 * ring_area(6.0)));
+    Ring ring = make_ring(6.0, n, 0.5, seed);
+    const double mixed = lane_order(ring);
+    for (int k = 0; k < 1200; ++k) {  // 60 s
+      if (k % 2 == 0) steer(ring);
+      ring.sim.step();
+    }
+    const double lanes = lane_order(ring);
+    double speed = 0.0;
+    for (std::size_t i = 0; i < n; ++i) speed += tangential_speed(ring, i);
+    speed /= static_cast<double>(n);
+    std::cout << "seed " << seed << ": lane order parameter " << mixed << " mixed -> " << lanes
+              << " after 60 s; mean speed " << speed << " m/s\n";
+    EXPECT_LT(mixed, 0.3) << "seed " << seed;
+    EXPECT_GE(lanes, 0.4) << "seed " << seed;
+    EXPECT_GE(speed, 0.5) << "seed " << seed;
   }
-  const double lanes = lane_order(ring);
-  double speed = 0.0;
-  for (std::size_t i = 0; i < n; ++i) speed += tangential_speed(ring, i);
-  speed /= static_cast<double>(n);
-  std::cout << "lane order parameter: " << mixed << " mixed -> " << lanes << " after 60 s; mean speed "
-            << speed << " m/s\n";
-  EXPECT_LT(mixed, 0.3);
-  EXPECT_GT(lanes, mixed + 0.15);
-  EXPECT_GT(speed, 0.0);
 }
 
 }  // namespace

@@ -34,6 +34,8 @@ AgentId add(CrowdSimulation& sim, Vec2 p, Vec2 v = {}, double speed = 1.3, std::
   return *id;
 }
 
+constexpr double kAdultRadius = 0.23;  // the default role's body radius
+
 double norm(Vec2 v) {
   return std::hypot(v.x, v.y);
 }
@@ -212,13 +214,46 @@ TEST(CrowdSimulation, ObstacleForceIsLightSfmsExponential) {
   const AgentId a = add(sim, {0, 0.8});
   const ForceBreakdown f = sim.forces(a);
   EXPECT_NEAR(f.obstacle.x, 0.0, 1e-12);
-  EXPECT_NEAR(f.obstacle.y, 10.0 * std::exp(-(0.8 - 0.3) / 0.2), 1e-9);
-  // A corner: the shared vertex pushes once, not twice.
+  EXPECT_NEAR(f.obstacle.y, 10.0 * std::exp(-(0.8 - kAdultRadius) / 0.2), 1e-9);
+  // A corner seen from outside: the shared vertex pushes once, not twice.
   CrowdSimulation corner = make();
   ASSERT_TRUE(corner.add_wall({0, 0}, {0, 5}));
   ASSERT_TRUE(corner.add_wall({0, 0}, {5, 0}));
   const AgentId c = add(corner, {-0.6, -0.8});
-  EXPECT_NEAR(norm(corner.forces(c).obstacle), 10.0 * std::exp(-(1.0 - 0.3) / 0.2), 1e-9);
+  EXPECT_NEAR(norm(corner.forces(c).obstacle), 10.0 * std::exp(-(1.0 - kAdultRadius) / 0.2), 1e-9);
+}
+
+// A wall cut into pieces pushes like the whole wall: the ends where pieces meet are not extra
+// obstacles (each end pushes only where it is the nearest point of every wall meeting there).
+TEST(CrowdSimulation, PolylineWallsPushLikeOneSmoothWall) {
+  CrowdSimulation whole = make();
+  ASSERT_TRUE(whole.add_wall({-5, 0}, {5, 0}));
+  CrowdSimulation pieces = make();
+  const std::vector<Vec2> line = {{-5, 0}, {-0.4, 0}, {0.3, 0}, {0.9, 0}, {5, 0}};
+  ASSERT_TRUE(pieces.add_polyline(line, false));
+  for (const Vec2 p : {Vec2{0, 0.5}, Vec2{0.3, 0.7}, Vec2{-0.2, 0.35}}) {
+    CrowdSimulation a = make();
+    ASSERT_TRUE(a.add_wall({-5, 0}, {5, 0}));
+    CrowdSimulation b = make();
+    ASSERT_TRUE(b.add_polyline(line, false));
+    const Vec2 fa = a.forces(add(a, p)).obstacle;
+    const Vec2 fb = b.forces(add(b, p)).obstacle;
+    EXPECT_NEAR(fb.x, fa.x, 1e-12) << p.x;
+    EXPECT_NEAR(fb.y, fa.y, 1e-12) << p.x;
+  }
+  // Inside a circle of 96 sides (radius 5 m), 0.6 m from the wall: the push is that of the nearest
+  // side alone, pointing to the centre (before, each of the ~10 vertices within the 2 m cut-off
+  // added its own push and the ring pushed 2.4 times as hard).
+  CrowdSimulation ring = make();
+  std::vector<Vec2> circle;
+  for (int k = 0; k < 96; ++k)
+    circle.push_back({5 * std::cos(2 * std::numbers::pi * (k + 0.5) / 96),
+                      5 * std::sin(2 * std::numbers::pi * (k + 0.5) / 96)});
+  ASSERT_TRUE(ring.add_polyline(circle, true));
+  const double apothem = 5 * std::cos(std::numbers::pi / 96);
+  const Vec2 f = ring.forces(add(ring, {apothem - 0.6, 0})).obstacle;
+  EXPECT_NEAR(f.x, -10.0 * std::exp(-(0.6 - kAdultRadius) / 0.2), 1e-9);
+  EXPECT_NEAR(f.y, 0.0, 1e-9);
 }
 
 TEST(CrowdSimulation, GroupForcesPullMembersTogether) {
@@ -241,6 +276,34 @@ TEST(CrowdSimulation, GroupForcesPullMembersTogether) {
   add(strangers, {0.4, 0});
   EXPECT_LT(pair.forces(p).group.x, 0.0);
   EXPECT_EQ(strangers.forces(s).group.x, 0.0);
+  // Groups can be formed and left while running (behaviour trees' SetGroupId, SetGroupWalk).
+  ASSERT_TRUE(strangers.set_group(s, 9));
+  ASSERT_TRUE(strangers.set_group(AgentId(1), 9));
+  EXPECT_LT(strangers.forces(s).group.x, 0.0);
+  EXPECT_EQ(strangers.state(s).group_id, 9);
+  ASSERT_TRUE(strangers.set_group(s, -1));
+  EXPECT_EQ(strangers.forces(s).group.x, 0.0);
+  EXPECT_EQ(strangers.state(s).group_id, -1);
+  EXPECT_FALSE(strangers.set_group(s, -2));
+  EXPECT_FALSE(strangers.set_group(AgentId(7), 1));
+}
+
+// Speed–headway adaptation: following someone 0.9 m ahead on the walking line caps the desired
+// speed at (0.9 − 0.4)/0.5 = 1.0 m/s; someone beside the line, behind, or coming the other way
+// does not.
+TEST(CrowdSimulation, FollowersSlowToTheirHeadway) {
+  const auto desired_x = [](Vec2 other, Vec2 other_velocity) {
+    CrowdSimulation sim = make();
+    const AgentId a = add(sim, {0, 0}, {1.3, 0});
+    add(sim, other, other_velocity);
+    EXPECT_TRUE(sim.set_goal(a, Goal{{20, 0}, 0.3}));
+    return sim.forces(a).desired.x;
+  };
+  EXPECT_NEAR(desired_x({0.9, 0.0}, {1.0, 0}), 2.0 * (1.0 - 1.3) / 0.5, 1e-5);
+  EXPECT_NEAR(desired_x({0.9, 0.4}, {1.0, 0}), 0.0, 1e-12);   // beside the walking line
+  EXPECT_NEAR(desired_x({-0.9, 0.0}, {1.0, 0}), 0.0, 1e-12);  // behind
+  EXPECT_NEAR(desired_x({0.9, 0.0}, {-1.0, 0}), 0.0, 1e-12);  // oncoming: left to the social force
+  EXPECT_NEAR(desired_x({0.3, 0.0}, {0.0, 0}), 2.0 * (0.0 - 1.3) / 0.5, 1e-12);  // closer than 0.4 m: stop
 }
 
 // ---- determinism and the reference ------------------------------------------------------------

@@ -61,7 +61,7 @@ TEST(RoleParameters, TableAppliesOverridesAndAddsRoles) {
   ASSERT_TRUE(ok) << ok.error().message();
   ASSERT_TRUE(t.index_of("nurse"));
   EXPECT_DOUBLE_EQ(t.at(*t.index_of("nurse")).speed.mean, 1.5);
-  EXPECT_DOUBLE_EQ(t.at(*t.index_of("nurse")).radius, 0.3);  // from adult
+  EXPECT_DOUBLE_EQ(t.at(*t.index_of("nurse")).radius, 0.23);  // from adult
   EXPECT_DOUBLE_EQ(t.at(*t.index_of("adult")).radius, 0.25);
 }
 
@@ -81,7 +81,15 @@ TEST(RoleParameters, BadOverridesNameTheFieldAndChangeNothing) {
   EXPECT_THAT(e, Contains(Field(&FieldError::pointer, "/roles/child/speed/min")));
   EXPECT_THAT(e, Contains(Field(&FieldError::pointer, "/roles/robot/max_speed_factor")));
   EXPECT_FALSE(t.index_of("child"));
-  EXPECT_DOUBLE_EQ(t.at(*t.index_of("adult")).radius, 0.3);
+  EXPECT_DOUBLE_EQ(t.at(*t.index_of("adult")).radius, 0.23);
+  // The speed–headway parameters are checked like the LightSFM ones.
+  auto headway =
+      t.apply_json(Json::parse(R"({"adult": {"forces": {"headway_time": -1, "headway_distance": "far"}}})"));
+  ASSERT_FALSE(headway);
+  EXPECT_THAT(headway.error().errors, Contains(Field(&FieldError::pointer, "/adult/forces/headway_time")));
+  EXPECT_THAT(headway.error().errors,
+              Contains(Field(&FieldError::pointer, "/adult/forces/headway_distance")));
+  EXPECT_DOUBLE_EQ(t.at(*t.index_of("adult")).forces.headway_time, 0.5);
   EXPECT_FALSE(t.apply_json(Json::array()));
 }
 
