@@ -1,10 +1,13 @@
 // The step's vectorised pieces give the same bits as their portable forms: the neighbour gather
-// (AVX2 where the CPU has it) against the scalar loop, and the pair kernel's lanes against the
-// same pair computed alone.
+// (AVX2 where the CPU has it) against the scalar loop, and the pair kernel's lanes and the headway
+// search against the same pair computed alone.
 #include "core/crowd/neighbour_gather.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -164,6 +167,38 @@ TEST(SocialKernel, EveryLaneEqualsThePairComputedAlone) {
     nonzero += batch.fx[m] != 0 || batch.fy[m] != 0;
   }
   EXPECT_GT(nonzero, kBatch / 2);  // the forces are not trivially zero
+}
+
+// The headway search over a whole batch (vector lanes) finds the same neighbour as asking each
+// pair alone (the scalar tail): the nearest one ahead, within the band, not coming towards the agent.
+TEST(SocialKernel, NearestAheadOverTheBatchEqualsPairByPair) {
+  Rng rng(29);
+  PairBatch batch{};
+  for (int m = 0; m < kBatch; ++m) {
+    batch.dx[m] = static_cast<float>(rng.uniform(-3.0, 3.0));
+    batch.dy[m] = static_cast<float>(rng.uniform(-0.6, 0.6));
+    batch.dvx[m] = static_cast<float>(rng.uniform(-2.0, 2.0));
+    batch.dvy[m] = static_cast<float>(rng.uniform(-0.5, 0.5));
+  }
+  const float inf = std::numeric_limits<float>::infinity();
+  const auto ahead = [&](int begin, int count) {
+    return nearest_ahead2(count, batch.dx + begin, batch.dy + begin, batch.dvx + begin, batch.dvy + begin,
+                          1.0f, 0.0f, 0.23f, 1.2f, 0.1f, inf);
+  };
+  float alone = inf;
+  int counted = 0;
+  for (int m = 0; m < kBatch; ++m) {
+    const float one = ahead(m, 1);
+    const bool expected = batch.dx[m] > 0.0f && std::abs(batch.dy[m]) < 0.23f && 1.2f - batch.dvx[m] >= -0.1f;
+    EXPECT_EQ(one != inf, expected) << "lane " << m;
+    counted += expected;
+    alone = std::min(alone, one);
+  }
+  ASSERT_GT(counted, 2);  // the case is not trivial
+  EXPECT_EQ(ahead(0, kBatch), alone);
+  EXPECT_EQ(
+      nearest_ahead2(kBatch, batch.dx, batch.dy, batch.dvx, batch.dvy, 1.0f, 0.0f, 0.23f, 1.2f, 0.1f, 0.01f),
+      0.01f);  // a nearer one found earlier stays
 }
 
 }  // namespace
