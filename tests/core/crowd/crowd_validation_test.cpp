@@ -196,36 +196,50 @@ TEST(CrowdValidation, BottleneckFlowAndJamInFront) {
   }
 }
 
-// Free-walking speeds of real pedestrians (UCY zara01; Lerner et al. 2007) against ours. The
-// file lists frame, id, x, y with 10 frames = 0.4 s. A step counts as free walking when the
-// pedestrian moves (> 0.3 m/s) and nobody else is within 3 m. Both means must lie in the
-// 0.9–1.5 m/s band of observed free walking speeds (Weidmann 1993 reports 1.34 ± 0.26).
-TEST(CrowdValidation, FreeWalkingSpeedsMatchZara01) {
-  const std::string path = std::string(SOCSIM_SHARED_DIR) + "/peers/trajectories/crowds_zara01.txt";
+// ETH/UCY tracks: frame -> pedestrian id -> position; rows are frame, id, x, y, and 10 frames are
+// 0.4 s. Empty when the file cannot be read.
+using Tracks = std::map<long, std::map<long, Vec2>>;
+Tracks read_tracks(const std::string& path) {
   std::ifstream in(path);
-  if (!in) GTEST_SKIP() << "UCY zara01 trajectories not found at " << path;
-  std::map<long, std::map<long, Vec2>> frames;  // frame -> id -> position
+  Tracks frames;
   std::string line;
   while (std::getline(in, line)) {
     std::istringstream row(line);
     double frame = 0, id = 0, x = 0, y = 0;
     if (row >> frame >> id >> x >> y) frames[std::lround(frame)][std::lround(id)] = {x, y};
   }
-  ASSERT_GT(frames.size(), 100u);
-  std::vector<double> observed;
+  return frames;
+}
+
+// Calls f(people, id, position, speed) for every pedestrian seen in a frame and 0.4 s later.
+template <class F>
+void each_track_step(const Tracks& frames, F f) {
   for (const auto& [frame, people] : frames) {
     auto next = frames.find(frame + 10);
     if (next == frames.end()) continue;
     for (const auto& [id, p] : people) {
       auto q = next->second.find(id);
-      if (q == next->second.end()) continue;
-      bool alone = true;
-      for (const auto& [other, o] : people)
-        alone = alone && (other == id || std::hypot(o.x - p.x, o.y - p.y) > 3.0);
-      const double v = std::hypot(q->second.x - p.x, q->second.y - p.y) / 0.4;
-      if (alone && v > 0.3) observed.push_back(v);
+      if (q != next->second.end()) f(people, id, p, std::hypot(q->second.x - p.x, q->second.y - p.y) / 0.4);
     }
   }
+}
+
+// Free-walking speeds of real pedestrians (UCY zara01; Lerner et al. 2007) against ours. The
+// file lists frame, id, x, y with 10 frames = 0.4 s. A step counts as free walking when the
+// pedestrian moves (> 0.3 m/s) and nobody else is within 3 m. Both means must lie in the
+// 0.9–1.5 m/s band of observed free walking speeds (Weidmann 1993 reports 1.34 ± 0.26).
+TEST(CrowdValidation, FreeWalkingSpeedsMatchZara01) {
+  const std::string path = std::string(SOCSIM_SHARED_DIR) + "/peers/trajectories/crowds_zara01.txt";
+  if (!std::ifstream(path)) GTEST_SKIP() << "UCY zara01 trajectories not found at " << path;
+  const Tracks frames = read_tracks(path);
+  ASSERT_GT(frames.size(), 100u);
+  std::vector<double> observed;
+  each_track_step(frames, [&](const auto& people, long id, Vec2 p, double v) {
+    bool alone = true;
+    for (const auto& [other, o] : people)
+      alone = alone && (other == id || std::hypot(o.x - p.x, o.y - p.y) > 3.0);
+    if (alone && v > 0.3) observed.push_back(v);
+  });
   ASSERT_GT(observed.size(), 100u);
   const double observed_mean = std::accumulate(observed.begin(), observed.end(), 0.0) / observed.size();
 
@@ -245,29 +259,16 @@ TEST(CrowdValidation, FreeWalkingSpeedsMatchZara01) {
 }
 
 // Nearest-neighbour distances of walking people (> 0.3 m/s over 0.4 s), one sample per person and
-// frame, in a table of frame, id, x, y rows with frames 10 apart (0.4 s).
+// frame, sorted.
 std::vector<double> observed_nearest_distances(const std::string& path) {
-  std::ifstream in(path);
-  std::map<long, std::map<long, Vec2>> frames;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream row(line);
-    double frame = 0, id = 0, x = 0, y = 0;
-    if (row >> frame >> id >> x >> y) frames[std::lround(frame)][std::lround(id)] = {x, y};
-  }
   std::vector<double> out;
-  for (const auto& [frame, people] : frames) {
-    auto next = frames.find(frame + 10);
-    if (next == frames.end()) continue;
-    for (const auto& [id, p] : people) {
-      auto q = next->second.find(id);
-      if (q == next->second.end() || std::hypot(q->second.x - p.x, q->second.y - p.y) / 0.4 <= 0.3) continue;
-      double nearest = 1e300;
-      for (const auto& [other, o] : people)
-        if (other != id) nearest = std::min(nearest, std::hypot(o.x - p.x, o.y - p.y));
-      if (nearest < 1e300) out.push_back(nearest);
-    }
-  }
+  each_track_step(read_tracks(path), [&](const auto& people, long id, Vec2 p, double v) {
+    if (v <= 0.3) return;
+    double nearest = 1e300;
+    for (const auto& [other, o] : people)
+      if (other != id) nearest = std::min(nearest, std::hypot(o.x - p.x, o.y - p.y));
+    if (nearest < 1e300) out.push_back(nearest);
+  });
   std::sort(out.begin(), out.end());
   return out;
 }
