@@ -812,10 +812,11 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   }
   // Obstacle force: the nearest point of every wall within the cut-off pushes with
   // A·exp(−(d − r)/σ). An end shared with other walls pushes (once) only where it is the nearest
-  // point of all of them (nearest_point_is). When the nearest point is a
-  // free wall end (a door jamb) and the body clears that wall walking straight to its goal, the
-  // end only pushes across the walking direction: it steers, it does not brake (nor push from
-  // behind once passed). See docs/crowd.md, "doorways".
+  // point of all of them (nearest_point_is). When the nearest point is a wall end — a free end (a
+  // door jamb in a thin wall) or a corner seen from outside (a jamb in a thick wall) — and the body
+  // clears every wall meeting there walking straight to its goal, the end only pushes across the
+  // walking direction: it steers, it does not brake (nor push from behind once passed). See
+  // docs/crowd.md, "doorways".
   const std::span<const std::uint32_t> near_walls = wall_grid_.near(x, y);
   {
     const double wc2 = config_.wall_cutoff * config_.wall_cutoff;
@@ -835,11 +836,11 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
       const double d2 = dx * dx + dy * dy;
       if (d2 > wc2) continue;
       const unsigned end_bit = t == 0.0 ? 1u : (t == 1.0 ? 2u : 0u);  // nearest point at an end
-      bool free_end = false;
+      std::size_t end = 0;  // with end_bit: the wall end's index into wall_link_start_
       if (end_bit != 0) {
         const Vec2 v = t == 0.0 ? s.a : s.b;
         const std::size_t e = 2 * static_cast<std::size_t>(w) + (end_bit - 1);
-        free_end = wall_link_start_[e] == wall_link_start_[e + 1];
+        end = e;
         bool hidden = false;
         for (std::uint32_t k = wall_link_start_[e]; k < wall_link_start_[e + 1] && !hidden; ++k)
           hidden = !nearest_point_is({x, y}, v, walls_[wall_links_[k]]);
@@ -870,9 +871,16 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
       double fx = magnitude * nx;
       double fy = magnitude * ny;
       const double along = nx * ex + ny * ey;  // component along the walking direction (0 without a goal)
-      if (free_end && along != 0.0 && walk_clears({x, y}, {ex, ey}, sweep, s.a, s.b, r)) {
-        fx -= magnitude * along * ex;
-        fy -= magnitude * along * ey;
+      if (end_bit != 0 && along != 0.0) {
+        // A wall end (a free end, or a corner seen from outside) that the straight walk passes.
+        bool clears = walk_clears({x, y}, {ex, ey}, sweep, s.a, s.b, r);
+        for (std::uint32_t k = wall_link_start_[end]; k < wall_link_start_[end + 1] && clears; ++k)
+          clears =
+              walk_clears({x, y}, {ex, ey}, sweep, walls_[wall_links_[k]].a, walls_[wall_links_[k]].b, r);
+        if (clears) {
+          fx -= magnitude * along * ex;
+          fy -= magnitude * along * ey;
+        }
       }
       f.obstacle.x += fx;
       f.obstacle.y += fy;

@@ -16,7 +16,7 @@ start() {
   "$SOCSIM" serve --port "$PORT" --ws-port "$WS_PORT" --db "$DB" --web-root "$WORK" --rate-limit 0 "$@" \
     >>"$WORK/server.log" 2>&1 &
   PID=$!
-  for _ in $(seq 1 100); do
+  for _ in $(seq 1 300); do  # 30 s: a loaded CI machine (the sanitizer build) starts slowly
     curl -fsS "$BASE/health" >/dev/null 2>&1 && return 0
     sleep 0.1
   done
