@@ -301,8 +301,8 @@ class NeighbourSums {
   }
 
   // Centre distance to the nearest person ahead in the walking band (band_) who does not come
-  // towards the agent; +inf when there is none
-  // within the cut-off. A minimum, so independent of the order neighbours are visited in.
+  // towards the agent; +inf when there is none within the cut-off. A minimum, so independent of
+  // the order neighbours are visited in.
   [[nodiscard]] double headway() const { return std::sqrt(static_cast<double>(headway2_)); }
 
   FixedSum repulsion_x, repulsion_y;
@@ -310,6 +310,7 @@ class NeighbourSums {
 
  private:
   static constexpr float kOncoming = 0.1f;  // m/s along the walking direction
+
   void touching(double dx, double dy, double d2, double reach, std::int32_t gj, std::uint32_t idj) {
     if (group_ >= 0 && gj == group_) {  // LightSFM: Σ (p_i − p_j) over touching group members
       repulsion_x.add(-repulsion_factor_ * dx);
@@ -836,13 +837,12 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
       const double d2 = dx * dx + dy * dy;
       if (d2 > wc2) continue;
       const unsigned end_bit = t == 0.0 ? 1u : (t == 1.0 ? 2u : 0u);  // nearest point at an end
-      std::size_t end = 0;  // with end_bit: the wall end's index into wall_link_start_
+      // With end_bit: the wall end's index into wall_link_start_ (2w for end a, 2w + 1 for end b).
+      const std::size_t end = 2 * static_cast<std::size_t>(w) + (end_bit == 2u ? 1 : 0);
       if (end_bit != 0) {
         const Vec2 v = t == 0.0 ? s.a : s.b;
-        const std::size_t e = 2 * static_cast<std::size_t>(w) + (end_bit - 1);
-        end = e;
         bool hidden = false;
-        for (std::uint32_t k = wall_link_start_[e]; k < wall_link_start_[e + 1] && !hidden; ++k)
+        for (std::uint32_t k = wall_link_start_[end]; k < wall_link_start_[end + 1] && !hidden; ++k)
           hidden = !nearest_point_is({x, y}, v, walls_[wall_links_[k]]);
         if (hidden) continue;
         bool seen = false;
