@@ -136,16 +136,22 @@ TEST(NeighbourGather, InactiveCandidatesAreSkipped) {
   for (std::uint32_t k : got.slot) EXPECT_NE(k % 3, 0u);
 }
 
-TEST(SocialKernel, EveryLaneEqualsThePairComputedAlone) {
-  Rng rng(17);
-  const SocialParams p{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, 2.1f};
+// A full batch of random pairs: offsets within ±dx, ±dy (m), relative velocities within ±dvx, ±dvy (m/s).
+PairBatch random_batch(std::uint64_t seed, double dx, double dy, double dvx, double dvy) {
+  Rng rng(seed);
   PairBatch batch{};
   for (int m = 0; m < kBatch; ++m) {
-    batch.dx[m] = static_cast<float>(rng.uniform(-3.0, 3.0));
-    batch.dy[m] = static_cast<float>(rng.uniform(-3.0, 3.0));
-    batch.dvx[m] = static_cast<float>(rng.uniform(-2.0, 2.0));
-    batch.dvy[m] = static_cast<float>(rng.uniform(-2.0, 2.0));
+    batch.dx[m] = static_cast<float>(rng.uniform(-dx, dx));
+    batch.dy[m] = static_cast<float>(rng.uniform(-dy, dy));
+    batch.dvx[m] = static_cast<float>(rng.uniform(-dvx, dvx));
+    batch.dvy[m] = static_cast<float>(rng.uniform(-dvy, dvy));
   }
+  return batch;
+}
+
+TEST(SocialKernel, EveryLaneEqualsThePairComputedAlone) {
+  const SocialParams p{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, 2.1f};
+  PairBatch batch = random_batch(17, 3.0, 3.0, 2.0, 2.0);
   batch.dx[5] = batch.dy[5] = 0.0f;  // coincident: the tie direction applies
   batch.tie_x[5] = 0.6f;
   batch.tie_y[5] = 0.8f;
@@ -172,14 +178,7 @@ TEST(SocialKernel, EveryLaneEqualsThePairComputedAlone) {
 // The headway search over a whole batch (vector lanes) finds the same neighbour as asking each
 // pair alone (the scalar tail): the nearest one ahead, within the band, not coming towards the agent.
 TEST(SocialKernel, NearestAheadOverTheBatchEqualsPairByPair) {
-  Rng rng(29);
-  PairBatch batch{};
-  for (int m = 0; m < kBatch; ++m) {
-    batch.dx[m] = static_cast<float>(rng.uniform(-3.0, 3.0));
-    batch.dy[m] = static_cast<float>(rng.uniform(-0.6, 0.6));
-    batch.dvx[m] = static_cast<float>(rng.uniform(-2.0, 2.0));
-    batch.dvy[m] = static_cast<float>(rng.uniform(-0.5, 0.5));
-  }
+  const PairBatch batch = random_batch(29, 3.0, 0.6, 2.0, 0.5);
   const float inf = std::numeric_limits<float>::infinity();
   const auto ahead = [&](int begin, int count) {
     return nearest_ahead2(count, batch.dx + begin, batch.dy + begin, batch.dvx + begin, batch.dvy + begin,
