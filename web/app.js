@@ -3,7 +3,9 @@
 'use strict';
 
 const api = '/api/v1';
-const state = { cursor: null, selected: null, query: {} };
+// `listing` counts listings (first pages): a page that arrives after a newer listing began (a search
+// submitted while the first page loads) is dropped instead of being appended to the new list.
+const state = { cursor: null, selected: null, query: {}, listing: 0 };
 const $ = (id) => document.getElementById(id);
 
 function el(tag, attrs = {}, ...children) {
@@ -49,14 +51,16 @@ function listUrl() {
 
 async function loadPage(reset) {
   if (reset) { state.cursor = null; $('cards').replaceChildren(); }
+  const listing = reset ? ++state.listing : state.listing;
   try {
     const page = await getJson(listUrl());
+    if (listing !== state.listing) return;  // superseded
     for (const c of page.items) $('cards').append(cardItem(c));
     state.cursor = page.next_cursor;
     $('more').hidden = !page.next_cursor;
     $('empty').hidden = $('cards').children.length > 0;
   } catch (e) {
-    toast(`Could not list cards: ${e.message}`);
+    if (listing === state.listing) toast(`Could not list cards: ${e.message}`);
   }
 }
 

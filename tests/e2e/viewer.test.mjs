@@ -42,6 +42,28 @@ test('catalogue lists, searches and opens cards', { skip }, async () => {
   await page.close();
 });
 
+// A search submitted while the first page is still on its way: the late first page must not be
+// added to the search's results (seen on a loaded machine: the list then held every card plus the
+// hit).
+test('a search sent before the first page arrives shows only its own results', { skip }, async () => {
+  const page = await browser.newPage();
+  const isFirstPage = (url) => url.includes('/api/v1/cards?') && !url.includes('q=');
+  await page.route('**/api/v1/cards?*', async (route) => {  // hold back the unfiltered first page
+    if (isFirstPage(route.request().url())) await new Promise((r) => setTimeout(r, 1500));
+    await route.continue();
+  });
+  const firstPage = page.waitForRequest((r) => isFirstPage(r.url()));
+  await page.goto(server.base + '/');
+  await firstPage;
+  await page.fill('#q', 'evacuate');
+  await page.click('#search button');
+  await page.waitForFunction(() => document.querySelectorAll('#cards li').length >= 1);
+  await page.waitForTimeout(2500);  // the first page has arrived by now
+  assert.equal(await page.locator('#cards li').count(), 1);
+  assert.equal(await page.textContent('#cards li .title'), 'Fire drill');
+  await page.close();
+});
+
 test('a card with a world shows its floor plan', { skip }, async () => {
   const world = {
     name: 'two_rooms', units: { length: 'm', angle: 'rad' }, origin: [0, 0],
