@@ -242,8 +242,8 @@ TEST(CrowdSimulation, PolylineWallsPushLikeOneSmoothWall) {
     EXPECT_NEAR(fb.y, fa.y, 1e-12) << p.x;
   }
   // Inside a circle of 96 sides (radius 5 m), 0.6 m from the wall: the push is that of the nearest
-  // side alone, pointing to the centre (before, each of the ~10 vertices within the 2 m cut-off
-  // added its own push and the ring pushed 2.4 times as hard).
+  // side alone, pointing to the centre (before, each of the 12 vertices within the 2 m cut-off
+  // added its own push and the ring pushed 3.6 times as hard here).
   CrowdSimulation ring = make();
   std::vector<Vec2> circle;
   for (int k = 0; k < 96; ++k)
