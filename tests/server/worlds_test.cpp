@@ -131,6 +131,22 @@ TEST(Worlds, BadRequestsNameTheirFields) {
   EXPECT_EQ(Json::parse(llm->body)["errors"][0]["pointer"], "/generator");
 }
 
+// Issue 14 #1: an explicit null was read as "absent" by the field reader but as "given" by the
+// presence check, so the prompt of an empty optional was read (a crash, or a bogus "prompt too long").
+TEST(Worlds, NullPromptOrSceneGraphIsRefusedNotCrashed) {
+  TestServer s;
+  auto c = s.client();
+  for (const Json& body : {Json{{"prompt", nullptr}}, Json{{"scene_graph", nullptr}},
+                           Json{{"prompt", nullptr}, {"scene_graph", nullptr}, {"seed", 3}}}) {
+    auto r = post(c, "/api/v1/worlds", body);
+    ASSERT_TRUE(r) << "server died on " << body.dump();
+    EXPECT_EQ(r->status, 422) << body.dump() << " → " << r->body;
+    EXPECT_THAT(r->body, HasSubstr("give scene_graph (rooms and adjacency) or prompt"));
+    EXPECT_THAT(r->body, ::testing::Not(HasSubstr("too long")));
+  }
+  EXPECT_EQ(c.Get("/api/v1/health")->status, 200);
+}
+
 TEST(Worlds, ListIsPaginatedNewestFirst) {
   TestServer s;
   auto c = s.client();
