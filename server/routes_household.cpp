@@ -9,6 +9,7 @@
 #include "core/household/procthor.hpp"
 #include "core/household/statistics.hpp"
 #include "server/http_util.hpp"
+#include "server/pagination.hpp"
 #include "server/routes.hpp"
 
 namespace socsim::server {
@@ -110,9 +111,10 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
 
   // ---- personas ----
   http.Get("/api/v1/personas", [&ctx](const httplib::Request& req, httplib::Response& res) {
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    const std::size_t size = page->page_size;
     auto all = all_personas(ctx.store);
     if (!all) return reply_problem(res, all.error(), req.path);
     auto posted = hh::list_stored_personas(ctx.store, false);
@@ -120,18 +122,14 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     std::set<std::string> posted_ids;
     for (const auto& p : *posted) posted_ids.insert(hh::persona_id(p));
     std::size_t start = 0;
-    if (auto cursor = query(req, "cursor")) {
+    if (const auto& cursor = page->cursor) {
       auto it = std::find_if(all->begin(), all->end(),
                              [&](const hh::Persona& p) { return hh::persona_id(p) == *cursor; });
-      if (it == all->end())
-        return reply_problem(res,
-                             Error(ErrorCode::kValidation, "unknown cursor",
-                                   {{"", "must be a next_cursor from an earlier page", "cursor", 0, 0}}),
-                             req.path);
+      if (it == all->end()) return reply_problem(res, bad_cursor(), req.path);
       start = static_cast<std::size_t>(it - all->begin()) + 1;
     }
     Json items = Json::array();
-    const std::size_t end = std::min(all->size(), start + static_cast<std::size_t>(*size));
+    const std::size_t end = std::min(all->size(), start + size);
     for (std::size_t i = start; i < end; ++i)
       items.push_back(persona_item((*all)[i], !posted_ids.count(hh::persona_id((*all)[i]))));
     Json next = end < all->size() ? Json(hh::persona_id((*all)[end - 1])) : Json(nullptr);
@@ -299,13 +297,17 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
       });
 
   http.Get("/api/v1/households", [&ctx](const httplib::Request& req, httplib::Response& res) {
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
-    auto rows = hh::list_households(ctx.store, static_cast<std::size_t>(*size) + 1, query(req, "cursor"));
-    if (!rows) return reply_problem(res, rows.error(), req.path);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    const std::size_t size = page->page_size;
+    auto rows = hh::list_households(ctx.store, size + 1, page->cursor);
+    if (!rows) {
+      if (rows.error().code == ErrorCode::kNotFound) return reply_problem(res, bad_cursor(), req.path);
+      return reply_problem(res, rows.error(), req.path);
+    }
     Json items = Json::array();
-    for (std::size_t i = 0; i < rows->size() && i < static_cast<std::size_t>(*size); ++i) {
+    for (std::size_t i = 0; i < rows->size() && i < size; ++i) {
       const auto& r = (*rows)[i];
       items.push_back({{"id", r.id},
                        {"job_id", r.job_id ? Json(*r.job_id) : Json(nullptr)},
@@ -314,7 +316,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
                        {"created_at", r.created_at},
                        {"summary", r.summary}});
     }
-    Json next = rows->size() > static_cast<std::size_t>(*size) ? Json(items.back()["id"]) : Json(nullptr);
+    Json next = rows->size() > size ? Json(items.back()["id"]) : Json(nullptr);
     reply_json(res, 200, {{"items", items}, {"next_cursor", next}});
   });
 
@@ -369,18 +371,23 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     auto resident =
         query_int(req, "resident", -1, -1, static_cast<std::int64_t>(h->scene.residents().size()) - 1);
     if (!resident) return reply_problem(res, resident.error(), req.path);
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
-    auto cursor = query_int(req, "cursor", 0, 0, INT32_MAX);
-    if (!cursor) return reply_problem(res, cursor.error(), req.path);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    const std::size_t size = page->page_size;
+    std::size_t first = 0;  // the cursor is the index of the next event
+    if (page->cursor) {
+      auto at = parse_sequence_cursor(*page->cursor, "");
+      if (!at) return reply_problem(res, at.error(), req.path);
+      first = static_cast<std::size_t>(*at);
+    }
     std::vector<int> picked;
     for (int e : h->scene.events_between(*from, *to))
       if (*resident < 0 || h->scene.events()[static_cast<std::size_t>(e)].resident == *resident)
         picked.push_back(e);
     Json items = Json::array();
-    const auto first = static_cast<std::size_t>(*cursor);
-    const std::size_t last = std::min(picked.size(), first + static_cast<std::size_t>(*size));
+    if (first > picked.size()) return reply_problem(res, bad_cursor(), req.path);
+    const std::size_t last = std::min(picked.size(), first + size);
     for (std::size_t i = first; i < last; ++i) items.push_back(hh::event_json(h->scene, picked[i]));
     reply_json(res, 200,
                {{"items", items},

@@ -10,6 +10,7 @@
 #include "core/world/world_export.hpp"
 #include "core/world/world_yaml.hpp"
 #include "server/http_util.hpp"
+#include "server/pagination.hpp"
 #include "server/routes.hpp"
 #include "server/stored_worlds.hpp"
 
@@ -242,32 +243,28 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
       });
 
   http.Get("/api/v1/worlds", [&ctx](const httplib::Request& req, httplib::Response& res) {
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    const auto size = static_cast<std::int64_t>(page->page_size);
     std::optional<std::int64_t> before;
-    if (auto cursor = query(req, "cursor")) {
-      const std::string digits =
-          cursor->rfind(kCursorPrefix, 0) == 0 ? cursor->substr(kCursorPrefix.size()) : "";
-      if (digits.empty() || digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
-        return reply_problem(res,
-                             Error(ErrorCode::kBadRequest, "the cursor is not one this server issued",
-                                   {{"", "use next_cursor from a previous page", "cursor", 0, 0}}),
-                             req.path);
-      before = std::stoll(digits);
+    if (page->cursor) {
+      auto seq = parse_sequence_cursor(*page->cursor, kCursorPrefix);
+      if (!seq) return reply_problem(res, seq.error(), req.path);
+      before = *seq;
     }
     const auto domain = query(req, "domain");
     std::string sql = std::string("SELECT ") + kColumns + ", seq FROM worlds WHERE 1";
     if (before) sql += " AND seq < :before";
     if (domain) sql += " AND domain = :domain";
     sql += " ORDER BY seq DESC LIMIT :limit";
-    auto page = ctx.store.read([&](Database& d) -> Result<Json> {
+    auto listed = ctx.store.read([&](Database& d) -> Result<Json> {
       auto st = d.prepare(sql);
       if (!st) return tl::unexpected(st.error());
       int i = 1;
       if (before) st->bind(i++, *before);
       if (domain) st->bind(i++, *domain);
-      st->bind(i, *size + 1);
+      st->bind(i, size + 1);
       Json items = Json::array();
       Json next = nullptr;
       std::int64_t last = 0;
@@ -275,7 +272,7 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
         auto r = st->step();
         if (!r) return tl::unexpected(r.error());
         if (!*r) break;
-        if (static_cast<std::int64_t>(items.size()) == *size) {
+        if (static_cast<std::int64_t>(items.size()) == size) {
           next = std::string(kCursorPrefix) + std::to_string(last);
           break;
         }
@@ -284,8 +281,8 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
       }
       return Json{{"items", std::move(items)}, {"next_cursor", next}};
     });
-    if (!page) return reply_problem(res, page.error(), req.path);
-    reply_json(res, 200, *page);
+    if (!listed) return reply_problem(res, listed.error(), req.path);
+    reply_json(res, 200, *listed);
   });
 
   http.Get(kWorldPath, [&ctx](const httplib::Request& req, httplib::Response& res) {

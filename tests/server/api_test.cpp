@@ -224,6 +224,45 @@ TEST(Api, PageWalkVisitsEveryCardExactlyOnce) {
   expect_problem(c.Get("/api/v1/cards?cursor=forged"), 400);
 }
 
+// Issue 14 #12: households?cursor=garbage answered 200 with an empty page, personas 422, the
+// others 400; simulations ignored page_size=abc. One parser (server/pagination.hpp) now reads
+// them for every list: page_size out of range → 422, a cursor the list did not issue → 400, both
+// naming the parameter.
+TEST(Api, EveryListReadsPageParametersTheSameWay) {
+  TestServer s;
+  auto c = s.client();
+  for (const char* list : {"/api/v1/cards", "/api/v1/jobs", "/api/v1/worlds", "/api/v1/personas",
+                           "/api/v1/households", "/api/v1/simulations"}) {
+    for (const char* size : {"abc", "0", "-1", "101", "1e2", "", "99999999999999999999"}) {
+      auto r = c.Get((std::string(list) + "?page_size=" + size).c_str());
+      expect_problem(r, 422);
+      EXPECT_EQ(body_of(r)["errors"][0]["parameter"], "page_size") << list << " page_size=" << size;
+    }
+    for (const char* cursor : {"garbage", "w1.x", "j1.-5", "s1.", "%00", "hh_0000", "%20"}) {
+      auto r = c.Get((std::string(list) + "?cursor=" + cursor).c_str());
+      expect_problem(r, 400);
+      EXPECT_EQ(body_of(r)["errors"][0]["parameter"], "cursor") << list << " cursor=" << cursor;
+    }
+    auto ok = c.Get((std::string(list) + "?page_size=1").c_str());
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(ok->status, 200) << list << ": " << ok->body;
+  }
+}
+
+// Issue 14 #12: a key named twice in one object was accepted (nlohmann keeps the last).
+TEST(Api, DuplicateKeysInABodyAre400WithThePointer) {
+  TestServer s;
+  auto c = s.client();
+  auto r = c.Post("/api/v1/cards", R"({"title": "a", "title": "b", "generator": {"name": "offline"}})",
+                  "application/json");
+  expect_problem(r, 400);
+  EXPECT_EQ(body_of(r)["errors"][0]["pointer"], "/title");
+  auto nested =
+      c.Post("/api/v1/worlds", R"({"scene_graph": {"rooms": [], "rooms": []}})", "application/json");
+  expect_problem(nested, 400);
+  EXPECT_EQ(body_of(nested)["errors"][0]["pointer"], "/scene_graph/rooms");
+}
+
 TEST(Api, SearchAndFilters) {
   TestServer s;
   auto c = s.client();
