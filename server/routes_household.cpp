@@ -169,6 +169,8 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
                    if (!body) return reply_problem(res, body.error(), req.path);
                    auto parsed = hh::persona_generate_request_from_json(*body);
                    if (!parsed) return reply_problem(res, parsed.error(), req.path);
+                   if (auto s = ctx.check_model(parsed->model); !s)
+                     return reply_problem(res, s.error(), req.path);
                    const hh::PersonaRequest& request = parsed->personas;
                    const std::string generator = parsed->generator;
                    const bool store = parsed->store;
@@ -203,7 +205,8 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
                              hh::generate_personas_llm(r, existing, llm_settings(ctx, gen, job, model));
                          if (!personas) return tl::unexpected(personas.error());
                          return finish(std::move(*personas));
-                       });
+                       },
+                       ctx.client(req));
                    if (!id) return reply_problem(res, id.error(), req.path);
                    auto job = ctx.jobs.get(*id);
                    if (!job) return reply_problem(res, job.error(), req.path);
@@ -219,6 +222,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
         if (!body) return reply_problem(res, body.error(), req.path);
         auto request = hh::household_request_from_json(*body);
         if (!request) return reply_problem(res, request.error(), req.path);
+        if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
         if (request->generator == "llm")
           if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
         auto k = state->knowledge();
@@ -288,7 +292,8 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
               return Json{{"household_id", household},
                           {"summary", summary},
                           {"links", {{"household", "/api/v1/households/" + household}}}};
-            });
+            },
+            ctx.client(req));
         if (!id) return reply_problem(res, id.error(), req.path);
         auto job = ctx.jobs.get(*id);
         if (!job) return reply_problem(res, job.error(), req.path);

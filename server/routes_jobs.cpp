@@ -33,9 +33,17 @@ void job_routes(httplib::Server& http, RouteContext& ctx) {
     const std::string id = req.matches[1].str();
     auto job = ctx.jobs.get(id);
     if (!job) return reply_problem(res, job.error(), req.path);
-    // Prompts, token counts, latency and cache hits of every LLM call the job made.
+    // Token counts, latency and cache hits of every LLM call the job made; the prompts and answers
+    // (which carry the author's request and what the model made of it) only for the job's author,
+    // authenticated by key. A server without keys authenticates nobody, so it shows them to nobody.
     auto calls = llm::job_llm_calls(ctx.store, id);
     (*job)["llm"] = calls ? *calls : Json(nullptr);
+    const bool owner = !ctx.any_author() && (*job)["author"] == ctx.author(req);
+    if (calls && !owner) {
+      for (auto& call : (*job)["llm"]["calls"])
+        for (const char* k : {"prompt", "response", "error"}) call[k] = nullptr;
+      (*job)["llm"]["redacted"] = "prompts and answers are shown to the job's author's key only";
+    }
     const std::string status = (*job)["status"];
     if (status == "queued" || status == "running") res.set_header("Retry-After", "1");
     reply_json(res, 200, *job);

@@ -190,6 +190,7 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
         if (!body) return reply_problem(res, body.error(), req.path);
         auto request = world::floor_plan_request_from_json(*body);
         if (!request) return reply_problem(res, request.error(), req.path);
+        if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
         auto resolved = world::resolve_scene_graph(*request);
         if (!resolved) return reply_problem(res, resolved.error(), req.path);
         auto cs = constraints(ctx, resolved->graph.domain, request->jurisdiction);
@@ -234,7 +235,8 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
               return Json{{"world_id", w->id},
                           {"location", "/api/v1/worlds/" + w->id},
                           {"compliant", w->compliance["passed"]}};
-            });
+            },
+            ctx.client(req));
         if (!id) return reply_problem(res, id.error(), req.path);
         auto job = ctx.jobs.get(*id);
         if (!job) return reply_problem(res, job.error(), req.path);
