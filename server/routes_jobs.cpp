@@ -8,8 +8,8 @@ namespace {
 
 constexpr const char* kJobPath = R"(/api/v1/jobs/([^/]+))";
 
-void job_routes(httplib::Server& http, RouteContext& ctx) {
-  http.Get("/api/v1/jobs", [&ctx](const httplib::Request& req, httplib::Response& res) {
+void job_routes(Router& http, RouteContext& ctx) {
+  http.Get("/api/v1/jobs", [&ctx](const Request& req, Response& res) {
     auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
                           static_cast<std::int64_t>(ctx.config.max_page_size));
     if (!size) return reply_problem(res, size.error(), req.path);
@@ -29,7 +29,7 @@ void job_routes(httplib::Server& http, RouteContext& ctx) {
                 {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}});
   });
 
-  http.Get(kJobPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(kJobPath, [&ctx](const Request& req, Response& res) {
     const std::string id = req.matches[1].str();
     auto job = ctx.jobs.get(id);
     if (!job) return reply_problem(res, job.error(), req.path);
@@ -41,7 +41,7 @@ void job_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, *job);
   });
 
-  http.Delete(kJobPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Delete(kJobPath, [&ctx](const Request& req, Response& res) {
     const std::string id = req.matches[1].str();
     if (auto s = ctx.jobs.cancel(id, ctx.author(req), ctx.any_author()); !s)
       return reply_problem(res, s.error(), req.path);

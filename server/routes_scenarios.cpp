@@ -62,10 +62,10 @@ Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
   return std::optional<scenario::ScenarioWorld>{};
 }
 
-void scenario_routes(httplib::Server& http, RouteContext& ctx) {
+void scenario_routes(Router& http, RouteContext& ctx) {
   post_with_body(
       http, "/api/v1/scenarios", ctx.config.max_body_bytes,
-      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+      [&ctx](const Request& req, Response& res, const std::string& text) {
         auto body = json_body(text);
         if (!body) return reply_problem(res, body.error(), req.path);
         const auto config = scenario_config(ctx.config);
@@ -113,7 +113,7 @@ void scenario_routes(httplib::Server& http, RouteContext& ctx) {
         reply_json(res, 202, *job);
       });
 
-  http.Get(kTrajectoryPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(kTrajectoryPath, [&ctx](const Request& req, Response& res) {
     const std::string sha = req.matches[1];
     if (sha.size() != 64 || sha.find_first_not_of("0123456789abcdef") != std::string::npos)
       return reply_problem(res, Error(ErrorCode::kNotFound, "no trajectory log '" + sha + "'"), req.path);
@@ -133,7 +133,7 @@ void scenario_routes(httplib::Server& http, RouteContext& ctx) {
 
   post_with_body(
       http, kReplayPath, ctx.config.max_body_bytes,
-      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string&) {
+      [&ctx](const Request& req, Response& res, const std::string&) {
         const std::string card_id = req.matches[1];
         auto card = ctx.catalogue.get(card_id);
         if (!card) return reply_problem(res, card.error(), req.path);

@@ -167,7 +167,7 @@ Status llm_available(const RouteContext& ctx) {
 }
 
 // Building type for checking a posted world: ?domain=, else classified from zone names and types.
-Result<std::string> domain_for(const httplib::Request& req, const world::World& w) {
+Result<std::string> domain_for(const Request& req, const world::World& w) {
   if (auto d = query(req, "domain")) {
     if (!knowledge::is_building_type(*d))
       return fail(ErrorCode::kValidation, "unknown building type",
@@ -179,12 +179,11 @@ Result<std::string> domain_for(const httplib::Request& req, const world::World& 
   return knowledge::classify_building_type(names).type;
 }
 
-void world_routes(httplib::Server& http, RouteContext& ctx) {
+void world_routes(Router& http, RouteContext& ctx) {
   const std::size_t max_body = ctx.config.max_body_bytes;
 
   post_with_body(
-      http, "/api/v1/worlds", max_body,
-      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+      http, "/api/v1/worlds", max_body, [&ctx](const Request& req, Response& res, const std::string& text) {
         auto body = json_body(text);
         if (!body) return reply_problem(res, body.error(), req.path);
         auto request = world::floor_plan_request_from_json(*body);
@@ -241,7 +240,7 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
         reply_json(res, 202, *job);
       });
 
-  http.Get("/api/v1/worlds", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/worlds", [&ctx](const Request& req, Response& res) {
     auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
                           static_cast<std::int64_t>(ctx.config.max_page_size));
     if (!size) return reply_problem(res, size.error(), req.path);
@@ -288,7 +287,7 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, *page);
   });
 
-  http.Get(kWorldPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(kWorldPath, [&ctx](const Request& req, Response& res) {
     auto w = load_world(ctx.store, req.matches[1].str());
     if (!w) return reply_problem(res, w.error(), req.path);
     auto world = world_of(*w);
@@ -297,16 +296,15 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, world_json(*w, *world));
   });
 
-  http.Get(std::string(kWorldPath) + "/world.yaml",
-           [&ctx](const httplib::Request& req, httplib::Response& res) {
-             auto w = load_world(ctx.store, req.matches[1].str());
-             if (!w) return reply_problem(res, w.error(), req.path);
-             res.set_header("ETag", "\"" + w->content_hash + "\"");
-             res.set_header("Content-Disposition", "inline; filename=\"" + w->id + ".world.yaml\"");
-             res.set_content(w->world_yaml, "application/yaml");
-           });
+  http.Get(std::string(kWorldPath) + "/world.yaml", [&ctx](const Request& req, Response& res) {
+    auto w = load_world(ctx.store, req.matches[1].str());
+    if (!w) return reply_problem(res, w.error(), req.path);
+    res.set_header("ETag", "\"" + w->content_hash + "\"");
+    res.set_header("Content-Disposition", "inline; filename=\"" + w->id + ".world.yaml\"");
+    res.set_content(w->world_yaml, "application/yaml");
+  });
 
-  http.Get(std::string(kWorldPath) + "/export", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(std::string(kWorldPath) + "/export", [&ctx](const Request& req, Response& res) {
     const auto format = query(req, "format");
     static const std::vector<std::string> kFormats = {"sdf", "pedsim", "map", "map-pgm", "map-yaml", "svg"};
     if (!format || std::find(kFormats.begin(), kFormats.end(), *format) == kFormats.end())
@@ -347,7 +345,7 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
   });
 
   post_with_body(http, "/api/v1/worlds/validate", max_body,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto world = world::world_from_yaml(text);
                    if (!world) {
                      // Everything wrong with the posted document is a validation finding, syntax included.
