@@ -11,7 +11,8 @@ packages=(
   libboost-dev libexpected-dev libssl-dev zlib1g-dev clang-format ccache
 )
 if [ "${1:-}" = "--with-browser" ]; then
-  packages+=(chromium)
+  # Test-only: Chromium for the viewer tests, nginx for the reverse-proxy fault tests.
+  packages+=(chromium nginx)
   # Node.js for the browser tests; a machine that already has node (e.g. from NodeSource) keeps it.
   command -v node >/dev/null 2>&1 || packages+=(nodejs)
   command -v npm >/dev/null 2>&1 || packages+=(npm)
