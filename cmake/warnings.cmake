@@ -17,10 +17,12 @@ if(SOCSIM_SANITIZE)
   target_link_options(socsim_options INTERFACE -fsanitize=address,undefined)
 endif()
 
-# socsim_module(name SOURCES ... LIBS ...): a core library target with the project options.
+# socsim_module(name SOURCES ... [PUBLIC libs...] [PRIVATE libs...]): a core library target with
+# the project options. PUBLIC only for what the module's headers include (docs/ARCHITECTURE.md);
+# tests/architecture checks both lists against the includes.
 function(socsim_module name)
-  cmake_parse_arguments(M "" "" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(M "" "" "SOURCES;PUBLIC;PRIVATE" ${ARGN})
   add_library(${name} STATIC ${M_SOURCES})
   target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
-  target_link_libraries(${name} PUBLIC socsim_options ${M_LIBS})
+  target_link_libraries(${name} PUBLIC socsim_options ${M_PUBLIC} PRIVATE ${M_PRIVATE})
 endfunction()

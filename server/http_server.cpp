@@ -281,18 +281,19 @@ struct HttpCore {
   const Router& router;
   HttpServer::Gate gate;
   HttpServer::Observer observer;
-  asio::io_context io;
-  tcp::acceptor acceptor;
-  asio::thread_pool workers;
   std::atomic<bool> stopping{false};
   std::atomic<std::size_t> refused{0};
   std::atomic<std::size_t> timeouts{0};
-  asio::steady_timer shutdown_timer{io};
   int shutdown_ticks = 0;
-
+  // Declared before the I/O context and the workers: sessions released while those are destroyed
+  // (with their pending handlers) still count themselves out here.
   std::mutex mutex;  // guards the two tables below
   std::unordered_map<std::string, std::size_t> per_client;
   std::map<Session*, std::weak_ptr<Session>> sessions;
+  asio::io_context io;
+  tcp::acceptor acceptor;
+  asio::thread_pool workers;  // destroyed before the I/O context its handlers write to
+  asio::steady_timer shutdown_timer{io};
 
   void accept();
   bool admit(const std::string& peer);

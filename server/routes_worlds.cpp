@@ -3,9 +3,9 @@
 // pedsim_ros, ROS map and SVG; validation of a posted world.yaml.
 #include "core/common/ids.hpp"
 #include "core/common/sha256.hpp"
+#include "core/floorplan/llm.hpp"
+#include "core/floorplan/request.hpp"
 #include "core/knowledge/building_type.hpp"
-#include "core/world/floorplan_llm.hpp"
-#include "core/world/floorplan_request.hpp"
 #include "core/world/world_document.hpp"
 #include "core/world/world_export.hpp"
 #include "core/world/world_yaml.hpp"
@@ -84,7 +84,7 @@ Json summary(const StoredWorld& w) {
 }
 
 // Stores a generated plan; returns its id.
-Result<StoredWorld> store_world(store::Store& db, const world::FloorPlan& plan, const Json& request,
+Result<StoredWorld> store_world(store::Store& db, const floorplan::FloorPlan& plan, const Json& request,
                                 const std::string& author, const std::string& generator, std::uint64_t seed) {
   StoredWorld w;
   w.id = random_id("wld_");
@@ -94,9 +94,9 @@ Result<StoredWorld> store_world(store::Store& db, const world::FloorPlan& plan, 
   w.seed = static_cast<std::int64_t>(seed);
   w.author = author;
   w.request = request;
-  w.scene_graph = world::to_json(plan.scene_graph);
+  w.scene_graph = floorplan::to_json(plan.scene_graph);
   w.world_yaml = world::world_to_yaml(plan.world);
-  w.compliance = world::to_json(plan.compliance);
+  w.compliance = floorplan::to_json(plan.compliance);
   w.provenance = plan.provenance;
   w.content_hash = sha256_hex(w.world_yaml);
   w.created_at = utc_now_rfc3339();
@@ -186,17 +186,17 @@ void world_routes(Router& http, RouteContext& ctx) {
       http, "/api/v1/worlds", max_body, [&ctx](const Request& req, Response& res, const std::string& text) {
         auto body = json_body(text);
         if (!body) return reply_problem(res, body.error(), req.path);
-        auto request = world::floor_plan_request_from_json(*body);
+        auto request = floorplan::floor_plan_request_from_json(*body);
         if (!request) return reply_problem(res, request.error(), req.path);
-        auto resolved = world::resolve_scene_graph(*request);
+        auto resolved = floorplan::resolve_scene_graph(*request);
         if (!resolved) return reply_problem(res, resolved.error(), req.path);
         auto cs = constraints(ctx, resolved->graph.domain, request->jurisdiction);
         if (!cs) return reply_problem(res, cs.error(), req.path);
 
         if (request->generator == "offline") {
-          world::OfflineOptions o;
+          floorplan::OfflineOptions o;
           o.seed = request->seed;
-          auto plan = world::generate_floor_plan(resolved->graph, *cs, o);
+          auto plan = floorplan::generate_floor_plan(resolved->graph, *cs, o);
           if (!plan) return reply_problem(res, plan.error(), req.path);
           plan->provenance["classification"] = resolved->classification;
           auto w = store_world(ctx.store, *plan, *body, ctx.author(req), "offline", request->seed);
@@ -217,13 +217,13 @@ void world_routes(Router& http, RouteContext& ctx) {
               llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
               job.progress(0.0, "asking the LLM for a " + resolved.graph.domain + " floor plan of " +
                                     std::to_string(resolved.graph.rooms.size()) + " rooms");
-              world::LlmFloorPlanOptions o;
+              floorplan::LlmFloorPlanOptions o;
               o.model = request.model;
               o.seed = static_cast<std::int64_t>(request.seed);
               o.job_id = job.id();
               o.cancel = job.cancel_token();
               auto plan =
-                  world::generate_floor_plan_llm(gen, request.prompt.value_or(""), resolved.graph, cs, o);
+                  floorplan::generate_floor_plan_llm(gen, request.prompt.value_or(""), resolved.graph, cs, o);
               if (!plan) return tl::unexpected(plan.error());
               plan->provenance["classification"] = resolved.classification;
               auto w = store_world(ctx.store, *plan, body, author, "llm", request.seed);
@@ -357,7 +357,8 @@ void world_routes(Router& http, RouteContext& ctx) {
                    if (!domain) return reply_problem(res, domain.error(), req.path);
                    auto cs = constraints(ctx, *domain, query(req, "jurisdiction").value_or(""));
                    if (!cs) return reply_problem(res, cs.error(), req.path);
-                   const world::ComplianceReport report = world::check_compliance(*world, *domain, *cs);
+                   const floorplan::ComplianceReport report =
+                       floorplan::check_compliance(*world, *domain, *cs);
                    reply_json(res, 200,
                               {{"valid", true},
                                {"name", world->name()},
@@ -367,8 +368,8 @@ void world_routes(Router& http, RouteContext& ctx) {
                                {"rois", world->rois().size()},
                                {"entities", world->entities().size()},
                                {"area", world->area()},
-                               {"compliance", world::to_json(report)},
-                               {"knowledge", world::knowledge_provenance(*cs)}});
+                               {"compliance", floorplan::to_json(report)},
+                               {"knowledge", floorplan::knowledge_provenance(*cs)}});
                  });
 }
 

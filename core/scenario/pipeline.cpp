@@ -8,10 +8,10 @@
 #include "core/common/json_check.hpp"
 #include "core/common/sha256.hpp"
 #include "core/crowd/scenario_runner.hpp"
+#include "core/floorplan/llm.hpp"
+#include "core/floorplan/request.hpp"
 #include "core/scenario/program_check.hpp"
 #include "core/scenario/program_llm.hpp"
-#include "core/world/floorplan_llm.hpp"
-#include "core/world/floorplan_request.hpp"
 #include "core/world/world_document.hpp"
 #include "core/world/world_yaml.hpp"
 
@@ -200,24 +200,24 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
     fp["prompt"] = request.prompt;
   if (request.domain) fp["domain"] = *request.domain;
   if (request.model) fp["model"] = *request.model;
-  auto fpr = world::floor_plan_request_from_json(fp);
+  auto fpr = floorplan::floor_plan_request_from_json(fp);
   if (!fpr) return tl::unexpected(fpr.error());
-  auto resolved = world::resolve_scene_graph(*fpr);
+  auto resolved = floorplan::resolve_scene_graph(*fpr);
   if (!resolved) return tl::unexpected(resolved.error());
   auto constraints = knowledge.constraints_for(resolved->graph.domain);
   if (!constraints) return tl::unexpected(constraints.error());
-  Result<world::FloorPlan> plan = fail(ErrorCode::kInternal, "no floor plan");
+  Result<floorplan::FloorPlan> plan = fail(ErrorCode::kInternal, "no floor plan");
   if (request.generator == "llm" && llm) {
-    world::LlmFloorPlanOptions o;
+    floorplan::LlmFloorPlanOptions o;
     o.model = request.model;
     o.seed = static_cast<std::int64_t>(request.seed);
     o.job_id = job_id;
     o.cancel = cancel;
-    plan = world::generate_floor_plan_llm(*llm, request.prompt, resolved->graph, *constraints, o);
+    plan = floorplan::generate_floor_plan_llm(*llm, request.prompt, resolved->graph, *constraints, o);
   } else {
-    world::OfflineOptions o;
+    floorplan::OfflineOptions o;
     o.seed = request.seed;
-    plan = world::generate_floor_plan(resolved->graph, *constraints, o);
+    plan = floorplan::generate_floor_plan(resolved->graph, *constraints, o);
   }
   if (!plan) return tl::unexpected(plan.error());
   plan->provenance["classification"] = resolved->classification;

@@ -7,12 +7,15 @@
 #include <span>
 
 #include "core/common/json_io.hpp"
+#include "core/floorplan/compliance.hpp"
+#include "core/floorplan/scene_graph.hpp"
 #include "core/knowledge/knowledge_base.hpp"
-#include "core/world/compliance.hpp"
-#include "core/world/floorplan_scene_graph.hpp"
 #include "core/world/world_builder.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
+
+// Floor plans are built of the world model's types (World, Zone, Point, …).
+using namespace socsim::world;
 
 struct FloorPlan {
   World world;
@@ -39,4 +42,4 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph,
 // constraint names it set and its sources' sections.
 Json knowledge_provenance(std::span<const knowledge::MergedConstraint> constraints);
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

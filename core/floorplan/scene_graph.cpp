@@ -1,15 +1,15 @@
-#include "core/world/floorplan_scene_graph.hpp"
+#include "core/floorplan/scene_graph.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <set>
 
+#include "core/floorplan/rooms.hpp"
+#include "core/floorplan/schemas.hpp"
 #include "core/knowledge/types.hpp"
-#include "core/world/floorplan_rooms.hpp"
-#include "core/world/floorplan_schemas.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 struct ProgramRoom {
@@ -446,4 +446,4 @@ Json to_json(const SceneGraph& g) {
               {"entrance", g.entrance}};
 }
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

@@ -1,4 +1,4 @@
-#include "core/world/floorplan_offline.hpp"
+#include "core/floorplan/offline.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,11 @@
 #include <set>
 
 #include "core/common/rng.hpp"
+#include "core/floorplan/furnish.hpp"
+#include "core/floorplan/rooms.hpp"
 #include "core/geometry/planar.hpp"
-#include "core/world/floorplan_furnish.hpp"
-#include "core/world/floorplan_rooms.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 using knowledge::MergedConstraint;
@@ -748,4 +748,4 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
   return fail(ErrorCode::kValidation, detail, std::move(errors));
 }
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

@@ -1,7 +1,7 @@
 // Offline floor-plan generator over the seeded knowledge store: 20 residential, 10 office and 10
 // hospital plans from different seeds are valid, fully reachable, compliant and pairwise
 // different; same seed → same bytes; adjacency, code minima and furnishing by room type.
-#include "core/world/floorplan_offline.hpp"
+#include "core/floorplan/offline.hpp"
 
 #include <cmath>
 #include <map>
@@ -10,15 +10,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "core/floorplan/rooms.hpp"
 #include "core/geometry/planar.hpp"
-#include "core/world/floorplan_rooms.hpp"
 #include "core/world/geodesic.hpp"
 #include "core/world/world_export.hpp"
 #include "core/world/world_yaml.hpp"
 #include "core/world/xml_reader.hpp"
 #include "tests/support/temp_dir.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 using ::testing::HasSubstr;
@@ -336,4 +336,4 @@ TEST_F(FloorplanOffline, ExportsOfGeneratedPlansAreWellFormed) {
 }
 
 }  // namespace
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

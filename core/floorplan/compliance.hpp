@@ -12,7 +12,10 @@
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/world/world.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
+
+// Floor plans are built of the world model's types (World, Zone, Point, …).
+using namespace socsim::world;
 
 enum class CheckStatus {
   kPass,
@@ -101,4 +104,4 @@ double clear_width(const Polygon& polygon);
 // Diameter of the largest circle that fits inside the polygon.
 double inscribed_diameter(const Polygon& polygon);
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

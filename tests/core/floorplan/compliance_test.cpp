@@ -1,6 +1,6 @@
 // Compliance reports: every retrieved constraint appears once with its value, requirement,
 // status and source; failures name the element; geometry of clear widths and inscribed circles.
-#include "core/world/compliance.hpp"
+#include "core/floorplan/compliance.hpp"
 
 #include <cmath>
 
@@ -10,7 +10,7 @@
 #include "core/world/world_yaml.hpp"
 #include "tests/support/temp_dir.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 using ::testing::HasSubstr;
@@ -269,4 +269,4 @@ TEST(ComplianceGeometry, ClearWidthAndInscribedCircleOfPolygons) {
 }
 
 }  // namespace
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

@@ -1,9 +1,9 @@
-#include "core/world/floorplan_schemas.hpp"
+#include "core/floorplan/schemas.hpp"
 
 #include <stdexcept>
 #include <string>
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 JsonSchema compile_embedded(std::string_view text, const char* what) {
@@ -29,4 +29,4 @@ const JsonSchema& scene_graph_schema() {
   return schema;
 }
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "core/common/json_io.hpp"
-#include "core/world/floorplan_scene_graph.hpp"
+#include "core/floorplan/scene_graph.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 
 struct FloorPlanRequest {
   std::optional<Json> scene_graph;  // as posted (checked when resolved)
@@ -35,4 +35,4 @@ struct ResolvedSceneGraph {
 // domain wins over a classification, and must agree with a scene graph's own domain.
 Result<ResolvedSceneGraph> resolve_scene_graph(const FloorPlanRequest& request);
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

@@ -5,7 +5,7 @@
 
 #include "core/common/json_schema.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 
 std::string_view floor_plan_schema_text();
 std::string_view scene_graph_schema_text();
@@ -13,4 +13,4 @@ std::string_view scene_graph_schema_text();
 const JsonSchema& floor_plan_schema();
 const JsonSchema& scene_graph_schema();
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

@@ -1,11 +1,11 @@
-#include "core/world/floorplan_rooms.hpp"
+#include "core/floorplan/rooms.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <utility>
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 using C = Circulation;
@@ -127,4 +127,4 @@ bool is_toilet_type(std::string_view type) {
   return t == "toilet" || t == "bathroom";
 }
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

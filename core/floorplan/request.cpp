@@ -1,9 +1,9 @@
-#include "core/world/floorplan_request.hpp"
+#include "core/floorplan/request.hpp"
 
 #include "core/common/json_check.hpp"
 #include "core/knowledge/types.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 
 Result<FloorPlanRequest> floor_plan_request_from_json(const Json& body) {
   JsonChecker c;
@@ -65,4 +65,4 @@ Result<ResolvedSceneGraph> resolve_scene_graph(const FloorPlanRequest& request) 
   return out;
 }
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

@@ -1,4 +1,4 @@
-#include "core/world/floorplan_furnish.hpp"
+#include "core/floorplan/furnish.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +8,11 @@
 #include <optional>
 #include <string>
 
+#include "core/floorplan/rooms.hpp"
 #include "core/geometry/geos.hpp"
 #include "core/geometry/planar.hpp"
-#include "core/world/floorplan_rooms.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 using geometry::Box;
@@ -631,4 +631,4 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
   return out;
 }
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

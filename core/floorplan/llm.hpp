@@ -7,10 +7,10 @@
 #include <span>
 #include <string>
 
+#include "core/floorplan/offline.hpp"
 #include "core/llm/structured_generator.hpp"
-#include "core/world/floorplan_offline.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 
 struct LlmFloorPlanOptions {
   std::optional<std::string> model;
@@ -43,4 +43,4 @@ Result<FloorPlan> generate_floor_plan_llm(const llm::StructuredGenerator& genera
 // position and width): for examples, tests and replaying a plan through the LLM path.
 Json floor_plan_answer(const World& world);
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace socsim::world {
+namespace socsim::floorplan {
 
 enum class Circulation { kNone, kCorridor, kHall };
 
@@ -37,4 +37,4 @@ bool is_bedroom_type(std::string_view type);  // bedroom (dwellings)
 bool is_habitable_type(std::string_view type);
 bool is_toilet_type(std::string_view type);  // toilet, bathroom
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

@@ -1,13 +1,13 @@
 // Scene graphs: the schema and the rules it cannot say, each problem with its pointer; room
 // programmes per building type; prompts with numbers and room words.
-#include "core/world/floorplan_scene_graph.hpp"
+#include "core/floorplan/scene_graph.hpp"
 
 #include <algorithm>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 using ::testing::HasSubstr;
@@ -123,4 +123,4 @@ TEST(SceneGraph, PromptNumbersAndRoomWordsAreHonoured) {
 }
 
 }  // namespace
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

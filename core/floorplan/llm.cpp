@@ -1,15 +1,15 @@
-#include "core/world/floorplan_llm.hpp"
+#include "core/floorplan/llm.hpp"
 
 #include <cstdio>
 #include <map>
 #include <set>
 
 #include "core/common/rng.hpp"
-#include "core/world/floorplan_furnish.hpp"
-#include "core/world/floorplan_rooms.hpp"
-#include "core/world/floorplan_schemas.hpp"
+#include "core/floorplan/furnish.hpp"
+#include "core/floorplan/rooms.hpp"
+#include "core/floorplan/schemas.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 using knowledge::MergedConstraint;
@@ -196,4 +196,4 @@ Json floor_plan_answer(const World& world) {
   return {{"rooms", std::move(rooms)}, {"doors", std::move(doors)}};
 }
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

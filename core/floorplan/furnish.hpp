@@ -7,10 +7,13 @@
 #include <vector>
 
 #include "core/common/rng.hpp"
-#include "core/world/compliance.hpp"
+#include "core/floorplan/compliance.hpp"
 #include "core/world/world_builder.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
+
+// Floor plans are built of the world model's types (World, Zone, Point, …).
+using namespace socsim::world;
 
 struct FurnishingRules {
   double walkway_width = 1.2;     // m, aisles between shelves and racks (at least the code's aisle width)
@@ -33,4 +36,4 @@ struct Furnishing {
 Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
                    Rng& rng);
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

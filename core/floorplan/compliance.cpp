@@ -1,4 +1,4 @@
-#include "core/world/compliance.hpp"
+#include "core/floorplan/compliance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +7,13 @@
 #include <map>
 #include <numbers>
 
+#include "core/floorplan/rooms.hpp"
 #include "core/geometry/geos.hpp"
 #include "core/geometry/planar.hpp"
 #include "core/world/export_format.hpp"
-#include "core/world/floorplan_rooms.hpp"
 #include "core/world/geodesic.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 using knowledge::ConstraintType;
@@ -839,4 +839,4 @@ double inscribed_diameter(const Polygon& polygon) {
   return std::floor(lo * 1000) / 1000;
 }
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

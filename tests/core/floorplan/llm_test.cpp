@@ -2,7 +2,7 @@
 // constraints and the scene graph reach the prompt; a valid answer becomes a compliant world;
 // geometry and code failures are quoted back with pointers into the answer and repaired; an
 // answer that never validates and an endpoint that is down give clear errors.
-#include "core/world/floorplan_llm.hpp"
+#include "core/floorplan/llm.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include "tests/core/llm/scripted_server.hpp"
 #include "tests/support/temp_dir.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 namespace {
 
 using socsim::testing::ScriptedServer;
@@ -145,4 +145,4 @@ TEST_F(FloorplanLlm, AnEndpointThatIsDownGivesAnUpstreamErrorNamingIt) {
 }
 
 }  // namespace
-}  // namespace socsim::world
+}  // namespace socsim::floorplan

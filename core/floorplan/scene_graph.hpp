@@ -12,7 +12,7 @@
 #include "core/common/json_io.hpp"
 #include "core/knowledge/building_type.hpp"
 
-namespace socsim::world {
+namespace socsim::floorplan {
 
 struct SceneRoom {
   std::string name;
@@ -58,4 +58,4 @@ struct PromptSceneGraph {
 Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt,
                                                  std::optional<std::string> domain = {});
 
-}  // namespace socsim::world
+}  // namespace socsim::floorplan
