@@ -41,13 +41,18 @@ std::vector<const BtNodeType*> BtRegistry::types() const {
 
 // --- document ----------------------------------------------------------------------------------
 
-namespace {
-
+// The parsed document; BtDocument::Impl is one (a named namespace: a base of a class declared in
+// the header cannot have internal linkage).
+namespace document_detail {
 struct DocumentData {
   std::map<std::string, BtNodeSpec, std::less<>> trees;
   std::string main;
   std::map<std::string, BtFactory, std::less<>> factories;
 };
+}  // namespace document_detail
+using document_detail::DocumentData;
+
+namespace {
 
 using world::XmlElement;
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 
+#include "core/common/text.hpp"
 #include "core/floorplan/rooms.hpp"
 #include "core/geometry/geos.hpp"
 #include "core/geometry/planar.hpp"
@@ -82,11 +83,6 @@ double corner_loss(const Polygon& p, double r) {
   return loss;
 }
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
 std::string num2(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2f", v);
@@ -303,9 +299,10 @@ class Checker {
       std::vector<std::size_t> others;
       for (auto z : beds)
         if (z != *l && zones_[z].area >= dbl - kEps) others.push_back(z);
-      return zone_values(c, others, width,
-                         "bedrooms other than the main one that are double-sized (≥ " + num(dbl) + " m²)",
-                         "no other double-sized bedroom");
+      return zone_values(
+          c, others, width,
+          "bedrooms other than the main one that are double-sized (≥ " + compact_number(dbl) + " m²)",
+          "no other double-sized bedroom");
     }
     if (n == "patient_bedroom_area")
       return zone_values(c, zones_where([](const ZoneInfo& z) { return z.type == "patient_room"; }), area,
@@ -337,7 +334,7 @@ class Checker {
       measure(c, values);
       c.detail = values.empty()
                      ? "no corridor"
-                     : "corridors longer than " + num(kPassingInterval) +
+                     : "corridors longer than " + compact_number(kPassingInterval) +
                            " m (ADA 403.5.3 interval) must be this wide throughout; shorter ones pass";
       return;
     }
@@ -378,7 +375,7 @@ class Checker {
       c.status = CheckStatus::kUsed;
       c.value = it->second.first;
       c.checked = 1;
-      c.detail = num(it->second.second) + " persons over " + num2(it->second.first) +
+      c.detail = compact_number(it->second.second) + " persons over " + num2(it->second.first) +
                  " m² (area ÷ factor, per zone); used by the egress-width check";
       return;
     }
@@ -514,8 +511,8 @@ class Checker {
     c.required = c.required * occupant_load_;
     c.unit = "m";
     measure(c, {{names.empty() ? "exits" : names, width}});
-    c.detail =
-        "total width of the exits against " + num(occupant_load_) + " occupants × the per-occupant width";
+    c.detail = "total width of the exits against " + compact_number(occupant_load_) +
+               " occupants × the per-occupant width";
   }
 
   static bool is_exit_rule(std::string_view name) {
@@ -565,8 +562,9 @@ class Checker {
     count.required = crowded || distant ? 2.0 : 1.0;
     measure(count, {{names.empty() ? "exits" : names, static_cast<double>(ex.size())}});
     count.detail =
-        "doors to the outside against the single-exit limit (" + num(max_occupants) + " occupants, " +
-        num2(max_travel) + " m travel, " + occupants->ref_id + "): " + num(occupant_load_) + " occupants" +
+        "doors to the outside against the single-exit limit (" + compact_number(max_occupants) +
+        " occupants, " + num2(max_travel) + " m travel, " + occupants->ref_id +
+        "): " + compact_number(occupant_load_) + " occupants" +
         (far ? ", " + num2(*far) + " m of travel to the best single exit" : std::string(", no exit"));
 
     const double fraction = spread != nullptr ? spread->constraint.value : 0.0;
