@@ -114,7 +114,7 @@ void card_routes(Router& http, RouteContext& ctx) {
 
   post_with_body(http, "/api/v1/cards/import", max_body,
                  [&ctx](const Request& req, Response& res, const std::string& text) {
-                   auto outcome = ctx.catalogue.import_card(text);
+                   auto outcome = ctx.catalogue.import_card(text, ctx.author(req));
                    if (!outcome) return reply_problem(res, outcome.error(), req.path);
                    if (outcome->created) ctx.events.publish("cards", event("card.created", outcome->card));
                    reply_card(res, outcome->created ? 201 : 200, outcome->card);

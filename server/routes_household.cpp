@@ -166,70 +166,53 @@ void household_routes(Router& http, RouteContext& ctx) {
                    reply_json(res, 201, persona_item(*p, false));
                  });
 
-  post_with_body(
-      http, "/api/v1/personas/generate", max_body,
-      [&ctx](const Request& req, Response& res, const std::string& text) {
-        auto body = json_body(text);
-        if (!body) return reply_problem(res, body.error(), req.path);
-        if (!body->is_object())
-          return reply_problem(
-              res, Error(ErrorCode::kValidation, "invalid request", {{"", "must be an object", "", 0, 0}}),
-              req.path);
-        Json rest = *body;
-        const std::string generator = body->value("generator", "offline");
-        const bool store = body->value("store", false);
-        std::optional<std::string> model;
-        if (body->contains("model") && (*body)["model"].is_string())
-          model = (*body)["model"].get<std::string>();
-        for (const char* k : {"generator", "store", "model"}) rest.erase(k);
-        auto request = hh::persona_request_from_json(rest);
-        Error problems(ErrorCode::kValidation, "invalid persona request");
-        if (!request) problems = request.error();
-        for (const auto& [k, v] : body->items())
-          if (k != "count" && k != "seed" && k != "constraints" && k != "generator" && k != "store" &&
-              k != "model")
-            problems.errors.push_back({"/" + json_pointer_token(k), "is not a known field", {}, 0, 0});
-        if (generator != "offline" && generator != "llm")
-          problems.errors.push_back({"/generator", "must be offline or llm", {}, 0, 0});
-        if (body->contains("store") && !(*body)["store"].is_boolean())
-          problems.errors.push_back({"/store", "must be true or false", {}, 0, 0});
-        if (!problems.errors.empty()) return reply_problem(res, problems, req.path);
-        auto existing = all_personas(ctx.store);
-        if (!existing) return reply_problem(res, existing.error(), req.path);
+  post_with_body(http, "/api/v1/personas/generate", max_body,
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
+                   auto body = json_body(text);
+                   if (!body) return reply_problem(res, body.error(), req.path);
+                   auto parsed = hh::persona_generate_request_from_json(*body);
+                   if (!parsed) return reply_problem(res, parsed.error(), req.path);
+                   const hh::PersonaRequest& request = parsed->personas;
+                   const std::string generator = parsed->generator;
+                   const bool store = parsed->store;
+                   const std::optional<std::string> model = parsed->model;
+                   auto existing = all_personas(ctx.store);
+                   if (!existing) return reply_problem(res, existing.error(), req.path);
 
-        auto finish = [&ctx, store](std::vector<hh::Persona> personas) -> Result<Json> {
-          Json items = Json::array();
-          for (const auto& p : personas) {
-            if (store)
-              if (auto s = hh::store_persona(ctx.store, p); !s) return tl::unexpected(s.error());
-            items.push_back(persona_item(p, false));
-          }
-          return Json{{"personas", items}, {"stored", store}};
-        };
-        if (generator == "offline") {
-          auto personas = hh::generate_personas_offline(*request, *existing);
-          if (!personas) return reply_problem(res, personas.error(), req.path);
-          auto out = finish(std::move(*personas));
-          if (!out) return reply_problem(res, out.error(), req.path);
-          return reply_json(res, store ? 201 : 200, *out);
-        }
-        if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
-        const hh::PersonaRequest r = *request;
-        auto id = ctx.jobs.submit(
-            "personas", *body, ctx.author(req),
-            [&ctx, r, model, finish, existing = *existing](const JobContext& job) -> Result<Json> {
-              llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
-              job.progress(0.0, "asking the LLM for " + std::to_string(r.count) + " personas");
-              auto personas = hh::generate_personas_llm(r, existing, llm_settings(ctx, gen, job, model));
-              if (!personas) return tl::unexpected(personas.error());
-              return finish(std::move(*personas));
-            });
-        if (!id) return reply_problem(res, id.error(), req.path);
-        auto job = ctx.jobs.get(*id);
-        if (!job) return reply_problem(res, job.error(), req.path);
-        res.set_header("Location", "/api/v1/jobs/" + *id);
-        reply_json(res, 202, *job);
-      });
+                   auto finish = [&ctx, store](std::vector<hh::Persona> personas) -> Result<Json> {
+                     Json items = Json::array();
+                     for (const auto& p : personas) {
+                       if (store)
+                         if (auto s = hh::store_persona(ctx.store, p); !s) return tl::unexpected(s.error());
+                       items.push_back(persona_item(p, false));
+                     }
+                     return Json{{"personas", items}, {"stored", store}};
+                   };
+                   if (generator == "offline") {
+                     auto personas = hh::generate_personas_offline(request, *existing);
+                     if (!personas) return reply_problem(res, personas.error(), req.path);
+                     auto out = finish(std::move(*personas));
+                     if (!out) return reply_problem(res, out.error(), req.path);
+                     return reply_json(res, store ? 201 : 200, *out);
+                   }
+                   if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+                   const hh::PersonaRequest r = request;
+                   auto id = ctx.jobs.submit(
+                       "personas", *body, ctx.author(req),
+                       [&ctx, r, model, finish, existing = *existing](const JobContext& job) -> Result<Json> {
+                         llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
+                         job.progress(0.0, "asking the LLM for " + std::to_string(r.count) + " personas");
+                         auto personas =
+                             hh::generate_personas_llm(r, existing, llm_settings(ctx, gen, job, model));
+                         if (!personas) return tl::unexpected(personas.error());
+                         return finish(std::move(*personas));
+                       });
+                   if (!id) return reply_problem(res, id.error(), req.path);
+                   auto job = ctx.jobs.get(*id);
+                   if (!job) return reply_problem(res, job.error(), req.path);
+                   res.set_header("Location", "/api/v1/jobs/" + *id);
+                   reply_json(res, 202, *job);
+                 });
 
   // ---- households ----
   post_with_body(

@@ -22,7 +22,7 @@ Result<HouseholdRequest> household_request_from_json(const Json& json) {
   }
   check.only_keys(json, "",
                   {"rooms", "house", "residents", "days", "start_weekday", "seed", "generator", "model"});
-  const bool has_rooms = json.contains("rooms"), has_house = json.contains("house");
+  const bool has_rooms = JsonChecker::given(json, "rooms"), has_house = JsonChecker::given(json, "house");
   if (has_rooms == has_house)
     check.add(has_rooms ? "/house" : "/rooms",
               has_rooms ? "give rooms or house, not both" : "give rooms (1-10) or a ProcTHOR house");

@@ -917,6 +917,30 @@ Result<PersonaRequest> persona_request_from_json(const Json& json, const std::st
   return r;
 }
 
+Result<PersonaGenerateRequest> persona_generate_request_from_json(const Json& json) {
+  PersonaGenerateRequest r;
+  JsonChecker check;
+  if (json.is_object()) {
+    check.only_keys(json, "", {"count", "seed", "constraints", "generator", "store", "model"});
+    if (auto v = check.string(json, "", "generator", false, 1, 20)) {
+      if (*v != "offline" && *v != "llm")
+        check.add("/generator", "must be offline or llm");
+      else
+        r.generator = *v;
+    }
+    r.store = check.boolean(json, "", "store", false).value_or(false);
+    r.model = check.string(json, "", "model", false, 1, 200);
+    if (r.model && r.generator != "llm") check.add("/model", "a model is chosen only with generator llm");
+  }
+  auto personas = persona_request_from_json(json);
+  std::vector<FieldError> errors = personas ? std::vector<FieldError>{} : personas.error().errors;
+  errors.insert(errors.end(), check.errors().begin(), check.errors().end());
+  if (!errors.empty())
+    return fail(ErrorCode::kValidation, "invalid persona generation request", std::move(errors));
+  r.personas = *personas;
+  return r;
+}
+
 Json to_json(const PersonaConstraints& c) {
   Json j = Json::object();
   if (c.min_age) j["min_age"] = *c.min_age;

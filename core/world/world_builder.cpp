@@ -33,12 +33,17 @@ std::string pt(Point p) {
   return "(" + num(p.x) + ", " + num(p.y) + ")";
 }
 
+bool coordinate(double v) {
+  return std::isfinite(v) && std::abs(v) <= kMaxCoordinate;
+}
+// Finite and within ±kMaxCoordinate.
 bool finite(Point p) {
-  return std::isfinite(p.x) && std::isfinite(p.y);
+  return coordinate(p.x) && coordinate(p.y);
 }
 bool finite(const Pose2& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.yaw);
+  return coordinate(p.x) && coordinate(p.y) && std::isfinite(p.yaw);
 }
+const std::string kOutOfRange = "must be finite and within ±100000 m";
 
 // Names are referenced from behaviour trees, XML and SVG ids: keep them to a safe alphabet.
 std::optional<std::string> name_problem(const std::string& name) {
@@ -111,6 +116,19 @@ class Validator {
     if (auto p = label_problem(value, allow_empty)) add(ptr, *p);
   }
   bool polygon(const Geos& geos, const std::string& ptr, const Polygon& poly, const std::string& owner) {
+    bool in_range = true;
+    for (std::size_t i = 0; i < poly.outer.size(); ++i)
+      if (!finite(poly.outer[i])) {
+        add(ptr + "/" + std::to_string(i), owner + ": a vertex " + kOutOfRange);
+        in_range = false;
+        break;
+      }
+    for (const auto& hole : poly.holes)
+      if (in_range && !std::all_of(hole.begin(), hole.end(), [](Point p) { return finite(p); })) {
+        add(ptr, owner + ": a hole's vertex " + kOutOfRange);
+        in_range = false;
+      }
+    if (!in_range) return false;
     const auto v = geos.validity(poly);
     if (!v.valid) {
       std::string msg = owner + " has an invalid polygon: " + v.reason;
@@ -241,7 +259,12 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
 
   // 1. Each element on its own: names, labels, numbers, polygon validity.
   if (auto p = label_problem(name_, true)) v.add("/name", *p);
-  if (!finite(origin_)) v.add("/origin", "must be finite");
+  bool out_of_range = false;
+  const auto check_point = [&](const std::string& ptr, bool ok) {
+    if (!ok) v.add(ptr, kOutOfRange);
+    out_of_range = out_of_range || !ok;
+  };
+  check_point("/origin", finite(origin_));
   v.label("/floor/material", floor_.material, true);
   std::vector<bool> zone_ok(zones_.size(), false);
   for (std::size_t i = 0; i < zones_.size(); ++i) {
@@ -256,8 +279,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
   for (std::size_t i = 0; i < walls_.size(); ++i) {
     const auto& w = walls_[i];
     const std::string ptr = "/walls/" + std::to_string(i);
-    if (!finite(w.segment.a)) v.add(ptr + "/start", "must be finite");
-    if (!finite(w.segment.b)) v.add(ptr + "/end", "must be finite");
+    check_point(ptr + "/start", finite(w.segment.a));
+    check_point(ptr + "/end", finite(w.segment.b));
     if (finite(w.segment.a) && finite(w.segment.b) && geometry::length(w.segment) <= opt.boundary_tolerance) {
       v.add(ptr + "/end", "wall from " + pt(w.segment.a) + " to " + pt(w.segment.b) + " has no length");
     }
@@ -269,9 +292,10 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     const auto& d = doors_[i];
     const std::string ptr = door_ptr(i);
     v.name(ptr + "/name", d.name, names);
-    if (!finite(d.pose)) v.add(ptr + "/pose", "must be finite");
-    if (!(d.width > 0 && std::isfinite(d.width))) {
-      v.add(ptr + "/width", "must be a positive number of metres");
+    check_point(ptr + "/pose", finite(d.pose));
+    if (!(d.width > 0 && d.width <= kMaxCoordinate)) {
+      v.add(ptr + "/width", "must be a positive number of metres, at most 100000");
+      out_of_range = true;
     } else if (d.width < 2 * opt.agent_radius) {
       v.add(ptr + "/width", "door '" + d.name + "' is " + num(d.width) +
                                 " m wide, narrower than an agent of radius " + num(opt.agent_radius) + " m");
@@ -301,7 +325,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     const std::string ptr = "/entities/" + std::to_string(i);
     v.name(ptr + "/name", e.name, names);
     v.label(ptr + "/type", e.type, false);
-    if (!finite(e.pose)) v.add(ptr + "/pose", "must be finite");
+    check_point(ptr + "/pose", finite(e.pose));
     std::set<std::string> seen;
     for (std::size_t k = 0; k < e.affordances.size(); ++k) {
       const std::string aptr = ptr + "/affordances/" + std::to_string(k);
@@ -310,7 +334,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
         v.add(aptr, "duplicate affordance '" + e.affordances[k] + "'");
     }
   }
-  if (std::find(zone_ok.begin(), zone_ok.end(), false) != zone_ok.end() || zones_.empty()) return v.failure();
+  if (std::find(zone_ok.begin(), zone_ok.end(), false) != zone_ok.end() || zones_.empty() || out_of_range)
+    return v.failure();
 
   try {
     // 2. Zones against each other.

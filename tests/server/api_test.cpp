@@ -5,6 +5,7 @@
 
 #include <set>
 
+#include "core/cards/card.hpp"
 #include "core/common/json_io.hpp"
 #include "tests/server/test_server.hpp"
 
@@ -161,6 +162,33 @@ TEST(Api, WritesNeedAKeyWhenKeysAreSetAndOnlyTheAuthorDeletes) {
   ASSERT_TRUE(del);
   EXPECT_EQ(del->status, 204);
   expect_problem(c.Get(("/api/v1/cards/" + id).c_str()), 404);
+}
+
+// Issue 14 #10: the author is not part of the content hash, so a key holder could write any name
+// into an export file and import it; the importer's key is the author, whatever the file says.
+TEST(Api, ImportRecordsTheImportingKeyAsAuthor) {
+  ServerConfig cfg;
+  cfg.api_keys = parse_api_keys("alice:alice-secret-0123456789,bob:bob-secret-0123456789").value();
+  TestServer s(cfg);
+  auto c = s.client();
+  cards::Card forged;
+  forged.id = cards::new_card_id();
+  forged.content = cards::parse_card_content(Json::parse(kCard), {}).value();
+  forged.author = "alice";
+  forged.created_at = "2026-01-02T03:04:05.000Z";
+  forged.content_hash = cards::content_hash(forged.content, forged.version, forged.parent_id);
+  const std::string doc = cards::export_document(forged);
+  auto r = c.Post("/api/v1/cards/import", {{"Authorization", "Bearer bob-secret-0123456789"}}, doc,
+                  "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 201) << r->body;
+  EXPECT_EQ(body_of(r)["author"], "bob");
+  EXPECT_EQ(body_of(r)["content_hash"], forged.content_hash) << "the content and its hash are kept";
+  EXPECT_EQ(body_of(c.Get(("/api/v1/cards/" + forged.id).c_str()))["author"], "bob");
+  // So alice's key, not bob's, is the one that cannot delete it.
+  expect_problem(
+      c.Delete(("/api/v1/cards/" + forged.id).c_str(), {{"Authorization", "Bearer alice-secret-0123456789"}}),
+      403);
 }
 
 TEST(Api, PageWalkVisitsEveryCardExactlyOnce) {

@@ -98,6 +98,23 @@ TEST(Scenarios, BadRequestsNameTheirFields) {
   }
 }
 
+// Issue 14 #11: a world of 1e308 metres was accepted and stored with the scenario.
+TEST(Scenarios, AnInlineWorldBeyondTheCoordinateRangeIs422) {
+  TestServer s;
+  auto c = s.client();
+  const Json world = {
+      {"name", "huge"},
+      {"zones",
+       Json::array({{{"name", "hall"},
+                     {"type", "hall"},
+                     {"polygon", Json::array({Json::array({0, 0}), Json::array({1e308, 0}),
+                                              Json::array({1e308, 1e308}), Json::array({0, 1e308})})}}})}};
+  auto r = post(c, "/api/v1/scenarios", {{"prompt", "people walk through the hall"}, {"world", world}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 422) << r->body;
+  EXPECT_EQ(Json::parse(r->body)["errors"][0]["pointer"], "/world/zones/0/polygon/1") << r->body;
+}
+
 TEST(Scenarios, AgentCountsAndDurationsAreBoundedByConfig) {
   ServerConfig config;
   config.max_scenario_agents = 10;
