@@ -333,7 +333,7 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueWords = {
     {"restaurant", "restaurant"},
     {"pizzeria", "restaurant"},
     {"bistro", "restaurant"},
-    {"diner", "restaurant"},
+
     {"pub", "restaurant"},
     {"university", "university"},
     {"campus", "university"},
@@ -488,7 +488,7 @@ const std::vector<CategoryPhrase> kExtraCategoryPhrases = {
     {"waits", Category::kQueuing, 0.6},
     {"waiting", Category::kQueuing, 0.6},
     {"waiting room", Category::kQueuing, 0.9},
-    {"line", Category::kQueuing, 0.5},
+    {"a line of", Category::kQueuing, 0.9},
     {"gather", Category::kSocialParty, 0.9},
     {"gathers", Category::kSocialParty, 0.9},
     {"gathered", Category::kSocialParty, 0.8},
@@ -560,6 +560,7 @@ struct Chunk {
   bool possessive = false;
   std::string why;
   std::optional<std::string> venue_type;  // when a venue
+  bool maybe_person = false;              // a person in a rarer sense, or a word WordNet lacks
 };
 
 class Reader {
@@ -585,6 +586,8 @@ class Reader {
   void find_quantities();
   void find_chunks();
   void classify(Chunk& c);
+  void resolve_maybe_persons();
+  [[nodiscard]] bool coordinated_with_person(std::size_t chunk) const;
   bool person_word(const std::string& word, const Chunk& c, std::string& why) const;
   std::string normalise_role(const std::string& role, const std::string& head, std::string& why) const;
   void find_venue();
@@ -617,7 +620,7 @@ bool Reader::significant(const std::string& w) const {
   if (kGenericPeople.count(w) || kMassPeople.count(lemma)) return true;
   for (const auto& [phrase, type] : kVenueWords)
     if (phrase == lemma) return true;
-  return has_sense(e, "noun.person", 1) || lemma == "robot";
+  return has_sense(e, "noun.person", 3) || lemma == "robot";
 }
 
 void Reader::find_quantities() {
@@ -627,6 +630,19 @@ void Reader::find_quantities() {
     if (!q || q->length == 0) {
       ++i;
       continue;
+    }
+    // "sit around one table", "gather around two tables": a preposition, not an approximation.
+    if ((t_[i].is("around") || t_[i].is("about") || t_[i].is("over")) && q->length >= 2) {
+      static const std::set<std::string, std::less<>> kBeforeCount = {"with", "of",  "for", "are",  "is",
+                                                                      "were", "was", "has", "have", "had",
+                                                                      "and",  ",",   ":",   "by",   "than"};
+      const bool one = q->count.kind == CountKind::kApprox && q->count.value == 1;
+      const bool after_verb = i > 0 && kBeforeCount.count(t_[i - 1].text) == 0 &&
+                              t_[i - 1].kind == TextToken::Kind::kWord && wn_.is_verb(t_[i - 1].text);
+      if (one || after_verb) {
+        ++i;
+        continue;
+      }
     }
     // "9 am", "platform 4": a number glued to a time or a name is not a count.
     const std::size_t after = i + q->length;
@@ -665,6 +681,10 @@ void Reader::find_chunks() {
       const std::string& next = t_[e].text;
       const NounEntry ne = noun(next);
       if (significant(prev.text) && wn_.is_verb(next) && !significant(next)) break;
+      // "a security guard stands", "a gate agent checks": a verb agreeing with a singular person.
+      if (!prev_plural && has_sense(pe, "noun.person", 3) && next.ends_with("s") && !next.ends_with("ss") &&
+          !has_sense(ne, "noun.person", 3) && wn_.is_verb(next.substr(0, next.size() - 1)))
+        break;
       if (!ne.known && wn_.is_verb(next)) break;
       ++e;
     }
@@ -684,29 +704,12 @@ bool Reader::person_word(const std::string& w, const Chunk& c, std::string& why)
       why = "WordNet: '" + e.lemma + "' is a person (noun.person)";
       return true;
     }
-    if (has_sense(e, "noun.person", 3)) {
-      // A person only in a rarer sense ("fans", "commuters", "cleaner"): when counted or said
-      // next to other people.
-      const bool counted = quantity_before(c.s).has_value();
-      bool next_to_person = false;
-      for (std::size_t k = c.s >= 2 ? c.s - 2 : 0; k < std::min(t_.size(), c.e + 3); ++k) {
-        if (k >= c.s && k < c.e) continue;
-        const NounEntry o = noun(t_[k].text);
-        if (o.known && has_sense(o, "noun.person", 1) && kFeatureHeads.count(o.lemma) == 0)
-          next_to_person = true;
-      }
-      const bool determiner =
-          c.s > 0 && (t_[c.s - 1].is("the") || t_[c.s - 1].is("a") || t_[c.s - 1].is("an"));
-      if (counted || next_to_person || (determiner && t_.size() > c.e && wn_.is_verb(t_[c.e].text))) {
-        why = "WordNet: '" + e.lemma + "' can be a person (noun.person), and is counted or named with people";
-        return true;
-      }
-    }
+    (void)c;
     return false;
   }
   // Not in WordNet: agent nouns ("carer", "concertgoer").
   std::string s = w;
-  if (s.ends_with("s")) s.pop_back();
+  if (s.ends_with("s") && !s.ends_with("ss")) s.pop_back();
   if (s.ends_with("goer")) {
     why = "'" + s + "': one who goes to something";
     return true;
@@ -759,6 +762,10 @@ void Reader::classify(Chunk& c) {
   const NounEntry e = noun(word);
   c.head = e.known ? e.lemma : strip_accents(word);
   c.plural = e.known && e.lemma != word && word.ends_with("s");
+  if (!e.known && c.head.size() > 3 && c.head.ends_with("s") && !c.head.ends_with("ss")) {
+    c.head.pop_back();  // a plural WordNet lacks ("carers", "baristas")
+    c.plural = true;
+  }
   if (word == "people" || word == "staff" || word == "personnel" || word == "others") c.plural = true;
   c.possessive = t_[last].possessive;
   // The name as written: the last two words that are nouns (not venue words, not adjectives).
@@ -846,6 +853,9 @@ void Reader::classify(Chunk& c) {
     c.why = why;
     return;
   }
+  // A person only in a rarer sense ("fans", "commuters", "cleaner") or a word WordNet lacks
+  // ("barista"): decided once every chunk is classified (resolve_maybe_persons).
+  c.maybe_person = (e.known && has_sense(e, "noun.person", 3)) || (!e.known && !wn_.is_adjective(word));
   if (e.known && (hypernym_of(e, "room", 2) || hypernym_of(e, "area", 1) || hypernym_of(e, "passage", 1))) {
     c.cls = Cls::kRoom;
     c.why = "WordNet: '" + e.lemma + "' is a room or area";
@@ -863,6 +873,57 @@ void Reader::classify(Chunk& c) {
   }
 }
 
+bool Reader::coordinated_with_person(std::size_t ci) const {
+  // Chunks next to this one in its sentence with only "and", "or", commas, articles and counts between.
+  auto link = [&](std::size_t a_end, std::size_t b_start) {
+    for (std::size_t k = a_end; k < b_start; ++k) {
+      const TextToken& x = t_[k];
+      if (x.text == "," || x.is("and") || x.is("or") || x.is("a") || x.is("an") || x.is("the") ||
+          x.is("their") || used_[k])
+        continue;
+      return false;
+    }
+    return true;
+  };
+  const Chunk& c = chunks_[ci];
+  auto person = [](const Chunk& o) { return o.cls == Cls::kPerson || o.cls == Cls::kGenericPerson; };
+  if (ci > 0 && person(chunks_[ci - 1]) && t_[chunks_[ci - 1].s].sentence == t_[c.s].sentence &&
+      link(chunks_[ci - 1].e, c.s))
+    return true;
+  if (ci + 1 < chunks_.size() && person(chunks_[ci + 1]) &&
+      t_[chunks_[ci + 1].s].sentence == t_[c.s].sentence && link(c.e, chunks_[ci + 1].s))
+    return true;
+  return false;
+}
+
+void Reader::resolve_maybe_persons() {
+  // Twice, so that "a cleaner, a dishwasher and two cooks" spreads along the list.
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t ci = 0; ci < chunks_.size(); ++ci) {
+      Chunk& c = chunks_[ci];
+      if (!c.maybe_person || (c.cls != Cls::kNone && c.cls != Cls::kObject)) continue;
+      const bool counted = quantity_before(c.s).has_value();
+      const NounEntry e = noun(t_[c.e - 1].text);
+      const bool coordinated = coordinated_with_person(ci);
+      // "a gate agent checks tickets": an article and a verb that agrees.
+      const bool subject = c.s > 0 &&
+                           (t_[c.s - 1].is("a") || t_[c.s - 1].is("an") || t_[c.s - 1].is("the")) &&
+                           c.e < t_.size() && t_[c.e].text.ends_with("s") &&
+                           wn_.is_verb(t_[c.e].text.substr(0, t_[c.e].text.size() - 1));
+      // A word WordNet lacks, counted and named in a prompt about people ("one barista behind the counter").
+      const bool among_people = std::any_of(chunks_.begin(), chunks_.end(), [](const Chunk& o) {
+        return o.cls == Cls::kPerson || o.cls == Cls::kGenericPerson || o.cls == Cls::kCollective;
+      });
+      if ((e.known && (counted || coordinated || subject)) ||
+          (!e.known && (coordinated || subject || (counted && among_people)))) {
+        c.cls = Cls::kPerson;
+        c.why = e.known ? "WordNet: '" + e.lemma + "' can be a person (noun.person), and is " +
+                              (counted ? "counted" : "named with people")
+                        : "'" + c.head + "' is not in WordNet; taken as a person: named with people";
+      }
+    }
+}
+
 std::optional<QuantityMatch> Reader::quantity_before(std::size_t s) const {
   if (auto it = quantity_ending_.find(s); it != quantity_ending_.end()) return it->second;
   return std::nullopt;
@@ -873,7 +934,8 @@ std::optional<Count> Reader::determiner_count(std::size_t s, bool plural) const 
   const std::string& d = t_[s - 1].text;
   if (d == "a" || d == "an" || d == "the" || d == "their" || d == "his" || d == "her" || d == "its" ||
       d == "our" || d == "my" || d == "your" || d == "this" || d == "that" || d == "single" || d == "lone" ||
-      d == "sole") {
+      d == "sole" ||
+      (d == "only" && s >= 2 && (t_[s - 2].is("the") || t_[s - 2].is("an") || t_[s - 2].is("one")))) {
     Count c = Count::exact(1);
     c.phrase = d;
     c.span = t_[s - 1].span;
@@ -1082,13 +1144,26 @@ void Reader::read_people() {
     auto same = std::find_if(out_.groups.begin(), out_.groups.end(), [&](const PeopleGroup& g) {
       return g.role == role || (!role.empty() && g.role.ends_with(" " + role));
     });
-    const bool definite = c.s > 0 && (t_[c.s - 1].is("the") || t_[c.s - 1].is("their"));
+    std::size_t before = c.s;
+    while (before > 0 && (t_[before - 1].is("only") || t_[before - 1].is("same"))) --before;
+    const bool definite = before > 0 && (t_[before - 1].is("the") || t_[before - 1].is("their"));
     if (same != out_.groups.end() && (!count.specified() || (definite && !q && same->count.specified())))
       continue;
+    if (same != out_.groups.end() && !same->count.specified() && count.specified()) {
+      // "guests check in …; 90 guests are expected": the count of the people already named.
+      same->count = count;
+      same->why += "; count from '" + count.phrase + " " + join_text(t_, c.s, c.e) + "'";
+      continue;
+    }
+    // A singular count noun with neither article nor number is a verb or a title ("the ushers guide
+    // everyone"), not somebody present.
+    if (!count.specified() && !c.plural && c.cls == Cls::kPerson && kMassPeople.count(c.head) == 0) continue;
     if (c.cls == Cls::kGenericPerson && !count.specified() && definite) continue;  // "the only people"
     std::string why;
     if (c.s > 0 && t_[c.s - 1].is("another") && q) why = "'another': a further group";
-    out_.groups.push_back(group_from(c, count, why));
+    PeopleGroup g = group_from(c, count, why);
+    g.together = q && (q->count.phrase.find("group of") != std::string::npos);
+    out_.groups.push_back(std::move(g));
   }
 }
 
@@ -1351,7 +1426,7 @@ void Reader::read_categories() {
       if (top == nullptr || m.score > top->score) top = &m;
     // An emergency said alongside another activity is the alarm of it: both are understood.
     for (auto& [cat, m] : scores) {
-      if (m.score < 0.6 && &m != top) continue;
+      if (m.score < 0.4) continue;  // weak words alone ("exits", "counter") say where, not what
       CategoryMention& a = activities[cat];
       a.category = cat;
       a.score += m.score;
@@ -1373,6 +1448,7 @@ void Reader::read_categories() {
 ScenarioIntent Reader::run() {
   find_quantities();
   find_chunks();
+  resolve_maybe_persons();
   find_venue();
   read_people();
   apply_products();

@@ -1,5 +1,6 @@
 #include "core/scenario/wordnet.hpp"
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -38,16 +39,20 @@ std::string spaced(const char* w) {
 
 // Caller holds the lock. Base form for a part of speech: the word itself when WordNet has it,
 // else its morphological base ("children" → "child"), else "".
+// The morphological base wins over a surface form that is a word of its own ("gates" → "gate",
+// not the proper noun Gates).
 std::string base_form(const std::string& word, int pos) {
   std::vector<char> buf(word.begin(), word.end());
   buf.push_back('\0');
-  if (is_defined(buf.data(), pos) != 0) return word;
-  const char* base = morphstr(buf.data(), pos);
-  if (base == nullptr) return {};
-  std::string b(base);
-  std::vector<char> bb(b.begin(), b.end());
-  bb.push_back('\0');
-  return is_defined(bb.data(), pos) != 0 ? b : std::string();
+  if (const char* base = morphstr(buf.data(), pos); base != nullptr) {
+    std::string b(base);
+    std::vector<char> bb(b.begin(), b.end());
+    bb.push_back('\0');
+    if (is_defined(bb.data(), pos) != 0) return b;
+  }
+  std::vector<char> again(word.begin(), word.end());
+  again.push_back('\0');
+  return is_defined(again.data(), pos) != 0 ? word : std::string();
 }
 
 void collect_hypernyms(SynsetPtr s, std::vector<std::string>& out, std::set<std::string>& seen, int depth) {
@@ -124,7 +129,12 @@ NounEntry WordNet::noun(std::string_view word) const {
       buf.push_back('\0');
       SynsetPtr s = findtheinfo_ds(buf.data(), NOUN, -HYPERPTR, ALLSENSES);
       std::size_t k = 0;
-      for (SynsetPtr p = s; p != nullptr && k < NounEntry::kMaxSenses; p = p->nextss, ++k) {
+      for (SynsetPtr p = s; p != nullptr && k < NounEntry::kMaxSenses; p = p->nextss) {
+        // Proper nouns (Walker, Ussher, Gates) are never the sense a prompt means.
+        if (p->wcount > 0 && p->words != nullptr && p->words[0] != nullptr &&
+            std::isupper(static_cast<unsigned char>(p->words[0][0])) != 0)
+          continue;
+        ++k;
         NounSense sense;
         sense.lexfile = (p->fnum >= 0 && p->fnum < MAXFNUM && lexfiles[p->fnum] != nullptr)
                             ? lexfiles[p->fnum]

@@ -1,7 +1,7 @@
 // socsim-bench prompts: every prompt of tests/fixtures/prompts/everyday.jsonl through interpretation,
 // scored fact by fact against what a reader expects (tests/core/scenario/prompt_facts.hpp). Prints
 // one line per fact kind with its adherence, the overall figure, the interpretation time per prompt
-// (p50/p95 ms), and with --failures every fact that did not hold.
+// (p50/p95 ms), and with --failures every fact that did not hold; --prompt TEXT prints one interpretation.
 #include <string>
 #include <vector>
 
@@ -12,6 +12,15 @@ namespace {
 
 int prompts_bench(const socsim::bench::Args& a) {
   namespace facts = socsim::scenario::facts;
+  if (a.has("prompt")) {  // one prompt: its interpretation as JSON
+    auto intent = socsim::scenario::interpret_prompt(a.str("prompt", ""));
+    if (!intent) {
+      std::cerr << intent.error().message() << "\n";
+      return 1;
+    }
+    std::cout << socsim::scenario::to_json(*intent).dump(2) << "\n";
+    return 0;
+  }
   const std::string path = a.str("fixtures", "tests/fixtures/prompts/everyday.jsonl");
   const auto prompts = facts::load(path);
   if (prompts.empty()) {
