@@ -311,6 +311,7 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueWords = {
     {"terminal", "airport"},
     {"station", "train_station"},
     {"underground", "train_station"},
+    {"subway", "train_station"},
     {"metro", "train_station"},
     {"hotel", "hotel"},
     {"motel", "hotel"},
@@ -567,6 +568,11 @@ class Reader {
  public:
   Reader(const WordNet& wn, std::string_view prompt) : wn_(wn), t_(tokenize_text(prompt)) {
     out_.prompt = prompt;
+    for (const TextToken& tok : t_) {
+      const NounEntry* e = tok.kind == TextToken::Kind::kWord ? &noun(tok.text) : nullptr;
+      lemma_.push_back(e != nullptr && e->known ? e->lemma : std::string());
+      plain_.push_back(strip_accents(tok.text));
+    }
   }
 
   ScenarioIntent run();
@@ -578,8 +584,10 @@ class Reader {
   std::vector<Chunk> chunks_;
   std::map<std::size_t, QuantityMatch> quantity_ending_;  // token index after the quantity → quantity
   std::vector<bool> used_;                                // tokens a quantity or chunk consumed
+  std::vector<std::string> lemma_;                        // noun lemma per token ("" when none)
+  std::vector<std::string> plain_;                        // text without accents
 
-  NounEntry noun(const std::string& w) const { return wn_.noun(strip_accents(w)); }
+  const NounEntry& noun(const std::string& w) const { return wn_.noun(strip_accents(w)); }
   bool noun_known(const std::string& w) const { return noun(w).known; }
   bool content(std::size_t i) const;
   bool significant(const std::string& word) const;
@@ -605,7 +613,7 @@ bool Reader::content(std::size_t i) const {
   if (i >= t_.size()) return false;
   const TextToken& tok = t_[i];
   if (is_function(tok)) return false;
-  const NounEntry e = noun(tok.text);
+  const NounEntry& e = noun(tok.text);
   if (e.known) return true;
   if (wn_.is_adjective(strip_accents(tok.text))) return true;
   // Unknown to WordNet: a name or a new word; "-ing" and "-ly" words are verbs and adverbs.
@@ -614,7 +622,7 @@ bool Reader::content(std::size_t i) const {
 }
 
 bool Reader::significant(const std::string& w) const {
-  const NounEntry e = noun(w);
+  const NounEntry& e = noun(w);
   const std::string lemma = e.known ? e.lemma : w;
   if (kFeatureHeads.count(lemma) || kRoomHeads.count(lemma) || kCollectives.count(lemma)) return true;
   if (kGenericPeople.count(w) || kMassPeople.count(lemma)) return true;
@@ -672,18 +680,18 @@ void Reader::find_chunks() {
     while (e < t_.size() && !used_[e] && content(e) && t_[e].sentence == t_[i].sentence) {
       const TextToken& prev = t_[e - 1];
       if (prev.possessive) break;
-      const NounEntry pe = noun(prev.text);
+      const NounEntry& pe = noun(prev.text);
       const bool prev_plural = pe.known && pe.lemma != prev.text && prev.text.ends_with("s");
       if (prev_plural && kPluralModifiers.count(prev.text) == 0 && prev.text != "people") break;
       if (prev.text == "people" || kGenericPeople.count(prev.text)) break;
       // "nurse calls", "guide wait", "robot drives": a noun that can be a verb after a
       // significant noun is the verb of the clause.
       const std::string& next = t_[e].text;
-      const NounEntry ne = noun(next);
+      const NounEntry& ne = noun(next);
       if (significant(prev.text) && wn_.is_verb(next) && !significant(next)) break;
       // "a security guard stands", "a gate agent checks": a verb agreeing with a singular person.
       if (!prev_plural && has_sense(pe, "noun.person", 3) && next.ends_with("s") && !next.ends_with("ss") &&
-          !has_sense(ne, "noun.person", 3) && wn_.is_verb(next.substr(0, next.size() - 1)))
+          !has_sense(ne, "noun.person", 1) && wn_.is_verb(next.substr(0, next.size() - 1)))
         break;
       if (!ne.known && wn_.is_verb(next)) break;
       ++e;
@@ -698,7 +706,7 @@ void Reader::find_chunks() {
 }
 
 bool Reader::person_word(const std::string& w, const Chunk& c, std::string& why) const {
-  const NounEntry e = noun(w);
+  const NounEntry& e = noun(w);
   if (e.known) {
     if (has_sense(e, "noun.person", 1)) {
       why = "WordNet: '" + e.lemma + "' is a person (noun.person)";
@@ -739,9 +747,7 @@ std::optional<std::string> Reader::venue_at(std::size_t i, std::size_t& length) 
         ok = false;
         break;
       }
-      const std::string& got = t_[i + n].text;
-      const NounEntry e = noun(got);
-      if (got != want && strip_accents(got) != want && !(e.known && e.lemma == want)) {
+      if (t_[i + n].text != want && plain_[i + n] != want && lemma_[i + n] != want) {
         ok = false;
         break;
       }
@@ -759,7 +765,7 @@ std::optional<std::string> Reader::venue_at(std::size_t i, std::size_t& length) 
 void Reader::classify(Chunk& c) {
   const std::size_t last = c.e - 1;
   const std::string& word = t_[last].text;
-  const NounEntry e = noun(word);
+  const NounEntry& e = noun(word);
   c.head = e.known ? e.lemma : strip_accents(word);
   c.plural = e.known && e.lemma != word && word.ends_with("s");
   if (!e.known && c.head.size() > 3 && c.head.ends_with("s") && !c.head.ends_with("ss")) {
@@ -772,7 +778,7 @@ void Reader::classify(Chunk& c) {
   std::vector<std::string> words;
   for (std::size_t k = c.s; k < c.e; ++k) {
     const std::string& w = t_[k].text;
-    const NounEntry we = noun(w);
+    const NounEntry& we = noun(w);
     if (k + 1 < c.e) {
       if (!we.known) {
         if (!wn_.is_adjective(w) && !wn_.is_verb(w) && k + 1 == last) words.push_back(w);
@@ -798,7 +804,8 @@ void Reader::classify(Chunk& c) {
   for (const std::string& w : words) c.name += (c.name.empty() ? "" : " ") + w;
   // A two-word collocation WordNet knows ("security guard", "tour guide", "water cooler").
   const std::string compound = words.size() == 2 ? words[0] + " " + words[1] : std::string();
-  const NounEntry ce = compound.empty() ? NounEntry{} : noun(compound);
+  static const NounEntry kNone;
+  const NounEntry& ce = compound.empty() ? kNone : noun(compound);
 
   std::size_t vl = 0;
   std::optional<std::string> venue;
@@ -876,14 +883,16 @@ void Reader::classify(Chunk& c) {
 bool Reader::coordinated_with_person(std::size_t ci) const {
   // Chunks next to this one in its sentence with only "and", "or", commas, articles and counts between.
   auto link = [&](std::size_t a_end, std::size_t b_start) {
+    bool joined = false;
     for (std::size_t k = a_end; k < b_start; ++k) {
+      joined = joined || t_[k].text == "," || t_[k].is("and") || t_[k].is("or");
       const TextToken& x = t_[k];
       if (x.text == "," || x.is("and") || x.is("or") || x.is("a") || x.is("an") || x.is("the") ||
           x.is("their") || used_[k])
         continue;
       return false;
     }
-    return true;
+    return joined;
   };
   const Chunk& c = chunks_[ci];
   auto person = [](const Chunk& o) { return o.cls == Cls::kPerson || o.cls == Cls::kGenericPerson; };
@@ -903,7 +912,7 @@ void Reader::resolve_maybe_persons() {
       Chunk& c = chunks_[ci];
       if (!c.maybe_person || (c.cls != Cls::kNone && c.cls != Cls::kObject)) continue;
       const bool counted = quantity_before(c.s).has_value();
-      const NounEntry e = noun(t_[c.e - 1].text);
+      const NounEntry& e = noun(t_[c.e - 1].text);
       const bool coordinated = coordinated_with_person(ci);
       // "a gate agent checks tickets": an article and a verb that agrees.
       const bool subject = c.s > 0 &&
@@ -951,7 +960,7 @@ std::string Reader::normalise_role(const std::string& role, const std::string& h
       return std::string(r.role);
     }
   for (const std::string& w : {role, head}) {
-    const NounEntry e = noun(w);
+    const NounEntry& e = noun(w);
     if (!e.known) continue;
     // Nearest anchor up the chain of the first person sense.
     for (const NounSense& s : e.senses) {
@@ -984,6 +993,18 @@ void Reader::find_venue() {
         // "care home" is in the table; a bare "home" needs "at home" or "the home".
         if (!(i + 1 < t_.size() && t_[i + 1].kind == TextToken::Kind::kPunct)) continue;
       }
+      // Two venue words in a row: the head names the building ("university library"), unless it is
+      // a place to eat or shop inside the first ("museum café", "factory canteen").
+      std::size_t n2 = 0;
+      const std::size_t next = i + n;
+      if (next < t_.size() && !t_[next - 1].possessive) {
+        auto v2 = venue_at(next, n2);
+        if (v2 && !v2->empty() && *v2 != "canteen" && *v2 != "restaurant" && *v2 != "retail" && *v2 != *v) {
+          v = v2;
+          i = next;
+          n = n2;
+        }
+      }
       VenueIntent venue;
       venue.type = *v;
       venue.building_type = std::string(nearest_building_type(*v));
@@ -997,7 +1018,7 @@ void Reader::find_venue() {
   // WordNet: a noun whose hypernyms include a venue kind ("motel" → hotel, "hostel").
   for (const Chunk& c : chunks_) {
     for (std::size_t k = c.s; k < c.e; ++k) {
-      const NounEntry e = noun(t_[k].text);
+      const NounEntry& e = noun(t_[k].text);
       if (!e.known || e.senses.empty() || e.senses[0].lexfile != "noun.artifact") continue;
       for (const std::string& h : e.senses[0].hypernyms)
         for (const auto& [anchor, type] : kVenueHypernyms)
@@ -1174,7 +1195,8 @@ void Reader::apply_products() {
     for (const Chunk& c : chunks_) {
       if (c.e > before) break;
       if (t_[c.s].sentence != sentence) continue;
-      if (c.cls != Cls::kFeature && c.cls != Cls::kRoom && c.cls != Cls::kObject) continue;
+      if (c.cls != Cls::kFeature && c.cls != Cls::kRoom && c.cls != Cls::kObject && c.cls != Cls::kVenue)
+        continue;
       if (auto q = quantity_before(c.s); q && q->count.kind == CountKind::kExact && q->count.value > 1)
         best = q->count.value;
     }
@@ -1197,7 +1219,7 @@ void Reader::apply_products() {
     }
     // "four operators per line", "one parent per child"
     if (t_[i].is("per") && i + 1 < t_.size()) {
-      const NounEntry e = noun(t_[i + 1].text);
+      const NounEntry& e = noun(t_[i + 1].text);
       const std::string head = e.known ? e.lemma : t_[i + 1].text;
       std::optional<double> factor;
       for (const PeopleGroup& g : out_.groups)
@@ -1321,8 +1343,11 @@ void Reader::attach_places_and_activities() {
         else if (!same->count.specified() || f.count.value > same->count.value)
           same->count = f.count;
       }
-    } else if (c.cls == Cls::kRoom) {
-      out_.world.rooms.push_back(NamedThing{name, span_of(t_, c.s, c.e)});
+    } else if (c.cls == Cls::kRoom || c.cls == Cls::kVenue) {
+      if (c.cls == Cls::kRoom) out_.world.rooms.push_back(NamedThing{name, span_of(t_, c.s, c.e)});
+      // Counted rooms are requirements too ("three galleries", "two classrooms").
+      if (auto q = quantity_before(c.s); q && q->count.specified())
+        out_.world.features.push_back(Feature{name, c.head, q->count, span_of(t_, c.s, c.e)});
     } else if (c.cls == Cls::kObject) {
       const bool placed = c.s > 0 && std::any_of(places.begin(), places.end(),
                                                  [&](const auto& p) { return p.end_token == c.e; });

@@ -112,7 +112,7 @@ Result<const WordNet*> WordNet::open() {
   return instance.get();
 }
 
-NounEntry WordNet::noun(std::string_view word) const {
+const NounEntry& WordNet::noun(std::string_view word) const {
   const std::string key = underscored(word);
   {
     std::lock_guard<std::mutex> g(cache_->mutex);

@@ -35,7 +35,8 @@ class WordNet {
   // files are missing, naming the directory searched and the package that provides them.
   static Result<const WordNet*> open();
 
-  [[nodiscard]] NounEntry noun(std::string_view word) const;
+  // The entry lives as long as the instance (cached; safe to hold across calls and threads).
+  [[nodiscard]] const NounEntry& noun(std::string_view word) const;
   [[nodiscard]] bool is_verb(std::string_view word) const;
   [[nodiscard]] bool is_adjective(std::string_view word) const;
   [[nodiscard]] bool is_adverb(std::string_view word) const;
