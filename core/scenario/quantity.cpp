@@ -130,7 +130,7 @@ Count Count::exact(double v) {
   return Count{CountKind::kExact, v, v, v, {}, {}};
 }
 Count Count::approx(double v) {
-  return Count{CountKind::kApprox, v, std::floor(v * 0.9), std::ceil(v * 1.1), {}, {}};
+  return Count{CountKind::kApprox, v, std::floor(v * 0.9 + 1e-9), std::ceil(v * 1.1 - 1e-9), {}, {}};
 }
 Count Count::range(double lo, double hi) {
   if (hi < lo) std::swap(lo, hi);
@@ -219,7 +219,7 @@ std::vector<TextToken> tokenize_text(std::string_view s) {
       TextToken t{TextToken::Kind::kNumber, digits, {i, j}};
       t.number = std::strtod(digits.c_str(), nullptr);
       // Glued letters ("20s", "9am", "2nd") make a word, not a count.
-      if (j < s.size() && letter(static_cast<unsigned char>(s[j]))) {
+      if (j < s.size() && letter(static_cast<unsigned char>(s[j])) && dash_at(s, j) == 0) {
         while (j < s.size() && letter(static_cast<unsigned char>(s[j]))) ++j;
         t.kind = TextToken::Kind::kWord;
         t.text = std::string(s.substr(i, j - i));

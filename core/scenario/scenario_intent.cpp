@@ -389,13 +389,13 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueHypernyms
 
 // Features the world generator builds and counts.
 const std::set<std::string, std::less<>> kFeatureHeads = {
-    "exit",      "door",       "doorway",  "entrance",  "gate",      "turnstile",  "counter",  "checkout",
-    "till",      "desk",       "elevator", "lift",      "escalator", "stair",      "stairs",   "staircase",
-    "stairway",  "table",      "seat",     "chair",     "bench",     "sofa",       "platform", "lane",
-    "scanner",   "carousel",   "machine",  "bay",       "kiosk",     "booth",      "stall",    "stand",
-    "window",    "hatch",      "screen",   "stage",     "bar",       "shelf",      "rack",     "bed",
-    "microwave", "whiteboard", "cooler",   "dispenser", "system",    "line",       "belt",     "conveyor",
-    "podium",    "row",        "barrier",  "gangway",   "ramp",      "checkpoint",
+    "exit",     "door",      "doorway",  "entrance", "gate",     "turnstile", "counter",
+    "checkout", "till",      "desk",     "elevator", "lift",     "escalator", "stair",
+    "stairs",   "staircase", "stairway", "table",    "seat",     "chair",     "bench",
+    "sofa",     "platform",  "lane",     "scanner",  "carousel", "machine",   "bay",
+    "kiosk",    "booth",     "stall",    "stand",    "window",   "hatch",     "screen",
+    "stage",    "bar",       "shelf",    "rack",     "bed",      "line",      "belt",
+    "conveyor", "podium",    "row",      "barrier",  "gangway",  "ramp",      "checkpoint",
 };
 // Counted features for which a bare "line" is a queue, not a production line.
 bool feature_head(const std::string& head, std::size_t words) {
@@ -868,7 +868,7 @@ void Reader::classify(Chunk& c) {
     c.why = "WordNet: '" + e.lemma + "' is a room or area";
     return;
   }
-  if (e.known && !e.senses.empty() && e.senses[0].lexfile == "noun.artifact") {
+  if (e.known && has_sense(e, "noun.artifact", 2)) {
     c.cls = Cls::kObject;
     c.why = "WordNet: '" + e.lemma + "' is an object (noun.artifact)";
     return;
@@ -1482,7 +1482,18 @@ ScenarioIntent Reader::run() {
   read_categories();
   // Warnings: counted things that are no person, place or object.
   for (const Chunk& c : chunks_) {
-    if (c.cls != Cls::kNone || !quantity_before(c.s)) continue;
+    if ((c.cls != Cls::kNone && c.cls != Cls::kObject) || !quantity_before(c.s)) continue;
+    const std::string name = c.name.empty() ? c.head : c.name;
+    if (c.cls == Cls::kObject) {
+      const bool used = std::any_of(out_.world.objects.begin(), out_.world.objects.end(),
+                                    [&](const NamedThing& o) { return o.name == name; });
+      if (!used)
+        out_.warnings.push_back(
+            IntentWarning{"'" + join_text(t_, c.s, c.e) +
+                              "' is an object, not a person or a place where people are: ignored",
+                          span_of(t_, c.s, c.e)});
+      continue;
+    }
     out_.warnings.push_back(
         IntentWarning{"'" + join_text(t_, c.s, c.e) + "' is not a person, place or object I know: ignored",
                       span_of(t_, c.s, c.e)});
