@@ -546,7 +546,7 @@ Status plan_reception(Draft& d, const Activity& a, Rng& rng) {
     d.place_used(C::kReception, "counter", lane->counter, "the serving entity at the lane's head");
 
   // The receptionist (one by default) faces the lane from behind the counter.
-  if (receptionists == 0 && !lane->counter.empty()) receptionists = 1;
+  if (receptionists == 0 && !lane->counter.empty() && !d.named_only) receptionists = 1;
   if (receptionists > 0) {
     if (auto spot = behind_counter(p, *lane); spot && d.take_spotlight(1) == 1) {
       auto tree = d.add_tree(C::kReception, "receptionist", [&](TreeXml& t) {
@@ -1036,7 +1036,7 @@ Status plan_normal_operation(Draft& d, const Activity& a, Rng& rng) {
     if (!z.empty() && !contains(entrance_zones, z)) entrance_zones.push_back(z);
   }
   std::vector<People> traffic = rest;
-  if (traffic.empty() && area >= 120.0 && !entrances.empty()) {
+  if (traffic.empty() && !d.named_only && area >= 120.0 && !entrances.empty()) {
     double circ_area = 0.0;
     for (const std::string& z : circulation) circ_area += p.zone_area(z);
     const std::size_t n = std::clamp<std::size_t>(
