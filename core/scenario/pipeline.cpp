@@ -10,6 +10,7 @@
 #include "core/crowd/scenario_runner.hpp"
 #include "core/scenario/program_check.hpp"
 #include "core/scenario/program_llm.hpp"
+#include "core/scenario/scenario_intent.hpp"
 #include "core/world/floorplan_llm.hpp"
 #include "core/world/floorplan_request.hpp"
 #include "core/world/world_document.hpp"
@@ -198,7 +199,22 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
     fp["scene_graph"] = *request.scene_graph;
   else
     fp["prompt"] = request.prompt;
-  if (request.domain) fp["domain"] = *request.domain;
+  // The venue the prompt names ("train station", "library") decides the building type, by the
+  // nearest type the floor-plan generator knows; a given domain or scene graph wins.
+  Json venue = nullptr;
+  if (request.domain) {
+    fp["domain"] = *request.domain;
+  } else if (!request.scene_graph) {
+    auto intent = interpret_prompt(request.prompt);
+    if (!intent) return tl::unexpected(intent.error());
+    if (intent->venue) {
+      fp["domain"] = intent->venue->building_type;
+      venue = Json{{"type", intent->venue->type},
+                   {"building_type", intent->venue->building_type},
+                   {"words", intent->venue->words},
+                   {"why", intent->venue->why}};
+    }
+  }
   if (request.model) fp["model"] = *request.model;
   auto fpr = world::floor_plan_request_from_json(fp);
   if (!fpr) return tl::unexpected(fpr.error());
@@ -222,6 +238,7 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
   if (!plan) return tl::unexpected(plan.error());
   plan->provenance["classification"] = resolved->classification;
   plan->provenance["compliance_passed"] = plan->compliance.passed;
+  if (!venue.is_null()) plan->provenance["venue"] = venue;
   return ScenarioWorld{std::move(plan->world), resolved->graph.domain, std::move(plan->provenance)};
 }
 

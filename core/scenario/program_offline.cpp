@@ -265,6 +265,30 @@ Status Draft::add_ambient(Category category, Ambient group) {
   group.name = name;
   std::size_t cap = 0;
   for (const std::string& s : group.start) cap += room_left(s);
+  if (group.size > cap && group.explicit_count) {
+    // A count the prompt gave is kept while the building holds it: the people who do not fit
+    // where the activity happens start in the other rooms, largest first.
+    std::vector<std::string> more;
+    for (const world::Zone& z : probe.world().zones())
+      if (!probe.is_toilet(z.name) &&
+          std::find(group.start.begin(), group.start.end(), z.name) == group.start.end() &&
+          std::find(group.goal.begin(), group.goal.end(), z.name) == group.goal.end() &&
+          room_left(z.name) > 0)
+        more.push_back(z.name);
+    std::stable_sort(more.begin(), more.end(),
+                     [&](const std::string& a, const std::string& b) { return room_left(a) > room_left(b); });
+    std::size_t added = 0;
+    for (const std::string& z : more) {
+      if (cap >= group.size) break;
+      group.start.push_back(z);
+      cap += room_left(z);
+      ++added;
+    }
+    if (added > 0)
+      note("ambient group '" + name + "': its start regions hold too few of the " +
+           std::to_string(group.size) + " people the prompt asks for; " + std::to_string(added) +
+           " more rooms added as start regions");
+  }
   if (group.size > cap) {
     note("ambient group '" + name + "': " + std::to_string(group.size) +
          " people do not fit in its start regions; " + std::to_string(cap) + " placed");

@@ -202,3 +202,66 @@ inline void score_intent(const Prompt& p, const ScenarioIntent& in, Tally& t) {
 }
 
 }  // namespace socsim::scenario::facts
+
+namespace socsim::scenario::facts {
+
+// People per program role in a scenario program: spotlight entries (count, 1 when positioned) and
+// ambient groups.
+inline std::map<std::string, double> program_people(const nlohmann::json& program) {
+  std::map<std::string, double> out;
+  for (const auto& a : program.value("agents", nlohmann::json::array()))
+    out[a.value("role", std::string("adult"))] += a.value("count", 1.0);
+  for (const auto& g : program.value("ambient_groups", nlohmann::json::array()))
+    out[g.value("role", std::string("adult"))] += g.value("size", 0.0);
+  return out;
+}
+
+inline std::string program_role_of(const std::string& key) {
+  if (key == "person") return "adult";
+  std::string r = key;
+  for (char& c : r)
+    if (c == ' ' || c == '-') c = '_';
+  return r;
+}
+
+inline bool program_role_matches(const std::string& key, const std::string& role) {
+  const std::string k = program_role_of(key);
+  return role == k || (role.size() > k.size() && role.ends_with("_" + k));
+}
+
+// Checks the people of a generated program against the fixture: each role's count, nobody extra,
+// the total. `produced` is false when no scenario came out (counted as one failed fact).
+inline void score_program(const Prompt& p, bool produced, const nlohmann::json& program, Tally& t,
+                          const std::string& error = "") {
+  t.add(p.id, "produced", produced, error);
+  if (!produced) return;
+  const auto& f = p.facts;
+  const auto people = program_people(program);
+  std::map<std::string, Expected> want;
+  if (f.contains("people"))
+    for (const auto& [k, v] : f["people"].items()) want[k] = expected(v);
+  for (const auto& [key, e] : want) {
+    double n = 0;
+    for (const auto& [role, count] : people)
+      if (program_role_matches(key, role)) n += count;
+    t.add(p.id, "role", holds(e, n),
+          key + " " + f["people"][key].dump() + ": scenario has " + std::to_string(n));
+  }
+  if (!f.value("others", false)) {
+    std::string extra;
+    for (const auto& [role, count] : people) {
+      bool known = false;
+      for (const auto& [key, e] : want) known = known || program_role_matches(key, role);
+      if (!known) extra += role + "=" + std::to_string(static_cast<int>(count)) + " ";
+    }
+    t.add(p.id, "no_extra", extra.empty(), "people nobody asked for: " + extra);
+  }
+  if (f.contains("total")) {
+    double n = 0;
+    for (const auto& [role, count] : people) n += count;
+    t.add(p.id, "total", holds(expected(f["total"]), n),
+          "expected " + f["total"].dump() + ", scenario has " + std::to_string(n));
+  }
+}
+
+}  // namespace socsim::scenario::facts
