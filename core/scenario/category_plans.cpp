@@ -548,18 +548,29 @@ Status plan_reception(Draft& d, const Activity& a, Rng& rng) {
   // The receptionist (one by default) faces the lane from behind the counter.
   if (receptionists == 0 && !lane->counter.empty() && !d.named_only) receptionists = 1;
   if (receptionists > 0) {
+    auto tree = d.add_tree(C::kReception, "receptionist", [&](TreeXml& t) {
+      t.open("Sequence");
+      t.leaf("LookAtPoint", {{"agent_id", "{id}"}, {"goal", lane->name}});
+      t.leaf("StopAndWait", {{"agent_id", "{id}"}, {"wait_duration", num(kForever)}});
+      t.close();
+    });
+    if (!tree) return tl::unexpected(tree.error());
+    std::size_t placed = 0;
     if (auto spot = behind_counter(p, *lane); spot && d.take_spotlight(1) == 1) {
-      auto tree = d.add_tree(C::kReception, "receptionist", [&](TreeXml& t) {
-        t.open("Sequence");
-        t.leaf("LookAtPoint", {{"agent_id", "{id}"}, {"goal", lane->name}});
-        t.leaf("StopAndWait", {{"agent_id", "{id}"}, {"wait_duration", num(kForever)}});
-        t.close();
-      });
-      if (!tree) return tl::unexpected(tree.error());
       d.add_agent_at("receptionist", "receptionist", *spot, *tree, C::kReception);
-      if (receptionists > 1) d.note("only one receptionist fits behind '" + lane->counter + "'");
-    } else {
+      placed = 1;
+    }
+    if (placed < receptionists && d.named_only) {
+      // Receptionists the prompt names all take part: the others wait by the counter facing the lane.
+      const std::size_t n = d.take_spotlight(receptionists - placed);
+      spawn_people(d, {People{"receptionist", n, true, "named in the prompt"}}, around(p, lane->zone, true),
+                   "receptionist", *tree, -1, C::kReception);
+      d.note(std::to_string(n) + " receptionist" + (n == 1 ? "" : "s") + " wait" + (n == 1 ? "s" : "") +
+             " by '" + counter + "'" + (placed == 0 ? " (no free spot behind it)" : " (one fits behind it)"));
+    } else if (placed == 0) {
       d.note("no free spot behind '" + counter + "' for a receptionist; the counter serves without one");
+    } else if (receptionists > 1) {
+      d.note("only one receptionist fits behind '" + lane->counter + "'");
     }
   }
 
