@@ -483,34 +483,6 @@ const std::set<std::string, std::less<>> kPlacePrepositions = {
     "among", "up",      "down", "via",    "under", "within", "onto",    "between",
 };
 
-// Category phrases the lexicon lacks that everyday prompts use for waiting, working and gathering.
-const std::vector<CategoryPhrase> kExtraCategoryPhrases = {
-    {"wait", Category::kQueuing, 0.6},
-    {"waits", Category::kQueuing, 0.6},
-    {"waiting", Category::kQueuing, 0.6},
-    {"waiting room", Category::kQueuing, 0.9},
-    {"a line of", Category::kQueuing, 0.9},
-    {"gather", Category::kSocialParty, 0.9},
-    {"gathers", Category::kSocialParty, 0.9},
-    {"gathered", Category::kSocialParty, 0.8},
-    {"dances", Category::kSocialParty, 0.8},
-    {"dances", Category::kSocialParty, 0.8},
-    {"checks in", Category::kReception, 1.1},
-    {"check in", Category::kReception, 1.1},
-    {"signs in", Category::kReception, 0.9},
-    {"sign in", Category::kReception, 0.9},
-    {"registers", Category::kReception, 0.9},
-    {"greets", Category::kReception, 0.8},
-    {"squeeze", Category::kBottleneck, 1.0},
-    {"crowd the", Category::kBottleneck, 0.6},
-    {"push through", Category::kBottleneck, 1.1},
-    {"pour out", Category::kBottleneck, 1.0},
-    {"walk", Category::kNormalOperation, 0.4},
-    {"walks", Category::kNormalOperation, 0.4},
-    {"work", Category::kNormalOperation, 0.5},
-    {"reading", Category::kNormalOperation, 0.4},
-};
-
 // --- Helpers -------------------------------------------------------------------------------------
 
 std::string join_text(const Tokens& t, std::size_t s, std::size_t e) {
@@ -1414,7 +1386,6 @@ void Reader::read_exclusivity_and_density() {
 
 void Reader::read_categories() {
   std::vector<CategoryPhrase> phrases(category_phrases().begin(), category_phrases().end());
-  phrases.insert(phrases.end(), kExtraCategoryPhrases.begin(), kExtraCategoryPhrases.end());
   std::map<std::size_t, std::map<Category, CategoryMention>> per_sentence;
   for (std::size_t i = 0; i < t_.size(); ++i) {
     std::size_t best_n = 0;
