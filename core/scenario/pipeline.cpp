@@ -345,6 +345,14 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
   auto& c = out.card;
   c.title = request.title.empty() ? short_title(request.prompt) : request.title;
   c.description = describe_program(generated->program);
+  // People the prompt asked for that the program could not hold are said on the card.
+  for (const auto& note : generated->provenance.value("notes", Json::array())) {
+    if (!note.is_string()) continue;
+    const std::string n = note.get<std::string>();
+    if (n.find("fit") != std::string::npos || n.find("scaled down") != std::string::npos ||
+        n.find("left out") != std::string::npos)
+      c.description += " " + n + ".";
+  }
   c.prompt = request.prompt;
   c.seed = request.seed;
   c.generator.name = request.generator;
