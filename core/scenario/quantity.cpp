@@ -218,6 +218,15 @@ std::vector<TextToken> tokenize_text(std::string_view s) {
       }
       TextToken t{TextToken::Kind::kNumber, digits, {i, j}};
       t.number = std::strtod(digits.c_str(), nullptr);
+      // "40-odd", "30-ish": one word, an approximate count.
+      if (j + 1 < s.size() && s[j] == '-' && letter(static_cast<unsigned char>(s[j + 1])) &&
+          (s.substr(j + 1, 3) == "odd" || s.substr(j + 1, 3) == "ish")) {
+        TextToken w{TextToken::Kind::kWord, std::string(s.substr(i, j + 4 - i)), {i, j + 4}};
+        for (char& ch : w.text) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        push(std::move(w));
+        i = j + 4;
+        continue;
+      }
       // Glued letters ("20s", "9am", "2nd") make a word, not a count.
       if (j < s.size() && letter(static_cast<unsigned char>(s[j])) && dash_at(s, j) == 0) {
         while (j < s.size() && letter(static_cast<unsigned char>(s[j]))) ++j;
@@ -465,6 +474,18 @@ std::optional<QuantityMatch> quantity_at(const std::vector<TextToken>& t, std::s
     }
   }
   if (t[i].is("some")) return done(Count::range(3, 8), 1);
+  // "twenty-odd", "40-ish", "30-odd": approximately.
+  if (t[i].kind == TextToken::Kind::kWord && (t[i].text.ends_with("-odd") || t[i].text.ends_with("-ish"))) {
+    const std::string head = t[i].text.substr(0, t[i].text.size() - 4);
+    std::optional<double> v;
+    if (auto w = hyphenated_cardinal(head))
+      v = *w;
+    else if (!head.empty() && std::all_of(head.begin(), head.end(), [](char ch) {
+               return std::isdigit(static_cast<unsigned char>(ch)) != 0;
+             }))
+      v = std::strtod(head.c_str(), nullptr);
+    if (v) return done(Count::approx(*v), 1);
+  }
   // Plain numbers.
   if (auto v = cardinal_at(t, i)) {
     if (auto r = number_then_range(v->first, i, v->second)) return r;

@@ -907,6 +907,9 @@ void Reader::resolve_maybe_persons() {
 
 std::optional<QuantityMatch> Reader::quantity_before(std::size_t s) const {
   if (auto it = quantity_ending_.find(s); it != quantity_ending_.end()) return it->second;
+  // "ten more people", "two other nurses", "five extra staff"
+  if (s > 0 && (t_[s - 1].is("more") || t_[s - 1].is("other") || t_[s - 1].is("extra")))
+    if (auto it = quantity_ending_.find(s - 1); it != quantity_ending_.end()) return it->second;
   return std::nullopt;
 }
 
@@ -1469,6 +1472,32 @@ ScenarioIntent Reader::run() {
         IntentWarning{"'" + join_text(t_, c.s, c.e) + "' is not a person, place or object I know: ignored",
                       span_of(t_, c.s, c.e)});
   }
+  // "0 people", "zero visitors": nobody of that role.
+  for (auto it = out_.groups.begin(); it != out_.groups.end();) {
+    if (it->count.kind == CountKind::kExact && it->count.value == 0) {
+      out_.exclusivity.exclusive = true;
+      out_.exclusivity.excluded_roles.push_back(it->role);
+      out_.exclusivity.phrases.push_back(it->count.phrase + " " + it->role);
+      out_.exclusivity.spans.push_back(it->span);
+      it = out_.groups.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  // Mostly words no English dictionary part of WordNet knows: probably another language.
+  std::size_t words = 0, unknown = 0;
+  for (std::size_t i = 0; i < t_.size(); ++i) {
+    if (t_[i].kind != TextToken::Kind::kWord || kFunctionWords.count(t_[i].text) || used_[i]) continue;
+    ++words;
+    if (lemma_[i].empty() && !wn_.is_verb(plain_[i]) && !wn_.is_adjective(plain_[i]) &&
+        !wn_.is_adverb(plain_[i]))
+      ++unknown;
+  }
+  if (words >= 3 && unknown * 2 >= words)
+    out_.warnings.push_back(IntentWarning{"most words are not English words I know (" +
+                                              std::to_string(unknown) + " of " + std::to_string(words) +
+                                              "): prompts are read in English",
+                                          {}});
   if (out_.groups.empty())
     out_.warnings.push_back(IntentWarning{"no people named: the generator chooses who is there", {}});
   if (!out_.venue) out_.warnings.push_back(IntentWarning{"no venue named", {}});

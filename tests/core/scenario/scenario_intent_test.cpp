@@ -194,6 +194,26 @@ TEST(ScenarioIntent, RobotsBackgroundAndWarnings) {
   EXPECT_TRUE(warned);
 }
 
+TEST(ScenarioIntent, ZeroMoreAndOddCounts) {
+  const auto i = read("0 people in the office.");
+  EXPECT_TRUE(i.groups.empty());
+  EXPECT_TRUE(i.exclusivity.exclusive);
+  EXPECT_EQ(read("Ten people and ten more people.").total().value, 20);
+  const auto j = read("Twenty-odd students and 40-odd parents.");
+  EXPECT_EQ(group(j, "student")->count.kind, CountKind::kApprox);
+  EXPECT_EQ(group(j, "parent")->count.value, 40);
+  for (const IntentWarning& w : j.warnings)
+    EXPECT_EQ(w.message.find("English"), std::string::npos) << w.message;
+}
+
+TEST(ScenarioIntent, OtherLanguagesAreSaidToBe) {
+  const auto i = read("Bonjour, deux infirmières attendent dans le couloir.");
+  EXPECT_TRUE(i.groups.empty());
+  bool said = false;
+  for (const IntentWarning& w : i.warnings) said = said || w.message.find("English") != std::string::npos;
+  EXPECT_TRUE(said);
+}
+
 TEST(ScenarioIntent, SpansPointAtTheWords) {
   const std::string prompt = "In the lobby, two nurses wait near the elevator.";
   const auto i = read(prompt);
