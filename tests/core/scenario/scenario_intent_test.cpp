@@ -224,6 +224,73 @@ TEST(ScenarioIntent, SpansPointAtTheWords) {
   EXPECT_EQ(prompt.substr(g.count.span.begin, g.count.span.end - g.count.span.begin), "two");
 }
 
+TEST(ScenarioIntent, OddTextNeverBreaksItAndSpansStayInside) {
+  // Random sequences of tricky pieces: numbers, dashes, apostrophes, UTF-8, bare punctuation.
+  const std::vector<std::string> pieces = {"two",
+                                           "20-30",
+                                           "1,500",
+                                           "'s",
+                                           "nurses'",
+                                           "\xE2\x80\x93",
+                                           "\xE2\x80\x94",
+                                           "café",
+                                           "-",
+                                           "each",
+                                           "per",
+                                           "of",
+                                           "them",
+                                           "a",
+                                           "the",
+                                           "queue",
+                                           "of",
+                                           "per",
+                                           "except",
+                                           "no",
+                                           "nobody",
+                                           "around",
+                                           "one",
+                                           "between",
+                                           "and",
+                                           ",",
+                                           ";",
+                                           ".",
+                                           "?",
+                                           "hundred",
+                                           "dozen",
+                                           "robot",
+                                           "guard",
+                                           "exits",
+                                           "-odd",
+                                           "\xF0\x9F\x98\x80",
+                                           "",
+                                           "  ",
+                                           "9am",
+                                           "or",
+                                           "so",
+                                           "at",
+                                           "'",
+                                           "each of"};
+  std::uint64_t x = 12345;
+  for (int n = 0; n < 300; ++n) {
+    std::string prompt;
+    const int len = static_cast<int>(x % 14);
+    for (int k = 0; k < len; ++k) {
+      x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+      prompt += pieces[(x >> 33) % pieces.size()];
+      if ((x >> 20) % 3 != 0) prompt += " ";
+    }
+    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+    auto i = interpret_prompt(prompt);
+    ASSERT_TRUE(i.has_value()) << prompt;
+    for (const PeopleGroup& g : i->groups) {
+      EXPECT_LE(g.span.begin, g.span.end) << prompt;
+      EXPECT_LE(g.span.end, prompt.size()) << prompt;
+      EXPECT_GE(g.count.value, 0) << prompt;
+    }
+    (void)to_json(*i).dump();
+  }
+}
+
 TEST(ScenarioIntent, SamePromptSameIntent) {
   const std::string prompt =
       "Hotel lobby: four guests check in at the front desk where two receptionists work.";
