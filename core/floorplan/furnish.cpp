@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "core/floorplan/rooms.hpp"
 #include "core/geometry/geos.hpp"
 #include "core/geometry/planar.hpp"
+#include "core/world/footprint.hpp"
 
 namespace socsim::floorplan {
 namespace {
@@ -160,38 +162,268 @@ std::string numbered(const std::string& base, int i) {
   return base + buf;
 }
 
+constexpr double kWallGap = 0.05;  // m between furniture and walls
+constexpr double kDoorGap = 0.5;   // m kept free of furniture in front of a door opening
+constexpr double kItemGap = 0.02;  // m between pieces of furniture (rows of seats touch)
+
+bool overlaps(const Box& a, const Box& b, double gap) {
+  return a.min.x < b.max.x + gap - 1e-9 && b.min.x < a.max.x + gap - 1e-9 && a.min.y < b.max.y + gap - 1e-9 &&
+         b.min.y < a.max.y + gap - 1e-9;
+}
+
+double box_distance(const Box& b, const Segment& s) {
+  // Distance between an axis-aligned box and a segment (0 when they meet).
+  const Point corners[4] = {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
+  auto inside = [&](Point p) { return p.x >= b.min.x && p.x <= b.max.x && p.y >= b.min.y && p.y <= b.max.y; };
+  if (inside(s.a) || inside(s.b)) return 0.0;
+  double d = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 4; ++k) {
+    const Segment e{corners[k], corners[(k + 1) % 4]};
+    d = std::min(d, geometry::distance(e, s));
+  }
+  return d;
+}
+
+Box footprint_box(const std::string& type, const Pose2& pose) {
+  return geometry::bounds(footprint_polygon(type, pose).outer);
+}
+
+// Places furniture of one room by footprint: inside the room's rectangle (clear of its walls),
+// clear of its door openings, of the furniture already placed in it and of the areas that must
+// stay free (queue lanes, aisles, entrances).
 class Placer {
  public:
-  Placer(const Zone& zone, const Frame& frame, std::vector<DoorAt> doors, Furnishing& out)
-      : zone_(zone), f_(frame), doors_(std::move(doors)), out_(out) {}
+  Placer(const Zone& zone, const Frame& frame, std::vector<DoorAt> doors, Furnishing& out,
+         std::size_t first_entity, std::size_t first_roi)
+      : zone_(zone),
+        f_(frame),
+        doors_(std::move(doors)),
+        out_(out),
+        first_entity_(first_entity),
+        first_roi_(first_roi) {
+    for (const auto& d : doors_) {
+      const int side = nearest_side(f_.box, d.centre);
+      const bool horizontal = side == 0 || side == 2;
+      const double h = d.width / 2;
+      door_segments_.push_back(horizontal
+                                   ? Segment{{d.centre.x - h, d.centre.y}, {d.centre.x + h, d.centre.y}}
+                                   : Segment{{d.centre.x, d.centre.y - h}, {d.centre.x, d.centre.y + h}});
+    }
+  }
 
   [[nodiscard]] const Frame& frame() const { return f_; }
   [[nodiscard]] double len() const { return f_.len; }
   [[nodiscard]] double depth() const { return f_.depth; }
+  [[nodiscard]] const Zone& zone() const { return zone_; }
+  [[nodiscard]] std::size_t first_entity() const { return first_entity_; }
 
   [[nodiscard]] bool clear(Point p, double radius) const {
     for (const auto& d : doors_)
       if (geometry::distance(p, d.centre) < d.width / 2 + 0.6 + radius) return false;
     return true;
   }
+
+  // Whether a box (world coordinates) keeps clear of the walls, the doors, the furniture of the
+  // room (but `skip`) and the areas that must stay free.
+  enum class Areas { kNone, kLanes, kAll };  // which kept-free areas a box must avoid
+  [[nodiscard]] bool box_free(const Box& b, std::optional<std::size_t> skip = std::nullopt,
+                              Areas areas = Areas::kAll) const {
+    if (b.min.x < f_.box.min.x + kWallGap - 1e-9 || b.min.y < f_.box.min.y + kWallGap - 1e-9 ||
+        b.max.x > f_.box.max.x - kWallGap + 1e-9 || b.max.y > f_.box.max.y - kWallGap + 1e-9)
+      return false;
+    for (const auto& s : door_segments_)
+      if (box_distance(b, s) < kDoorGap) return false;
+    for (std::size_t k = first_entity_; k < out_.entities.size(); ++k) {
+      if (skip && *skip == k) continue;
+      const EntitySpec& e = out_.entities[k];
+      if (overlaps(b, footprint_box(e.type, e.pose), kItemGap)) return false;
+    }
+    if (areas != Areas::kNone) {
+      for (std::size_t k = first_roi_; k < out_.rois.size(); ++k) {
+        const Roi& r = out_.rois[k];
+        const bool lane = r.kind == "queue_lane" || r.kind == "walkway";
+        if (!lane && (areas == Areas::kLanes || (r.kind != "entrance" && r.kind != "exit"))) continue;
+        if (overlaps(b, geometry::bounds(r.polygon.outer), 0.0)) return false;
+      }
+    }
+    return true;
+  }
+
+  // Half extents along u and v of a footprint turned by `local_yaw` (quarter turns).
+  [[nodiscard]] static std::pair<double, double> half_extents(const std::string& type, double local_yaw) {
+    const Footprint fp = footprint_of(type);
+    const bool across = std::abs(std::sin(local_yaw)) > 0.5;  // facing along ±u
+    return across ? std::pair{fp.depth / 2, fp.width / 2} : std::pair{fp.width / 2, fp.depth / 2};
+  }
+
+  [[nodiscard]] std::optional<Point> fit(const std::string& type, double u, double v,
+                                         double local_yaw) const {
+    const auto [hu, hv] = half_extents(type, local_yaw);
+    if (2 * (hu + kWallGap) > f_.len || 2 * (hv + kWallGap) > f_.depth) return std::nullopt;
+    u = std::clamp(u, hu + kWallGap, f_.len - hu - kWallGap);
+    v = std::clamp(v, hv + kWallGap, f_.depth - hv - kWallGap);
+    const Point p = f_.at(u, v);
+    if (!box_free(footprint_box(type, {p.x, p.y, f_.yaw(local_yaw)}))) return std::nullopt;
+    return Point{u, v};
+  }
+
+  [[nodiscard]] bool inside(double u, double v, double margin) const {
+    return u >= margin && v >= margin && u <= f_.len - margin && v <= f_.depth - margin;
+  }
+
+  // The first candidate (u, v) where the footprint fits (moved off the walls); then positions
+  // sliding along the first candidate's line. nullopt when nothing fits.
+  std::optional<Point> entity(const std::string& type, const std::string& suffix,
+                              std::initializer_list<std::pair<double, double>> candidates, double local_yaw,
+                              std::vector<std::string> affordances, double /*radius*/ = 0.4) {
+    std::vector<std::pair<double, double>> tries(candidates);
+    if (!tries.empty()) {
+      const auto [u0, v0] = tries.front();
+      for (int k = 1; k <= 40; ++k) {
+        for (int sgn : {1, -1}) tries.emplace_back(u0 + sgn * 0.25 * k, v0);
+      }
+    }
+    for (const auto& [u, v] : tries) {
+      const auto at = fit(type, u, v, local_yaw);
+      if (!at) continue;
+      const Point p = f_.at(at->x, at->y);
+      out_.entities.push_back({type, zone_.name + "_" + suffix, {p.x, p.y, f_.yaw(local_yaw)}, affordances});
+      if (walkable()) return *at;
+      out_.entities.pop_back();  // it would wall something in: the next place
+    }
+    return std::nullopt;
+  }
+
+  // Whether a person 0.5 m wide can still walk from each door of the room to every other door
+  // and to every piece of furniture in it (within 0.4 m of its footprint). With `drop`, the
+  // furniture placed since `from` that cannot be reached is listed instead of failing.
+  bool walkable(std::size_t from = std::numeric_limits<std::size_t>::max(),
+                std::vector<std::size_t>* drop = nullptr) const {
+    constexpr double kRes = 0.1, kRadius = 0.25, kReach = 0.4;
+    const Box& b = f_.box;
+    const int nx = std::max(1, static_cast<int>(std::ceil(b.width() / kRes)));
+    const int ny = std::max(1, static_cast<int>(std::ceil(b.height() / kRes)));
+    auto centre = [&](int x, int y) { return Point{b.min.x + (x + 0.5) * kRes, b.min.y + (y + 0.5) * kRes}; };
+    std::vector<std::uint8_t> blocked(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), 0);
+    auto at = [&](int x, int y) {
+      return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x);
+    };
+    for (int y = 0; y < ny; ++y)
+      for (int x = 0; x < nx; ++x) {
+        const Point c = centre(x, y);
+        if (c.x - b.min.x < kRadius || b.max.x - c.x < kRadius || c.y - b.min.y < kRadius ||
+            b.max.y - c.y < kRadius)
+          blocked[at(x, y)] = 1;
+      }
+    std::vector<Box> boxes;
+    for (std::size_t k = first_entity_; k < out_.entities.size(); ++k) {
+      const EntitySpec& e = out_.entities[k];
+      boxes.push_back(footprint_box(e.type, e.pose));
+      const Box& fb = boxes.back();
+      const int x0 = std::max(0, static_cast<int>(std::floor((fb.min.x - kRadius - b.min.x) / kRes)));
+      const int x1 = std::min(nx - 1, static_cast<int>(std::floor((fb.max.x + kRadius - b.min.x) / kRes)));
+      const int y0 = std::max(0, static_cast<int>(std::floor((fb.min.y - kRadius - b.min.y) / kRes)));
+      const int y1 = std::min(ny - 1, static_cast<int>(std::floor((fb.max.y + kRadius - b.min.y) / kRes)));
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          const Point c = centre(x, y);
+          const double dx = std::max({fb.min.x - c.x, 0.0, c.x - fb.max.x});
+          const double dy = std::max({fb.min.y - c.y, 0.0, c.y - fb.max.y});
+          if (std::hypot(dx, dy) < kRadius) blocked[at(x, y)] = 1;
+        }
+    }
+    // Seeds just inside each door.
+    std::vector<std::size_t> seeds;
+    for (const auto& d : doors_) {
+      const int side = nearest_side(b, d.centre);
+      Point p = d.centre;
+      const double in = kRadius + 0.1;
+      if (side == 0) p.y = b.min.y + in;
+      if (side == 1) p.x = b.max.x - in;
+      if (side == 2) p.y = b.max.y - in;
+      if (side == 3) p.x = b.min.x + in;
+      const int x = std::clamp(static_cast<int>(std::floor((p.x - b.min.x) / kRes)), 0, nx - 1);
+      const int y = std::clamp(static_cast<int>(std::floor((p.y - b.min.y) / kRes)), 0, ny - 1);
+      if (blocked[at(x, y)]) return false;
+      seeds.push_back(at(x, y));
+    }
+    if (seeds.empty()) return true;
+    std::vector<std::uint8_t> reached(blocked.size(), 0);
+    std::vector<std::size_t> queue{seeds.front()};
+    reached[seeds.front()] = 1;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int x = static_cast<int>(queue[head] % static_cast<std::size_t>(nx));
+      const int y = static_cast<int>(queue[head] / static_cast<std::size_t>(nx));
+      const int next[4][2] = {{x + 1, y}, {x - 1, y}, {x, y + 1}, {x, y - 1}};
+      for (const auto& n : next) {
+        if (n[0] < 0 || n[1] < 0 || n[0] >= nx || n[1] >= ny) continue;
+        const std::size_t k = at(n[0], n[1]);
+        if (blocked[k] || reached[k]) continue;
+        reached[k] = 1;
+        queue.push_back(k);
+      }
+    }
+    for (std::size_t s : seeds)
+      if (!reached[s]) return false;
+    bool ok = true;
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      const Box& fb = boxes[k];
+      bool near = false;
+      const int x0 =
+          std::max(0, static_cast<int>(std::floor((fb.min.x - kRadius - kReach - b.min.x) / kRes)));
+      const int x1 =
+          std::min(nx - 1, static_cast<int>(std::floor((fb.max.x + kRadius + kReach - b.min.x) / kRes)));
+      const int y0 =
+          std::max(0, static_cast<int>(std::floor((fb.min.y - kRadius - kReach - b.min.y) / kRes)));
+      const int y1 =
+          std::min(ny - 1, static_cast<int>(std::floor((fb.max.y + kRadius + kReach - b.min.y) / kRes)));
+      for (int y = y0; y <= y1 && !near; ++y)
+        for (int x = x0; x <= x1 && !near; ++x) {
+          if (!reached[at(x, y)]) continue;
+          const Point c = centre(x, y);
+          const double dx = std::max({fb.min.x - c.x, 0.0, c.x - fb.max.x});
+          const double dy = std::max({fb.min.y - c.y, 0.0, c.y - fb.max.y});
+          near = std::hypot(dx, dy) <= kRadius + kReach - 0.05;
+        }
+      if (near) continue;
+      const std::size_t index = first_entity_ + k;
+      if (drop && index >= from) {
+        drop->push_back(index);
+      } else {
+        ok = false;
+      }
+    }
+    return ok;
+  }
+
+  // Removes the furniture placed since `from` that walls in a door or cannot be reached: the
+  // unreachable pieces, then the last ones placed until the doors connect again.
+  void keep_walkable(std::size_t from) {
+    std::vector<std::size_t> drop;
+    if (!walkable(from, &drop) && drop.empty()) {
+      while (out_.entities.size() > from && !walkable()) out_.entities.pop_back();
+      return;
+    }
+    for (auto it = drop.rbegin(); it != drop.rend(); ++it)
+      out_.entities.erase(out_.entities.begin() + static_cast<std::ptrdiff_t>(*it));
+    while (out_.entities.size() > from && !walkable()) out_.entities.pop_back();
+  }
+
   // No furniture but entity `keep` within 0.5 m of the rectangle (1.3 m for serving furniture) and no area of
   // the room but corridors and work areas overlapping it (ROIs since `first_roi`).
   [[nodiscard]] bool lane_clear(double u0, double v0, double u1, double v1, std::size_t keep,
                                 std::size_t first_roi) const {
-    for (std::size_t k = 0; k < out_.entities.size(); ++k) {
+    const Box lane = geometry::bounds(f_.rect(u0, v0, u1, v1).outer);
+    for (std::size_t k = first_entity_; k < out_.entities.size(); ++k) {
       if (k == keep) continue;
-      // Serving furniture farther off, so that the lane's head is taken to be at the machine.
       const EntitySpec& e = out_.entities[k];
       const bool serves =
           e.type == "counter" || e.type == "desk" || e.type == "reception" ||
           std::find(e.affordances.begin(), e.affordances.end(), "serve") != e.affordances.end() ||
           std::find(e.affordances.begin(), e.affordances.end(), "queue_target") != e.affordances.end();
-      const double m = serves ? 1.3 : 0.5;
-      const Point q = f_.local({e.pose.x, e.pose.y});
-      if (q.x > u0 - m && q.x < u1 + m && q.y > v0 - m && q.y < v1 + m) return false;
+      if (overlaps(lane, footprint_box(e.type, e.pose), serves ? 1.0 : 0.3)) return false;
     }
-    const Polygon r = f_.rect(u0, v0, u1, v1);
-    const Box b = geometry::bounds(r.outer);
+    const Box& b = lane;
     for (std::size_t k = first_roi; k < out_.rois.size(); ++k) {
       const Roi& o = out_.rois[k];
       if (o.kind == "corridor" || o.kind == "work_area") continue;
@@ -200,26 +432,9 @@ class Placer {
           b.min.y < ob.max.y - 1e-9)
         return false;
     }
+    for (const auto& s : door_segments_)
+      if (box_distance(lane, s) < 0.3) return false;
     return true;
-  }
-
-  [[nodiscard]] bool inside(double u, double v, double margin) const {
-    return u >= margin && v >= margin && u <= f_.len - margin && v <= f_.depth - margin;
-  }
-
-  // The first candidate (u, v) that is inside and keeps the doors clear.
-  std::optional<Point> entity(const std::string& type, const std::string& suffix,
-                              std::initializer_list<std::pair<double, double>> candidates, double local_yaw,
-                              std::vector<std::string> affordances, double radius = 0.4) {
-    for (const auto& [u, v] : candidates) {
-      if (!inside(u, v, std::min(0.2, radius))) continue;
-      const Point p = f_.at(u, v);
-      if (!clear(p, radius)) continue;
-      out_.entities.push_back(
-          {type, zone_.name + "_" + suffix, {p.x, p.y, f_.yaw(local_yaw)}, std::move(affordances)});
-      return Point{u, v};
-    }
-    return std::nullopt;
   }
 
   // A rectangular ROI in room coordinates, clamped inside and pulled back from the doors' swing
@@ -272,10 +487,11 @@ class Placer {
       // Facing in room coordinates: the world yaw turned back by the frame's base heading.
       const double local = wrap(poi.pose.yaw - f_.yaw(0.0)) + kPi / 2;
       const int facing = static_cast<int>(std::lround(local / (kPi / 2))) & 3;  // 0 +u, 1 +v, 2 -u, 3 -v
+      const auto [hu, hv] = half_extents(poi.type, 0.0);
       for (int turn : {0, 1, 3}) {
         const int dir = (facing + turn) & 3;
         const double du = dir == 0 ? 1.0 : dir == 2 ? -1.0 : 0.0, dv = dir == 1 ? 1.0 : dir == 3 ? -1.0 : 0.0;
-        const double near = 0.55, far = near + length;
+        const double near = std::max(hu, hv) + 0.35, far = near + length;
         // Across the lane: centred on the machine, moved off the walls (the machine stays in it).
         auto across = [&](double c, double extent) {
           return std::clamp(c - width / 2, std::min(0.1, c - 0.05),
@@ -301,30 +517,36 @@ class Placer {
   }
 
   // The same room seen from another side.
-  [[nodiscard]] Placer turned(int side) const { return Placer(zone_, Frame(f_.box, side), doors_, out_); }
+  [[nodiscard]] Placer turned(int side) const {
+    return Placer(zone_, Frame(f_.box, side), doors_, out_, first_entity_, first_roi_);
+  }
   [[nodiscard]] int side() const { return f_.side; }
 
-  // Items on a grid of cells (du × dv) inside [u0, u1] × [v0, v1], skipping cells near doors.
+  // Items on a grid of cells (du × dv) inside [u0, u1] × [v0, v1], each where its footprint fits.
   int grid(const std::string& type, const std::string& base, double u0, double v0, double u1, double v1,
            double du, double dv, int max_items, double local_yaw, const std::vector<std::string>& affordances,
-           double radius = 0.5) {
+           double /*radius*/ = 0.5) {
     const int nu = std::max(0, static_cast<int>(std::floor((u1 - u0) / du + 1e-9)));
     const int nv = std::max(0, static_cast<int>(std::floor((v1 - v0) / dv + 1e-9)));
     const double su = u0 + ((u1 - u0) - nu * du) / 2 + du / 2;
     const double sv = v0 + ((v1 - v0) - nv * dv) / 2 + dv / 2;
+    const auto [hu, hv] = half_extents(type, local_yaw);
     int placed = 0;
     for (int j = 0; j < nv && placed < max_items; ++j)
       for (int i = 0; i < nu && placed < max_items; ++i) {
         const double u = su + i * du, v = sv + j * dv;
+        if (!inside(u, v, 0.0) || u - hu < kWallGap || v - hv < kWallGap || u + hu > f_.len - kWallGap ||
+            v + hv > f_.depth - kWallGap)
+          continue;
         const Point p = f_.at(u, v);
-        if (!inside(u, v, 0.2) || !clear(p, radius)) continue;
-        out_.entities.push_back({type,
-                                 zone_.name + "_" + numbered(base, placed + 1),
-                                 {p.x, p.y, f_.yaw(local_yaw)},
-                                 affordances});
+        const Pose2 pose{p.x, p.y, f_.yaw(local_yaw)};
+        if (!box_free(footprint_box(type, pose), std::nullopt, Areas::kNone)) continue;
+        out_.entities.push_back({type, zone_.name + "_" + numbered(base, placed + 1), pose, affordances});
         ++placed;
       }
-    return placed;
+    const std::size_t before = out_.entities.size();
+    keep_walkable(before - static_cast<std::size_t>(placed));
+    return placed - static_cast<int>(before - out_.entities.size());
   }
 
   // A counter at depth v with a queue lane of up to `lane` metres in front of it: towards the main
@@ -333,19 +555,31 @@ class Placer {
   std::optional<CounterPlace> counter_with_queue(const std::string& type, const std::string& name, double u,
                                                  double v, double lane, bool inward, double lane_width,
                                                  std::vector<std::string> affordances) {
-    lane = inward ? std::min(lane, depth() - v - 1.0) : std::min(lane, v - 1.6);
+    const auto [hu, hv] = half_extents(type, inward ? 0.0 : kPi);
+    v = std::clamp(v, hv + kWallGap, depth() - hv - kWallGap);
+    lane = inward ? std::min(lane, depth() - v - hv - 0.3 - 1.0) : std::min(lane, v - hv - 0.3 - 0.9);
     if (lane < 1.5) return std::nullopt;
-    for (double du : {0.0, -1.2, 1.2, -2.4, 2.4}) {
+    for (double du : {0.0, -1.2, 1.2, -2.4, 2.4, -3.6, 3.6}) {
       const double uu = u + du;
-      if (!inside(uu - lane_width / 2 - 0.1, v, 0.1) || !inside(uu + lane_width / 2 + 0.1, v, 0.1)) continue;
+      if (uu - hu < kWallGap || uu + hu > len() - kWallGap) continue;
+      if (uu - lane_width / 2 < 0.1 || uu + lane_width / 2 > len() - 0.1) continue;
       const Point p = f_.at(uu, v);
-      if (!clear(p, 0.6)) continue;
-      const double v0 = inward ? v + 0.7 : v - 0.7 - lane;
+      const Pose2 pose{p.x, p.y, f_.yaw(inward ? 0.0 : kPi)};
+      if (!box_free(footprint_box(type, pose))) continue;
+      const double v0 = inward ? v + hv + 0.3 : v - hv - 0.3 - lane;
+      const Box lane_box =
+          geometry::bounds(f_.rect(uu - lane_width / 2, v0, uu + lane_width / 2, v0 + lane).outer);
+      // The lane may lead into the entrance area (people queue from the door) but not into another lane.
+      if (!box_free(lane_box, std::nullopt, Areas::kLanes)) continue;
       if (!roi("queue_lane", name + "_queue", uu - lane_width / 2, v0, uu + lane_width / 2, v0 + lane, true))
         continue;
-      out_.entities.push_back(
-          {type, zone_.name + "_" + name, {p.x, p.y, f_.yaw(inward ? 0.0 : kPi)}, std::move(affordances)});
-      return CounterPlace{uu, v, std::min(v0, v), std::max(v0 + lane, v)};
+      out_.entities.push_back({type, zone_.name + "_" + name, pose, affordances});
+      if (!walkable()) {
+        out_.entities.pop_back();
+        out_.rois.pop_back();
+        continue;
+      }
+      return CounterPlace{uu, v, std::min(v0, v - hv), std::max(v0 + lane, v + hv)};
     }
     return std::nullopt;
   }
@@ -354,7 +588,10 @@ class Placer {
   const Zone& zone_;
   Frame f_;
   std::vector<DoorAt> doors_;
+  std::vector<Segment> door_segments_;
   Furnishing& out_;
+  std::size_t first_entity_ = 0;
+  std::size_t first_roi_ = 0;
 };
 
 // Waiting zone with chairs (tables in a cafe) on the half of the room away from the counter at u = cu.
@@ -564,6 +801,7 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
       if (!a.exterior) a.other_type = type_of[d.connects[it == d.connects.begin() ? 1 : 0]];
       here.push_back(std::move(a));
     }
+    const std::size_t zone_first_roi = out.rois.size();
     if (is_circulation_type(type) && !is_hall_type(type)) {
       out.rois.push_back({z.name + "_walk", "corridor", z.polygon});
     }
@@ -623,8 +861,8 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
     pick([](const DoorAt& d) { return !d.exterior && is_circulation_type(d.other_type); });
     pick([](const DoorAt&) { return true; });
     const int side = main ? nearest_side(box, main->centre) : 0;
-    Placer placer(z, Frame(box, side), here, out);
     const std::size_t first_entity = out.entities.size(), first_roi = out.rois.size();
+    Placer placer(z, Frame(box, side), here, out, first_entity, zone_first_roi);
     furnish_room(placer, type, rules, rng, geometry::area(z.polygon));
     placer.poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
   }
