@@ -26,6 +26,19 @@ void reply_problem(Response& res, const Error& error, const std::string& instanc
                   "application/problem+json");
 }
 
+Json field_errors_json(const std::vector<FieldError>& errors) {
+  Json out = Json::array();
+  for (const FieldError& e : errors) {
+    Json j = {{"pointer", e.pointer}, {"message", e.message}};
+    if (e.line > 0) {
+      j["line"] = e.line;
+      j["column"] = e.column;
+    }
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
 Result<Json> json_body(const std::string& body) {
   if (body.empty())
     return fail(ErrorCode::kBadRequest, "the request needs a JSON body", {{"", "empty body", "", 0, 0}});

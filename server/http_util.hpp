@@ -4,6 +4,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/common/error.hpp"
 #include "core/common/json_io.hpp"
@@ -13,6 +14,8 @@ namespace socsim::server {
 
 void reply_json(Response& res, int status, const Json& body);
 void reply_problem(Response& res, const Error& error, const std::string& instance);
+// Field notes (warnings) in the shape of a problem's `errors`: {pointer, message, line?, column?}.
+Json field_errors_json(const std::vector<FieldError>& errors);
 // The JSON body of a request: 400 with line/column for syntax errors, depth-limited.
 Result<Json> json_body(const std::string& body);
 

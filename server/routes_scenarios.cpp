@@ -34,13 +34,19 @@ Error nested(Error e, const std::string& prefix) {
 Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
                                                            const scenario::ScenarioRequest& r) {
   if (r.world) {
-    Result<world::World> w = r.world->is_string() ? world::world_from_yaml(r.world->get<std::string>())
-                                                  : world::world_from_document(*r.world);
+    Result<world::WorldReading> w = r.world->is_string()
+                                        ? world::read_world_yaml(r.world->get<std::string>())
+                                        : world::world_from_document(*r.world).map([](world::World built) {
+                                            return world::WorldReading{std::move(built), {}};
+                                          });
     if (!w) return tl::unexpected(nested(w.error(), "/world"));
     std::vector<std::string> names;
-    for (const auto& z : w->zones()) names.push_back(z.name + " " + z.type);
+    for (const auto& z : w->world.zones()) names.push_back(z.name + " " + z.type);
     std::string domain = r.domain ? *r.domain : knowledge::classify_building_type(names).type;
-    return scenario::ScenarioWorld{std::move(*w), domain, Json{{"source", "request"}}};
+    Json source{{"source", "request"}};
+    // What reading the world assumed (a zone's region inferred …) stays with the card.
+    if (!w->warnings.empty()) source["warnings"] = field_errors_json(w->warnings);
+    return scenario::ScenarioWorld{std::move(w->world), domain, std::move(source)};
   }
   if (r.world_id) {
     auto stored = stored_world_text(ctx.store, *r.world_id);

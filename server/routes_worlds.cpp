@@ -346,13 +346,14 @@ void world_routes(Router& http, RouteContext& ctx) {
 
   post_with_body(http, "/api/v1/worlds/validate", max_body,
                  [&ctx](const Request& req, Response& res, const std::string& text) {
-                   auto world = world::world_from_yaml(text);
-                   if (!world) {
+                   auto reading = world::read_world_yaml(text);
+                   if (!reading) {
                      // Everything wrong with the posted document is a validation finding, syntax included.
-                     Error e = world.error();
+                     Error e = reading.error();
                      if (e.code == ErrorCode::kBadRequest) e.code = ErrorCode::kValidation;
                      return reply_problem(res, e, req.path);
                    }
+                   const world::World* world = &reading->world;
                    auto domain = domain_for(req, *world);
                    if (!domain) return reply_problem(res, domain.error(), req.path);
                    auto cs = constraints(ctx, *domain, query(req, "jurisdiction").value_or(""));
@@ -369,7 +370,8 @@ void world_routes(Router& http, RouteContext& ctx) {
                                {"entities", world->entities().size()},
                                {"area", world->area()},
                                {"compliance", floorplan::to_json(report)},
-                               {"knowledge", floorplan::knowledge_provenance(*cs)}});
+                               {"knowledge", floorplan::knowledge_provenance(*cs)},
+                               {"warnings", field_errors_json(reading->warnings)}});
                  });
 }
 

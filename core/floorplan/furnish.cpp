@@ -3,21 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
 #include <string>
 
+#include "core/floorplan/placer.hpp"
 #include "core/floorplan/rooms.hpp"
 #include "core/geometry/geos.hpp"
 #include "core/geometry/planar.hpp"
+#include "core/world/footprint.hpp"
 
 namespace socsim::floorplan {
 namespace {
-
-using geometry::Box;
-using geometry::MultiPolygon;
-constexpr double kPi = std::numbers::pi;
 
 double constraint(std::span<const knowledge::MergedConstraint> cs, std::string_view name) {
   for (const auto& c : cs)
@@ -25,341 +24,6 @@ double constraint(std::span<const knowledge::MergedConstraint> cs, std::string_v
   return 0.0;
 }
 
-struct DoorAt {
-  Point centre;
-  double width = 0.0;
-  bool exterior = false;
-  std::string other_type;  // type of the zone on the other side ("" outside)
-  std::string name;
-};
-
-bool axis_aligned_rectangle(const Polygon& p) {
-  if (!p.holes.empty()) return false;
-  std::vector<Point> r = p.outer;
-  if (r.size() > 1 && r.front() == r.back()) r.pop_back();
-  if (r.size() != 4) return false;
-  for (std::size_t i = 0; i < 4; ++i) {
-    const Point& a = r[i];
-    const Point& b = r[(i + 1) % 4];
-    if (std::abs(a.x - b.x) > 1e-9 && std::abs(a.y - b.y) > 1e-9) return false;
-  }
-  return true;
-}
-
-// The largest axis-aligned box (of the bounding box's proportions, around a few candidate centres)
-// inside the polygon; the bounding box itself for rectangles.
-Box inner_box(const Polygon& polygon) {
-  const Box bb = geometry::bounds(polygon.outer);
-  if (axis_aligned_rectangle(polygon)) return bb;
-  geometry::Geos geos;
-  const MultiPolygon shape{polygon};
-  Box best{{0, 0}, {0, 0}};
-  double best_area = 0.0;
-  std::vector<Point> centres{geometry::centroid(polygon.outer)};
-  for (double fx : {0.25, 0.5, 0.75})
-    for (double fy : {0.25, 0.5, 0.75})
-      centres.push_back({bb.min.x + fx * bb.width(), bb.min.y + fy * bb.height()});
-  for (const Point& c : centres) {
-    if (!geometry::contains(polygon, c)) continue;
-    auto box_at = [&](double s) {
-      return Box{{c.x - s * bb.width() / 2, c.y - s * bb.height() / 2},
-                 {c.x + s * bb.width() / 2, c.y + s * bb.height() / 2}};
-    };
-    auto fits = [&](double s) {
-      const Box b = box_at(s);
-      const Polygon r{{b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}, {}};
-      return geos.area(geos.difference({r}, shape)) < 1e-6;
-    };
-    double lo = 0.0, hi = 1.0;
-    for (int i = 0; i < 14; ++i) {
-      const double mid = (lo + hi) / 2;
-      (fits(mid) ? lo : hi) = mid;
-    }
-    const Box b = box_at(lo);
-    if (b.width() * b.height() > best_area) {
-      best_area = b.width() * b.height();
-      best = b;
-    }
-  }
-  return best;
-}
-
-double wrap(double a) {
-  while (a > kPi) a -= 2 * kPi;
-  while (a <= -kPi) a += 2 * kPi;
-  return a;
-}
-
-// A rectangle in room coordinates.
-struct Area {
-  double u0 = 0.0, v0 = 0.0, u1 = 0.0, v1 = 0.0;
-};
-
-// Where a counter and its queue lane went: counter at (u, v), the pair spans v_lo .. v_hi.
-struct CounterPlace {
-  double u = 0.0, v = 0.0, v_lo = 0.0, v_hi = 0.0;
-};
-
-// Room coordinates: u along the side with the main door, v from that side into the room.
-struct Frame {
-  Box box;
-  int side = 0;  // 0 south, 1 east, 2 north, 3 west
-  double len = 0.0;
-  double depth = 0.0;
-
-  Frame(Box b, int s) : box(b), side(s) {
-    const bool horizontal = side == 0 || side == 2;
-    len = horizontal ? b.width() : b.height();
-    depth = horizontal ? b.height() : b.width();
-  }
-  [[nodiscard]] Point at(double u, double v) const {
-    switch (side) {
-      case 0:
-        return {box.min.x + u, box.min.y + v};
-      case 2:
-        return {box.max.x - u, box.max.y - v};
-      case 3:
-        return {box.min.x + v, box.max.y - u};
-      default:
-        return {box.max.x - v, box.min.y + u};
-    }
-  }
-  [[nodiscard]] Point local(Point p) const {
-    switch (side) {
-      case 0:
-        return {p.x - box.min.x, p.y - box.min.y};
-      case 2:
-        return {box.max.x - p.x, box.max.y - p.y};
-      case 3:
-        return {box.max.y - p.y, p.x - box.min.x};
-      default:
-        return {p.y - box.min.y, box.max.x - p.x};
-    }
-  }
-  // World yaw of a heading given relative to "into the room" (+v).
-  [[nodiscard]] double yaw(double local) const {
-    static constexpr double kBase[4] = {kPi / 2, kPi, -kPi / 2, 0.0};
-    return wrap(kBase[side] + local);
-  }
-  [[nodiscard]] Polygon rect(double u0, double v0, double u1, double v1) const {
-    std::vector<Point> ring{at(u0, v0), at(u1, v0), at(u1, v1), at(u0, v1)};
-    if (geometry::signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
-    return Polygon{ring, {}};
-  }
-};
-
-int nearest_side(const Box& b, Point p) {
-  const double d[4] = {std::abs(p.y - b.min.y), std::abs(p.x - b.max.x), std::abs(p.y - b.max.y),
-                       std::abs(p.x - b.min.x)};
-  return static_cast<int>(std::min_element(d, d + 4) - d);
-}
-
-std::string numbered(const std::string& base, int i) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "_%02d", i);
-  return base + buf;
-}
-
-class Placer {
- public:
-  Placer(const Zone& zone, const Frame& frame, std::vector<DoorAt> doors, Furnishing& out)
-      : zone_(zone), f_(frame), doors_(std::move(doors)), out_(out) {}
-
-  [[nodiscard]] const Frame& frame() const { return f_; }
-  [[nodiscard]] double len() const { return f_.len; }
-  [[nodiscard]] double depth() const { return f_.depth; }
-
-  [[nodiscard]] bool clear(Point p, double radius) const {
-    for (const auto& d : doors_)
-      if (geometry::distance(p, d.centre) < d.width / 2 + 0.6 + radius) return false;
-    return true;
-  }
-  // No furniture but entity `keep` within 0.5 m of the rectangle (1.3 m for serving furniture) and no area of
-  // the room but corridors and work areas overlapping it (ROIs since `first_roi`).
-  [[nodiscard]] bool lane_clear(double u0, double v0, double u1, double v1, std::size_t keep,
-                                std::size_t first_roi) const {
-    for (std::size_t k = 0; k < out_.entities.size(); ++k) {
-      if (k == keep) continue;
-      // Serving furniture farther off, so that the lane's head is taken to be at the machine.
-      const EntitySpec& e = out_.entities[k];
-      const bool serves =
-          e.type == "counter" || e.type == "desk" || e.type == "reception" ||
-          std::find(e.affordances.begin(), e.affordances.end(), "serve") != e.affordances.end() ||
-          std::find(e.affordances.begin(), e.affordances.end(), "queue_target") != e.affordances.end();
-      const double m = serves ? 1.3 : 0.5;
-      const Point q = f_.local({e.pose.x, e.pose.y});
-      if (q.x > u0 - m && q.x < u1 + m && q.y > v0 - m && q.y < v1 + m) return false;
-    }
-    const Polygon r = f_.rect(u0, v0, u1, v1);
-    const Box b = geometry::bounds(r.outer);
-    for (std::size_t k = first_roi; k < out_.rois.size(); ++k) {
-      const Roi& o = out_.rois[k];
-      if (o.kind == "corridor" || o.kind == "work_area") continue;
-      const Box ob = geometry::bounds(o.polygon.outer);
-      if (ob.min.x < b.max.x - 1e-9 && b.min.x < ob.max.x - 1e-9 && ob.min.y < b.max.y - 1e-9 &&
-          b.min.y < ob.max.y - 1e-9)
-        return false;
-    }
-    return true;
-  }
-
-  [[nodiscard]] bool inside(double u, double v, double margin) const {
-    return u >= margin && v >= margin && u <= f_.len - margin && v <= f_.depth - margin;
-  }
-
-  // The first candidate (u, v) that is inside and keeps the doors clear.
-  std::optional<Point> entity(const std::string& type, const std::string& suffix,
-                              std::initializer_list<std::pair<double, double>> candidates, double local_yaw,
-                              std::vector<std::string> affordances, double radius = 0.4) {
-    for (const auto& [u, v] : candidates) {
-      if (!inside(u, v, std::min(0.2, radius))) continue;
-      const Point p = f_.at(u, v);
-      if (!clear(p, radius)) continue;
-      out_.entities.push_back(
-          {type, zone_.name + "_" + suffix, {p.x, p.y, f_.yaw(local_yaw)}, std::move(affordances)});
-      return Point{u, v};
-    }
-    return std::nullopt;
-  }
-
-  // A rectangular ROI in room coordinates, clamped inside and pulled back from the doors' swing
-  // (the side that loses least is cut); dropped when it shrinks below 0.5 m.
-  std::optional<Area> roi(const std::string& kind, const std::string& suffix, double u0, double v0, double u1,
-                          double v1, bool may_touch_doors = false) {
-    u0 = std::max(u0, 0.1);
-    v0 = std::max(v0, 0.1);
-    u1 = std::min(u1, f_.len - 0.1);
-    v1 = std::min(v1, f_.depth - 0.1);
-    if (!may_touch_doors) {
-      for (const auto& d : doors_) {
-        const Point q = f_.local(d.centre);
-        const double c = d.width / 2 + 0.3;
-        if (q.x < u0 - c || q.x > u1 + c || q.y < v0 - c || q.y > v1 + c) continue;
-        const double cuts[4][4] = {{u0, v0, u1, std::min(v1, q.y - c)},
-                                   {u0, std::max(v0, q.y + c), u1, v1},
-                                   {u0, v0, std::min(u1, q.x - c), v1},
-                                   {std::max(u0, q.x + c), v0, u1, v1}};
-        double best = -1.0;
-        std::size_t pick = 0;
-        for (std::size_t k = 0; k < 4; ++k) {
-          const double a = std::max(0.0, cuts[k][2] - cuts[k][0]) * std::max(0.0, cuts[k][3] - cuts[k][1]);
-          if (a > best) {
-            best = a;
-            pick = k;
-          }
-        }
-        u0 = cuts[pick][0];
-        v0 = cuts[pick][1];
-        u1 = cuts[pick][2];
-        v1 = cuts[pick][3];
-      }
-    }
-    if (u1 - u0 < 0.5 || v1 - v0 < 0.5) return std::nullopt;
-    out_.rois.push_back({zone_.name + "_" + suffix, kind, f_.rect(u0, v0, u1, v1)});
-    return Area{u0, v0, u1, v1};
-  }
-
-  // A queue lane in front of each water dispenser, coffee machine or vending machine furnished
-  // since `first` (entities) where there is room: `length` m straight out from it (its facing
-  // first, then sideways), clear of the other furniture, the doors and the room's areas; the
-  // machine then takes queue_target so the lane's head is at it.
-  void poi_lanes(std::size_t first, std::size_t first_roi, double width, double length) {
-    for (std::size_t k = first; k < out_.entities.size(); ++k) {
-      EntitySpec& poi = out_.entities[k];
-      if (poi.type != "water_dispenser" && poi.type != "coffee_machine" && poi.type != "vending_machine")
-        continue;
-      const Point at = f_.local({poi.pose.x, poi.pose.y});
-      // Facing in room coordinates: the world yaw turned back by the frame's base heading.
-      const double local = wrap(poi.pose.yaw - f_.yaw(0.0)) + kPi / 2;
-      const int facing = static_cast<int>(std::lround(local / (kPi / 2))) & 3;  // 0 +u, 1 +v, 2 -u, 3 -v
-      for (int turn : {0, 1, 3}) {
-        const int dir = (facing + turn) & 3;
-        const double du = dir == 0 ? 1.0 : dir == 2 ? -1.0 : 0.0, dv = dir == 1 ? 1.0 : dir == 3 ? -1.0 : 0.0;
-        const double near = 0.55, far = near + length;
-        // Across the lane: centred on the machine, moved off the walls (the machine stays in it).
-        auto across = [&](double c, double extent) {
-          return std::clamp(c - width / 2, std::min(0.1, c - 0.05),
-                            std::max(0.1, std::min(extent - 0.1 - width, c + 0.05 - width)));
-        };
-        const double u0 = du != 0 ? std::min(at.x + du * near, at.x + du * far) : across(at.x, len());
-        const double u1 = du != 0 ? std::max(at.x + du * near, at.x + du * far) : u0 + width;
-        const double v0 = dv != 0 ? std::min(at.y + dv * near, at.y + dv * far) : across(at.y, depth());
-        const double v1 = dv != 0 ? std::max(at.y + dv * near, at.y + dv * far) : v0 + width;
-        if (!inside(u0, v0, 0.1) || !inside(u1, v1, 0.1)) continue;
-        if (!lane_clear(u0, v0, u1, v1, k, first_roi)) continue;
-        const auto lane =
-            roi("queue_lane", poi.name.substr(zone_.name.size() + 1) + "_queue", u0, v0, u1, v1);
-        if (!lane) continue;
-        if ((lane->u1 - lane->u0) * (lane->v1 - lane->v0) < (u1 - u0) * (v1 - v0) - 1e-6) {
-          out_.rois.pop_back();  // cut by a door's swing: too short to queue in
-          continue;
-        }
-        poi.affordances.push_back("queue_target");
-        break;
-      }
-    }
-  }
-
-  // The same room seen from another side.
-  [[nodiscard]] Placer turned(int side) const { return Placer(zone_, Frame(f_.box, side), doors_, out_); }
-  [[nodiscard]] int side() const { return f_.side; }
-
-  // Items on a grid of cells (du × dv) inside [u0, u1] × [v0, v1], skipping cells near doors.
-  int grid(const std::string& type, const std::string& base, double u0, double v0, double u1, double v1,
-           double du, double dv, int max_items, double local_yaw, const std::vector<std::string>& affordances,
-           double radius = 0.5) {
-    const int nu = std::max(0, static_cast<int>(std::floor((u1 - u0) / du + 1e-9)));
-    const int nv = std::max(0, static_cast<int>(std::floor((v1 - v0) / dv + 1e-9)));
-    const double su = u0 + ((u1 - u0) - nu * du) / 2 + du / 2;
-    const double sv = v0 + ((v1 - v0) - nv * dv) / 2 + dv / 2;
-    int placed = 0;
-    for (int j = 0; j < nv && placed < max_items; ++j)
-      for (int i = 0; i < nu && placed < max_items; ++i) {
-        const double u = su + i * du, v = sv + j * dv;
-        const Point p = f_.at(u, v);
-        if (!inside(u, v, 0.2) || !clear(p, radius)) continue;
-        out_.entities.push_back({type,
-                                 zone_.name + "_" + numbered(base, placed + 1),
-                                 {p.x, p.y, f_.yaw(local_yaw)},
-                                 affordances});
-        ++placed;
-      }
-    return placed;
-  }
-
-  // A counter at depth v with a queue lane of up to `lane` metres in front of it: towards the main
-  // door (customers come in and queue towards a counter deeper in the room) or, when `inward`,
-  // deeper into the room (a check-out by the door). Returns the u it was placed at.
-  std::optional<CounterPlace> counter_with_queue(const std::string& type, const std::string& name, double u,
-                                                 double v, double lane, bool inward, double lane_width,
-                                                 std::vector<std::string> affordances) {
-    lane = inward ? std::min(lane, depth() - v - 1.0) : std::min(lane, v - 1.6);
-    if (lane < 1.5) return std::nullopt;
-    for (double du : {0.0, -1.2, 1.2, -2.4, 2.4}) {
-      const double uu = u + du;
-      if (!inside(uu - lane_width / 2 - 0.1, v, 0.1) || !inside(uu + lane_width / 2 + 0.1, v, 0.1)) continue;
-      const Point p = f_.at(uu, v);
-      if (!clear(p, 0.6)) continue;
-      const double v0 = inward ? v + 0.7 : v - 0.7 - lane;
-      if (!roi("queue_lane", name + "_queue", uu - lane_width / 2, v0, uu + lane_width / 2, v0 + lane, true))
-        continue;
-      out_.entities.push_back(
-          {type, zone_.name + "_" + name, {p.x, p.y, f_.yaw(inward ? 0.0 : kPi)}, std::move(affordances)});
-      return CounterPlace{uu, v, std::min(v0, v), std::max(v0 + lane, v)};
-    }
-    return std::nullopt;
-  }
-
- private:
-  const Zone& zone_;
-  Frame f_;
-  std::vector<DoorAt> doors_;
-  Furnishing& out_;
-};
-
-// Waiting zone with chairs (tables in a cafe) on the half of the room away from the counter at u = cu.
-// Waiting zone with chairs (tables in a cafe) in the largest part of the room the counter and its
-// queue leave free: beside them, or before or beyond them.
 void furnish_waiting(Placer& p, const std::string& type, const std::optional<CounterPlace>& counter) {
   const double L = p.len(), D = p.depth();
   const double cu = counter ? counter->u : L / 2;
@@ -380,12 +44,11 @@ void furnish_waiting(Placer& p, const std::string& type, const std::optional<Cou
                        best->v0, best->u1, best->v1))
       p.grid(cafe ? "table" : "chair", cafe ? "table" : "chair", a->u0, a->v0, a->u1, a->v1, cafe ? 1.8 : 0.8,
              cafe ? 1.8 : 1.1, 24, 0,
-             cafe ? std::vector<std::string>{"eat", "sit"} : std::vector<std::string>{"sit", "wait"},
-             cafe ? 0.5 : 0.25);
+             cafe ? std::vector<std::string>{"eat", "sit"} : std::vector<std::string>{"sit", "wait"});
   }
   if (type == "lobby" || type == "reception" || type == "concourse")
     p.entity("water_dispenser", "water_dispenser",
-             {{on_left ? 0.4 : L - 0.4, D - 0.4}, {on_left ? 0.4 : L - 0.4, 1.2}}, 0, {"drink"}, 0.3);
+             {{on_left ? 0.4 : L - 0.4, D - 0.4}, {on_left ? 0.4 : L - 0.4, 1.2}}, 0, {"drink"});
 }
 
 void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rules, Rng& rng, double area) {
@@ -393,40 +56,39 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
   const double left = rng.chance(0.5) ? 0.45 : L - 0.45;  // corner for small appliances
   const double right = L - left;
   if (type == "bedroom") {
-    p.entity("bed", "bed", {{L / 2, D - 1.1}, {L / 2, D / 2 + 0.3}}, kPi, {"lie", "sleep"}, 0.5);
-    p.entity("wardrobe", "wardrobe", {{left, D - 0.4}, {right, D - 0.4}, {left, D / 2}}, kPi, {"store"}, 0.3);
+    p.entity("bed", "bed", {{L / 2, D - 1.1}, {L / 2, D / 2 + 0.3}}, kPi, {"lie", "sleep"});
+    p.entity("wardrobe", "wardrobe", {{left, D - 0.4}, {right, D - 0.4}, {left, D / 2}}, kPi, {"store"});
   } else if (type == "living_room") {
     const auto sofa =
-        p.entity("sofa", "sofa", {{L / 2, D - 0.6}, {L / 2, D / 2 + 0.5}}, kPi, {"sit", "rest"}, 0.5);
+        p.entity("sofa", "sofa", {{L / 2, D - 0.6}, {L / 2, D / 2 + 0.5}}, kPi, {"sit", "rest"});
     if (sofa) {
-      p.entity("coffee_table", "coffee_table", {{sofa->x, sofa->y - 1.0}}, 0, {"place"}, 0.3);
+      p.entity("coffee_table", "coffee_table", {{sofa->x, sofa->y - 1.0}}, 0, {"place"});
       p.roi("seating_area", "seating", sofa->x - 1.3, sofa->y - 1.6, sofa->x + 1.3, sofa->y + 0.5);
     }
-    p.entity("tv", "tv", {{L / 2, 0.4}, {0.4, D / 2}, {L - 0.4, D / 2}}, 0, {"watch"}, 0.3);
+    p.entity("tv", "tv", {{L / 2, 0.4}, {0.4, D / 2}, {L - 0.4, D / 2}}, 0, {"watch"});
   } else if (type == "kitchen" || type == "kitchenette" || type == "break_room" || type == "staff_room") {
     const bool cooking = type == "kitchen";
-    p.entity("sink", "sink", {{L / 2, D - 0.4}, {0.4, D / 2}}, kPi, {"wash"}, 0.3);
-    p.entity("fridge", "fridge", {{left, D - 0.4}, {right, D - 0.4}}, kPi, {"store_food"}, 0.3);
+    p.entity("sink", "sink", {{L / 2, D - 0.4}, {0.4, D / 2}}, kPi, {"wash"});
+    p.entity("fridge", "fridge", {{left, D - 0.4}, {right, D - 0.4}}, kPi, {"store_food"});
     if (cooking) {
-      p.entity("stove", "stove", {{right, D - 0.4}, {left, D / 2}}, kPi, {"cook"}, 0.3);
+      p.entity("stove", "stove", {{right, D - 0.4}, {left, D / 2}}, kPi, {"cook"});
       p.roi("work_area", "work_area", 0.2, D - 1.2, L - 0.2, D - 0.1);
     } else {
-      p.entity("coffee_machine", "coffee_machine", {{right, D - 0.4}, {right, D / 2}}, kPi, {"drink"}, 0.3);
-      p.entity("water_dispenser", "water_dispenser", {{left, D / 2}, {right, 0.9}}, 0, {"drink"}, 0.3);
+      p.entity("coffee_machine", "coffee_machine", {{right, D - 0.4}, {right, D / 2}}, kPi, {"drink"});
+      p.entity("water_dispenser", "water_dispenser", {{left, D / 2}, {right, 0.9}}, 0, {"drink"});
     }
-    if (area >= 9.0)
-      p.entity("table", "table", {{L / 2, D / 2 - 0.3}, {L / 2, D / 2}}, 0, {"eat", "sit"}, 0.6);
+    if (area >= 9.0) p.entity("table", "table", {{L / 2, D / 2 - 0.3}, {L / 2, D / 2}}, 0, {"eat", "sit"});
   } else if (type == "bathroom" || type == "toilet") {
-    p.entity("toilet", "toilet", {{left, D - 0.5}, {right, D - 0.5}}, kPi, {"use_toilet"}, 0.3);
-    p.entity("sink", "sink", {{right, D - 0.35}, {left, D / 2}, {right, D / 2}}, kPi, {"wash"}, 0.25);
+    p.entity("toilet", "toilet", {{left, D - 0.5}, {right, D - 0.5}}, kPi, {"use_toilet"});
+    p.entity("sink", "sink", {{right, D - 0.35}, {left, D / 2}, {right, D / 2}}, kPi, {"wash"});
     if (type == "bathroom")
-      p.entity("shower", "shower", {{right, 0.6}, {left, 0.6}, {L / 2, D - 0.6}}, 0, {"shower"}, 0.4);
+      p.entity("shower", "shower", {{right, 0.6}, {left, 0.6}, {L / 2, D - 0.6}}, 0, {"shower"});
   } else if (type == "storage") {
     p.grid("shelf", "shelf", 0.2, D - 0.8, L - 0.2, D - 0.1, 1.0, 0.7, 4, kPi, {"store", "pick"});
   } else if (type == "dining_room") {
-    p.entity("dining_table", "dining_table", {{L / 2, D / 2}}, 0, {"eat", "sit"}, 0.7);
+    p.entity("dining_table", "dining_table", {{L / 2, D / 2}}, 0, {"eat", "sit"});
   } else if (type == "study") {
-    p.entity("desk", "desk", {{L / 2, D - 0.8}}, kPi, {"work", "sit"}, 0.5);
+    p.entity("desk", "desk", {{L / 2, D - 0.8}}, kPi, {"work", "sit"});
   } else if (type == "open_office" || type == "classroom") {
     const int wanted = type == "open_office"
                            ? std::max(1, static_cast<int>(std::floor(area / rules.area_per_desk)))
@@ -436,16 +98,16 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
     if (n > 0) p.roi("work_area", "desks", 0.8, 1.3, L - 0.8, D - 0.8, true);
     if (type == "open_office") {
       p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}, {left, D - 0.4}}, 0,
-               {"drink"}, 0.3);
-      p.entity("printer", "printer", {{right, D - 0.4}, {left, D - 0.4}}, kPi, {"print"}, 0.3);
+               {"drink"});
+      p.entity("printer", "printer", {{right, D - 0.4}, {left, D - 0.4}}, kPi, {"print"});
     } else {
-      p.entity("teacher_desk", "teacher_desk", {{L / 2, 0.9}, {L / 2, D - 0.7}}, 0, {"teach"}, 0.5);
+      p.entity("teacher_desk", "teacher_desk", {{L / 2, 0.9}, {L / 2, D - 0.7}}, 0, {"teach"});
     }
   } else if (type == "private_office") {
-    p.entity("desk", "desk", {{L / 2, D - 1.1}, {L / 2, D / 2}}, kPi, {"work", "sit"}, 0.5);
+    p.entity("desk", "desk", {{L / 2, D - 1.1}, {L / 2, D / 2}}, kPi, {"work", "sit"});
   } else if (type == "meeting_room") {
-    p.entity("meeting_table", "table", {{L / 2, D / 2 + 0.3}, {L / 2, D / 2}}, 0, {"meet", "sit"}, 0.8);
-    p.entity("whiteboard", "whiteboard", {{L / 2, D - 0.15}, {0.15, D / 2}}, kPi, {"present"}, 0.15);
+    p.entity("meeting_table", "table", {{L / 2, D / 2 + 0.3}, {L / 2, D / 2}}, 0, {"meet", "sit"});
+    p.entity("whiteboard", "whiteboard", {{L / 2, D - 0.15}, {0.15, D / 2}}, kPi, {"present"});
   } else if (type == "reception" || type == "lobby" || type == "security" || type == "gate_area" ||
              type == "concourse" || type == "cafe") {
     const bool gate = type == "gate_area";
@@ -470,23 +132,21 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
     furnish_waiting(p, type, std::nullopt);
   } else if (type == "waiting_room") {
     if (auto a = p.roi("waiting_zone", "waiting", 0.4, 1.4, L - 0.4, D - 0.4))
-      p.grid("chair", "chair", a->u0, a->v0, a->u1, a->v1, 0.8, 1.1, 24, 0, {"sit", "wait"}, 0.25);
-    p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}}, 0, {"drink"}, 0.3);
+      p.grid("chair", "chair", a->u0, a->v0, a->u1, a->v1, 0.8, 1.1, 24, 0, {"sit", "wait"});
+    p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}}, 0, {"drink"});
   } else if (type == "patient_room" || type == "icu_room") {
-    const auto bed =
-        p.entity("bed", "bed", {{L / 2, D - 1.3}, {L / 2, D / 2 + 0.4}}, kPi, {"lie", "visit"}, 0.6);
-    if (bed) p.entity("chair", "chair", {{bed->x + 1.4, bed->y}, {bed->x - 1.4, bed->y}}, 0, {"sit"}, 0.3);
+    const auto bed = p.entity("bed", "bed", {{L / 2, D - 1.3}, {L / 2, D / 2 + 0.4}}, kPi, {"lie", "visit"});
+    if (bed) p.entity("chair", "chair", {{bed->x + 1.4, bed->y}, {bed->x - 1.4, bed->y}}, 0, {"sit"});
     p.entity(type == "icu_room" ? "monitor" : "sink", type == "icu_room" ? "monitor" : "sink",
-             {{left, 1.0}, {right, 1.0}, {left, D - 0.4}}, 0, {type == "icu_room" ? "observe" : "wash"},
-             0.25);
+             {{left, 1.0}, {right, 1.0}, {left, D - 0.4}}, 0, {type == "icu_room" ? "observe" : "wash"});
   } else if (type == "nurse_station") {
-    p.entity("counter", "counter", {{L / 2, D / 2}, {L / 2, D - 1.0}}, kPi, {"serve", "queue_target"}, 0.6);
-    p.entity("desk", "desk", {{left, D - 0.6}, {right, D - 0.6}}, kPi, {"work", "sit"}, 0.4);
-    p.entity("medication_cart", "medication_cart", {{right, D - 0.5}, {left, 1.0}}, 0, {"restock"}, 0.3);
+    p.entity("counter", "counter", {{L / 2, D / 2}, {L / 2, D - 1.0}}, kPi, {"serve", "queue_target"});
+    p.entity("desk", "desk", {{left, D - 0.6}, {right, D - 0.6}}, kPi, {"work", "sit"});
+    p.entity("medication_cart", "medication_cart", {{right, D - 0.5}, {left, 1.0}}, 0, {"restock"});
   } else if (type == "treatment_room") {
-    p.entity("exam_table", "exam_table", {{L / 2, D - 1.2}, {L / 2, D / 2}}, kPi, {"examine", "lie"}, 0.5);
-    p.entity("desk", "desk", {{left, D / 2}, {right, D / 2}}, 0, {"work", "sit"}, 0.4);
-    p.entity("sink", "sink", {{right, 0.9}, {left, 0.9}}, 0, {"wash"}, 0.25);
+    p.entity("exam_table", "exam_table", {{L / 2, D - 1.2}, {L / 2, D / 2}}, kPi, {"examine", "lie"});
+    p.entity("desk", "desk", {{left, D / 2}, {right, D / 2}}, 0, {"work", "sit"});
+    p.entity("sink", "sink", {{right, 0.9}, {left, 0.9}}, 0, {"wash"});
   } else if (type == "dining_hall") {
     // Serving counter at the far side, its queue towards the main door; tables on both sides of it.
     const double cu = L * (rng.chance(0.5) ? 0.3 : 0.7);
@@ -502,8 +162,8 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
     if (auto a = L - 0.8 - u0 >= 2.0 ? p.roi("seating_area", "seating_02", u0, 1.6, L - 0.8, D - 0.6)
                                      : std::nullopt)
       p.grid("table", "table_b", a->u0, a->v0, a->u1, a->v1, 2.0, 2.2, 40, 0, {"eat", "sit"});
-    p.entity("water_dispenser", "water_dispenser", {{0.5, D / 2}, {L - 0.5, D / 2}}, 0, {"drink"}, 0.3);
-    p.entity("tray_return", "tray_return", {{L - 0.5, D * 0.3}, {0.5, D * 0.3}}, 0, {"return_tray"}, 0.3);
+    p.entity("water_dispenser", "water_dispenser", {{0.5, D / 2}, {L - 0.5, D / 2}}, 0, {"drink"});
+    p.entity("tray_return", "tray_return", {{L - 0.5, D * 0.3}, {0.5, D * 0.3}}, 0, {"return_tray"});
   } else if (type == "sales_floor" || type == "warehouse_floor" || type == "stock_room") {
     const bool shop = type == "sales_floor";
     double v_start = 1.4;
@@ -623,8 +283,8 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
     pick([](const DoorAt& d) { return !d.exterior && is_circulation_type(d.other_type); });
     pick([](const DoorAt&) { return true; });
     const int side = main ? nearest_side(box, main->centre) : 0;
-    Placer placer(z, Frame(box, side), here, out);
     const std::size_t first_entity = out.entities.size(), first_roi = out.rois.size();
+    Placer placer(z, Frame(box, side), here, out);
     furnish_room(placer, type, rules, rng, geometry::area(z.polygon));
     placer.poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
   }

@@ -12,6 +12,7 @@
 #include "core/floorplan/furnish.hpp"
 #include "core/floorplan/rooms.hpp"
 #include "core/geometry/planar.hpp"
+#include "core/world/layout_check.hpp"
 
 namespace socsim::floorplan {
 namespace {
@@ -676,6 +677,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       continue;
     }
     const Rng furnishing_rng = rng.fork("furnish");
+    std::set<std::string> dropped;  // furniture the layout check found in the way, left out
     auto build = [&]() {
       WorldBuilder builder;
       builder.set_name(layout.graph().domain + "_plan_" + std::to_string(options.seed));
@@ -686,7 +688,8 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       Rng furnishing = furnishing_rng;
       Furnishing f = furnish(zones, doors, rules, furnishing);
       for (auto& r : f.rois) builder.add_roi(std::move(r));
-      for (auto& e : f.entities) builder.add_entity(std::move(e));
+      for (auto& e : f.entities)
+        if (!dropped.count(e.name)) builder.add_entity(std::move(e));
       return builder.build(options.build);
     };
     auto world = build();
@@ -707,6 +710,32 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
         if (!world) {
           tried.push_back("the world with a second exit did not validate: " + world.error().message());
           last_error = world.error();
+          continue;
+        }
+        report = check_compliance(*world, layout.graph().domain, constraints);
+      }
+    }
+    // Footprints clear of walls, doors and each other, every zone and piece of furniture
+    // reachable by a person 0.5 m wide: furniture in the way is left out (and the plan built
+    // again); a zone nobody can reach fails the attempt.
+    if (report.passed) {
+      LayoutCheck check = check_layout(*world);
+      if (!check.ok()) {
+        bool zones_ok = true;
+        for (const auto& f : check.findings) {
+          if (f.kind.rfind("entity_", 0) == 0) {
+            dropped.insert(f.element);
+            if (f.kind == "entity_overlap") dropped.insert(f.other);
+          } else {
+            zones_ok = false;
+          }
+        }
+        if (zones_ok) {
+          world = build();
+          if (world) check = check_layout(*world);
+        }
+        if (!zones_ok || !world || !check.ok()) {
+          tried.push_back("layout check: " + (world ? check.summary() : world.error().message()));
           continue;
         }
         report = check_compliance(*world, layout.graph().domain, constraints);
