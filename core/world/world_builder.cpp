@@ -172,7 +172,8 @@ std::vector<Segment> uncovered_parts(const Segment& s, std::span<const Wall> cov
   std::vector<std::pair<double, double>> covered;
   for (const auto& w : cover) {
     if (off(w.segment.a) > tol || off(w.segment.b) > tol) continue;
-    const auto [lo, hi] = std::minmax(along(w.segment.a), along(w.segment.b));
+    // By value: minmax of two temporaries would return references to them.
+    const auto [lo, hi] = std::minmax({along(w.segment.a), along(w.segment.b)});
     if (hi > tol && lo < len - tol) covered.emplace_back(std::max(lo, 0.0), std::min(hi, len));
   }
   std::sort(covered.begin(), covered.end());
