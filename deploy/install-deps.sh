@@ -9,9 +9,11 @@ packages=(
   libcpp-httplib-dev nlohmann-json3-dev libcurl4-openssl-dev libeigen3-dev
   libsqlite3-dev sqlite3 libyaml-cpp-dev libgtest-dev libgmock-dev libgeos-dev
   libboost-dev libexpected-dev libssl-dev zlib1g-dev clang-format ccache
+  wordnet-base wordnet-dev  # prompt understanding: WordNet 3.0 data in /usr/share/wordnet and libwordnet
 )
 if [ "${1:-}" = "--with-browser" ]; then
-  packages+=(chromium)
+  # Test-only: Chromium for the viewer tests, nginx for the reverse-proxy fault tests.
+  packages+=(chromium nginx)
   # Node.js for the browser tests; a machine that already has node (e.g. from NodeSource) keeps it.
   command -v node >/dev/null 2>&1 || packages+=(nodejs)
   command -v npm >/dev/null 2>&1 || packages+=(npm)

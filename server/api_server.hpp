@@ -1,6 +1,7 @@
 #pragma once
-// The REST daemon: cpp-httplib with limits, structured request logs, problem+json errors,
-// API-key auth for writes, per-client rate limits, and the /api/v1 routes.
+// The REST daemon: the /api/v1 routes on the Beast HTTP transport (server/http_server.hpp), with
+// structured request logs, problem+json errors, API-key auth for writes, per-client rate limits
+// and the cross-site policy (server/access_policy.hpp).
 #include <atomic>
 #include <chrono>
 #include <memory>
@@ -8,10 +9,6 @@
 
 #include "core/common/error.hpp"
 #include "server/services.hpp"
-
-namespace httplib {
-class Server;
-}
 
 namespace socsim::server {
 

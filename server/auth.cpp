@@ -1,6 +1,7 @@
 #include "server/auth.hpp"
 
 #include "core/common/sha256.hpp"
+#include "server/access_policy.hpp"
 
 namespace socsim::server {
 
@@ -16,9 +17,9 @@ KeyRing::KeyRing(const std::vector<ApiKey>& keys) {
 }
 
 std::optional<std::string> KeyRing::authenticate(const std::string& header) const {
-  constexpr std::string_view kPrefix = "Bearer ";
-  if (header.size() <= kPrefix.size() || header.compare(0, kPrefix.size(), kPrefix) != 0) return std::nullopt;
-  const std::string digest = sha256_hex(std::string_view(header).substr(kPrefix.size()));
+  const auto token = bearer_token(header);
+  if (!token) return std::nullopt;
+  const std::string digest = sha256_hex(*token);
   std::optional<std::string> found;
   for (const auto& e : entries_)  // every entry is compared, whichever matches
     if (constant_time_equal(e.digest, digest)) found = e.name;

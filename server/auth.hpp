@@ -26,4 +26,10 @@ class KeyRing {
 
 bool constant_time_equal(const std::string& a, const std::string& b);
 
+// The one authorisation rule for writes to an existing resource (REST and WebSocket alike): on a
+// server with keys only its owner may act on it; a key-less server has no owners to protect.
+inline bool may_act_for(const KeyRing& keys, const std::string& requester, const std::string& owner) {
+  return !keys.enabled() || requester == owner;
+}
+
 }  // namespace socsim::server

@@ -5,11 +5,11 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/floorplan/offline.hpp"
+#include "core/floorplan/request.hpp"
 #include "core/knowledge/building_type.hpp"
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/store/store.hpp"
-#include "core/world/floorplan_offline.hpp"
-#include "core/world/floorplan_request.hpp"
 #include "core/world/world_export.hpp"
 #include "core/world/world_yaml.hpp"
 #include "server/cli.hpp"
@@ -48,12 +48,12 @@ int usage(const std::string& why) {
   return 2;
 }
 
-std::string summary_line(const world::ComplianceReport& r) {
+std::string summary_line(const floorplan::ComplianceReport& r) {
   int pass = 0, failed = 0, other = 0;
   for (const auto& c : r.checks) {
-    if (c.status == world::CheckStatus::kPass)
+    if (c.status == floorplan::CheckStatus::kPass)
       ++pass;
-    else if (c.status == world::CheckStatus::kFail)
+    else if (c.status == floorplan::CheckStatus::kFail)
       ++failed;
     else
       ++other;
@@ -82,18 +82,18 @@ int generate(const CliArgs& a) {
       return usage("--seed must be a non-negative integer");
     }
   }
-  auto request = world::floor_plan_request_from_json(body);
+  auto request = floorplan::floor_plan_request_from_json(body);
   if (!request) return cli_report(request.error());
-  auto resolved = world::resolve_scene_graph(*request);
+  auto resolved = floorplan::resolve_scene_graph(*request);
   if (!resolved) return cli_report(resolved.error());
   auto store = store::Store::open(cli_db_path(a));
   if (!store) return cli_report(store.error());
   knowledge::KnowledgeBase kb(**store);
   auto cs = kb.constraints_for(resolved->graph.domain, request->jurisdiction);
   if (!cs) return cli_report(cs.error());
-  world::OfflineOptions o;
+  floorplan::OfflineOptions o;
   o.seed = request->seed;
-  auto plan = world::generate_floor_plan(resolved->graph, *cs, o);
+  auto plan = floorplan::generate_floor_plan(resolved->graph, *cs, o);
   if (!plan) return cli_report(plan.error());
   const std::string yaml = world::world_to_yaml(plan->world);
   if (auto out = a.opt("-o")) {
@@ -102,9 +102,9 @@ int generate(const CliArgs& a) {
     std::cout << yaml;
   }
   if (auto report = a.opt("--report")) {
-    Json j = {{"compliance", world::to_json(plan->compliance)},
+    Json j = {{"compliance", floorplan::to_json(plan->compliance)},
               {"provenance", plan->provenance},
-              {"scene_graph", world::to_json(plan->scene_graph)}};
+              {"scene_graph", floorplan::to_json(plan->scene_graph)}};
     if (auto s = write_file(*report, j.dump(2) + "\n"); !s) return cli_report(s.error());
   }
   std::cerr << plan->world.name() << ": " << plan->world.zones().size() << " zones, "
@@ -133,8 +133,8 @@ int validate(const CliArgs& a) {
   knowledge::KnowledgeBase kb(**store);
   auto cs = kb.constraints_for(domain, a.opt("--jurisdiction").value_or(""));
   if (!cs) return cli_report(cs.error());
-  const auto report = world::check_compliance(*w, domain, *cs);
-  std::cout << Json{{"valid", true}, {"compliance", world::to_json(report)}}.dump(2) << "\n";
+  const auto report = floorplan::check_compliance(*w, domain, *cs);
+  std::cout << Json{{"valid", true}, {"compliance", floorplan::to_json(report)}}.dump(2) << "\n";
   std::cerr << a.words[1] << ": valid; " << summary_line(report) << "\n";
   return report.passed ? 0 : 1;
 }

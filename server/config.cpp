@@ -3,10 +3,28 @@
 #include <charconv>
 #include <set>
 
+#include "server/http_server.hpp"
+
 extern char** environ;
 
 namespace socsim::server {
 namespace {
+
+// "a, b,c" → {"a", "b", "c"}
+std::vector<std::string> split_list(const std::string& value) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= value.size()) {
+    std::size_t comma = value.find(',', start);
+    if (comma == std::string::npos) comma = value.size();
+    std::string item = value.substr(start, comma - start);
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    if (!item.empty()) out.push_back(std::move(item));
+    start = comma + 1;
+  }
+  return out;
+}
 
 template <class T>
 bool parse_number(const std::string& s, T& out) {
@@ -72,6 +90,18 @@ Status apply(ServerConfig& c, const std::string& flag, const std::string& value,
     auto keys = parse_api_keys(value);
     if (!keys) return bad(keys.error().detail);
     c.api_keys = std::move(*keys);
+  } else if (flag == "--allowed-origins")
+    c.allowed_origins = split_list(value);
+  else if (flag == "--allowed-hosts")
+    c.allowed_hosts = split_list(value);
+  else if (flag == "--trusted-proxies")
+    c.trusted_proxies = split_list(value);
+  else if (flag == "--max-connections-per-client")
+    return size(c.max_connections_per_client, 1);
+  else if (flag == "--read-timeout") {
+    std::size_t t = 0;
+    if (auto s = size(t, 1); !s) return s;
+    c.read_timeout_s = static_cast<int>(std::min<std::size_t>(t, 3600));
   } else if (flag == "--llm-url")
     c.llm.base_url = value;
   else if (flag == "--llm-model")
@@ -152,6 +182,17 @@ const std::vector<FlagSpec>& serve_flags() {
        "longest simulated time of a live program, seconds (default 3600)"},
       {"--viewer-queue", "SOCSIM_VIEWER_QUEUE",
        "frames queued per slow viewer before the oldest is dropped (default 8)"},
+      {"--allowed-origins", "SOCSIM_ALLOWED_ORIGINS",
+       "origins (scheme://host[:port], comma-separated, * = any) allowed to write and open WebSockets "
+       "besides this server's own pages (default: none)"},
+      {"--allowed-hosts", "SOCSIM_ALLOWED_HOSTS",
+       "Host names served besides localhost, --host and --public-host (default: any when bound to 0.0.0.0)"},
+      {"--trusted-proxies", "SOCSIM_TRUSTED_PROXIES",
+       "proxy addresses or CIDRs whose X-Forwarded-For names the client (default: none)"},
+      {"--max-connections-per-client", "SOCSIM_MAX_CONNECTIONS_PER_CLIENT",
+       "open connections per client address, REST and WebSocket each (default 64)"},
+      {"--read-timeout", "SOCSIM_READ_TIMEOUT",
+       "seconds for a request header to arrive; bodies get more by size (default 10)"},
       {"--llm-url", "SOCSIM_LLM_URL",
        "OpenAI-compatible endpoint base URL, e.g. http://localhost:11434 (optional)"},
       {"--llm-model", "SOCSIM_LLM_MODEL", "model name for the LLM generator"},
@@ -232,6 +273,12 @@ Result<ServerConfig> load_config(const std::vector<std::string>& args,
     return fail(ErrorCode::kBadRequest, "--max-sim-duration must be above 0",
                 {{"", "out of range", "--max-sim-duration", 0, 0}});
   if (auto s = c.llm.validate(); !s) return tl::unexpected(s.error());
+  for (const std::string& o : c.allowed_origins)
+    if (o != "*" && o.find("://") == std::string::npos)
+      return fail(ErrorCode::kBadRequest, "allowed origin '" + o + "' must be scheme://host[:port] or *",
+                  {{"", "not an origin", "--allowed-origins", 0, 0}});
+  if (auto proxies = TrustedProxies::parse(c.trusted_proxies); !proxies)
+    return tl::unexpected(proxies.error());
   return c;
 }
 

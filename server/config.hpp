@@ -30,9 +30,16 @@ struct ServerConfig {
   std::size_t default_page_size = 20;
   double rate_limit_rps = 50.0;  // per client; 0 disables
   double rate_limit_burst = 100.0;
-  int read_timeout_s = 10;
-  int write_timeout_s = 10;
-  std::vector<ApiKey> api_keys;  // empty: writes are open (local use)
+  int read_timeout_s = 10;   // a request's header (idle wait included); its body gets more by size
+  int write_timeout_s = 10;  // a whole response
+  std::size_t max_connections_per_client = 64;  // per address, REST and WebSocket each
+  // Cross-site protection. Origins allowed to write (and to open WebSockets) besides the
+  // server's own ("*" = any); Host names served besides loopback names, --host and --public-host
+  // (empty and bound to all addresses: any; "*" = any).
+  std::vector<std::string> allowed_origins;
+  std::vector<std::string> allowed_hosts;
+  std::vector<std::string> trusted_proxies;  // addresses or CIDRs whose X-Forwarded-For is believed
+  std::vector<ApiKey> api_keys;              // empty: writes are open (local use)
   int job_workers = 2;
   std::size_t max_jobs_per_client = 8;  // queued + running per key (or address, without keys)
   // Text to scenario (/api/v1/scenarios): bounds on what one request may ask for.

@@ -1,20 +1,42 @@
 #include "server/http_util.hpp"
 
 #include <charconv>
+#include <iostream>
+#include <mutex>
 
 namespace socsim::server {
 
-void reply_json(httplib::Response& res, int status, const Json& body) {
+void log_line(const Json& line) {
+  static std::mutex mutex;
+  const std::string text = line.dump(-1, ' ', false, Json::error_handler_t::replace);
+  std::lock_guard<std::mutex> lock(mutex);
+  std::cout << text << '\n' << std::flush;
+}
+
+void reply_json(Response& res, int status, const Json& body) {
   res.status = status;
   res.set_content(body.dump(-1, ' ', false, Json::error_handler_t::replace), "application/json");
 }
 
-void reply_problem(httplib::Response& res, const Error& error, const std::string& instance) {
+void reply_problem(Response& res, const Error& error, const std::string& instance) {
   res.status = error.status();
   if (error.retry_after_s > 0) res.set_header("Retry-After", std::to_string(error.retry_after_s));
   if (error.code == ErrorCode::kUnauthorized) res.set_header("WWW-Authenticate", "Bearer realm=\"socsim\"");
   res.set_content(error.to_problem(instance).dump(-1, ' ', false, Json::error_handler_t::replace),
                   "application/problem+json");
+}
+
+Json field_errors_json(const std::vector<FieldError>& errors) {
+  Json out = Json::array();
+  for (const FieldError& e : errors) {
+    Json j = {{"pointer", e.pointer}, {"message", e.message}};
+    if (e.line > 0) {
+      j["line"] = e.line;
+      j["column"] = e.column;
+    }
+    out.push_back(std::move(j));
+  }
+  return out;
 }
 
 Result<Json> json_body(const std::string& body) {
@@ -23,53 +45,18 @@ Result<Json> json_body(const std::string& body) {
   return parse_json_untrusted(body);
 }
 
-void post_with_body(httplib::Server& http, const std::string& pattern, std::size_t max_bytes,
-                    BodyHandler handler) {
-  http.Post(pattern,
-            httplib::Server::HandlerWithContentReader([max_bytes, handler = std::move(handler)](
-                                                          const httplib::Request& req, httplib::Response& res,
-                                                          const httplib::ContentReader& reader) {
-              const auto refuse = [&] {
-                res.set_header("Connection", "close");
-                reply_problem(res,
-                              Error(ErrorCode::kPayloadTooLarge, "the request body is larger than " +
-                                                                     std::to_string(max_bytes) +
-                                                                     " bytes, the most this server accepts"),
-                              req.path);
-              };
-              if (req.has_header("Content-Length") &&
-                  req.get_header_value<std::uint64_t>("Content-Length") > kBodyDrainFactor * max_bytes)
-                return refuse();
-              std::string body;
-              std::size_t received = 0;
-              bool too_large = false;
-              const bool complete = reader([&](const char* data, std::size_t len) {
-                received += len;
-                if (received > max_bytes) {
-                  too_large = true;
-                  body.clear();
-                  return received <= kBodyDrainFactor * max_bytes;
-                }
-                body.append(data, len);
-                return true;
-              });
-              if (too_large) return refuse();
-              if (!complete) {
-                res.set_header("Connection", "close");
-                return reply_problem(
-                    res, Error(ErrorCode::kBadRequest, "the request body could not be read completely"),
-                    req.path);
-              }
-              handler(req, res, body);
-            }));
+void post_with_body(Router& http, const std::string& pattern, std::size_t max_bytes, BodyHandler handler) {
+  http.Post(pattern, max_bytes, [handler = std::move(handler)](const Request& req, Response& res) {
+    handler(req, res, req.body);
+  });
 }
 
-std::optional<std::string> query(const httplib::Request& req, const std::string& name) {
+std::optional<std::string> query(const Request& req, const std::string& name) {
   if (!req.has_param(name.c_str())) return std::nullopt;
   return req.get_param_value(name.c_str());
 }
 
-Result<std::int64_t> query_int(const httplib::Request& req, const std::string& name, std::int64_t fallback,
+Result<std::int64_t> query_int(const Request& req, const std::string& name, std::int64_t fallback,
                                std::int64_t min, std::int64_t max) {
   auto v = query(req, name);
   if (!v) return fallback;

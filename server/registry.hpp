@@ -7,15 +7,12 @@
 #include <string>
 #include <vector>
 
-namespace httplib {
-class Server;
-}
-
 namespace socsim::server {
 
+class Router;
 struct RouteContext;
 
-using RouteRegistrar = std::function<void(httplib::Server&, RouteContext&)>;
+using RouteRegistrar = std::function<void(Router&, RouteContext&)>;
 using CommandFn = std::function<int(const std::vector<std::string>& args)>;
 
 struct CommandInfo {
@@ -39,7 +36,7 @@ struct RegisterCommand {
 
 #define SOCSIM_CAT2_(a, b) a##b
 #define SOCSIM_CAT_(a, b) SOCSIM_CAT2_(a, b)
-// SOCSIM_ROUTES("cards", [](httplib::Server& http, RouteContext& ctx) { http.Get(...); });
+// SOCSIM_ROUTES("cards", [](Router& http, RouteContext& ctx) { http.Get(...); });
 #define SOCSIM_ROUTES(name, fn) \
   static const ::socsim::server::RegisterRoutes SOCSIM_CAT_(socsim_routes_, __LINE__)(name, fn)
 // SOCSIM_COMMAND("card", "  card list …\n", [](const std::vector<std::string>& args) { return 0; });

@@ -6,10 +6,9 @@
 #include <optional>
 #include <string>
 
-#include <httplib.h>
-
 #include "core/cards/catalogue.hpp"
 #include "server/auth.hpp"
+#include "server/http_util.hpp"
 #include "server/registry.hpp"
 #include "server/services.hpp"
 
@@ -29,13 +28,13 @@ struct RouteContext {
 
   explicit RouteContext(Services& s);
   // The author recorded for a write: the key's name, or "anonymous" on an open server.
-  [[nodiscard]] std::string author(const httplib::Request& req) const;
+  [[nodiscard]] std::string author(const Request& req) const;
   // Host name for URLs handed to clients: --public-host, else the request's Host header.
-  [[nodiscard]] std::string public_host(const httplib::Request& req) const;
+  [[nodiscard]] std::string public_host(const Request& req) const;
   // Whether a write may touch another author's resource (open servers have no authors to protect).
   [[nodiscard]] bool any_author() const { return !keys.enabled(); }
   // Who a per-client quota counts against: the key's name, or the client address on an open server.
-  [[nodiscard]] std::string client(const httplib::Request& req) const;
+  [[nodiscard]] std::string client(const Request& req) const;
   // A model a request names must be one this server allows (llm::LlmConfig::resolve_model): 422 at
   // /model before any job is queued. Nothing to check without a model or an LLM endpoint.
   [[nodiscard]] Status check_model(const std::optional<std::string>& model) const;
@@ -43,8 +42,5 @@ struct RouteContext {
 
 // Embedded copies of schemas/ (openapi.yaml and the JSON Schemas), keyed by file name.
 const std::map<std::string, std::string>& embedded_schemas();
-
-// One structured log line on stdout.
-void log_line(const Json& line);
 
 }  // namespace socsim::server

@@ -30,7 +30,7 @@ bool etag_matches(const std::string& if_none_match, const std::string& tag) {
   return false;
 }
 
-void reply_card(httplib::Response& res, int status, const cards::Card& card) {
+void reply_card(Response& res, int status, const cards::Card& card) {
   res.set_header("ETag", etag(card));
   res.set_header("Cache-Control", "no-cache");
   if (status == 201) res.set_header("Location", "/api/v1/cards/" + card.id);
@@ -41,10 +41,10 @@ Json event(const char* type, const cards::Card& card) {
   return {{"type", type}, {"card", cards::summary_json(card)}};
 }
 
-void card_routes(httplib::Server& http, RouteContext& ctx) {
+void card_routes(Router& http, RouteContext& ctx) {
   const std::size_t max_body = ctx.config.max_body_bytes;
   post_with_body(http, "/api/v1/cards", max_body,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto body = json_body(text);
                    if (!body) return reply_problem(res, body.error(), req.path);
                    auto content = cards::parse_card_content(*body, ctx.catalogue.limits());
@@ -55,7 +55,7 @@ void card_routes(httplib::Server& http, RouteContext& ctx) {
                    reply_card(res, 201, *card);
                  });
 
-  http.Get("/api/v1/cards", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/cards", [&ctx](const Request& req, Response& res) {
     cards::CardQuery q;
     auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
                            ctx.config.max_page_size);
@@ -79,7 +79,7 @@ void card_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, out);
   });
 
-  http.Get(kCardPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(kCardPath, [&ctx](const Request& req, Response& res) {
     auto card = ctx.catalogue.get(req.matches[1].str());
     if (!card) return reply_problem(res, card.error(), req.path);
     if (etag_matches(req.get_header_value("If-None-Match"), etag(*card))) {
@@ -90,7 +90,7 @@ void card_routes(httplib::Server& http, RouteContext& ctx) {
     reply_card(res, 200, *card);
   });
 
-  http.Delete(kCardPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Delete(kCardPath, [&ctx](const Request& req, Response& res) {
     const std::string id = req.matches[1].str();
     auto card = ctx.catalogue.get(id);
     if (!card) return reply_problem(res, card.error(), req.path);
@@ -101,7 +101,7 @@ void card_routes(httplib::Server& http, RouteContext& ctx) {
   });
 
   post_with_body(http, std::string(kCardPath) + "/versions", max_body,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto body = json_body(text);
                    if (!body) return reply_problem(res, body.error(), req.path);
                    auto card = ctx.catalogue.create_version(req.matches[1].str(), *body, ctx.author(req));
@@ -114,7 +114,7 @@ void card_routes(httplib::Server& http, RouteContext& ctx) {
   // by routes_scenario_exports.cpp.
 
   post_with_body(http, "/api/v1/cards/import", max_body,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto outcome = ctx.catalogue.import_card(text, ctx.author(req));
                    if (!outcome) return reply_problem(res, outcome.error(), req.path);
                    if (outcome->created) ctx.events.publish("cards", event("card.created", outcome->card));

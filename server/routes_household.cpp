@@ -2,6 +2,7 @@
 // the LLM as a job) and dynamic household scenes (made by a job, stored in SQLite, queried by time).
 #include <list>
 #include <mutex>
+#include <set>
 
 #include "core/household/household_document.hpp"
 #include "core/household/llm_generators.hpp"
@@ -81,8 +82,8 @@ Result<std::vector<hh::Persona>> all_personas(store::Store& store) {
   return hh::list_stored_personas(store, true);
 }
 
-Result<std::int64_t> seconds_param(const httplib::Request& req, const std::string& name,
-                                   std::int64_t fallback, std::int64_t max) {
+Result<std::int64_t> seconds_param(const Request& req, const std::string& name, std::int64_t fallback,
+                                   std::int64_t max) {
   return query_int(req, name, fallback, 0, max);
 }
 
@@ -105,12 +106,12 @@ hh::LlmSettings llm_settings(RouteContext& ctx, llm::StructuredGenerator& gen, c
   return s;
 }
 
-void household_routes(httplib::Server& http, RouteContext& ctx) {
+void household_routes(Router& http, RouteContext& ctx) {
   auto state = std::make_shared<HouseholdState>(ctx.store);
   const std::size_t max_body = ctx.config.max_body_bytes;
 
   // ---- personas ----
-  http.Get("/api/v1/personas", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/personas", [&ctx](const Request& req, Response& res) {
     auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
                            ctx.config.max_page_size);
     if (!page) return reply_problem(res, page.error(), req.path);
@@ -136,7 +137,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, {{"items", items}, {"total", all->size()}, {"next_cursor", next}});
   });
 
-  http.Get(R"(/api/v1/personas/([^/]+))", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(R"(/api/v1/personas/([^/]+))", [&ctx](const Request& req, Response& res) {
     const std::string id = req.matches[1].str();
     auto all = all_personas(ctx.store);
     if (!all) return reply_problem(res, all.error(), req.path);
@@ -152,7 +153,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
   });
 
   post_with_body(http, "/api/v1/personas", max_body,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto body = json_body(text);
                    if (!body) return reply_problem(res, body.error(), req.path);
                    auto p = hh::persona_from_json(*body);
@@ -164,7 +165,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
                  });
 
   post_with_body(http, "/api/v1/personas/generate", max_body,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto body = json_body(text);
                    if (!body) return reply_problem(res, body.error(), req.path);
                    auto parsed = hh::persona_generate_request_from_json(*body);
@@ -217,7 +218,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
   // ---- households ----
   post_with_body(
       http, "/api/v1/households", max_body,
-      [&ctx, state](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+      [&ctx, state](const Request& req, Response& res, const std::string& text) {
         auto body = json_body(text);
         if (!body) return reply_problem(res, body.error(), req.path);
         auto request = hh::household_request_from_json(*body);
@@ -301,7 +302,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
         reply_json(res, 202, *job);
       });
 
-  http.Get("/api/v1/households", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/households", [&ctx](const Request& req, Response& res) {
     auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
                            ctx.config.max_page_size);
     if (!page) return reply_problem(res, page.error(), req.path);
@@ -326,8 +327,8 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
   });
 
   const std::string base = R"(/api/v1/households/(hh_[0-9a-f]{1,36}|[^/]+))";
-  auto with_household = [state](const httplib::Request& req,
-                                httplib::Response& res) -> std::shared_ptr<const HouseholdState::Loaded> {
+  auto with_household = [state](const Request& req,
+                                Response& res) -> std::shared_ptr<const HouseholdState::Loaded> {
     auto loaded = state->household(req.matches[1].str());
     if (!loaded) {
       reply_problem(res, loaded.error(), req.path);
@@ -336,7 +337,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     return *loaded;
   };
 
-  http.Get(base, [with_household](const httplib::Request& req, httplib::Response& res) {
+  http.Get(base, [with_household](const Request& req, Response& res) {
     auto h = with_household(req, res);
     if (!h) return;
     Json out = hh::household_summary_json(h->document, h->scene);
@@ -348,7 +349,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, out);
   });
 
-  http.Get(base + "/objects", [with_household](const httplib::Request& req, httplib::Response& res) {
+  http.Get(base + "/objects", [with_household](const Request& req, Response& res) {
     auto h = with_household(req, res);
     if (!h) return;
     if (!query(req, "t"))
@@ -361,7 +362,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, hh::objects_at_json(h->scene, *t));
   });
 
-  http.Get(base + "/events", [&ctx, with_household](const httplib::Request& req, httplib::Response& res) {
+  http.Get(base + "/events", [&ctx, with_household](const Request& req, Response& res) {
     auto h = with_household(req, res);
     if (!h) return;
     const auto end = h->scene.end();
@@ -400,7 +401,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
                 {"next_cursor", last < picked.size() ? Json(std::to_string(last)) : Json(nullptr)}});
   });
 
-  http.Get(base + "/hint", [&ctx, with_household](const httplib::Request& req, httplib::Response& res) {
+  http.Get(base + "/hint", [&ctx, with_household](const Request& req, Response& res) {
     auto h = with_household(req, res);
     if (!h) return;
     auto resident =
@@ -454,7 +455,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
                                   : Json(nullptr)}});
   });
 
-  http.Get(base + "/export", [with_household](const httplib::Request& req, httplib::Response& res) {
+  http.Get(base + "/export", [with_household](const Request& req, Response& res) {
     auto h = with_household(req, res);
     if (!h) return;
     const std::string format = query(req, "format").value_or("procthor");
@@ -476,7 +477,7 @@ void household_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, out);
   });
 
-  http.Get(base + "/statistics", [with_household](const httplib::Request& req, httplib::Response& res) {
+  http.Get(base + "/statistics", [with_household](const Request& req, Response& res) {
     auto h = with_household(req, res);
     if (!h) return;
     std::vector<hh::ResidentProfile> profiles;

@@ -9,8 +9,8 @@ namespace {
 
 constexpr const char* kJobPath = R"(/api/v1/jobs/([^/]+))";
 
-void job_routes(httplib::Server& http, RouteContext& ctx) {
-  http.Get("/api/v1/jobs", [&ctx](const httplib::Request& req, httplib::Response& res) {
+void job_routes(Router& http, RouteContext& ctx) {
+  http.Get("/api/v1/jobs", [&ctx](const Request& req, Response& res) {
     auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
                            ctx.config.max_page_size);
     if (!page) return reply_problem(res, page.error(), req.path);
@@ -29,7 +29,7 @@ void job_routes(httplib::Server& http, RouteContext& ctx) {
                 {"next_cursor", listed->next_cursor ? Json(*listed->next_cursor) : Json(nullptr)}});
   });
 
-  http.Get(kJobPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(kJobPath, [&ctx](const Request& req, Response& res) {
     const std::string id = req.matches[1].str();
     auto job = ctx.jobs.get(id);
     if (!job) return reply_problem(res, job.error(), req.path);
@@ -49,7 +49,7 @@ void job_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, *job);
   });
 
-  http.Delete(kJobPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Delete(kJobPath, [&ctx](const Request& req, Response& res) {
     const std::string id = req.matches[1].str();
     if (auto s = ctx.jobs.cancel(id, ctx.author(req), ctx.any_author()); !s)
       return reply_problem(res, s.error(), req.path);

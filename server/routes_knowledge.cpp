@@ -7,7 +7,7 @@
 namespace socsim::server {
 namespace {
 
-Result<std::vector<knowledge::Kind>> kinds_of(const httplib::Request& req) {
+Result<std::vector<knowledge::Kind>> kinds_of(const Request& req) {
   auto k = query(req, "kind");
   if (!k) return std::vector<knowledge::Kind>{knowledge::Kind::kBuildingCode, knowledge::Kind::kBehaviorNode};
   auto kind = knowledge::kind_from_string(*k);
@@ -17,8 +17,8 @@ Result<std::vector<knowledge::Kind>> kinds_of(const httplib::Request& req) {
   return std::vector<knowledge::Kind>{*kind};
 }
 
-void knowledge_routes(httplib::Server& http, RouteContext& ctx) {
-  http.Get("/api/v1/knowledge/search", [&ctx](const httplib::Request& req, httplib::Response& res) {
+void knowledge_routes(Router& http, RouteContext& ctx) {
+  http.Get("/api/v1/knowledge/search", [&ctx](const Request& req, Response& res) {
     auto q = query(req, "q");
     if (!q || q->empty())
       return reply_problem(
@@ -37,7 +37,7 @@ void knowledge_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, out);
   });
 
-  http.Get("/api/v1/knowledge/building-codes", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/knowledge/building-codes", [&ctx](const Request& req, Response& res) {
     auto list = ctx.knowledge.building_codes(query(req, "building_type").value_or(""));
     if (!list) return reply_problem(res, list.error(), req.path);
     Json items = Json::array();
@@ -45,14 +45,13 @@ void knowledge_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, {{"items", items}});
   });
 
-  http.Get(R"(/api/v1/knowledge/building-codes/([^/]+))",
-           [&ctx](const httplib::Request& req, httplib::Response& res) {
-             auto c = ctx.knowledge.building_code(req.matches[1].str());
-             if (!c) return reply_problem(res, c.error(), req.path);
-             reply_json(res, 200, knowledge::to_json(*c));
-           });
+  http.Get(R"(/api/v1/knowledge/building-codes/([^/]+))", [&ctx](const Request& req, Response& res) {
+    auto c = ctx.knowledge.building_code(req.matches[1].str());
+    if (!c) return reply_problem(res, c.error(), req.path);
+    reply_json(res, 200, knowledge::to_json(*c));
+  });
 
-  http.Get("/api/v1/knowledge/behavior-nodes", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/knowledge/behavior-nodes", [&ctx](const Request& req, Response& res) {
     auto list = ctx.knowledge.behavior_nodes();
     if (!list) return reply_problem(res, list.error(), req.path);
     Json items = Json::array();
@@ -60,14 +59,13 @@ void knowledge_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, {{"items", items}});
   });
 
-  http.Get(R"(/api/v1/knowledge/behavior-nodes/([^/]+))",
-           [&ctx](const httplib::Request& req, httplib::Response& res) {
-             auto n = ctx.knowledge.behavior_node(req.matches[1].str());
-             if (!n) return reply_problem(res, n.error(), req.path);
-             reply_json(res, 200, knowledge::to_json(*n));
-           });
+  http.Get(R"(/api/v1/knowledge/behavior-nodes/([^/]+))", [&ctx](const Request& req, Response& res) {
+    auto n = ctx.knowledge.behavior_node(req.matches[1].str());
+    if (!n) return reply_problem(res, n.error(), req.path);
+    reply_json(res, 200, knowledge::to_json(*n));
+  });
 
-  http.Get("/api/v1/knowledge/constraints", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/knowledge/constraints", [&ctx](const Request& req, Response& res) {
     auto type = query(req, "building_type");
     if (!type)
       return reply_problem(
@@ -81,7 +79,7 @@ void knowledge_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, {{"building_type", *type}, {"constraints", items}});
   });
 
-  http.Get("/api/v1/knowledge/classify", [](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/knowledge/classify", [](const Request& req, Response& res) {
     auto text = query(req, "text");
     auto rooms = query(req, "rooms");
     if (!text && !rooms)

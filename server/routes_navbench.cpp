@@ -53,44 +53,42 @@ class NavbenchInputs {
       cache_;
 };
 
-void navbench_routes(httplib::Server& http, RouteContext& ctx) {
+void navbench_routes(Router& http, RouteContext& ctx) {
   auto inputs = std::make_shared<NavbenchInputs>(ctx.store);
 
-  post_with_body(
-      http, "/api/v1/navbench", ctx.config.max_body_bytes,
-      [&ctx, inputs](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-        auto body = json_body(text);
-        if (!body) return reply_problem(res, body.error(), req.path);
-        auto request = navbench::benchmark_request_from_json(*body);
-        if (!request) return reply_problem(res, request.error(), req.path);
-        const navbench::BenchmarkRequest r = *request;
-        auto id = ctx.jobs.submit(
-            "navbench", navbench::to_json(r), ctx.author(req),
-            [r, inputs](const JobContext& job) -> Result<Json> {
-              job.progress(0.0, "preparing residents and the scene prior");
-              auto k = inputs->knowledge();
-              if (!k) return tl::unexpected(k.error());
-              auto in = inputs->inputs(r);
-              if (!in) return tl::unexpected(in.error());
-              navbench::RunHooks hooks;
-              hooks.progress = [&job](double f, const std::string& m) { job.progress(f, m); };
-              hooks.cancelled = [&job] { return job.cancelled(); };
-              auto result = navbench::run_benchmark(r, **k, (*in)->pool, (*in)->counts, hooks);
-              if (!result) return tl::unexpected(result.error());
-              Json out = navbench::to_json(*result, true);
-              out["table"] = navbench::format_table(*result);
-              return out;
-            },
-            ctx.client(req));
-        if (!id) return reply_problem(res, id.error(), req.path);
-        auto job = ctx.jobs.get(*id);
-        if (!job) return reply_problem(res, job.error(), req.path);
-        res.set_header("Location", "/api/v1/jobs/" + *id);
-        reply_json(res, 202, *job);
-      });
+  post_with_body(http, "/api/v1/navbench", ctx.config.max_body_bytes,
+                 [&ctx, inputs](const Request& req, Response& res, const std::string& text) {
+                   auto body = json_body(text);
+                   if (!body) return reply_problem(res, body.error(), req.path);
+                   auto request = navbench::benchmark_request_from_json(*body);
+                   if (!request) return reply_problem(res, request.error(), req.path);
+                   const navbench::BenchmarkRequest r = *request;
+                   auto id = ctx.jobs.submit(
+                       "navbench", navbench::to_json(r), ctx.author(req),
+                       [r, inputs](const JobContext& job) -> Result<Json> {
+                         job.progress(0.0, "preparing residents and the scene prior");
+                         auto k = inputs->knowledge();
+                         if (!k) return tl::unexpected(k.error());
+                         auto in = inputs->inputs(r);
+                         if (!in) return tl::unexpected(in.error());
+                         navbench::RunHooks hooks;
+                         hooks.progress = [&job](double f, const std::string& m) { job.progress(f, m); };
+                         hooks.cancelled = [&job] { return job.cancelled(); };
+                         auto result = navbench::run_benchmark(r, **k, (*in)->pool, (*in)->counts, hooks);
+                         if (!result) return tl::unexpected(result.error());
+                         Json out = navbench::to_json(*result, true);
+                         out["table"] = navbench::format_table(*result);
+                         return out;
+                       },
+                       ctx.client(req));
+                   if (!id) return reply_problem(res, id.error(), req.path);
+                   auto job = ctx.jobs.get(*id);
+                   if (!job) return reply_problem(res, job.error(), req.path);
+                   res.set_header("Location", "/api/v1/jobs/" + *id);
+                   reply_json(res, 202, *job);
+                 });
 
-  http.Get(R"(/api/v1/navbench/([^/]+)/episodes/([^/]+))", [&ctx, inputs](const httplib::Request& req,
-                                                                          httplib::Response& res) {
+  http.Get(R"(/api/v1/navbench/([^/]+)/episodes/([^/]+))", [&ctx, inputs](const Request& req, Response& res) {
     const std::string id = req.matches[1].str(), n_text = req.matches[2].str();
     auto job = ctx.jobs.get(id);
     if (!job) return reply_problem(res, job.error(), req.path);

@@ -4,7 +4,7 @@
 // Without ?format the card's own export document is returned, as before.
 //
 // The group is named "card_exports" so that it registers before "cards" (groups register in name
-// order and cpp-httplib answers with the first matching route): it owns the /export path.
+// order and the router answers with the first matching route): it owns the /export path.
 #include "core/interop/export_hunav.hpp"
 #include "core/interop/export_pedsim_scenario.hpp"
 #include "core/interop/tar_archive.hpp"
@@ -49,13 +49,13 @@ Result<Scenario> card_scenario(const cards::Card& card) {
   return Scenario{std::move(*w), std::move(*p)};
 }
 
-void attach(httplib::Response& res, const std::string& file, const std::string& body, const char* type) {
+void attach(Response& res, const std::string& file, const std::string& body, const char* type) {
   res.set_header("Content-Disposition", "attachment; filename=\"" + file + "\"");
   res.set_content(body, type);
 }
 
-void export_routes(httplib::Server& http, RouteContext& ctx) {
-  http.Get(kExportPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+void export_routes(Router& http, RouteContext& ctx) {
+  http.Get(kExportPath, [&ctx](const Request& req, Response& res) {
     const std::string id = req.matches[1].str();
     const auto format = query(req, "format");
     if (!format || *format == "card") {

@@ -34,13 +34,19 @@ Error nested(Error e, const std::string& prefix) {
 Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
                                                            const scenario::ScenarioRequest& r) {
   if (r.world) {
-    Result<world::World> w = r.world->is_string() ? world::world_from_yaml(r.world->get<std::string>())
-                                                  : world::world_from_document(*r.world);
+    Result<world::WorldReading> w = r.world->is_string()
+                                        ? world::read_world_yaml(r.world->get<std::string>())
+                                        : world::world_from_document(*r.world).map([](world::World built) {
+                                            return world::WorldReading{std::move(built), {}};
+                                          });
     if (!w) return tl::unexpected(nested(w.error(), "/world"));
     std::vector<std::string> names;
-    for (const auto& z : w->zones()) names.push_back(z.name + " " + z.type);
+    for (const auto& z : w->world.zones()) names.push_back(z.name + " " + z.type);
     std::string domain = r.domain ? *r.domain : knowledge::classify_building_type(names).type;
-    return scenario::ScenarioWorld{std::move(*w), domain, Json{{"source", "request"}}};
+    Json source{{"source", "request"}};
+    // What reading the world assumed (a zone's region inferred …) stays with the card.
+    if (!w->warnings.empty()) source["warnings"] = field_errors_json(w->warnings);
+    return scenario::ScenarioWorld{std::move(w->world), domain, std::move(source)};
   }
   if (r.world_id) {
     auto stored = stored_world_text(ctx.store, *r.world_id);
@@ -62,10 +68,10 @@ Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
   return std::optional<scenario::ScenarioWorld>{};
 }
 
-void scenario_routes(httplib::Server& http, RouteContext& ctx) {
+void scenario_routes(Router& http, RouteContext& ctx) {
   post_with_body(
       http, "/api/v1/scenarios", ctx.config.max_body_bytes,
-      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+      [&ctx](const Request& req, Response& res, const std::string& text) {
         auto body = json_body(text);
         if (!body) return reply_problem(res, body.error(), req.path);
         const auto config = scenario_config(ctx.config);
@@ -115,7 +121,7 @@ void scenario_routes(httplib::Server& http, RouteContext& ctx) {
         reply_json(res, 202, *job);
       });
 
-  http.Get(kTrajectoryPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(kTrajectoryPath, [&ctx](const Request& req, Response& res) {
     const std::string sha = req.matches[1];
     if (sha.size() != 64 || sha.find_first_not_of("0123456789abcdef") != std::string::npos)
       return reply_problem(res, Error(ErrorCode::kNotFound, "no trajectory log '" + sha + "'"), req.path);
@@ -135,7 +141,7 @@ void scenario_routes(httplib::Server& http, RouteContext& ctx) {
 
   post_with_body(
       http, kReplayPath, ctx.config.max_body_bytes,
-      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string&) {
+      [&ctx](const Request& req, Response& res, const std::string&) {
         const std::string card_id = req.matches[1];
         auto card = ctx.catalogue.get(card_id);
         if (!card) return reply_problem(res, card.error(), req.path);

@@ -25,7 +25,7 @@ Error field_error(ErrorCode code, const std::string& detail, const std::string& 
   return Error(code, detail, {FieldError{pointer, message, {}, 0, 0}});
 }
 
-Json with_urls(RouteContext& ctx, const httplib::Request& req, Json status) {
+Json with_urls(RouteContext& ctx, const Request& req, Json status) {
   status["ws_port"] = ctx.config.ws_port;
   status["websocket_url"] = "ws://" + ctx.public_host(req) + ":" + std::to_string(ctx.config.ws_port) +
                             status["ws_url"].get<std::string>();
@@ -169,14 +169,14 @@ Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, cons
 }
 
 // Controls and deletion are the author's when the server has API keys.
-Status may_change(RouteContext& ctx, const httplib::Request& req, const SimulationSession& s) {
-  if (ctx.any_author() || s.info().author == ctx.author(req)) return {};
+Status may_change(RouteContext& ctx, const Request& req, const SimulationSession& s) {
+  if (may_act_for(ctx.keys, ctx.author(req), s.info().author)) return {};
   return fail(ErrorCode::kForbidden, "simulation '" + s.id() + "' was started by another author");
 }
 
-void simulation_routes(httplib::Server& http, RouteContext& ctx) {
+void simulation_routes(Router& http, RouteContext& ctx) {
   post_with_body(http, "/api/v1/simulations", ctx.config.max_body_bytes,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto body = json_body(text);
                    if (!body) return reply_problem(res, body.error(), req.path);
                    auto session = start_session(ctx, *body, ctx.author(req));
@@ -189,7 +189,7 @@ void simulation_routes(httplib::Server& http, RouteContext& ctx) {
                    reply_json(res, 201, with_urls(ctx, req, (*session)->status()));
                  });
 
-  http.Get("/api/v1/simulations", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/simulations", [&ctx](const Request& req, Response& res) {
     auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
                            ctx.config.max_page_size);
     if (!page) return reply_problem(res, page.error(), req.path);
@@ -227,14 +227,14 @@ void simulation_routes(httplib::Server& http, RouteContext& ctx) {
                   {"max_duration_s", l.max_duration_s}}}});
   });
 
-  http.Get(kSimulationPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(kSimulationPath, [&ctx](const Request& req, Response& res) {
     auto s = ctx.services.simulations->find(req.matches[1].str());
     if (!s) return reply_problem(res, s.error(), req.path);
     reply_json(res, 200, with_urls(ctx, req, (*s)->status()));
   });
 
   post_with_body(http, std::string(kSimulationPath) + "/control", ctx.config.max_body_bytes,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto s = ctx.services.simulations->find(req.matches[1].str());
                    if (!s) return reply_problem(res, s.error(), req.path);
                    if (auto ok = may_change(ctx, req, **s); !ok)
@@ -246,7 +246,7 @@ void simulation_routes(httplib::Server& http, RouteContext& ctx) {
                    reply_json(res, 200, with_urls(ctx, req, *st));
                  });
 
-  http.Delete(kSimulationPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Delete(kSimulationPath, [&ctx](const Request& req, Response& res) {
     auto s = ctx.services.simulations->find(req.matches[1].str());
     if (!s) return reply_problem(res, s.error(), req.path);
     if (auto ok = may_change(ctx, req, **s); !ok) return reply_problem(res, ok.error(), req.path);

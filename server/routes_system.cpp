@@ -21,12 +21,12 @@ RouteContext::RouteContext(Services& s)
                 }()),
       keys(s.config.api_keys) {}
 
-std::string RouteContext::author(const httplib::Request& req) const {
+std::string RouteContext::author(const Request& req) const {
   if (!keys.enabled()) return "anonymous";
   return keys.authenticate(req.get_header_value("Authorization")).value_or("anonymous");
 }
 
-std::string RouteContext::client(const httplib::Request& req) const {
+std::string RouteContext::client(const Request& req) const {
   if (keys.enabled()) return author(req);
   return "address:" + req.remote_addr;
 }
@@ -38,7 +38,7 @@ Status RouteContext::check_model(const std::optional<std::string>& model) const 
   return {};
 }
 
-std::string RouteContext::public_host(const httplib::Request& req) const {
+std::string RouteContext::public_host(const Request& req) const {
   if (!config.public_host.empty()) return config.public_host;
   std::string host = req.get_header_value("Host");
   if (!host.empty() && host.front() == '[') {  // [::1]:8080
@@ -50,8 +50,8 @@ std::string RouteContext::public_host(const httplib::Request& req) const {
 }
 
 namespace {
-void system_routes(httplib::Server& http, RouteContext& ctx) {
-  http.Get("/api/v1/health", [&ctx](const httplib::Request& req, httplib::Response& res) {
+void system_routes(Router& http, RouteContext& ctx) {
+  http.Get("/api/v1/health", [&ctx](const Request& req, Response& res) {
     auto count = ctx.catalogue.count();
     const double uptime =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.services.started).count();
@@ -67,7 +67,7 @@ void system_routes(httplib::Server& http, RouteContext& ctx) {
          {"uptime_s", std::round(uptime * 10.0) / 10.0}});
   });
 
-  http.Get("/api/v1/info", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/info", [&ctx](const Request& req, Response& res) {
     const auto& c = ctx.config;
     Json generators = Json::array();
     generators.push_back({{"name", "offline"}, {"available", true}, {"default", true}});
@@ -96,7 +96,7 @@ void system_routes(httplib::Server& http, RouteContext& ctx) {
          {"schema_version", ctx.store.schema_version()}});
   });
 
-  http.Get("/api/v1/openapi.yaml", [](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/openapi.yaml", [](const Request& req, Response& res) {
     const auto& files = embedded_schemas();
     auto it = files.find("openapi.yaml");
     if (it == files.end()) {
@@ -106,7 +106,7 @@ void system_routes(httplib::Server& http, RouteContext& ctx) {
     res.set_content(it->second, "application/yaml");
   });
 
-  http.Get(R"(/api/v1/schemas/([A-Za-z0-9_.\-/]+))", [](const httplib::Request& req, httplib::Response& res) {
+  http.Get(R"(/api/v1/schemas/([A-Za-z0-9_.\-/]+))", [](const Request& req, Response& res) {
     const auto& files = embedded_schemas();
     auto it = files.find(req.matches[1].str());
     if (it == files.end() || it->first.find("..") != std::string::npos) {

@@ -3,9 +3,9 @@
 // pedsim_ros, ROS map and SVG; validation of a posted world.yaml.
 #include "core/common/ids.hpp"
 #include "core/common/sha256.hpp"
+#include "core/floorplan/llm.hpp"
+#include "core/floorplan/request.hpp"
 #include "core/knowledge/building_type.hpp"
-#include "core/world/floorplan_llm.hpp"
-#include "core/world/floorplan_request.hpp"
 #include "core/world/world_document.hpp"
 #include "core/world/world_export.hpp"
 #include "core/world/world_yaml.hpp"
@@ -85,7 +85,7 @@ Json summary(const StoredWorld& w) {
 }
 
 // Stores a generated plan; returns its id.
-Result<StoredWorld> store_world(store::Store& db, const world::FloorPlan& plan, const Json& request,
+Result<StoredWorld> store_world(store::Store& db, const floorplan::FloorPlan& plan, const Json& request,
                                 const std::string& author, const std::string& generator, std::uint64_t seed) {
   StoredWorld w;
   w.id = random_id("wld_");
@@ -95,9 +95,9 @@ Result<StoredWorld> store_world(store::Store& db, const world::FloorPlan& plan, 
   w.seed = static_cast<std::int64_t>(seed);
   w.author = author;
   w.request = request;
-  w.scene_graph = world::to_json(plan.scene_graph);
+  w.scene_graph = floorplan::to_json(plan.scene_graph);
   w.world_yaml = world::world_to_yaml(plan.world);
-  w.compliance = world::to_json(plan.compliance);
+  w.compliance = floorplan::to_json(plan.compliance);
   w.provenance = plan.provenance;
   w.content_hash = sha256_hex(w.world_yaml);
   w.created_at = utc_now_rfc3339();
@@ -168,7 +168,7 @@ Status llm_available(const RouteContext& ctx) {
 }
 
 // Building type for checking a posted world: ?domain=, else classified from zone names and types.
-Result<std::string> domain_for(const httplib::Request& req, const world::World& w) {
+Result<std::string> domain_for(const Request& req, const world::World& w) {
   if (auto d = query(req, "domain")) {
     if (!knowledge::is_building_type(*d))
       return fail(ErrorCode::kValidation, "unknown building type",
@@ -180,26 +180,25 @@ Result<std::string> domain_for(const httplib::Request& req, const world::World& 
   return knowledge::classify_building_type(names).type;
 }
 
-void world_routes(httplib::Server& http, RouteContext& ctx) {
+void world_routes(Router& http, RouteContext& ctx) {
   const std::size_t max_body = ctx.config.max_body_bytes;
 
   post_with_body(
-      http, "/api/v1/worlds", max_body,
-      [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
+      http, "/api/v1/worlds", max_body, [&ctx](const Request& req, Response& res, const std::string& text) {
         auto body = json_body(text);
         if (!body) return reply_problem(res, body.error(), req.path);
-        auto request = world::floor_plan_request_from_json(*body);
+        auto request = floorplan::floor_plan_request_from_json(*body);
         if (!request) return reply_problem(res, request.error(), req.path);
         if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
-        auto resolved = world::resolve_scene_graph(*request);
+        auto resolved = floorplan::resolve_scene_graph(*request);
         if (!resolved) return reply_problem(res, resolved.error(), req.path);
         auto cs = constraints(ctx, resolved->graph.domain, request->jurisdiction);
         if (!cs) return reply_problem(res, cs.error(), req.path);
 
         if (request->generator == "offline") {
-          world::OfflineOptions o;
+          floorplan::OfflineOptions o;
           o.seed = request->seed;
-          auto plan = world::generate_floor_plan(resolved->graph, *cs, o);
+          auto plan = floorplan::generate_floor_plan(resolved->graph, *cs, o);
           if (!plan) return reply_problem(res, plan.error(), req.path);
           plan->provenance["classification"] = resolved->classification;
           auto w = store_world(ctx.store, *plan, *body, ctx.author(req), "offline", request->seed);
@@ -220,13 +219,13 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
               llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
               job.progress(0.0, "asking the LLM for a " + resolved.graph.domain + " floor plan of " +
                                     std::to_string(resolved.graph.rooms.size()) + " rooms");
-              world::LlmFloorPlanOptions o;
+              floorplan::LlmFloorPlanOptions o;
               o.model = request.model;
               o.seed = static_cast<std::int64_t>(request.seed);
               o.job_id = job.id();
               o.cancel = job.cancel_token();
               auto plan =
-                  world::generate_floor_plan_llm(gen, request.prompt.value_or(""), resolved.graph, cs, o);
+                  floorplan::generate_floor_plan_llm(gen, request.prompt.value_or(""), resolved.graph, cs, o);
               if (!plan) return tl::unexpected(plan.error());
               plan->provenance["classification"] = resolved.classification;
               auto w = store_world(ctx.store, *plan, body, author, "llm", request.seed);
@@ -244,7 +243,7 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
         reply_json(res, 202, *job);
       });
 
-  http.Get("/api/v1/worlds", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get("/api/v1/worlds", [&ctx](const Request& req, Response& res) {
     auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
                            ctx.config.max_page_size);
     if (!page) return reply_problem(res, page.error(), req.path);
@@ -287,7 +286,7 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, *listed);
   });
 
-  http.Get(kWorldPath, [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(kWorldPath, [&ctx](const Request& req, Response& res) {
     auto w = load_world(ctx.store, req.matches[1].str());
     if (!w) return reply_problem(res, w.error(), req.path);
     auto world = world_of(*w);
@@ -296,16 +295,15 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
     reply_json(res, 200, world_json(*w, *world));
   });
 
-  http.Get(std::string(kWorldPath) + "/world.yaml",
-           [&ctx](const httplib::Request& req, httplib::Response& res) {
-             auto w = load_world(ctx.store, req.matches[1].str());
-             if (!w) return reply_problem(res, w.error(), req.path);
-             res.set_header("ETag", "\"" + w->content_hash + "\"");
-             res.set_header("Content-Disposition", "inline; filename=\"" + w->id + ".world.yaml\"");
-             res.set_content(w->world_yaml, "application/yaml");
-           });
+  http.Get(std::string(kWorldPath) + "/world.yaml", [&ctx](const Request& req, Response& res) {
+    auto w = load_world(ctx.store, req.matches[1].str());
+    if (!w) return reply_problem(res, w.error(), req.path);
+    res.set_header("ETag", "\"" + w->content_hash + "\"");
+    res.set_header("Content-Disposition", "inline; filename=\"" + w->id + ".world.yaml\"");
+    res.set_content(w->world_yaml, "application/yaml");
+  });
 
-  http.Get(std::string(kWorldPath) + "/export", [&ctx](const httplib::Request& req, httplib::Response& res) {
+  http.Get(std::string(kWorldPath) + "/export", [&ctx](const Request& req, Response& res) {
     const auto format = query(req, "format");
     static const std::vector<std::string> kFormats = {"sdf", "pedsim", "map", "map-pgm", "map-yaml", "svg"};
     if (!format || std::find(kFormats.begin(), kFormats.end(), *format) == kFormats.end())
@@ -346,19 +344,21 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
   });
 
   post_with_body(http, "/api/v1/worlds/validate", max_body,
-                 [&ctx](const httplib::Request& req, httplib::Response& res, const std::string& text) {
-                   auto world = world::world_from_yaml(text);
-                   if (!world) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
+                   auto reading = world::read_world_yaml(text);
+                   if (!reading) {
                      // Everything wrong with the posted document is a validation finding, syntax included.
-                     Error e = world.error();
+                     Error e = reading.error();
                      if (e.code == ErrorCode::kBadRequest) e.code = ErrorCode::kValidation;
                      return reply_problem(res, e, req.path);
                    }
+                   const world::World* world = &reading->world;
                    auto domain = domain_for(req, *world);
                    if (!domain) return reply_problem(res, domain.error(), req.path);
                    auto cs = constraints(ctx, *domain, query(req, "jurisdiction").value_or(""));
                    if (!cs) return reply_problem(res, cs.error(), req.path);
-                   const world::ComplianceReport report = world::check_compliance(*world, *domain, *cs);
+                   const floorplan::ComplianceReport report =
+                       floorplan::check_compliance(*world, *domain, *cs);
                    reply_json(res, 200,
                               {{"valid", true},
                                {"name", world->name()},
@@ -368,8 +368,9 @@ void world_routes(httplib::Server& http, RouteContext& ctx) {
                                {"rois", world->rois().size()},
                                {"entities", world->entities().size()},
                                {"area", world->area()},
-                               {"compliance", world::to_json(report)},
-                               {"knowledge", world::knowledge_provenance(*cs)}});
+                               {"compliance", floorplan::to_json(report)},
+                               {"knowledge", floorplan::knowledge_provenance(*cs)},
+                               {"warnings", field_errors_json(reading->warnings)}});
                  });
 }
 

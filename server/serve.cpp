@@ -64,7 +64,7 @@ int serve_command(const std::vector<std::string>& args) {
     std::cerr << "socsim serve: " << http_port.error().detail << "\n";
     return 1;
   }
-  WsServer ws({config->host, config->ws_port, 256, 64}, **services);
+  WsServer ws({config->host, config->ws_port}, **services, *http_port);
   auto ws_port = ws.bind();
   if (!ws_port) {
     std::cerr << "socsim serve: " << ws_port.error().detail << "\n";

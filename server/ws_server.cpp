@@ -4,6 +4,7 @@
 #include <atomic>
 #include <deque>
 #include <future>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -13,6 +14,8 @@
 #include <boost/beast.hpp>
 
 #include "core/common/json_io.hpp"
+#include "server/access_policy.hpp"
+#include "server/auth.hpp"
 #include "server/services.hpp"
 #include "server/simulation_sessions.hpp"
 #include "socsim/buildinfo.hpp"
@@ -47,6 +50,9 @@ struct IoGate {
 };
 
 struct Shared {
+  // Declared before the I/O context: sessions its destruction releases still count themselves out.
+  std::map<std::string, std::size_t> per_address;  // open connections by peer address (I/O thread)
+  std::size_t refused = 0;
   asio::io_context io{1};
   WsOptions options;
   EventHub& events;
@@ -95,11 +101,31 @@ std::optional<std::string> query_value(std::string_view target, std::string_view
   return std::nullopt;
 }
 
+// The key a client presented: "Authorization: Bearer <key>", or (browsers cannot set headers on a
+// WebSocket) a subprotocol "bearer.<key>" offered beside socsim.json.v1 / socsim.binary.v1.
+std::string presented_key(const http::request<http::string_body>& req) {
+  if (auto t = bearer_token(std::string(req[http::field::authorization]))) return "Bearer " + *t;
+  for (const std::string& p : offered_protocols(std::string(req[http::field::sec_websocket_protocol])))
+    if (p.rfind("bearer.", 0) == 0) return "Bearer " + p.substr(7);
+  return {};
+}
+
 class Session : public std::enable_shared_from_this<Session> {
  public:
-  Session(tcp::socket socket, Shared& shared) : ws_(std::move(socket)), shared_(shared) {}
+  Session(tcp::socket socket, Shared& shared, std::string peer)
+      : ws_(std::move(socket)), shared_(shared), peer_(std::move(peer)) {
+    ++shared_.per_address[peer_];
+  }
+  ~Session() {
+    auto it = shared_.per_address.find(peer_);
+    if (it != shared_.per_address.end() && --it->second == 0) shared_.per_address.erase(it);
+  }
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
 
   void start() {
+    // The whole upgrade request must arrive within the handshake deadline.
+    beast::get_lowest_layer(ws_).expires_after(shared_.options.handshake_timeout);
     http::async_read(
         ws_.next_layer(), buffer_, request_,
         [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_request(ec); });
@@ -149,12 +175,31 @@ class Session : public std::enable_shared_from_this<Session> {
     res->body() = error.to_problem(target.substr(0, target.find('?')))
                       .dump(-1, ' ', false, Json::error_handler_t::replace);
     res->prepare_payload();
+    res->keep_alive(false);
+    beast::get_lowest_layer(ws_).expires_after(shared_.options.handshake_timeout);
     http::async_write(ws_.next_layer(), *res,
                       [self = shared_from_this(), res](beast::error_code, std::size_t) { self->finish(); });
   }
 
+  // Server-side timeouts of the upgraded socket: the handshake's own deadline, pings when idle.
+  void upgrade_timeouts() {
+    beast::get_lowest_layer(ws_).expires_never();
+    auto timeouts = websocket::stream_base::timeout::suggested(beast::role_type::server);
+    timeouts.handshake_timeout = shared_.options.handshake_timeout;
+    ws_.set_option(timeouts);
+  }
+
   void on_request(beast::error_code ec) {
     if (ec) return finish();
+    if (const auto& policy = shared_.options.policy) {
+      const std::string host(request_[http::field::host]);
+      if (auto e = policy->check_host(host)) return refuse(*e);
+      if (auto e = policy->check_origin(std::string(request_[http::field::origin]), host,
+                                        shared_.options.http_port))
+        return refuse(*e);
+    }
+    if (const auto& keys = shared_.options.keys; keys && keys->enabled())
+      author_ = keys->authenticate(presented_key(request_)).value_or("anonymous");
     const std::string target(request_.target());
     const std::string path = target.substr(0, target.find('?'));
     if (path == "/ws" || path == "/ws/catalogue")
@@ -166,7 +211,7 @@ class Session : public std::enable_shared_from_this<Session> {
     if (!websocket::is_upgrade(request_) || topic_.empty())
       return refuse(
           Error(ErrorCode::kNotFound, "WebSocket endpoints: /ws/catalogue, /ws/jobs, /ws/simulations/{id}"));
-    ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
+    upgrade_timeouts();
     ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
   }
 
@@ -211,7 +256,7 @@ class Session : public std::enable_shared_from_this<Session> {
       return refuse(lease.error());
     }
     lease_ = std::move(*lease);
-    ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
+    upgrade_timeouts();
     ws_.set_option(websocket::stream_base::decorator([protocol](websocket::response_type& res) {
       res.set(http::field::server, "socsim");
       if (!protocol.empty()) res.set(http::field::sec_websocket_protocol, protocol);
@@ -250,8 +295,14 @@ class Session : public std::enable_shared_from_this<Session> {
   // answered to this viewer only.
   void on_command(const std::string& text) {
     auto command = parse_json_untrusted(text);
-    Result<Json> done =
-        command ? simulation_->control(*command) : Result<Json>(tl::unexpected(command.error()));
+    Result<Json> done = fail(ErrorCode::kForbidden, "simulation '" + simulation_->id() +
+                                                        "' was started by another author; its viewers may "
+                                                        "watch but not control it");
+    const auto& keys = shared_.options.keys;
+    if (!command)
+      done = tl::unexpected(command.error());
+    else if (!keys || may_act_for(*keys, author_, simulation_->info().author))
+      done = simulation_->control(*command);
     if (done) return;
     Json problem = done.error().to_problem("/ws/simulations/" + simulation_->id());
     problem["type"] = "error";
@@ -299,8 +350,10 @@ class Session : public std::enable_shared_from_this<Session> {
     shared_.sessions.erase(shared_from_this());
   }
 
-  websocket::stream<tcp::socket> ws_;
+  websocket::stream<beast::tcp_stream> ws_;
   Shared& shared_;
+  std::string peer_;
+  std::string author_ = "anonymous";  // whose key the handshake presented
   beast::flat_buffer buffer_;
   beast::flat_buffer in_;
   http::request<http::string_body> request_;
@@ -338,10 +391,20 @@ struct WsServer::Impl {
     acceptor.async_accept([this](beast::error_code ec, tcp::socket socket) {
       if (ec) {
         if (ec == asio::error::operation_aborted) return;
-      } else if (shared.sessions.size() < shared.options.max_clients) {
-        auto s = std::make_shared<Session>(std::move(socket), shared);
-        shared.sessions.insert(s);
-        s->start();
+      } else {
+        beast::error_code e2;
+        const auto endpoint = socket.remote_endpoint(e2);
+        const std::string peer = e2 ? std::string() : endpoint.address().to_string();
+        const auto it = shared.per_address.find(peer);
+        const std::size_t from_peer = it == shared.per_address.end() ? 0 : it->second;
+        if (!e2 && shared.sessions.size() < shared.options.max_clients &&
+            from_peer < shared.options.max_clients_per_address) {
+          auto s = std::make_shared<Session>(std::move(socket), shared, peer);
+          shared.sessions.insert(s);
+          s->start();
+        } else {
+          ++shared.refused;  // the socket closes here; the client may retry
+        }
       }
       accept();
     });
@@ -351,10 +414,14 @@ struct WsServer::Impl {
 WsServer::WsServer(WsOptions options, EventHub& events, SimulationSessions* simulations)
     : impl_(std::make_unique<Impl>(std::move(options), events, simulations)) {}
 
-WsServer::WsServer(WsOptions options, Services& services)
+WsServer::WsServer(WsOptions options, Services& services, int http_port)
     : WsServer(
           [&] {
             options.max_queued_simulation_frames = services.config.viewer_queue;
+            options.max_clients_per_address = services.config.max_connections_per_client;
+            options.policy = std::make_shared<AccessPolicy>(services.config);
+            options.keys = std::make_shared<KeyRing>(services.config.api_keys);
+            options.http_port = http_port > 0 ? http_port : services.config.port;
             return std::move(options);
           }(),
           services.events, services.simulations.get()) {}
@@ -386,6 +453,7 @@ WsStats WsServer::stats() {
   asio::post(impl_->shared.io, [this, &p] {
     WsStats st;
     st.sessions = impl_->shared.sessions.size();
+    st.refused = impl_->shared.refused;
     for (const auto& s : impl_->shared.sessions) {
       st.frames_dropped += s->dropped();
       st.frames_queued += s->queued();

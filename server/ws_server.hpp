@@ -4,6 +4,7 @@
 // text frames; /ws/simulations/{id} streams a live simulation's frames (JSON, or binary with the
 // subprotocol socsim.binary.v1 or ?format=binary) and takes control commands. A slow client loses
 // its oldest queued frames; it never slows the publisher.
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -12,19 +13,30 @@
 
 namespace socsim::server {
 
+class AccessPolicy;
+class KeyRing;
 class SimulationSessions;
 struct Services;
 
 struct WsOptions {
   std::string host = "127.0.0.1";
   int port = 8081;
-  std::size_t max_clients = 256;
+  std::size_t max_clients = 4096;
   std::size_t max_queued_frames = 64;
-  std::size_t max_queued_simulation_frames = 8;  // per simulation viewer
+  std::size_t max_queued_simulation_frames = 8;        // per simulation viewer
+  std::chrono::milliseconds handshake_timeout{10000};  // connect to upgraded
+  std::size_t max_clients_per_address = 64;
+  // From the daemon's configuration (the Services constructor sets them): Host/Origin checks
+  // (pages of `http_port` are same-origin) and the keys that decide who may control a simulation.
+  // Null: any origin, and control is open to every viewer.
+  std::shared_ptr<const AccessPolicy> policy{};
+  std::shared_ptr<const KeyRing> keys{};
+  int http_port = 0;
 };
 
 struct WsStats {
   std::size_t sessions = 0;
+  std::size_t refused = 0;  // connections over a limit, closed at once
   std::size_t simulation_viewers = 0;
   std::size_t frames_dropped = 0;  // oldest frames dropped for clients that did not keep up
   std::size_t frames_queued = 0;
@@ -34,8 +46,9 @@ class WsServer {
  public:
   // `simulations` may be null: /ws/simulations/{id} then answers 404.
   WsServer(WsOptions options, EventHub& events, SimulationSessions* simulations = nullptr);
-  // Events and simulations of a daemon; the viewer queue length from its configuration.
-  WsServer(WsOptions options, Services& services);
+  // Events and simulations of a daemon; the viewer queue length, cross-site policy and keys from
+  // its configuration; pages served on `http_port` may open sockets.
+  WsServer(WsOptions options, Services& services, int http_port = 0);
   ~WsServer();
   WsServer(const WsServer&) = delete;
   WsServer& operator=(const WsServer&) = delete;

@@ -1,36 +1,10 @@
 // socsim catalogue viewer: browse, search and open scenario cards; new cards appear live
-// through the WebSocket named by GET /api/v1/info. Plain browser JavaScript, no build step.
-'use strict';
+// through the WebSocket named by GET /api/v1/info. Plain ES module, no build step.
+import { $, api, el, getJson, toast, serverInfo, setLive, drawPlan } from './common.js';
 
-const api = '/api/v1';
 // `listing` counts listings (first pages): a page that arrives after a newer listing began (a search
 // submitted while the first page loads) is dropped instead of being appended to the new list.
 const state = { cursor: null, selected: null, query: {}, listing: 0 };
-const $ = (id) => document.getElementById(id);
-
-function el(tag, attrs = {}, ...children) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) {
-    if (k === 'class') e.className = v; else if (k.startsWith('on')) e.addEventListener(k.slice(2), v); else e.setAttribute(k, v);
-  }
-  for (const c of children) e.append(c instanceof Node ? c : document.createTextNode(String(c)));
-  return e;
-}
-
-async function getJson(url) {
-  const r = await fetch(url);
-  const body = await r.json();
-  if (!r.ok) throw new Error(body.detail || body.title || r.statusText);
-  return body;
-}
-
-function toast(text) {
-  const t = $('toast');
-  t.textContent = text;
-  t.hidden = false;
-  clearTimeout(toast.timer);
-  toast.timer = setTimeout(() => { t.hidden = true; }, 3000);
-}
 
 function cardItem(card, fresh = false) {
   const tags = el('div', { class: 'tags' }, ...card.tags.map((t) => el('span', {}, t)));
@@ -46,7 +20,7 @@ function listUrl() {
   const p = new URLSearchParams({ page_size: '20' });
   for (const [k, v] of Object.entries(state.query)) if (v) p.set(k, v);
   if (state.cursor) p.set('cursor', state.cursor);
-  return `${api}/cards?${p}`;
+  return `/cards?${p}`;
 }
 
 async function loadPage(reset) {
@@ -70,7 +44,7 @@ async function openCard(id) {
   for (const li of $('cards').children) li.classList.toggle('selected', li.dataset.id === id);
   const d = $('detail');
   try {
-    const c = await getJson(`${api}/cards/${encodeURIComponent(id)}`);
+    const c = await getJson(`/cards/${encodeURIComponent(id)}`);
     const rows = [['prompt', c.prompt || '—'], ['domain', c.domain || '—'], ['seed', c.seed],
       ['generator', c.generator.model ? `${c.generator.name} (${c.generator.model})` : c.generator.name],
       ['author', c.author], ['version', c.version], ['created', c.created_at], ['content hash', c.content_hash]];
@@ -97,15 +71,15 @@ async function openCard(id) {
 }
 
 function worldCanvas(world) {
-  const canvas = el('canvas', { width: '720', height: '420', class: 'world', 'aria-label': `floor plan ${world.name || ''}` });
-  window.socsimWorld.drawWorld(canvas, world);
+  const canvas = el('canvas', { width: '720', height: '420', class: 'plan world', 'aria-label': `floor plan ${world.name || ''}` });
+  drawPlan(canvas, world);
   return canvas;
 }
 
 function connectLive(url) {
   const ws = new WebSocket(url.replace(/\/ws$/, '/ws/catalogue'));
-  ws.onopen = () => { $('live').className = 'badge on'; };
-  ws.onclose = () => { $('live').className = 'badge off'; setTimeout(() => connectLive(url), 3000); };
+  ws.onopen = () => setLive(true);
+  ws.onclose = () => { setLive(false); setTimeout(() => connectLive(url), 3000); };
   ws.onmessage = (m) => {
     const ev = JSON.parse(m.data);
     if (ev.type === 'card.created' && !Object.values(state.query).some(Boolean)) {
@@ -125,14 +99,8 @@ async function main() {
     loadPage(true);
   });
   $('more').addEventListener('click', () => loadPage(false));
-  try {
-    const info = await getJson(`${api}/info`);
-    const gens = info.generators.filter((g) => g.available).map((g) => g.name).join(', ');
-    $('server-info').textContent = `v${info.version} · generators: ${gens}`;
-    connectLive(info.websocket_url);
-  } catch (e) {
-    $('server-info').textContent = 'server not reachable';
-  }
+  setLive(false);
+  serverInfo.then((info) => connectLive(info.websocket_url), () => {});  // the header says when the server is not reachable
   await loadPage(true);
   const m = location.hash.match(/card=(crd_[0-9a-z]+)/);
   if (m) openCard(m[1]);

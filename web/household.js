@@ -1,12 +1,9 @@
 // Household viewer: pick a stored household or generate one (a job, with its progress), draw the
 // house (rooms, walls, doors, receptacles) with every object where it is at the chosen time
 // (GET …/objects?t=), the residents' schedules as a timeline, and the §V-A statistics as plots.
-// Plain browser JavaScript, no build step.
-'use strict';
+// Plain ES module, no build step.
+import { $, getJson, postJson, jobText, waitForJob, setStatus, showLegend, COLOURS, drawPlan, planFromHousehold, fromHouse } from './common.js';
 
-const api = '/api/v1';
-const $ = (id) => document.getElementById(id);
-const ROOM_COLOURS = { Kitchen: '#f8efd9', LivingRoom: '#e6eef6', Bedroom: '#f2e8f1', Bathroom: '#dff3f3' };
 const ROLE_GROUPS = {
   sleep: ['sleep', 'nap'],
   away: ['leave_home'],
@@ -16,21 +13,11 @@ const ROLE_GROUPS = {
   work: ['work', 'study'],
   leisure: ['leisure', 'hobby', 'exercise', 'social_call', 'social', 'prayer'],
 };
-const GROUP_COLOURS = { sleep: '#5c6bc0', away: '#bdbdbd', meal: '#f4a261', hygiene: '#4fc3f7', chores: '#81c784', work: '#e57373', leisure: '#ba68c8' };
-const state = { id: null, household: null, objects: null, t: 0, transform: null, drawn: {}, request: 0 };
+const GROUP_COLOURS = COLOURS.activity;
+// `plan` is the household's house converted to the plan shape on arrival (common.js); objects
+// carry `at`, their place in plan coordinates.
+const state = { id: null, household: null, plan: null, objects: null, t: 0, transform: null, drawn: {}, request: 0 };
 window.household = state;  // for tests and the console
-
-function setStatus(text) { $('status').textContent = text; }
-
-async function getJson(path, init) {
-  const r = await fetch(api + path, init);
-  const body = await r.json();
-  if (!r.ok) {
-    const fields = (body.errors || []).map((e) => `${e.pointer || e.parameter}: ${e.message}`).join('; ');
-    throw new Error((body.detail || body.title || `HTTP ${r.status}`) + (fields ? ` (${fields})` : ''));
-  }
-  return body;
-}
 
 function groupOf(role) {
   for (const [g, roles] of Object.entries(ROLE_GROUPS)) if (roles.includes(role)) return g;
@@ -53,70 +40,9 @@ function clock(t, firstDay) {
 
 // ---- floor plan ----
 
-function planTransform(house, width, height, margin = 16) {
-  let minX = Infinity, minZ = Infinity, maxX = -Infinity, maxZ = -Infinity;
-  for (const r of house.rooms) for (const p of r.floor) {
-    minX = Math.min(minX, p.x); maxX = Math.max(maxX, p.x); minZ = Math.min(minZ, p.z); maxZ = Math.max(maxZ, p.z);
-  }
-  const scale = Math.min((width - 2 * margin) / Math.max(maxX - minX, 1e-6), (height - 2 * margin) / Math.max(maxZ - minZ, 1e-6));
-  const ox = margin + (width - 2 * margin - (maxX - minX) * scale) / 2 - minX * scale;
-  const oy = margin + (height - 2 * margin - (maxZ - minZ) * scale) / 2 - minZ * scale;
-  return { scale, px: (p) => [ox + p.x * scale, oy + p.z * scale] };
-}
-
-function drawPlan() {
-  const h = state.household;
-  if (!h) return;
-  const canvas = $('plan'), ctx = canvas.getContext('2d');
-  const t = planTransform(h.house, canvas.width, canvas.height);
-  state.transform = t;
-  ctx.clearRect(0, 0, canvas.width, canvas.height);
-  ctx.font = '12px system-ui, sans-serif';
-  for (const r of h.house.rooms) {
-    ctx.beginPath();
-    r.floor.forEach((p, i) => { const [x, y] = t.px(p); i ? ctx.lineTo(x, y) : ctx.moveTo(x, y); });
-    ctx.closePath();
-    ctx.fillStyle = ROOM_COLOURS[r.type] || '#f1f3f5';
-    ctx.fill();
-  }
-  ctx.strokeStyle = '#212529';
-  ctx.lineWidth = Math.max(2, 0.08 * t.scale);
-  ctx.lineCap = 'round';
-  for (const w of h.house.walls) {
-    const [ax, ay] = t.px(w.a), [bx, by] = t.px(w.b);
-    ctx.beginPath(); ctx.moveTo(ax, ay); ctx.lineTo(bx, by); ctx.stroke();
-  }
-  for (const d of h.house.doors) {
-    if (!d.center) continue;
-    const [cx, cy] = t.px(d.center);
-    const half = (d.width || 0.9) * t.scale / 2;
-    ctx.strokeStyle = '#f08c00';
-    ctx.lineWidth = Math.max(3, 0.1 * t.scale);
-    ctx.beginPath();
-    ctx.moveTo(cx - d.direction.x * half, cy - d.direction.z * half);
-    ctx.lineTo(cx + d.direction.x * half, cy + d.direction.z * half);
-    ctx.stroke();
-  }
-  for (const r of h.house.receptacles) {
-    const [x, y] = t.px(r.position);
-    const yaw = (r.yaw || 0) * Math.PI / 180;
-    ctx.save();
-    ctx.translate(x, y);
-    ctx.rotate(-yaw);
-    ctx.fillStyle = '#d9d2c5';
-    ctx.strokeStyle = '#8d8577';
-    ctx.lineWidth = 1;
-    ctx.fillRect(-r.size.x * t.scale / 2, -r.size.z * t.scale / 2, r.size.x * t.scale, r.size.z * t.scale);
-    ctx.strokeRect(-r.size.x * t.scale / 2, -r.size.z * t.scale / 2, r.size.x * t.scale, r.size.z * t.scale);
-    ctx.restore();
-  }
-  ctx.fillStyle = '#495057';
-  for (const r of h.house.rooms) {
-    const cx = r.floor.reduce((s, p) => s + p.x, 0) / r.floor.length, cz = r.floor.reduce((s, p) => s + p.z, 0) / r.floor.length;
-    const [x, y] = t.px({ x: cx, z: cz });
-    const label = r.type + (r.id ? ` ${r.id.replace(/^room\|/, '#')}` : '');
-    ctx.fillText(label, x - ctx.measureText(label).width / 2, y);
-  }
+function drawHouse() {
+  if (!state.plan) return;
+  state.transform = drawPlan($('plan'), state.plan, { entityLabels: false });
   drawObjects();
 }
 
@@ -125,7 +51,7 @@ function drawObjects() {
   if (!state.objects || !t) return;
   const drawn = {};
   for (const o of state.objects.objects) {
-    const [x, y] = t.px(o.position);
+    const [x, y] = t.toPx(o.at);
     ctx.beginPath();
     ctx.arc(x, y, 4.5, 0, 2 * Math.PI);
     ctx.fillStyle = hashColour(o.type);
@@ -148,8 +74,8 @@ async function showTime(t) {
   const ticket = ++state.request;
   const objects = await getJson(`/households/${state.id}/objects?t=${t}`);
   if (ticket !== state.request) return;  // a later slider position is already on its way
-  state.objects = objects;
-  drawPlan();
+  state.objects = { ...objects, objects: objects.objects.map((o) => ({ ...o, at: fromHouse(o.position.x, o.position.z) })) };
+  drawHouse();
   const events = await getJson(`/households/${state.id}/events?from=${Math.max(0, t - 3600)}&to=${Math.max(1, t)}&page_size=100`);
   if (ticket !== state.request) return;
   const lines = [];
@@ -186,7 +112,7 @@ function drawTimeline() {
     }
   });
   const x = left + state.t * scale;
-  ctx.fillStyle = '#d6336c';
+  ctx.fillStyle = COLOURS.mark.now;
   ctx.fillRect(x - 1, top - 6, 2, rows * rowH + 8);
   canvas.dataset.rows = String(rows);
   canvas.onclick = (ev) => {
@@ -200,8 +126,7 @@ function drawTimeline() {
 }
 
 function drawLegend() {
-  $('legend').innerHTML = Object.entries(GROUP_COLOURS)
-    .map(([g, c]) => `<span><i class="swatch" style="background:${c}"></i>${g}</span>`).join('');
+  showLegend($('legend'), Object.entries(GROUP_COLOURS));
 }
 
 // ---- statistics ----
@@ -241,6 +166,7 @@ async function openHousehold(id) {
   const h = await getJson(`/households/${id}`);
   state.id = id;
   state.household = h;
+  state.plan = planFromHousehold(h.house);
   const url = new URL(location.href);
   url.searchParams.set('id', id);
   history.replaceState(null, '', url);
@@ -280,23 +206,6 @@ async function listHouseholds() {
   }
 }
 
-async function waitForJob(id) {
-  const bar = $('progress');
-  bar.hidden = false;
-  try {
-    for (;;) {
-      const job = await getJson(`/jobs/${id}`);
-      bar.value = job.progress || 0;
-      if (job.status === 'succeeded') return job;
-      if (job.status === 'failed' || job.status === 'cancelled') throw new Error(job.error?.detail || job.status);
-      setStatus(`${job.status}: ${job.message || ''} ${Math.round((job.progress || 0) * 100)} %`);
-      await new Promise((r) => setTimeout(r, 300));
-    }
-  } finally {
-    bar.hidden = true;
-  }
-}
-
 async function create(ev) {
   ev.preventDefault();
   const body = {
@@ -304,8 +213,8 @@ async function create(ev) {
     start_weekday: $('weekday').value, seed: Number($('seed').value),
   };
   setStatus('queued…');
-  const job = await getJson('/households', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) });
-  const done = await waitForJob(job.id);
+  const job = await postJson('/households', body);
+  const done = await waitForJob(job.id, { bar: $('progress'), onUpdate: (j) => setStatus(jobText(j)) });
   await listHouseholds();
   await openHousehold(done.result.household_id);
 }

@@ -1,20 +1,12 @@
 // Navigation benchmark viewer: runs a benchmark job (or opens one from ?job=ID), shows the table
 // in the shape of paper 000 Table I, and replays one episode on a canvas — the house, the grid of
 // reachable points, the agent's path step by step, the receptacles visited and the target.
-const api = '/api/v1';
-const $ = (id) => document.getElementById(id);
-const roomColours = { Kitchen: '#fff4d6', LivingRoom: '#e9f3e4', Bedroom: '#e6ecfa', Bathroom: '#e3f5f7' };
-const state = { job: null, result: null, episode: null, method: null, step: 0, timer: null };
+// Plain ES module, no build step.
+import { $, getJson, postJson, jobText, waitForJob, setStatus, showLegend, COLOURS, drawPlan, planFromNavbench, fromHouse } from './common.js';
+
+// `plan` is the episode's house converted to the plan shape on arrival (common.js).
+const state = { job: null, result: null, episode: null, plan: null, method: null, step: 0, timer: null };
 window.navbench = state;  // for tests and the console
-
-function setStatus(text) { $('status').textContent = text; }
-
-async function getJson(path) {
-  const r = await fetch(api + path);
-  const body = await r.json();
-  if (!r.ok) throw new Error(body.detail || body.title || `HTTP ${r.status}`);
-  return body;
-}
 
 function renderTable(result) {
   // Table I's order (JSON objects come back sorted by key).
@@ -24,7 +16,7 @@ function renderTable(result) {
   const rows = entries.map(([key, m]) =>
     `<tr><td>${key === 'Uniform+Greedy' ? 'Greedy (Uniform)' : key}</td><td>${m.EL.toFixed(1)}</td><td>${m.SR.toFixed(2)}</td><td>${m.SPL.toFixed(2)}</td></tr>`);
   $('table').innerHTML = `<p>${result.split} split: ${result.scenes} scenes, ${result.tasks} tasks, seed ${result.seed}</p>` +
-    `<table class="scores"><thead><tr><th>Method</th><th>EL ↓</th><th>SR (%) ↑</th><th>SPL ↑</th></tr></thead>` +
+    `<table class="data"><thead><tr><th>Method</th><th>EL ↓</th><th>SR (%) ↑</th><th>SPL ↑</th></tr></thead>` +
     `<tbody>${rows.join('')}</tbody></table>`;
   const list = $('episodes');
   list.innerHTML = '';
@@ -38,20 +30,10 @@ function renderTable(result) {
   }
 }
 
-async function waitForJob(id) {
-  for (;;) {
-    const job = await getJson(`/jobs/${id}`);
-    if (job.status === 'succeeded') return job;
-    if (job.status === 'failed' || job.status === 'cancelled') throw new Error(job.error?.detail || job.status);
-    setStatus(`${job.status}: ${job.message || ''} ${Math.round((job.progress || 0) * 100)} %`);
-    await new Promise((r) => setTimeout(r, 500));
-  }
-}
-
 async function openJob(id, n) {
   state.job = id;
   setStatus('loading the benchmark…');
-  const job = await waitForJob(id);
+  const job = await waitForJob(id, { onUpdate: (j) => setStatus(jobText(j)) });
   state.result = job.result;
   renderTable(job.result);
   setStatus(`benchmark ${id}: ${job.result.tasks} tasks`);
@@ -63,6 +45,7 @@ async function openEpisode(n) {
   $('replay').dataset.ready = '0';
   const episode = await getJson(`/navbench/${state.job}/episodes/${n}`);
   state.episode = episode;
+  state.plan = planFromNavbench(episode.house);
   for (const li of $('episodes').children) li.classList.toggle('current', Number(li.dataset.n) === n);
   const select = $('method');
   const keep = state.method;
@@ -109,83 +92,61 @@ function draw() {
   const m = e.methods[state.method];
   const canvas = $('replay');
   const g = e.house.grid;
-  const w = g.width * g.cell, d = g.depth * g.cell;
-  const pad = 20;
-  const scale = Math.min((canvas.width - 2 * pad) / w, (canvas.height - 2 * pad) / d);
-  const X = (x) => pad + (x - g.origin[0]) * scale;
-  const Z = (z) => pad + (z - g.origin[1]) * scale;
-  const ctx = canvas.getContext('2d');
-  ctx.clearRect(0, 0, canvas.width, canvas.height);
-  ctx.fillStyle = '#fafafa';
-  ctx.fillRect(0, 0, canvas.width, canvas.height);
-  for (const room of e.house.rooms) {
-    ctx.beginPath();
-    room.floor.forEach(([x, z], i) => (i ? ctx.lineTo(X(x), Z(z)) : ctx.moveTo(X(x), Z(z))));
-    ctx.closePath();
-    ctx.fillStyle = roomColours[room.type] || '#eee';
-    ctx.fill();
-    const cx = room.floor.reduce((s, p) => s + p[0], 0) / room.floor.length;
-    const cz = room.floor.reduce((s, p) => s + p[1], 0) / room.floor.length;
-    ctx.fillStyle = '#999';
-    ctx.font = '12px sans-serif';
-    ctx.fillText(room.type, X(cx) - 24, Z(cz));
-  }
-  // Reachable points of the grid.
-  ctx.fillStyle = '#c8c8c8';
-  for (let c = 0; c < g.free.length; c++) {
-    if (g.free[c] !== '1') continue;
-    const x = g.origin[0] + ((c % g.width) + 0.5) * g.cell, z = g.origin[1] + (Math.floor(c / g.width) + 0.5) * g.cell;
-    ctx.fillRect(X(x) - 1, Z(z) - 1, 2, 2);
-  }
-  ctx.strokeStyle = '#222';
-  ctx.lineWidth = 3;
-  for (const [x0, z0, x1, z1] of e.house.walls) {
-    ctx.beginPath();
-    ctx.moveTo(X(x0), Z(z0));
-    ctx.lineTo(X(x1), Z(z1));
-    ctx.stroke();
-  }
   const reached = reachedBy(state.step);
-  for (const r of e.house.receptacles) {
-    const order = reached.indexOf(r.id);
-    ctx.fillStyle = r.id === e.target.receptacle ? '#d33' : order >= 0 ? '#2a6' : '#bbb';
-    ctx.fillRect(X(r.x - r.size_x / 2), Z(r.z - r.size_z / 2), r.size_x * scale, r.size_z * scale);
-    if (order >= 0) {
-      ctx.fillStyle = '#000';
-      ctx.font = 'bold 13px sans-serif';
-      ctx.fillText(String(order + 1), X(r.x) - 4, Z(r.z) + 4);
-    }
+  const mark = COLOURS.mark;
+  const t = drawPlan(canvas, state.plan, {
+    entityLabels: false,
+    entityFill: (r) => (r.name === e.target.receptacle ? mark.target : reached.includes(r.name) ? mark.visited : undefined),
+    underlay: (ctx, t) => {  // the reachable points of the grid
+      ctx.fillStyle = mark.free;
+      for (let c = 0; c < g.free.length; c++) {
+        if (g.free[c] !== '1') continue;
+        const [x, y] = t.toPx(fromHouse(g.origin[0] + ((c % g.width) + 0.5) * g.cell, g.origin[1] + (Math.floor(c / g.width) + 0.5) * g.cell));
+        ctx.fillRect(x - 1, y - 1, 2, 2);
+      }
+    },
+  });
+  const at = (x, z) => t.toPx(fromHouse(x, z));
+  const ctx = canvas.getContext('2d');
+  ctx.fillStyle = '#000';
+  ctx.font = 'bold 13px system-ui, sans-serif';
+  for (const r of state.plan.entities) {
+    const order = reached.indexOf(r.name);
+    if (order < 0) continue;
+    const [x, y] = t.toPx(r.pose);
+    ctx.fillText(String(order + 1), x - 4, y + 4);
   }
-  // The path up to the current step, then the agent as an arrow.
-  ctx.strokeStyle = '#36c';
+  // The path up to the current step, then the agent as an arrow (headings +x, +z, -x, -z: on screen
+  // z points down, as in the plan).
+  ctx.strokeStyle = mark.path;
   ctx.lineWidth = 2;
   ctx.beginPath();
   for (let i = 0; i <= state.step; i++) {
-    const [x, z] = m.path[i];
-    i ? ctx.lineTo(X(x), Z(z)) : ctx.moveTo(X(x), Z(z));
+    const [x, y] = at(m.path[i][0], m.path[i][1]);
+    i ? ctx.lineTo(x, y) : ctx.moveTo(x, y);
   }
   ctx.stroke();
-  const [sx, sz] = m.path[0];
-  ctx.fillStyle = '#36c';
+  const [sx, sy] = at(m.path[0][0], m.path[0][1]);
+  ctx.fillStyle = mark.path;
   ctx.beginPath();
-  ctx.arc(X(sx), Z(sz), 4, 0, 2 * Math.PI);
+  ctx.arc(sx, sy, 4, 0, 2 * Math.PI);
   ctx.fill();
-  const [ax, az, heading] = m.path[state.step];
-  const dir = [[1, 0], [0, 1], [-1, 0], [0, -1]][heading];
-  const tip = [X(ax) + dir[0] * 10, Z(az) + dir[1] * 10];
-  ctx.fillStyle = '#036';
+  const [ax, ay] = at(m.path[state.step][0], m.path[state.step][1]);
+  const dir = [[1, 0], [0, 1], [-1, 0], [0, -1]][m.path[state.step][2]];
+  ctx.fillStyle = mark.agent;
   ctx.beginPath();
-  ctx.moveTo(tip[0], tip[1]);
-  ctx.lineTo(X(ax) - dir[1] * 6 - dir[0] * 4, Z(az) + dir[0] * 6 - dir[1] * 4);
-  ctx.lineTo(X(ax) + dir[1] * 6 - dir[0] * 4, Z(az) - dir[0] * 6 - dir[1] * 4);
+  ctx.moveTo(ax + dir[0] * 10, ay + dir[1] * 10);
+  ctx.lineTo(ax - dir[1] * 6 - dir[0] * 4, ay + dir[0] * 6 - dir[1] * 4);
+  ctx.lineTo(ax + dir[1] * 6 - dir[0] * 4, ay - dir[0] * 6 - dir[1] * 4);
   ctx.closePath();
   ctx.fill();
   // Target marker.
-  ctx.strokeStyle = '#d33';
+  const [tx, ty] = at(e.target.x, e.target.z);
+  ctx.strokeStyle = mark.target;
   ctx.lineWidth = 2;
-  ctx.beginPath();
-  ctx.arc(X(e.target.x), Z(e.target.z), 1.5 * scale, 0, 2 * Math.PI);
   ctx.setLineDash([4, 4]);
+  ctx.beginPath();
+  ctx.arc(tx, ty, 1.5 * t.scale, 0, 2 * Math.PI);
   ctx.stroke();
   ctx.setLineDash([]);
 
@@ -223,18 +184,15 @@ $('method').addEventListener('change', (ev) => { state.method = ev.target.value;
 $('run').addEventListener('submit', async (ev) => {
   ev.preventDefault();
   try {
-    const r = await fetch(`${api}/navbench`, {
-      method: 'POST', headers: { 'Content-Type': 'application/json' },
-      body: JSON.stringify({ split: $('split').value, scenes: Number($('scenes').value), seed: Number($('seed').value) }),
-    });
-    const body = await r.json();
-    if (r.status !== 202) throw new Error(body.detail || `HTTP ${r.status}`);
-    await openJob(body.id, 0);
+    const job = await postJson('/navbench', { split: $('split').value, scenes: Number($('scenes').value), seed: Number($('seed').value) });
+    await openJob(job.id, 0);
   } catch (err) {
     setStatus(`error: ${err.message}`);
   }
 });
 
+showLegend($('legend'), [["target's receptacle", COLOURS.mark.target], ['visited', COLOURS.mark.visited],
+  ['agent path', COLOURS.mark.path], ['other receptacles', COLOURS.plan.furniture]]);
 const params = new URLSearchParams(location.search);
 if (params.get('job')) {
   openJob(params.get('job'), Number(params.get('n') ?? 0)).catch((err) => setStatus(`error: ${err.message}`));

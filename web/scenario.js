@@ -1,16 +1,11 @@
 // socsim text-to-scenario page: prompt → job (progress) → scenario card → a live session of the
 // card's recorded trajectories streamed over WebSocket, drawn over the world on a Canvas 2D with
 // interpolation between frames and trails; play/pause/speed/seek go over the socket. Plain
-// browser JavaScript, no build step.
-'use strict';
+// ES module, no build step.
+import { $, api, el, getJson, postJson, jobText, waitForJob, toast, serverInfo, showLegend, COLOURS, drawPlan } from './common.js';
 
-const api = '/api/v1';
-const $ = (id) => document.getElementById(id);
-const STATE_COLOURS = {
-  walking: '#1c7ed6', standing: '#868e96', queuing: '#e8590c', sitting: '#2b8a3e', interacting: '#ae3ec9',
-  evacuating: '#e03131', waiting: '#f59f00', running: '#c2255c', exited: '#ced4da',
-};
-const ROLE_PALETTE = ['#1c7ed6', '#e8590c', '#2b8a3e', '#ae3ec9', '#e03131', '#0c8599', '#f59f00', '#5f3dc4', '#495057', '#c2255c'];
+const STATE_COLOURS = COLOURS.state;
+const ROLE_PALETTE = COLOURS.role;
 const TRAIL = 24;  // frames of history drawn per agent
 const MAX_TRAILED = 3000;  // above this many people, no trails or heading ticks (keeps 10k agents smooth)
 
@@ -19,36 +14,6 @@ const view = {
   prev: null, curr: null, prevIndex: new Map(), currIndex: new Map(), states: Object.keys(STATE_COLOURS), currAt: 0, interval: 0.1, t: 0, paused: false, trails: new Map(),
   roles: [], duration: 60, frames: 0, seeking: false,
 };
-
-function el(tag, attrs = {}, ...children) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) {
-    if (k === 'class') e.className = v; else if (k.startsWith('on')) e.addEventListener(k.slice(2), v); else e.setAttribute(k, v);
-  }
-  for (const c of children) e.append(c instanceof Node ? c : document.createTextNode(String(c)));
-  return e;
-}
-
-async function call(method, url, body) {
-  const r = await fetch(url, {
-    method, headers: body ? { 'Content-Type': 'application/json' } : {}, body: body ? JSON.stringify(body) : undefined,
-  });
-  const text = await r.text();
-  const json = text ? JSON.parse(text) : {};
-  if (!r.ok) {
-    const where = (json.errors || []).map((e) => `${e.pointer || e.parameter || ''}: ${e.message}`).join('\n');
-    throw new Error(`${json.title || r.statusText}: ${json.detail || ''}${where ? '\n' + where : ''}`);
-  }
-  return json;
-}
-
-function toast(text) {
-  const t = $('toast');
-  t.textContent = text;
-  t.hidden = false;
-  clearTimeout(toast.timer);
-  toast.timer = setTimeout(() => { t.hidden = true; }, 3000);
-}
 
 // ---------------------------------------------------------------- prompt → job → card
 async function submitPrompt(e) {
@@ -63,12 +28,9 @@ async function submitPrompt(e) {
     try { body.scene_graph = JSON.parse($('scene-graph').value); } catch (err) { $('error').textContent = `scene graph: ${err.message}`; return; }
   } else if (source !== 'prompt') body.domain = source;
   $('generate').disabled = true;
-  $('progress').hidden = false;
-  $('progress').value = 0;
   try {
-    const job = await call('POST', `${api}/scenarios`, body);
-    const done = await followJob(job.id);
-    if (done.status !== 'succeeded') throw new Error(done.error ? `${done.error.title}: ${done.error.detail}` : done.status);
+    const job = await postJson('/scenarios', body);
+    const done = await waitForJob(job.id, { bar: $('progress'), onUpdate: (j) => { $('job-status').textContent = jobText(j); } });
     await openCard(done.result.card_id);
     loadRecent();
   } catch (err) {
@@ -76,24 +38,13 @@ async function submitPrompt(e) {
     $('job-status').textContent = '';
   } finally {
     $('generate').disabled = false;
-    $('progress').hidden = true;
-  }
-}
-
-async function followJob(id) {
-  for (;;) {
-    const job = await call('GET', `${api}/jobs/${id}`);
-    $('progress').value = job.progress || 0;
-    $('job-status').textContent = `${job.status}: ${job.message || ''}`;
-    if (['succeeded', 'failed', 'cancelled'].includes(job.status)) return job;
-    await new Promise((r) => setTimeout(r, 250));
   }
 }
 
 // ---------------------------------------------------------------- card → session → stream
 async function openCard(id) {
   stopStream();
-  const card = await call('GET', `${api}/cards/${encodeURIComponent(id)}`);
+  const card = await getJson(`/cards/${encodeURIComponent(id)}`);
   view.card = card;
   history.replaceState(null, '', `#card=${id}`);
   $('card-title').textContent = card.title;
@@ -107,7 +58,7 @@ async function openCard(id) {
   prepareStage();
   showMetrics(card.metrics);
   if (!card.trajectory_log) { $('stream-status').textContent = 'this card has no trajectory log'; return; }
-  const session = await call('POST', `${api}/simulations`, { card_id: id, speed: Number($('speed').value) });
+  const session = await postJson('/simulations', { card_id: id, speed: Number($('speed').value) });
   connect(session);
 }
 
@@ -224,7 +175,7 @@ function prepareStage() {
   view.base.width = stage.width;
   view.base.height = stage.height;
   // Zone names only: entity labels would hide the people standing at them.
-  view.transform = window.socsimWorld.drawWorld(view.base, view.world || {}, { entityLabels: false });
+  view.transform = drawPlan(view.base, view.world || {}, { entityLabels: false });
 }
 
 function colourAt(f, i) {
@@ -235,7 +186,7 @@ function colourAt(f, i) {
 function legend() {
   const byRole = $('colour-by').value === 'role';
   const items = byRole ? view.roles.map((r, i) => [r, ROLE_PALETTE[i % ROLE_PALETTE.length]]) : Object.entries(STATE_COLOURS);
-  $('legend').replaceChildren(...items.map(([name, c]) => el('span', {}, el('i', { class: 'swatch', style: `background:${c}` }), name)));
+  showLegend($('legend'), items);
 }
 
 function draw() {
@@ -301,7 +252,7 @@ function showMetrics(m) {
     'mean_intimate_space_intrusions', 'mean_personal_space_intrusions', 'mean_time_not_moving', 'collisions'];
   const fmt = (v) => (v === null || v === undefined ? '—' : typeof v === 'number' && !Number.isInteger(v) ? v.toFixed(2) : String(v));
   const rows = [['all', m.summary], ...Object.entries(m.by_role || {})];
-  const table = el('table', { class: 'metrics' },
+  const table = el('table', { class: 'data' },
     el('tr', {}, el('th', {}, 'who'), ...cols.map((c) => el('th', {}, c.replace(/_/g, ' ')))),
     ...rows.map(([who, s]) => el('tr', {}, el('td', {}, who), ...cols.map((c) => el('td', {}, fmt(s[c]))))));
   $('metrics').replaceChildren(
@@ -320,7 +271,7 @@ function liveCounts() {
 // ---------------------------------------------------------------- lists
 async function loadRecent() {
   try {
-    const page = await call('GET', `${api}/cards?tag=scenario&page_size=10`);
+    const page = await getJson('/cards?tag=scenario&page_size=10');
     $('recent').replaceChildren(...page.items.map((c) => el('li', { 'data-id': c.id, onclick: () => openCard(c.id).catch((e) => toast(e.message)) },
       el('span', { class: 'title' }, c.title), ' ', el('span', { class: 'muted' }, c.domain || ''))));
   } catch (e) {
@@ -330,7 +281,7 @@ async function loadRecent() {
 
 async function loadWorlds() {
   try {
-    const page = await call('GET', `${api}/worlds?page_size=50`);
+    const page = await getJson('/worlds?page_size=50');
     for (const w of page.items) $('world-id').append(el('option', { value: w.id }, `${w.name} (${w.domain}, seed ${w.seed})`));
   } catch (e) { /* the list is optional */ }
 }
@@ -346,14 +297,11 @@ async function main() {
   $('share').addEventListener('click', (e) => { e.preventDefault(); navigator.clipboard?.writeText(location.href); toast('Link copied'); });
   legend();
   try {
-    const info = await call('GET', `${api}/info`);
+    const info = await serverInfo;
     view.wsBase = info.websocket_url;
     const llm = info.generators.find((g) => g.name === 'llm');
     if (!llm || !llm.available) $('generator').querySelector('option[value=llm]').disabled = true;
-    $('server-info').textContent = `v${info.version}`;
-  } catch (e) {
-    $('server-info').textContent = 'server not reachable';
-  }
+  } catch (e) { /* the header says the server is not reachable */ }
   loadWorlds();
   loadRecent();
   requestAnimationFrame(draw);

@@ -118,12 +118,6 @@ Result<Json> parse_json_untrusted(std::string_view text, int max_depth) {
                   {FieldError{*duplicate, "duplicate key", "", 0, 0}});
     }
     return j;
-  } catch (const Json::out_of_range& e) {
-    // A number beyond a double (1e400, a 400-digit integer): nlohmann refuses it while parsing.
-    const std::string at = where.value_pointer();
-    return fail(ErrorCode::kBadRequest,
-                "a number in the JSON is too large to represent" + (at.empty() ? "" : " (at " + at + ")"),
-                {FieldError{at, "number out of range", "", 0, 0}});
   } catch (const Json::parse_error& e) {
     const std::size_t pos = e.byte > 0 ? e.byte - 1 : 0;
     auto [line, col] = line_column(text, pos);
@@ -134,6 +128,23 @@ Result<Json> parse_json_untrusted(std::string_view text, int max_depth) {
                 "JSON syntax error at line " + std::to_string(line) + ", column " + std::to_string(col) +
                     " (byte " + std::to_string(pos) + ")",
                 {FieldError{"", what, "", line, col}});
+  } catch (const Json::out_of_range& e) {
+    // 406: a number beyond double's range (1e400), named by its pointer (where the parser was)
+    // and its line and column. nlohmann throws it without a position; the
+    // message quotes the literal, which is found in the text for the line and column.
+    std::string what = e.what();
+    std::pair<int, int> at{0, 0};
+    if (auto open = what.find('\''), close = what.rfind('\'');
+        open != std::string::npos && close > open + 1) {
+      if (auto pos = text.find(std::string_view(what).substr(open + 1, close - open - 1));
+          pos != std::string_view::npos)
+        at = line_column(text, pos);
+    }
+    if (auto p = what.find("number overflow"); p != std::string::npos) what = what.substr(p);
+    return fail(ErrorCode::kBadRequest,
+                "JSON number out of range at line " + std::to_string(at.first) + ", column " +
+                    std::to_string(at.second),
+                {FieldError{where.value_pointer(), what, "", at.first, at.second}});
   }
 }
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include "core/floorplan/rooms.hpp"
 #include "core/geometry/planar.hpp"
-#include "core/world/floorplan_rooms.hpp"
 
 namespace socsim::scenario {
 
@@ -18,7 +18,7 @@ double dist(crowd::Vec2 a, crowd::Vec2 b) {
 std::string guess_domain(const world::World& w) {
   std::map<std::string, int> votes;
   for (const world::Zone& z : w.zones()) {
-    const std::string t = world::canonical_room_type(z.type);
+    const std::string t = floorplan::canonical_room_type(z.type);
     if (t == "patient_room" || t == "nurse_station" || t == "treatment_room" || t == "icu_room" ||
         t == "ward")
       ++votes["hospital"];
@@ -153,19 +153,19 @@ std::vector<std::pair<std::string, std::string>> WorldProbe::neighbours(std::str
 
 bool WorldProbe::is_circulation(std::string_view zone) const {
   auto z = world_.find_zone(zone);
-  return z && world::is_circulation_type(world::canonical_room_type(world_.zone(*z).type));
+  return z && floorplan::is_circulation_type(floorplan::canonical_room_type(world_.zone(*z).type));
 }
 
 bool WorldProbe::is_toilet(std::string_view zone) const {
   auto z = world_.find_zone(zone);
-  return z && world::is_toilet_type(world::canonical_room_type(world_.zone(*z).type));
+  return z && floorplan::is_toilet_type(floorplan::canonical_room_type(world_.zone(*z).type));
 }
 
 std::vector<std::string> WorldProbe::zones_of_type(std::initializer_list<std::string_view> types) const {
   std::vector<std::string> out;
   for (std::string_view t : types)
     for (const world::Zone& z : world_.zones())
-      if (world::canonical_room_type(z.type) == t || z.type == t) out.push_back(z.name);
+      if (floorplan::canonical_room_type(z.type) == t || z.type == t) out.push_back(z.name);
   return out;
 }
 

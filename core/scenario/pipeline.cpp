@@ -8,10 +8,11 @@
 #include "core/common/json_check.hpp"
 #include "core/common/sha256.hpp"
 #include "core/crowd/scenario_runner.hpp"
+#include "core/floorplan/llm.hpp"
+#include "core/floorplan/request.hpp"
 #include "core/scenario/program_check.hpp"
 #include "core/scenario/program_llm.hpp"
-#include "core/world/floorplan_llm.hpp"
-#include "core/world/floorplan_request.hpp"
+#include "core/scenario/scenario_intent.hpp"
 #include "core/world/world_document.hpp"
 #include "core/world/world_yaml.hpp"
 
@@ -198,30 +199,46 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
     fp["scene_graph"] = *request.scene_graph;
   else
     fp["prompt"] = request.prompt;
-  if (request.domain) fp["domain"] = *request.domain;
+  // The venue the prompt names ("train station", "library") decides the building type, by the
+  // nearest type the floor-plan generator knows; a given domain or scene graph wins.
+  Json venue = nullptr;
+  if (request.domain) {
+    fp["domain"] = *request.domain;
+  } else if (!request.scene_graph) {
+    auto intent = interpret_prompt(request.prompt);
+    if (!intent) return tl::unexpected(intent.error());
+    if (intent->venue) {
+      fp["domain"] = intent->venue->building_type;
+      venue = Json{{"type", intent->venue->type},
+                   {"building_type", intent->venue->building_type},
+                   {"words", intent->venue->words},
+                   {"why", intent->venue->why}};
+    }
+  }
   if (request.model) fp["model"] = *request.model;
-  auto fpr = world::floor_plan_request_from_json(fp);
+  auto fpr = floorplan::floor_plan_request_from_json(fp);
   if (!fpr) return tl::unexpected(fpr.error());
-  auto resolved = world::resolve_scene_graph(*fpr);
+  auto resolved = floorplan::resolve_scene_graph(*fpr);
   if (!resolved) return tl::unexpected(resolved.error());
   auto constraints = knowledge.constraints_for(resolved->graph.domain);
   if (!constraints) return tl::unexpected(constraints.error());
-  Result<world::FloorPlan> plan = fail(ErrorCode::kInternal, "no floor plan");
+  Result<floorplan::FloorPlan> plan = fail(ErrorCode::kInternal, "no floor plan");
   if (request.generator == "llm" && llm) {
-    world::LlmFloorPlanOptions o;
+    floorplan::LlmFloorPlanOptions o;
     o.model = request.model;
     o.seed = static_cast<std::int64_t>(request.seed);
     o.job_id = job_id;
     o.cancel = cancel;
-    plan = world::generate_floor_plan_llm(*llm, request.prompt, resolved->graph, *constraints, o);
+    plan = floorplan::generate_floor_plan_llm(*llm, request.prompt, resolved->graph, *constraints, o);
   } else {
-    world::OfflineOptions o;
+    floorplan::OfflineOptions o;
     o.seed = request.seed;
-    plan = world::generate_floor_plan(resolved->graph, *constraints, o);
+    plan = floorplan::generate_floor_plan(resolved->graph, *constraints, o);
   }
   if (!plan) return tl::unexpected(plan.error());
   plan->provenance["classification"] = resolved->classification;
   plan->provenance["compliance_passed"] = plan->compliance.passed;
+  if (!venue.is_null()) plan->provenance["venue"] = venue;
   return ScenarioWorld{std::move(plan->world), resolved->graph.domain, std::move(plan->provenance)};
 }
 
@@ -328,6 +345,14 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
   auto& c = out.card;
   c.title = request.title.empty() ? short_title(request.prompt) : request.title;
   c.description = describe_program(generated->program);
+  // People the prompt asked for that the program could not hold are said on the card.
+  for (const auto& note : generated->provenance.value("notes", Json::array())) {
+    if (!note.is_string()) continue;
+    const std::string n = note.get<std::string>();
+    if (n.find("fit") != std::string::npos || n.find("scaled down") != std::string::npos ||
+        n.find("left out") != std::string::npos)
+      c.description += " " + n + ".";
+  }
   c.prompt = request.prompt;
   c.seed = request.seed;
   c.generator.name = request.generator;

@@ -74,6 +74,15 @@ std::optional<std::string> label_problem(const std::string& s, bool allow_empty)
   return std::nullopt;
 }
 
+double distance_to_boundary(const Polygon& poly, Point p) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const auto& e : geometry::edges(poly.outer)) d = std::min(d, geometry::distance(e, p));
+  for (const auto& h : poly.holes) {
+    for (const auto& e : geometry::edges(h)) d = std::min(d, geometry::distance(e, p));
+  }
+  return d;
+}
+
 // Every zone edge in one spatial index: which zones' boundaries pass near a point, without
 // comparing the point with every edge of every zone (quadratic for large worlds).
 class ZoneBoundaries {
@@ -186,6 +195,169 @@ std::string door_ptr(std::size_t i) {
   return "/doors/" + std::to_string(i);
 }
 
+std::string box_text(const geometry::Box& b) {
+  return "x " + num(b.min.x) + " .. " + num(b.max.x) + ", y " + num(b.min.y) + " .. " + num(b.max.y);
+}
+
+bool has_region(const Polygon& p) {
+  return !p.outer.empty();
+}
+
+// The parts of `s` that no collinear segment of `cover` runs along.
+std::vector<Segment> uncovered_parts(const Segment& s, std::span<const Wall> cover, double tol) {
+  const double len = geometry::length(s);
+  if (len <= tol) return {};
+  const Point u{(s.b.x - s.a.x) / len, (s.b.y - s.a.y) / len};
+  auto along = [&](Point p) { return (p.x - s.a.x) * u.x + (p.y - s.a.y) * u.y; };
+  auto off = [&](Point p) { return std::abs((p.x - s.a.x) * u.y - (p.y - s.a.y) * u.x); };
+  std::vector<std::pair<double, double>> covered;
+  for (const auto& w : cover) {
+    if (off(w.segment.a) > tol || off(w.segment.b) > tol) continue;
+    // By value: minmax of two temporaries would return references to them.
+    const auto [lo, hi] = std::minmax({along(w.segment.a), along(w.segment.b)});
+    if (hi > tol && lo < len - tol) covered.emplace_back(std::max(lo, 0.0), std::min(hi, len));
+  }
+  std::sort(covered.begin(), covered.end());
+  std::vector<Segment> out;
+  double from = 0.0;
+  auto at = [&](double t) {
+    return t <= 0.0 ? s.a : t >= len ? s.b : Point{s.a.x + u.x * t, s.a.y + u.y * t};
+  };
+  for (const auto& [lo, hi] : covered) {
+    if (lo - from > tol) out.push_back({at(from), at(lo)});
+    from = std::max(from, hi);
+  }
+  if (len - from > tol) out.push_back({at(from), s.b});
+  return out;
+}
+
+// Regions for zones written by name only (paper 001, Fig. 3). The one such zone of a world
+// takes what its walls (and door gaps) enclose, less the zones that have polygons; when the walls enclose
+// nothing, the rectangle spanned by everything written (walls, door centres, segmentation
+// areas, entities). Returns the index of the zone given a region.
+std::optional<std::size_t> infer_zone_region(const Geos& geos, std::vector<Zone>& zones,
+                                             const std::vector<Wall>& walls,
+                                             const std::vector<DoorSpec>& doors, const std::vector<Roi>& rois,
+                                             const std::vector<EntitySpec>& entities, const BuildOptions& opt,
+                                             Validator& v, std::vector<FieldError>* warnings) {
+  std::vector<std::size_t> open;
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    if (!has_region(zones[i].polygon)) open.push_back(i);
+  }
+  if (open.empty()) return std::nullopt;
+  for (std::size_t k = 1; k < open.size(); ++k) {
+    v.add(zone_ptr(open[k]) + "/polygon",
+          "zone '" + zones[open[k]].name + "' has no polygon; only one zone of a world may take its region " +
+              "from the walls (zone '" + zones[open[0]].name + "' at " + zone_ptr(open[0]) +
+              " does), so give it a polygon");
+  }
+  const std::size_t z = open[0];
+  const std::string ptr = zone_ptr(z) + "/polygon";
+  const std::string who = "zone '" + zones[z].name + "' has no polygon";
+  MultiPolygon given;
+  for (const auto& other : zones) {
+    if (has_region(other.polygon) && geos.validity(other.polygon).valid) given.push_back(other.polygon);
+  }
+  const double tol = opt.boundary_tolerance;
+  auto without_given = [&](MultiPolygon region) {
+    if (!given.empty()) region = geos.difference(region, geos.unite(given));
+    MultiPolygon kept;
+    for (auto& part : region) {
+      if (geometry::area(part) > opt.overlap_tolerance) kept.push_back(std::move(part));
+    }
+    return kept;
+  };
+
+  std::vector<Segment> lines;
+  for (const auto& w : walls) {
+    if (finite(w.segment.a) && finite(w.segment.b) && geometry::length(w.segment) > tol)
+      lines.push_back(w.segment);
+  }
+  // Walls are written with gaps where the doors are: a door closes the gap between two wall
+  // ends its width apart around its centre.
+  const std::size_t wall_lines = lines.size();
+  for (const auto& d : doors) {
+    if (!finite(d.pose) || !(d.width > 0)) continue;
+    const Point c = d.pose.position();
+    const double reach = d.width / 2 + opt.door_snap_distance;
+    std::vector<Point> ends;
+    for (std::size_t k = 0; k < wall_lines; ++k) {
+      for (const Point& p : {lines[k].a, lines[k].b}) {
+        if (geometry::distance(p, c) <= reach) ends.push_back(p);
+      }
+    }
+    for (std::size_t a = 0; a < ends.size(); ++a) {
+      for (std::size_t b = a + 1; b < ends.size(); ++b) {
+        const Point mid{(ends[a].x + ends[b].x) / 2, (ends[a].y + ends[b].y) / 2};
+        if (std::abs(geometry::distance(ends[a], ends[b]) - d.width) <= tol &&
+            geometry::distance(mid, c) <= opt.door_snap_distance)
+          lines.push_back({ends[a], ends[b]});
+      }
+    }
+  }
+  MultiPolygon enclosed = lines.empty() ? MultiPolygon{} : geos.polygonize(lines);
+  if (!enclosed.empty()) enclosed = without_given(geos.unite(enclosed));
+  if (enclosed.size() > 1) {
+    v.add(ptr, who + " and the walls enclose " + std::to_string(enclosed.size()) + " separate regions (" +
+                   box_text(geometry::bounds(enclosed)) + "); give the zone a polygon");
+    return std::nullopt;
+  }
+  if (enclosed.size() == 1) {
+    zones[z].polygon = enclosed[0];
+    if (warnings) {
+      warnings->push_back(FieldError{ptr,
+                                     who + ": it takes the region its walls enclose, " +
+                                         box_text(geometry::bounds(enclosed)) + " (" +
+                                         num(geometry::area(enclosed[0])) + " m²)",
+                                     {},
+                                     0,
+                                     0});
+    }
+    return z;
+  }
+
+  // The walls close nothing: the rectangle spanned by what the file places in the zone.
+  std::vector<Point> points;
+  for (std::size_t k = 0; k < wall_lines; ++k) points.insert(points.end(), {lines[k].a, lines[k].b});
+  for (const auto& r : rois) {
+    for (const Point& p : r.polygon.outer) {
+      if (finite(p)) points.push_back(p);
+    }
+  }
+  if (rois.empty()) {
+    v.add(ptr, who + ", its walls enclose no region and there are no segmentation areas to span one; " +
+                   "give it a polygon or walls that close around it");
+    return std::nullopt;
+  }
+  for (const auto& d : doors) {
+    if (finite(d.pose)) points.push_back(d.pose.position());
+  }
+  for (const auto& e : entities) {
+    if (finite(e.pose)) points.push_back(e.pose.position());
+  }
+  const geometry::Box box = geometry::bounds(points);
+  const MultiPolygon region = without_given(MultiPolygon{Polygon{
+      {{box.min.x, box.min.y}, {box.max.x, box.min.y}, {box.max.x, box.max.y}, {box.min.x, box.max.y}}, {}}});
+  if (box.max.x - box.min.x <= tol || box.max.y - box.min.y <= tol || region.size() != 1) {
+    v.add(ptr, who + ", its walls enclose no region and the rectangle its walls, doors, segmentation " +
+                   "areas and entities span (" + box_text(box) + ") " +
+                   (region.empty() ? "has no area outside the other zones" : "is not one region") +
+                   "; give it a polygon");
+    return std::nullopt;
+  }
+  zones[z].polygon = region[0];
+  if (warnings) {
+    warnings->push_back(FieldError{ptr,
+                                   who + " and its walls enclose no region: it takes the rectangle " +
+                                       box_text(box) + " (" + num(geometry::area(region[0])) +
+                                       " m²) spanned by the walls, doors, segmentation areas and entities",
+                                   {},
+                                   0,
+                                   0});
+  }
+  return z;
+}
+
 }  // namespace
 
 WorldBuilder& WorldBuilder::set_name(std::string name) {
@@ -274,7 +446,7 @@ std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector
   return walls;
 }
 
-Result<World> WorldBuilder::build(const BuildOptions& opt) const {
+Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldError>* warnings) const {
   Validator v;
   if (!(opt.agent_radius >= 0 && std::isfinite(opt.agent_radius)) || !(opt.boundary_tolerance > 0) ||
       !(opt.door_snap_distance >= 0) || !(opt.overlap_tolerance >= 0) || !(opt.grid_resolution > 0) ||
@@ -289,6 +461,14 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
   }
   Geos geos;
   std::map<std::string, std::string> names;
+  std::vector<Zone> zones = zones_;
+  std::vector<FieldError> notes;
+  std::optional<std::size_t> inferred;
+  try {
+    inferred = infer_zone_region(geos, zones, walls_, doors_, rois_, entities_, opt, v, &notes);
+  } catch (const geometry::GeosError& e) {
+    return fail(ErrorCode::kValidation, std::string("geometry check failed: ") + e.what());
+  }
 
   // 1. Each element on its own: names, labels, numbers, polygon validity.
   if (auto p = label_problem(name_, true)) v.add("/name", *p);
@@ -299,16 +479,18 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
   };
   check_point("/origin", finite(origin_));
   v.label("/floor/material", floor_.material, true);
-  std::vector<bool> zone_ok(zones_.size(), false);
-  for (std::size_t i = 0; i < zones_.size(); ++i) {
-    const auto& z = zones_[i];
+  std::vector<bool> zone_ok(zones.size(), false);
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    const auto& z = zones[i];
     const std::string ptr = zone_ptr(i);
     v.name(ptr + "/name", z.name, names);
     v.label(ptr + "/type", z.type, false);
     v.label(ptr + "/material", z.material, true);
-    zone_ok[i] = v.polygon(geos, ptr + "/polygon", z.polygon, "zone '" + z.name + "'");
+    // A zone whose region could not be inferred has its error already.
+    zone_ok[i] =
+        has_region(z.polygon) && v.polygon(geos, ptr + "/polygon", z.polygon, "zone '" + z.name + "'");
   }
-  if (zones_.empty()) v.add("/zones", "a world needs at least one zone");
+  if (zones.empty()) v.add("/zones", "a world needs at least one zone");
   for (std::size_t i = 0; i < walls_.size(); ++i) {
     const auto& w = walls_[i];
     const std::string ptr = "/walls/" + std::to_string(i);
@@ -367,29 +549,29 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
         v.add(aptr, "duplicate affordance '" + e.affordances[k] + "'");
     }
   }
-  if (std::find(zone_ok.begin(), zone_ok.end(), false) != zone_ok.end() || zones_.empty() || out_of_range)
+  if (std::find(zone_ok.begin(), zone_ok.end(), false) != zone_ok.end() || zones.empty() || out_of_range)
     return v.failure();
 
   try {
     // 2. Zones against each other.
     const double tol = opt.boundary_tolerance;
     std::vector<geometry::Box> boxes;
-    for (const auto& z : zones_) boxes.push_back(geometry::bounds(z.polygon.outer));
-    for (std::size_t j = 0; j < zones_.size(); ++j) {
+    for (const auto& z : zones) boxes.push_back(geometry::bounds(z.polygon.outer));
+    for (std::size_t j = 0; j < zones.size(); ++j) {
       for (std::size_t i = 0; i < j; ++i) {
         const auto& a = boxes[i];
         const auto& b = boxes[j];
         if (a.max.x <= b.min.x || b.max.x <= a.min.x || a.max.y <= b.min.y || b.max.y <= a.min.y) continue;
         const double overlap =
-            geos.area(geos.intersection(MultiPolygon{zones_[i].polygon}, MultiPolygon{zones_[j].polygon}));
+            geos.area(geos.intersection(MultiPolygon{zones[i].polygon}, MultiPolygon{zones[j].polygon}));
         if (overlap > opt.overlap_tolerance) {
-          v.add(zone_ptr(j) + "/polygon", "zone '" + zones_[j].name + "' overlaps zone '" + zones_[i].name +
+          v.add(zone_ptr(j) + "/polygon", "zone '" + zones[j].name + "' overlaps zone '" + zones[i].name +
                                               "' (" + zone_ptr(i) + ") by " + num(overlap) + " m²");
         }
       }
     }
     MultiPolygon all;
-    for (const auto& z : zones_) all.push_back(z.polygon);
+    for (const auto& z : zones) all.push_back(z.polygon);
     const MultiPolygon plan = geos.unite(all);
     std::vector<Segment> outline = geos.boundary_segments(plan);
 
@@ -397,9 +579,9 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     // Boundaries are computed once per zone pair (or zone and outside) and indexed, so each door
     // costs a few index queries, not a pass over every edge.
     std::vector<Door> doors;
-    const ZoneBoundaries boundaries(zones_);
+    const ZoneBoundaries boundaries(zones);
     std::map<std::string, std::size_t> zone_index;
-    for (std::size_t z = 0; z < zones_.size(); ++z) zone_index[zones_[z].name] = z;
+    for (std::size_t z = 0; z < zones.size(); ++z) zone_index[zones[z].name] = z;
     constexpr std::size_t kOutside = std::numeric_limits<std::size_t>::max();
     std::map<std::pair<std::size_t, std::size_t>, SegmentIndex> host_cache;
     std::optional<SegmentIndex> outline_index;
@@ -425,21 +607,21 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
       auto it = host_cache.find(key);
       if (it == host_cache.end()) {
         std::vector<Segment> segs;
-        if (b == kOutside && vertices(zones_[a].polygon) + plan_vertices <= kExactBoundaryVertices) {
+        if (b == kOutside && vertices(zones[a].polygon) + plan_vertices <= kExactBoundaryVertices) {
           for (const auto& part : plan) {
-            const auto pieces = geos.shared_boundary(zones_[a].polygon, part, tol);
+            const auto pieces = geos.shared_boundary(zones[a].polygon, part, tol);
             segs.insert(segs.end(), pieces.begin(), pieces.end());
           }
         } else if (b == kOutside) {
           if (!outline_index) outline_index.emplace(outline);
-          segs = geometry::pieces_near(rings(zones_[a].polygon), *outline_index, tol);
-        } else if (vertices(zones_[a].polygon) + vertices(zones_[b].polygon) <= kExactBoundaryVertices) {
-          segs = geos.shared_boundary(zones_[key.first].polygon, zones_[key.second].polygon, tol);
+          segs = geometry::pieces_near(rings(zones[a].polygon), *outline_index, tol);
+        } else if (vertices(zones[a].polygon) + vertices(zones[b].polygon) <= kExactBoundaryVertices) {
+          segs = geos.shared_boundary(zones[key.first].polygon, zones[key.second].polygon, tol);
         } else {
           std::vector<Segment> other_edges;
-          for (const auto& ring : rings(zones_[key.second].polygon))
+          for (const auto& ring : rings(zones[key.second].polygon))
             for (const auto& e : geometry::edges(ring)) other_edges.push_back(e);
-          segs = geometry::pieces_near(rings(zones_[key.first].polygon), SegmentIndex(std::move(other_edges)),
+          segs = geometry::pieces_near(rings(zones[key.first].polygon), SegmentIndex(std::move(other_edges)),
                                        tol);
         }
         it = host_cache.emplace(key, SegmentIndex(std::move(segs))).first;
@@ -466,7 +648,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
       if (!resolved) continue;
       if (ends.size() == 2 && ends[0] == ends[1]) {
         v.add(ptr + "/connects",
-              "door '" + spec.name + "' connects zone '" + zones_[ends[0]].name + "' with itself");
+              "door '" + spec.name + "' connects zone '" + zones[ends[0]].name + "' with itself");
         continue;
       }
       if (ends.empty()) {
@@ -475,7 +657,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
         if (near.empty()) {
           const auto [best, bz] = boundaries.nearest(c);
           v.add(ptr + "/pose", "door '" + spec.name + "' at " + pt(c) +
-                                   " is on no zone boundary (nearest is zone '" + zones_[bz].name + "', " +
+                                   " is on no zone boundary (nearest is zone '" + zones[bz].name + "', " +
                                    num(best) + " m away; at most " + num(opt.door_snap_distance) +
                                    " m allowed)");
           continue;
@@ -490,17 +672,17 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
         }
         if (ends.empty()) ends = {near[0].second};
       }
-      const Zone& za = zones_[ends[0]];
+      const Zone& za = zones[ends[0]];
       const SegmentIndex& host = host_of(ends[0], ends.size() == 2 ? ends[1] : kOutside);
       if (ends.size() == 2 && host.size() == 0) {
-        v.add(ptr + "/connects", "zones '" + za.name + "' and '" + zones_[ends[1]].name +
+        v.add(ptr + "/connects", "zones '" + za.name + "' and '" + zones[ends[1]].name +
                                      "' share no boundary, so door '" + spec.name + "' cannot connect them");
         continue;
       }
       const auto nh = host.nearest(c);
       if (!nh || nh->distance > opt.door_snap_distance) {
         const std::string where = ends.size() == 2 ? "the boundary shared by zones '" + za.name + "' and '" +
-                                                         zones_[ends[1]].name + "'"
+                                                         zones[ends[1]].name + "'"
                                                    : "the outside boundary of zone '" + za.name + "'";
         std::string msg = "door '" + spec.name + "' at " + pt(c) + " is not on " + where;
         if (nh)
@@ -550,7 +732,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     // 4. Walls: as written, or derived from the zone boundaries minus the door openings.
     std::vector<Wall> walls = walls_;
     if (walls.empty()) {
-      walls = derive_walls(zones_, doors, opt);
+      walls = derive_walls(zones, doors, opt);
     } else {
       std::vector<Segment> inner_openings;
       for (const auto& d : doors) {
@@ -569,6 +751,38 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
                                                      doors[di].name + "'");
           }
         }
+      }
+    }
+
+    if (inferred && !walls_.empty()) {
+      // The written walls need not close the zone whose region was inferred: close it where
+      // they leave it open (less its doors), like the written walls when they agree on a style.
+      Wall like{{}, opt.default_wall_height, opt.default_wall_style};
+      if (std::all_of(walls_.begin(), walls_.end(), [&](const Wall& w) {
+            return w.style == walls_[0].style && w.height == walls_[0].height;
+          })) {
+        like = Wall{{}, walls_[0].height, walls_[0].style};
+      }
+      double added = 0.0;
+      std::size_t count = 0;
+      for (const Wall& piece : derive_walls(zones, doors, opt)) {
+        const Point mid{(piece.segment.a.x + piece.segment.b.x) / 2,
+                        (piece.segment.a.y + piece.segment.b.y) / 2};
+        if (distance_to_boundary(zones[*inferred].polygon, mid) > tol) continue;
+        for (const Segment& part : uncovered_parts(piece.segment, walls_, tol)) {
+          walls.push_back(Wall{part, like.height, like.style});
+          added += geometry::length(part);
+          ++count;
+        }
+      }
+      if (count > 0) {
+        notes.push_back(FieldError{"/walls",
+                                   "the walls written leave zone '" + zones[*inferred].name + "' open: " +
+                                       std::to_string(count) + " wall" + (count == 1 ? "" : "s") + " (" +
+                                       num(added) + " m) added along its boundary, doors left open",
+                                   {},
+                                   0,
+                                   0});
       }
     }
 
@@ -594,11 +808,11 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
       if (!finite(e.pose)) continue;
       std::optional<std::size_t> in;
       const Point p = e.pose.position();
-      for (std::size_t z = 0; z < zones_.size() && !in; ++z) {
+      for (std::size_t z = 0; z < zones.size() && !in; ++z) {
         const auto& b = boxes[z];
         if (p.x < b.min.x - tol || p.x > b.max.x + tol || p.y < b.min.y - tol || p.y > b.max.y + tol)
           continue;
-        if (geometry::contains(zones_[z].polygon, p, tol)) in = z;
+        if (geometry::contains(zones[z].polygon, p, tol)) in = z;
       }
       if (!in) {
         v.add("/entities/" + std::to_string(i) + "/pose",
@@ -614,7 +828,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     w.name_ = name_;
     w.origin_ = origin_;
     w.floor_ = floor_;
-    w.zones_ = zones_;
+    w.zones_ = zones;
     w.walls_ = std::move(walls);
     w.doors_ = std::move(doors);
     w.rois_ = rois_;
@@ -622,11 +836,11 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
     w.outline_ = std::move(outline);
 
     // 6. Every zone reachable from every other for an agent of the given radius.
-    if (opt.check_reachability && zones_.size() > 1) {
+    if (opt.check_reachability && zones.size() > 1) {
       const auto grid =
           OccupancyGrid::rasterise(w, GridOptions{opt.grid_resolution, opt.agent_radius, 4'000'000});
       const auto label = grid.components();
-      std::vector<std::map<int, std::size_t>> counts(zones_.size());
+      std::vector<std::map<int, std::size_t>> counts(zones.size());
       for (int y = 0; y < grid.height(); ++y) {
         for (int x = 0; x < grid.width(); ++x) {
           const Cell c{x, y};
@@ -635,11 +849,11 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
           if (auto z = grid.zone_of(c)) ++counts[z->index()][l];
         }
       }
-      std::vector<int> main(zones_.size(), -1);
+      std::vector<int> main(zones.size(), -1);
       std::map<int, std::size_t> votes;
-      for (std::size_t z = 0; z < zones_.size(); ++z) {
+      for (std::size_t z = 0; z < zones.size(); ++z) {
         if (counts[z].empty()) {
-          v.add(zone_ptr(z) + "/polygon", "zone '" + zones_[z].name +
+          v.add(zone_ptr(z) + "/polygon", "zone '" + zones[z].name +
                                               "' has no free space for an agent of radius " +
                                               num(opt.agent_radius) + " m");
           continue;
@@ -655,7 +869,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
                         })->first;
         std::size_t ref_zone = 0;
         while (main[ref_zone] != ref) ++ref_zone;
-        for (std::size_t z = 0; z < zones_.size(); ++z) {
+        for (std::size_t z = 0; z < zones.size(); ++z) {
           if (main[z] < 0 || main[z] == ref) continue;
           std::string doors_of;
           for (const auto& d : w.doors_) {
@@ -665,13 +879,14 @@ Result<World> WorldBuilder::build(const BuildOptions& opt) const {
               doors_of += " (" + num(d.width) + " m)";
             }
           }
-          v.add(zone_ptr(z), "zone '" + zones_[z].name + "' cannot be reached from zone '" +
-                                 zones_[ref_zone].name + "' by an agent of radius " + num(opt.agent_radius) +
+          v.add(zone_ptr(z), "zone '" + zones[z].name + "' cannot be reached from zone '" +
+                                 zones[ref_zone].name + "' by an agent of radius " + num(opt.agent_radius) +
                                  " m; " + (doors_of.empty() ? "it has no door" : "its doors: " + doors_of));
         }
       }
       if (!v.ok()) return v.failure();
     }
+    if (warnings) warnings->insert(warnings->end(), notes.begin(), notes.end());
     return w;
   } catch (const geometry::GeosError& e) {
     return fail(ErrorCode::kValidation, std::string("geometry check failed: ") + e.what());

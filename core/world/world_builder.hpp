@@ -50,6 +50,9 @@ class WorldBuilder {
   WorldBuilder& set_origin(Pose2 origin);
   WorldBuilder& set_floor(Floor floor);
   // Elements are reported by their position in these lists (/zones/<i>, /doors/<i> …).
+  // A zone with an empty polygon takes the region its walls enclose, or else the rectangle its
+  // walls, doors, segmentation areas and entities span (paper 001, Fig. 3 names the zone only);
+  // build() says so in a warning, or fails at /zones/<i>/polygon when nothing encloses it.
   ZoneId add_zone(Zone zone);
   WorldBuilder& add_wall(Wall wall);  // none added → walls are derived from zones and doors
   WorldBuilder& add_door(DoorSpec door);
@@ -60,7 +63,10 @@ class WorldBuilder {
 
   // Validates everything and returns the World, or a kValidation error listing every
   // problem found (each with a JSON pointer and a message naming the elements involved).
-  [[nodiscard]] Result<World> build(const BuildOptions& options = {}) const;
+  // What build() assumed (a zone region inferred, walls added to close it) is appended to
+  // `warnings`, when given, with the pointer of the element concerned.
+  [[nodiscard]] Result<World> build(const BuildOptions& options = {},
+                                    std::vector<FieldError>* warnings = nullptr) const;
 
  private:
   std::string name_;

@@ -220,7 +220,9 @@ Result<WorldBuilder> builder_from_document(const Json& doc) {
     auto name = check.string(z, ptr, "name", true);
     auto type = check.string(z, ptr, "type", false);
     auto material = check.string(z, ptr, "material", false);
-    auto poly = read.polygon(z, ptr, "polygon");
+    // Without a polygon the builder infers the zone's region (Fig. 3 names the zone only).
+    const bool has_polygon = z.contains("polygon") && !z["polygon"].is_null();
+    auto poly = has_polygon ? read.polygon(z, ptr, "polygon") : std::optional<Polygon>(Polygon{});
     if (name && poly) b.add_zone(Zone{*name, type.value_or("room"), material.value_or(""), *poly});
   });
   read.each(doc, "walls", false, [&](const Json& w, const std::string& ptr) {

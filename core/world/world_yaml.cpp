@@ -9,7 +9,48 @@
 
 namespace socsim::world {
 
-Result<World> world_from_yaml(std::string_view text, const BuildOptions& options, const YamlLimits& limits) {
+namespace {
+
+// U+21B3 DOWNWARDS ARROW WITH TIP RIGHTWARDS, which listings print where they wrap a line.
+constexpr std::string_view kWrapMark = "\xE2\x86\xB3";
+
+// Replaces each wrap mark that begins a line (after blanks, before a blank or the end of the
+// line) by as many spaces, so that columns stay; returns the 1-based lines where it did.
+std::vector<int> blank_wrap_marks(std::string& text) {
+  std::vector<int> lines;
+  int line = 1;
+  for (std::size_t start = 0; start < text.size(); ++line) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::size_t first = text.find_first_not_of(" \t", start);
+    const std::size_t after = first + kWrapMark.size();
+    if (first < end && text.compare(first, kWrapMark.size(), kWrapMark) == 0 &&
+        (after >= end || text[after] == ' ' || text[after] == '\t' || text[after] == '\r')) {
+      text.replace(first, kWrapMark.size(), kWrapMark.size(), ' ');
+      lines.push_back(line);
+    }
+    start = end + 1;
+  }
+  return lines;
+}
+
+std::string line_list(const std::vector<int>& lines) {
+  std::string s;
+  for (std::size_t i = 0; i < lines.size(); ++i) s += (i ? ", " : "") + std::to_string(lines[i]);
+  return s;
+}
+
+}  // namespace
+
+Result<WorldReading> read_world_yaml(std::string_view text, const BuildOptions& options,
+                                     const YamlLimits& limits) {
+  std::vector<int> wrapped;
+  std::string unwrapped;
+  if (text.size() <= limits.max_bytes && text.find(kWrapMark) != std::string_view::npos) {
+    unwrapped = text;
+    wrapped = blank_wrap_marks(unwrapped);
+    text = unwrapped;
+  }
   SourcePositions positions;
   auto doc = parse_yaml_untrusted(text, &positions, limits);
   if (!doc) return tl::unexpected(doc.error());
@@ -17,13 +58,35 @@ Result<World> world_from_yaml(std::string_view text, const BuildOptions& options
     return fail(ErrorCode::kValidation, "world.yaml is empty",
                 {FieldError{"/zones", "is required", {}, 1, 1}});
   }
-  auto world = world_from_document(*doc, options);
+  std::vector<FieldError> warnings;
+  auto builder = builder_from_document(*doc);
+  Result<World> world = builder ? builder->build(options, &warnings) : tl::unexpected(builder.error());
   if (!world) {
     Error e = world.error();
     positions.annotate(e);
     return tl::unexpected(std::move(e));
   }
-  return world;
+  Error notes(ErrorCode::kValidation, "", std::move(warnings));
+  positions.annotate(notes);
+  if (!wrapped.empty()) {
+    notes.errors.insert(
+        notes.errors.begin(),
+        FieldError{"",
+                   (wrapped.size() == 1 ? "line " : "lines ") + line_list(wrapped) +
+                       (wrapped.size() == 1 ? " begins" : " begin") + " with '" + std::string(kWrapMark) +
+                       "', the mark a printed listing puts where it wraps a line; read as "
+                       "the continuation of the line before",
+                   {},
+                   wrapped.front(),
+                   1});
+  }
+  return WorldReading{std::move(*world), std::move(notes.errors)};
+}
+
+Result<World> world_from_yaml(std::string_view text, const BuildOptions& options, const YamlLimits& limits) {
+  auto reading = read_world_yaml(text, options, limits);
+  if (!reading) return tl::unexpected(reading.error());
+  return std::move(reading->world);
 }
 
 namespace {

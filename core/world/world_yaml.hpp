@@ -3,6 +3,7 @@
 // and writing a World back so that reading the text gives the same World.
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/world/world_builder.hpp"
 #include "core/world/yaml_reader.hpp"
@@ -13,6 +14,16 @@ namespace socsim::world {
 // the line and column of the field (or of the object that lacks it).
 Result<World> world_from_yaml(std::string_view text, const BuildOptions& options = {},
                               const YamlLimits& limits = {});
+
+// A world and what reading it assumed, each warning with its pointer, line and column: a zone
+// region inferred and walls added to close it (WorldBuilder), and the '↳' marks with which a
+// printed listing wraps long lines (Fig. 3 of paper 001 as printed) read as continuations.
+struct WorldReading {
+  World world;
+  std::vector<FieldError> warnings;
+};
+Result<WorldReading> read_world_yaml(std::string_view text, const BuildOptions& options = {},
+                                     const YamlLimits& limits = {});
 
 // Stable text: one flow-style line per element, numbers in shortest round-trip form.
 std::string world_to_yaml(const World& world);

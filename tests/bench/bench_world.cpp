@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "core/floorplan/offline.hpp"
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/store/store.hpp"
-#include "core/world/floorplan_offline.hpp"
 
 #include "core/world/geodesic.hpp"
 #include "core/world/occupancy_grid.hpp"
@@ -22,6 +22,7 @@
 namespace {
 
 using namespace socsim::world;
+using namespace socsim::floorplan;
 
 // Ten 4 x 5 m rooms, five on each side of a 2 m corridor, each with a door into it, an
 // entrance at the corridor's west end, a queue lane and a waiting zone — a generator's output.

@@ -12,8 +12,8 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <iostream>
 #include <functional>
+#include <iostream>
 #include <map>
 
 #include "tests/server/test_server.hpp"

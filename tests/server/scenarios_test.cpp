@@ -3,6 +3,8 @@
 // reproduces it bit for bit; bad requests name their fields; an LLM job runs against the scripted
 // OpenAI-compatible server, its prompts, token counts and cache hits visible in the job's record.
 #include <chrono>
+#include <fstream>
+#include <iterator>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -151,6 +153,47 @@ TEST(Scenarios, AStoredWorldIsUsedByItsId) {
       Json::parse(c.Get(("/api/v1/cards/" + job["result"]["card_id"].get<std::string>()).c_str())->body);
   EXPECT_EQ(card["provenance"]["world_id"], world_id);
   EXPECT_EQ(card["domain"], "office");
+}
+
+// Fig. 3 of paper 001 exactly as printed (tests/fixtures/paper001_fig3_as_printed.yaml: the
+// zone named only, one wall, '↳' where the listing wraps): it validates with warnings, then
+// a scenario runs in it.
+TEST(Scenarios, PaperFigure3AsPrintedValidatesAndSimulates) {
+  TestServer s;
+  auto c = s.client();
+  std::ifstream in(std::string(SOCSIM_SOURCE_DIR) + "/tests/fixtures/paper001_fig3_as_printed.yaml",
+                   std::ios::binary);
+  const std::string fig3((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_THAT(fig3, HasSubstr("  - name: canteen_hall\nwalls:"));
+
+  auto v = c.Post("/api/v1/worlds/validate", fig3, "application/yaml");
+  ASSERT_TRUE(v);
+  ASSERT_EQ(v->status, 200) << v->body;
+  const Json report = Json::parse(v->body);
+  EXPECT_EQ(report["valid"], true);
+  EXPECT_EQ(report["zones"], 1);
+  EXPECT_EQ(report["walls"], 5);
+  EXPECT_EQ(report["area"], 80.0);
+  ASSERT_EQ(report["warnings"].size(), 3u) << report["warnings"].dump();
+  EXPECT_EQ(report["warnings"][1]["pointer"], "/zones/0/polygon");
+  EXPECT_EQ(report["warnings"][1]["line"], 3);
+  EXPECT_THAT(report["warnings"][1]["message"].get<std::string>(), HasSubstr("x 0 .. 10, y 0 .. 8"));
+  EXPECT_EQ(report["compliance"]["building_type"], "canteen");
+
+  const Json job =
+      finished_job(s, c,
+                   post(c, "/api/v1/scenarios",
+                        {{"prompt", "students queue at the food counter, then sit down at a table"},
+                         {"world", fig3},
+                         {"seed", 3},
+                         {"duration_s", 10}}));
+  ASSERT_EQ(job["status"], "succeeded") << job.dump();
+  EXPECT_GT(job["result"]["trajectory_log"]["agents"].get<int>(), 0);
+  const Json card =
+      Json::parse(c.Get(("/api/v1/cards/" + job["result"]["card_id"].get<std::string>()).c_str())->body);
+  EXPECT_EQ(card["domain"], "canteen");
+  EXPECT_EQ(card["provenance"]["world"]["warnings"].size(), 3u);
+  EXPECT_EQ(card["world"]["zones"][0]["polygon"], Json::parse("[[0, 0], [10, 0], [10, 8], [0, 8]]"));
 }
 
 TEST(Scenarios, AnLlmJobRecordsItsPromptsTokensAndCacheHits) {

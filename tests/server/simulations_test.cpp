@@ -643,5 +643,32 @@ TEST(SimulationFrames, BinaryDecoderRefusesBadBytes) {
   EXPECT_FALSE(decode_frame_binary(""));
 }
 
+// Issue 14 #6: one authorisation rule for REST and WebSocket control. On a server with keys, a
+// viewer that presented no key (or another author's) may watch but not stop the simulation.
+TEST(Simulations, OnlyTheAuthorControlsOverTheSocketToo) {
+  server::ServerConfig config = quick_config();
+  config.api_keys = {{"alice", "alice-secret-0123456789"}, {"bob", "bob-secret-0123456789"}};
+  Daemon d(config);
+  auto c = d.http.client();
+  c.set_bearer_token_auth("alice-secret-0123456789");
+  auto r = c.Post("/api/v1/simulations", Json{{"program", walkers()}}.dump(), "application/json");
+  ASSERT_TRUE(r && r->status == 201) << (r ? r->body : "no reply");
+  const std::string id = Json::parse(r->body)["id"];
+
+  for (const std::string& offer :
+       {std::string(), std::string("socsim.json.v1, bearer.bob-secret-0123456789")}) {
+    Viewer stranger(d.ws_port, ws_path(id), offer);
+    stranger.command({{"action", "stop"}});
+    auto refusal = stranger.next("error");
+    ASSERT_TRUE(refusal) << "offer '" << offer << "': the stop is answered with an error";
+    EXPECT_EQ(refusal->json()["status"], 403);
+    EXPECT_EQ(d.get("/api/v1/simulations/" + id)["status"], "running") << offer;
+  }
+  Viewer owner(d.ws_port, ws_path(id), "socsim.json.v1, bearer.alice-secret-0123456789");
+  EXPECT_EQ(owner.protocol, "socsim.json.v1") << "the key is never echoed as the subprotocol";
+  owner.command({{"action", "stop"}});
+  EXPECT_TRUE(owner.next("end")) << "the author's stop ends the simulation";
+}
+
 }  // namespace
 }  // namespace socsim::server

@@ -77,6 +77,20 @@ TEST(JsonIo, CanonicalFormSortsKeysAndRoundTrips) {
   EXPECT_EQ(canonical_json(*again), canonical_json(*a));
 }
 
+// Found by tests/fuzz (program_json, card_import, procthor_json): nlohmann throws out_of_range,
+// not parse_error, for a number literal beyond double; it escaped every JSON reader.
+TEST(JsonIo, NumberBeyondDoubleIsABadRequestWithItsPosition) {
+  auto r = parse_json_untrusted("{\"agents\": [{\"speed\":\n 1e400}]}");
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::kBadRequest);
+  ASSERT_EQ(r.error().errors.size(), 1u);
+  EXPECT_EQ(r.error().errors[0].line, 2);
+  EXPECT_EQ(r.error().errors[0].column, 2);
+  EXPECT_NE(r.error().errors[0].message.find("1e400"), std::string::npos);
+  EXPECT_FALSE(parse_json_untrusted("-1E+999999999999").has_value());
+  EXPECT_TRUE(parse_json_untrusted("[1.7976931348623157e308, 18446744073709551616]").has_value());
+}
+
 TEST(JsonIo, InvalidUtf8IsASyntaxError) {
   EXPECT_FALSE(parse_json_untrusted("{\"a\": \"\xff\"}").has_value());
 }

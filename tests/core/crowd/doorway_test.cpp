@@ -13,10 +13,10 @@
 
 #include "core/crowd/program.hpp"
 #include "core/crowd/scenario_runner.hpp"
+#include "core/floorplan/offline.hpp"
+#include "core/floorplan/rooms.hpp"
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/store/store.hpp"
-#include "core/world/floorplan_offline.hpp"
-#include "core/world/floorplan_rooms.hpp"
 #include "core/world/world_yaml.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -206,9 +206,9 @@ TEST_F(DoorwayHospital, PatientsWalkFromEveryPatientRoomToTheLobby) {
   // (that is the floor-plan tests' concern), but at least three plans must be walked.
   int plans = 0;
   for (const std::uint64_t seed : {3u, 4u, 5u, 6u, 7u, 8u}) {
-    world::OfflineOptions options;
+    floorplan::OfflineOptions options;
     options.seed = seed;
-    auto plan = world::generate_floor_plan(world::room_program("hospital"), *constraints, options);
+    auto plan = floorplan::generate_floor_plan(floorplan::room_program("hospital"), *constraints, options);
     if (!plan) continue;
     ++plans;
     const world::World& w = plan->world;

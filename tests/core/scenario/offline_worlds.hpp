@@ -15,10 +15,10 @@
 #include <gtest/gtest.h>
 
 #include "core/crowd/scenario_runner.hpp"
+#include "core/floorplan/offline.hpp"
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/scenario/program_offline.hpp"
 #include "core/store/store.hpp"
-#include "core/world/floorplan_offline.hpp"
 #include "core/world/world_yaml.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -38,9 +38,9 @@ class OfflineWorlds {
     if (auto it = worlds_.find(key); it != worlds_.end()) return *it->second;
     auto constraints = kb_->constraints_for(domain);
     EXPECT_TRUE(constraints.has_value());
-    world::OfflineOptions o;
+    floorplan::OfflineOptions o;
     o.seed = seed;
-    auto plan = world::generate_floor_plan(world::room_program(domain), constraints.value(), o);
+    auto plan = floorplan::generate_floor_plan(floorplan::room_program(domain), constraints.value(), o);
     EXPECT_TRUE(plan.has_value()) << domain << ": " << plan.error().message();
     return *worlds_.emplace(key, std::make_unique<world::World>(std::move(plan->world))).first->second;
   }

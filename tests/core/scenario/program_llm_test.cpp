@@ -7,9 +7,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "core/floorplan/offline.hpp"
 #include "core/scenario/pipeline.hpp"
 #include "core/scenario/program_check.hpp"
-#include "core/world/floorplan_offline.hpp"
 #include "tests/core/llm/scripted_server.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -25,9 +25,10 @@ class ProgramLlm : public ::testing::Test {
     store_ = store::Store::open(dir_.file("socsim.db")).value();
     kb_ = std::make_unique<knowledge::KnowledgeBase>(*store_);
     auto constraints = kb_->constraints_for("hospital").value();
-    world::OfflineOptions o;
+    floorplan::OfflineOptions o;
     o.seed = 3;
-    world_ = world::generate_floor_plan(world::room_program("hospital"), constraints, o).value().world;
+    world_ =
+        floorplan::generate_floor_plan(floorplan::room_program("hospital"), constraints, o).value().world;
     client_ = socsim::testing::scripted_client(server_.base_url());
     generator_ = std::make_unique<llm::StructuredGenerator>(*client_, store_.get());
     request_.prompt = "two nurses wait near the reception while visitors walk to the corridor";

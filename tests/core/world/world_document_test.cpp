@@ -86,9 +86,14 @@ TEST(WorldDocument, SchemaRejectsWhatTheReaderRejects) {
   Json unknown = base;
   unknown["zones"][0]["colour"] = "red";
   rejected_by_both(unknown, "/zones/0");
+  // A zone by name only (paper 001, Fig. 3) is a valid document; the builder infers its region.
   Json no_polygon = base;
   no_polygon["zones"][1].erase("polygon");
-  rejected_by_both(no_polygon, "/zones/1");
+  EXPECT_TRUE(schema.validate(no_polygon).empty());
+  EXPECT_TRUE(builder_from_document(no_polygon));
+  Json no_name = base;
+  no_name["zones"][1].erase("name");
+  rejected_by_both(no_name, "/zones/1");
   Json bad_width = base;
   bad_width["doors"][0]["width"] = "wide";
   rejected_by_both(bad_width, "/doors/0/width");

@@ -1,5 +1,6 @@
-// world.yaml: Fig. 3 of paper 001 loads as written, the writer's output reads back to the
-// same world (golden file), and broken files each name line, column and field.
+// world.yaml: Fig. 3 of paper 001 loads as transcribed and exactly as printed (zone region
+// inferred, with warnings), the writer's output reads back to the same world (golden file),
+// and broken files each name line, column and field.
 #include "core/world/world_yaml.hpp"
 
 #include <gmock/gmock.h>
@@ -35,18 +36,132 @@ TEST(WorldYaml, PaperFigure3LoadsAsWritten) {
   EXPECT_EQ(counter.pose.position(), (Point{8.5, 1.5}));
 }
 
-TEST(WorldYaml, TheFigureExcerptAloneNamesTheMissingZonePolygon) {
-  // The figure's first lines verbatim: the zone has no polygon yet.
-  auto w = world_from_yaml(
-      "zones:\n  - name: canteen_hall\nwalls:\n  - {start: [0.0, 0.0], end: [10.0, 0.0],\n    height: 3.0, "
-      "style: \"white_paint\"}\n");
+// tests/fixtures/paper001_fig3_as_printed.yaml is the listing of Fig. 3 exactly as the paper
+// prints it: the zone named only, one wall, and '↳' where the listing wraps its long lines.
+TEST(WorldYaml, PaperFigure3AsPrintedLoadsWithWarnings) {
+  auto r = read_world_yaml(
+      testing::read_text(std::string(SOCSIM_SOURCE_DIR) + "/tests/fixtures/paper001_fig3_as_printed.yaml"));
+  ASSERT_TRUE(r) << r.error().message();
+  const World& w = r->world;
+  ASSERT_EQ(w.zones().size(), 1u);
+  // The one wall closes nothing, so the hall spans the wall, the door, the areas and entities.
+  EXPECT_EQ(w.zone(ZoneId(0)).polygon.outer, (std::vector<Point>{{0, 0}, {10, 0}, {10, 8}, {0, 8}}));
+  EXPECT_EQ(w.zone(ZoneId(0)).type, "room");
+  const Door& door = w.door(w.find_door("entrance_east").value());
+  EXPECT_FALSE(door.other.has_value());
+  EXPECT_EQ(door.opening, (Segment{{10, 1.4}, {10, 2.6}}));
+  // The written wall, then the rest of the hall's boundary in its style, the entrance open.
+  ASSERT_EQ(w.walls().size(), 5u);
+  EXPECT_EQ(w.walls()[0].segment, (Segment{{0, 0}, {10, 0}}));
+  double length = 0;
+  for (const Wall& wall : w.walls()) {
+    EXPECT_EQ(wall.style, "white_paint");
+    EXPECT_DOUBLE_EQ(wall.height, 3.0);
+    length += geometry::length(wall.segment);
+  }
+  EXPECT_NEAR(length, 36.0 - 1.2, 1e-9);
+  EXPECT_EQ(w.floor().material, "polished_concrete");
+  EXPECT_EQ(w.roi(w.find_roi("queue_lane").value()).kind, "queue_lane");
+  EXPECT_EQ(w.roi(w.find_roi("seating_area").value()).kind, "seating_area");
+  EXPECT_EQ(w.entity(w.find_entity("t_01").value()).pose.position(), (Point{3, 5}));
+
+  ASSERT_EQ(r->warnings.size(), 3u);
+  EXPECT_EQ(r->warnings[0].line, 6);
+  EXPECT_THAT(r->warnings[0].message, HasSubstr("lines 6, 9, 13, 15, 18, 20 begin with '↳'"));
+  EXPECT_EQ(r->warnings[1].pointer, "/zones/0/polygon");
+  EXPECT_EQ(r->warnings[1].line, 3);
+  EXPECT_EQ(
+      r->warnings[1].message,
+      "zone 'canteen_hall' has no polygon and its walls enclose no region: it takes the rectangle x 0 .. "
+      "10, y 0 .. 8 (80 m²) spanned by the walls, doors, segmentation areas and entities");
+  EXPECT_EQ(r->warnings[2].pointer, "/walls");
+  EXPECT_THAT(r->warnings[2].message, HasSubstr("4 walls (24.8 m) added"));
+
+  // Written out, it is an ordinary world.yaml that reads back the same, without warnings.
+  auto again = read_world_yaml(world_to_yaml(w));
+  ASSERT_TRUE(again) << again.error().message();
+  EXPECT_EQ(again->world, w);
+  EXPECT_TRUE(again->warnings.empty());
+}
+
+TEST(WorldYaml, AZoneWrittenByNameTakesTheRegionItsWallsEnclose) {
+  // An L-shaped hall closed by its walls and the gap of its entrance; a kiosk with its own
+  // polygon stands in a corner, and walls are added around it (its door left open).
+  auto r = read_world_yaml(R"(zones:
+  - name: hall
+  - {name: kiosk, polygon: [[0, 0], [2, 0], [2, 2], [0, 2]]}
+walls:
+  - {start: [0, 0], end: [5.4, 0]}
+  - {start: [6.6, 0], end: [8, 0]}
+  - {start: [8, 0], end: [8, 4]}
+  - {start: [8, 4], end: [4, 4]}
+  - {start: [4, 4], end: [4, 8]}
+  - {start: [4, 8], end: [0, 8]}
+  - {start: [0, 8], end: [0, 0]}
+doors:
+  - {name: in, pose: [6, 0], width: 1.2}
+  - {name: kiosk_door, pose: [2, 1], width: 0.9}
+)");
+  ASSERT_TRUE(r) << r.error().message();
+  const World& w = r->world;
+  EXPECT_DOUBLE_EQ(geometry::area(w.zone(ZoneId(0)).polygon), 48.0 - 4.0);
+  ASSERT_EQ(r->warnings.size(), 2u);
+  EXPECT_EQ(r->warnings[0].message,
+            "zone 'hall' has no polygon: it takes the region its walls enclose, x 0 .. 8, y 0 .. 8 (44 m²)");
+  EXPECT_EQ(r->warnings[0].line, 2);
+  EXPECT_THAT(r->warnings[1].message, HasSubstr("3 walls (3.1 m) added along its boundary"));
+  EXPECT_EQ(w.walls().size(), 7u + 3u);
+  EXPECT_EQ(w.door(w.find_door("kiosk_door").value()).other, std::optional<ZoneId>(ZoneId(1)));
+  EXPECT_FALSE(w.door(w.find_door("in").value()).other.has_value());
+}
+
+TEST(WorldYaml, AZoneNothingEnclosesIsRefusedWithItsLine) {
+  struct Case {
+    const char* yaml;
+    int line;
+    const char* message;
+  };
+  const Case cases[] = {
+      // The figure's first lines: one wall and nothing else to span a region.
+      {"zones:\n  - name: canteen_hall\nwalls:\n  - {start: [0.0, 0.0], end: [10.0, 0.0],\n    height: "
+       "3.0}\n",
+       2,
+       "zone 'canteen_hall' has no polygon, its walls enclose no region and there are no segmentation areas "
+       "to span one; give it a polygon or walls that close around it"},
+      // Two rooms closed by walls: which one is the zone?
+      {"zones:\n  - name: z\nwalls:\n  - {start: [0, 0], end: [2, 0]}\n  - {start: [2, 0], end: [2, 2]}\n"
+       "  - {start: [2, 2], end: [0, 2]}\n  - {start: [0, 2], end: [0, 0]}\n  - {start: [5, 0], end: [7, "
+       "0]}\n"
+       "  - {start: [7, 0], end: [7, 2]}\n  - {start: [7, 2], end: [5, 2]}\n  - {start: [5, 2], end: [5, "
+       "0]}\n",
+       2,
+       "zone 'z' has no polygon and the walls enclose 2 separate regions (x 0 .. 7, y 0 .. 2); give the zone "
+       "a polygon"},
+      // Only one zone may be written by name.
+      {"zones:\n  - name: a\n  - name: b\nsegmentation:\n  - {name: q, polygon: [[0, 0], [1, 0], [1, 1]]}\n",
+       3,
+       "zone 'b' has no polygon; only one zone of a world may take its region from the walls (zone 'a' at "
+       "/zones/0 does), so give it a polygon"},
+  };
+  for (const auto& c : cases) {
+    auto w = world_from_yaml(c.yaml);
+    ASSERT_FALSE(w) << c.yaml;
+    EXPECT_EQ(w.error().code, ErrorCode::kValidation);
+    ASSERT_EQ(w.error().errors.size(), 1u) << w.error().message();
+    EXPECT_EQ(w.error().errors[0].pointer, c.line == 3 ? "/zones/1/polygon" : "/zones/0/polygon");
+    EXPECT_EQ(w.error().errors[0].line, c.line) << c.yaml;
+    EXPECT_EQ(w.error().errors[0].message, c.message);
+  }
+}
+
+TEST(WorldYaml, OnlyAWrapMarkThatBeginsALineIsRead) {
+  // Inside a name the mark is an ordinary character, and names may not contain it.
+  auto w = world_from_yaml("zones:\n  - {name: \"a↳b\", polygon: [[0, 0], [1, 0], [1, 1]]}\n");
   ASSERT_FALSE(w);
-  ASSERT_EQ(w.error().errors.size(), 1u);
-  const FieldError& fe = w.error().errors[0];
-  EXPECT_EQ(fe.pointer, "/zones/0/polygon");
-  EXPECT_EQ(fe.message, "is required");
-  EXPECT_EQ(fe.line, 2);
-  EXPECT_EQ(fe.column, 5);
+  EXPECT_EQ(w.error().errors[0].pointer, "/zones/0/name");
+  auto plain = read_world_yaml(testing::kTwoRooms);
+  ASSERT_TRUE(plain);
+  EXPECT_TRUE(plain->warnings.empty());
 }
 
 TEST(WorldYaml, ClinicExampleLoadsWithDerivedWalls) {
@@ -121,7 +236,7 @@ INSTANTIATE_TEST_SUITE_P(
     TenKindsOfMistakes, BrokenWorld,
     ::testing::Values(
         BrokenCase{"zone without polygon", "zones:\n  - name: hall\n    type: lobby\n", "/zones/0/polygon", 2,
-                   "is required"},
+                   "its walls enclose no region and there are no segmentation areas"},
         BrokenCase{"self-crossing polygon",
                    "zones:\n  - name: bow\n    polygon: [[0, 0], [4, 4], [4, 0], [0, 4]]\n",
                    "/zones/0/polygon", 3, "Self-intersection at (2, 2)"},

@@ -1,0 +1,294 @@
+#include "core/floorplan/furnish.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <string>
+
+#include "core/floorplan/placer.hpp"
+#include "core/floorplan/rooms.hpp"
+#include "core/geometry/geos.hpp"
+#include "core/geometry/planar.hpp"
+#include "core/world/footprint.hpp"
+
+namespace socsim::floorplan {
+namespace {
+
+double constraint(std::span<const knowledge::MergedConstraint> cs, std::string_view name) {
+  for (const auto& c : cs)
+    if (c.constraint.name == name) return c.constraint.value;
+  return 0.0;
+}
+
+void furnish_waiting(Placer& p, const std::string& type, const std::optional<CounterPlace>& counter) {
+  const double L = p.len(), D = p.depth();
+  const double cu = counter ? counter->u : L / 2;
+  const bool on_left = cu > L / 2;
+  std::vector<Area> areas{{on_left ? 0.3 : cu + 1.4, 1.6, on_left ? cu - 1.4 : L - 0.3, D - 0.4}};
+  if (counter) {
+    areas.push_back({0.3, 0.4, L - 0.3, counter->v_lo - 0.6});
+    areas.push_back({0.3, counter->v_hi + 0.9, L - 0.3, D - 0.4});
+  }
+  const Area* best = nullptr;
+  for (const auto& a : areas)
+    if (a.u1 - a.u0 >= 1.4 && a.v1 - a.v0 >= 1.4 &&
+        (!best || (a.u1 - a.u0) * (a.v1 - a.v0) > (best->u1 - best->u0) * (best->v1 - best->v0)))
+      best = &a;
+  if (type != "security" && best) {
+    const bool cafe = type == "cafe";
+    if (auto a = p.roi(cafe ? "seating_area" : "waiting_zone", cafe ? "seating" : "waiting", best->u0,
+                       best->v0, best->u1, best->v1))
+      p.grid(cafe ? "table" : "chair", cafe ? "table" : "chair", a->u0, a->v0, a->u1, a->v1, cafe ? 1.8 : 0.8,
+             cafe ? 1.8 : 1.1, 24, 0,
+             cafe ? std::vector<std::string>{"eat", "sit"} : std::vector<std::string>{"sit", "wait"});
+  }
+  if (type == "lobby" || type == "reception" || type == "concourse")
+    p.entity("water_dispenser", "water_dispenser",
+             {{on_left ? 0.4 : L - 0.4, D - 0.4}, {on_left ? 0.4 : L - 0.4, 1.2}}, 0, {"drink"});
+}
+
+void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rules, Rng& rng, double area) {
+  const double L = p.len(), D = p.depth();
+  const double left = rng.chance(0.5) ? 0.45 : L - 0.45;  // corner for small appliances
+  const double right = L - left;
+  if (type == "bedroom") {
+    p.entity("bed", "bed", {{L / 2, D - 1.1}, {L / 2, D / 2 + 0.3}}, kPi, {"lie", "sleep"});
+    p.entity("wardrobe", "wardrobe", {{left, D - 0.4}, {right, D - 0.4}, {left, D / 2}}, kPi, {"store"});
+  } else if (type == "living_room") {
+    const auto sofa =
+        p.entity("sofa", "sofa", {{L / 2, D - 0.6}, {L / 2, D / 2 + 0.5}}, kPi, {"sit", "rest"});
+    if (sofa) {
+      p.entity("coffee_table", "coffee_table", {{sofa->x, sofa->y - 1.0}}, 0, {"place"});
+      p.roi("seating_area", "seating", sofa->x - 1.3, sofa->y - 1.6, sofa->x + 1.3, sofa->y + 0.5);
+    }
+    p.entity("tv", "tv", {{L / 2, 0.4}, {0.4, D / 2}, {L - 0.4, D / 2}}, 0, {"watch"});
+  } else if (type == "kitchen" || type == "kitchenette" || type == "break_room" || type == "staff_room") {
+    const bool cooking = type == "kitchen";
+    p.entity("sink", "sink", {{L / 2, D - 0.4}, {0.4, D / 2}}, kPi, {"wash"});
+    p.entity("fridge", "fridge", {{left, D - 0.4}, {right, D - 0.4}}, kPi, {"store_food"});
+    if (cooking) {
+      p.entity("stove", "stove", {{right, D - 0.4}, {left, D / 2}}, kPi, {"cook"});
+      p.roi("work_area", "work_area", 0.2, D - 1.2, L - 0.2, D - 0.1);
+    } else {
+      p.entity("coffee_machine", "coffee_machine", {{right, D - 0.4}, {right, D / 2}}, kPi, {"drink"});
+      p.entity("water_dispenser", "water_dispenser", {{left, D / 2}, {right, 0.9}}, 0, {"drink"});
+    }
+    if (area >= 9.0) p.entity("table", "table", {{L / 2, D / 2 - 0.3}, {L / 2, D / 2}}, 0, {"eat", "sit"});
+  } else if (type == "bathroom" || type == "toilet") {
+    p.entity("toilet", "toilet", {{left, D - 0.5}, {right, D - 0.5}}, kPi, {"use_toilet"});
+    p.entity("sink", "sink", {{right, D - 0.35}, {left, D / 2}, {right, D / 2}}, kPi, {"wash"});
+    if (type == "bathroom")
+      p.entity("shower", "shower", {{right, 0.6}, {left, 0.6}, {L / 2, D - 0.6}}, 0, {"shower"});
+  } else if (type == "storage") {
+    p.grid("shelf", "shelf", 0.2, D - 0.8, L - 0.2, D - 0.1, 1.0, 0.7, 4, kPi, {"store", "pick"});
+  } else if (type == "dining_room") {
+    p.entity("dining_table", "dining_table", {{L / 2, D / 2}}, 0, {"eat", "sit"});
+  } else if (type == "study") {
+    p.entity("desk", "desk", {{L / 2, D - 0.8}}, kPi, {"work", "sit"});
+  } else if (type == "open_office" || type == "classroom") {
+    const int wanted = type == "open_office"
+                           ? std::max(1, static_cast<int>(std::floor(area / rules.area_per_desk)))
+                           : std::max(1, static_cast<int>(std::floor(area / 2.0)));
+    const int n = p.grid("desk", "desk", 1.0, 1.4, L - 1.0, D - 1.0, type == "open_office" ? 1.8 : 1.3,
+                         type == "open_office" ? 2.4 : 1.6, wanted, 0, {"work", "sit"});
+    if (n > 0) p.roi("work_area", "desks", 0.8, 1.3, L - 0.8, D - 0.8, true);
+    if (type == "open_office") {
+      p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}, {left, D - 0.4}}, 0,
+               {"drink"});
+      p.entity("printer", "printer", {{right, D - 0.4}, {left, D - 0.4}}, kPi, {"print"});
+    } else {
+      p.entity("teacher_desk", "teacher_desk", {{L / 2, 0.9}, {L / 2, D - 0.7}}, 0, {"teach"});
+    }
+  } else if (type == "private_office") {
+    p.entity("desk", "desk", {{L / 2, D - 1.1}, {L / 2, D / 2}}, kPi, {"work", "sit"});
+  } else if (type == "meeting_room") {
+    p.entity("meeting_table", "table", {{L / 2, D / 2 + 0.3}, {L / 2, D / 2}}, 0, {"meet", "sit"});
+    p.entity("whiteboard", "whiteboard", {{L / 2, D - 0.15}, {0.15, D / 2}}, kPi, {"present"});
+  } else if (type == "reception" || type == "lobby" || type == "security" || type == "gate_area" ||
+             type == "concourse" || type == "cafe") {
+    const bool gate = type == "gate_area";
+    const std::string counter = type == "security"    ? "checkpoint"
+                                : gate                ? "gate_counter"
+                                : type == "cafe"      ? "counter"
+                                : type == "concourse" ? "info_desk"
+                                                      : "reception_counter";
+    // The side with the main door first; a room too shallow for a queue there turns a quarter.
+    const double frac = rng.chance(0.5) ? 0.68 : 0.32;
+    std::optional<CounterPlace> at;
+    for (int turn : {0, 1, 3, 2}) {
+      Placer q = p.turned((p.side() + turn) % 4);
+      at = q.counter_with_queue("counter", counter, q.len() * frac,
+                                std::min(q.depth() - 0.8, std::max(3.2, q.depth() * 0.7)), 4.0, false,
+                                rules.queue_lane_width, {"serve", "queue_target"});
+      if (at) {
+        furnish_waiting(q, type, at);
+        return;
+      }
+    }
+    furnish_waiting(p, type, std::nullopt);
+  } else if (type == "waiting_room") {
+    if (auto a = p.roi("waiting_zone", "waiting", 0.4, 1.4, L - 0.4, D - 0.4))
+      p.grid("chair", "chair", a->u0, a->v0, a->u1, a->v1, 0.8, 1.1, 24, 0, {"sit", "wait"});
+    p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}}, 0, {"drink"});
+  } else if (type == "patient_room" || type == "icu_room") {
+    const auto bed = p.entity("bed", "bed", {{L / 2, D - 1.3}, {L / 2, D / 2 + 0.4}}, kPi, {"lie", "visit"});
+    if (bed) p.entity("chair", "chair", {{bed->x + 1.4, bed->y}, {bed->x - 1.4, bed->y}}, 0, {"sit"});
+    p.entity(type == "icu_room" ? "monitor" : "sink", type == "icu_room" ? "monitor" : "sink",
+             {{left, 1.0}, {right, 1.0}, {left, D - 0.4}}, 0, {type == "icu_room" ? "observe" : "wash"});
+  } else if (type == "nurse_station") {
+    p.entity("counter", "counter", {{L / 2, D / 2}, {L / 2, D - 1.0}}, kPi, {"serve", "queue_target"});
+    p.entity("desk", "desk", {{left, D - 0.6}, {right, D - 0.6}}, kPi, {"work", "sit"});
+    p.entity("medication_cart", "medication_cart", {{right, D - 0.5}, {left, 1.0}}, 0, {"restock"});
+  } else if (type == "treatment_room") {
+    p.entity("exam_table", "exam_table", {{L / 2, D - 1.2}, {L / 2, D / 2}}, kPi, {"examine", "lie"});
+    p.entity("desk", "desk", {{left, D / 2}, {right, D / 2}}, 0, {"work", "sit"});
+    p.entity("sink", "sink", {{right, 0.9}, {left, 0.9}}, 0, {"wash"});
+  } else if (type == "dining_hall") {
+    // Serving counter at the far side, its queue towards the main door; tables on both sides of it.
+    const double cu = L * (rng.chance(0.5) ? 0.3 : 0.7);
+    const auto at = p.counter_with_queue("counter", "serving_counter", cu, D - 1.0, 4.5, false,
+                                         rules.queue_lane_width, {"serve", "queue_target"});
+    const double gap = rules.queue_lane_width / 2 + 1.0;
+    const double split = at ? at->u : -10.0;
+    if (auto a = split - gap - 0.8 >= 2.0
+                     ? p.roi("seating_area", "seating_01", 0.8, 1.6, split - gap, D - 0.6)
+                     : std::nullopt)
+      p.grid("table", "table_a", a->u0, a->v0, a->u1, a->v1, 2.0, 2.2, 40, 0, {"eat", "sit"});
+    const double u0 = at ? split + gap : 0.8;
+    if (auto a = L - 0.8 - u0 >= 2.0 ? p.roi("seating_area", "seating_02", u0, 1.6, L - 0.8, D - 0.6)
+                                     : std::nullopt)
+      p.grid("table", "table_b", a->u0, a->v0, a->u1, a->v1, 2.0, 2.2, 40, 0, {"eat", "sit"});
+    p.entity("water_dispenser", "water_dispenser", {{0.5, D / 2}, {L - 0.5, D / 2}}, 0, {"drink"});
+    p.entity("tray_return", "tray_return", {{L - 0.5, D * 0.3}, {0.5, D * 0.3}}, 0, {"return_tray"});
+  } else if (type == "sales_floor" || type == "warehouse_floor" || type == "stock_room") {
+    const bool shop = type == "sales_floor";
+    double v_start = 1.4;
+    if (shop) {
+      const double lane = std::clamp(D * 0.3, 1.5, 3.5);
+      p.counter_with_queue("counter", "checkout", L * (rng.chance(0.5) ? 0.3 : 0.7), 1.8, lane, true,
+                           rules.queue_lane_width, {"pay", "queue_target"});
+      v_start = 1.8 + 0.7 + lane + 0.6;
+    } else if (type == "warehouse_floor") {
+      p.roi("work_area", "staging", 0.8, 0.8, std::min(L - 0.8, 6.0), 3.0);
+      v_start = 3.4;
+    }
+    // Rows of shelves or racks along u, walkway ROIs between them.
+    const double shelf = type == "warehouse_floor" ? 1.1 : 0.6;
+    const double walk = rules.walkway_width;
+    int row = 0;
+    for (double v = v_start; v + shelf + walk <= D - 0.3 && row < 12; v += shelf + walk) {
+      ++row;
+      p.roi("walkway", numbered("aisle", row), 0.6, v + shelf, L - 0.6, v + shelf + walk, true);
+      p.grid(shop ? "shelf" : "rack", numbered(shop ? "shelf" : "rack", row), 1.0, v, L - 1.0, v + shelf, 2.0,
+             shelf, 20, 0, {shop ? "browse" : "store", "pick"});
+    }
+  } else if (type == "loading_bay") {
+    p.roi("work_area", "dock", 0.6, 0.6, L - 0.6, D - 0.6);
+    p.grid("pallet", "pallet", 0.8, D - 2.0, L - 0.8, D - 0.6, 1.6, 1.4, 6, 0, {"pick", "store"});
+  }
+}
+
+}  // namespace
+
+FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> constraints,
+                                 const PlanRequirement& plan) {
+  FurnishingRules r;
+  r.walkway_width = std::max({1.2, plan.walkway_width + 0.2});
+  r.queue_lane_width = std::max(1.0, plan.queue_lane_width + 0.05);
+  const double per_person = constraint(constraints, "workspace_area_per_person");
+  const double volume = constraint(constraints, "workroom_volume_per_person");
+  const double height = plan.ceiling_height > 0 ? std::max(plan.ceiling_height, 3.0) : 3.0;
+  r.area_per_desk = std::max({8.0, per_person, volume / height});
+  return r;
+}
+
+Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
+                   Rng& rng) {
+  Furnishing out;
+  std::map<std::string, std::string> type_of;
+  for (const auto& z : zones) type_of[z.name] = canonical_room_type(z.type);
+  const bool named_entrance = std::any_of(doors.begin(), doors.end(), [](const DoorSpec& d) {
+    return d.name == "main_entrance" && d.connects.size() == 1;
+  });
+  for (const auto& z : zones) {
+    const std::string type = canonical_room_type(z.type);
+    std::vector<DoorAt> here;
+    for (const auto& d : doors) {
+      const auto it = std::find(d.connects.begin(), d.connects.end(), z.name);
+      if (it == d.connects.end()) continue;
+      DoorAt a{d.pose.position(), d.width, d.connects.size() == 1, "", d.name};
+      if (!a.exterior) a.other_type = type_of[d.connects[it == d.connects.begin() ? 1 : 0]];
+      here.push_back(std::move(a));
+    }
+    if (is_circulation_type(type) && !is_hall_type(type)) {
+      out.rois.push_back({z.name + "_walk", "corridor", z.polygon});
+    }
+    // Entrance ROI just inside every door to the outside: "<zone>_entrance" for the main entrance
+    // (or, in a plan without one, the zone's first outside door), "<zone>_<door>" of kind exit
+    // for further exits.
+    bool has_entrance = named_entrance;
+    for (const auto& d : here) {
+      if (!d.exterior) continue;
+      const bool entrance = d.name == "main_entrance" || !has_entrance;
+      has_entrance = true;
+      const auto ring = z.polygon.outer;
+      double best = 1e18;
+      Segment wall{};
+      for (const auto& e : geometry::edges(ring)) {
+        const double dist = geometry::distance(e, d.centre);
+        if (dist < best) {
+          best = dist;
+          wall = e;
+        }
+      }
+      const double len = geometry::length(wall);
+      if (len <= 0) continue;
+      const Point u{(wall.b.x - wall.a.x) / len, (wall.b.y - wall.a.y) / len};
+      Point n{-u.y, u.x};
+      const Point c = geometry::closest_point(wall, d.centre);
+      if (!geometry::contains(z.polygon, {c.x + n.x * 0.1, c.y + n.y * 0.1})) n = {-n.x, -n.y};
+      // Half as wide as the door plus 0.2 m each side, narrowed to the wall (a corridor's end).
+      const double h =
+          std::min(d.width / 2 + 0.2, std::min(geometry::distance(c, wall.a), geometry::distance(c, wall.b)));
+      if (h < d.width / 2 - 1e-9) continue;
+      std::vector<Point> r{{c.x - u.x * h, c.y - u.y * h},
+                           {c.x + u.x * h, c.y + u.y * h},
+                           {c.x + u.x * h + n.x * 1.0, c.y + u.y * h + n.y * 1.0},
+                           {c.x - u.x * h + n.x * 1.0, c.y - u.y * h + n.y * 1.0}};
+      if (geometry::signed_area(r) < 0) std::reverse(r.begin(), r.end());
+      const Polygon poly{r, {}};
+      bool inside = true;
+      for (const auto& p : r) inside = inside && geometry::contains(z.polygon, p, 1e-6);
+      if (inside)
+        out.rois.push_back(
+            {entrance ? z.name + "_entrance" : z.name + "_" + d.name, entrance ? "entrance" : "exit", poly});
+    }
+    if (!find_room_type(type) || is_corridor_type(type)) continue;
+    const Box box = inner_box(z.polygon);
+    if (box.width() < 1.0 || box.height() < 1.0) continue;
+    // Main door: the kitchen door of a dining hall, the entrance of a shop or lobby, else the door
+    // to circulation, else the first.
+    const DoorAt* main = nullptr;
+    auto pick = [&](auto pred) {
+      for (const auto& d : here)
+        if (!main && pred(d)) main = &d;
+    };
+    if (type == "sales_floor" || type == "dining_hall" || type == "lobby" || type == "reception" ||
+        type == "security" || type == "concourse")
+      pick([](const DoorAt& d) { return d.exterior; });
+    pick([](const DoorAt& d) { return !d.exterior && is_circulation_type(d.other_type); });
+    pick([](const DoorAt&) { return true; });
+    const int side = main ? nearest_side(box, main->centre) : 0;
+    const std::size_t first_entity = out.entities.size(), first_roi = out.rois.size();
+    Placer placer(z, Frame(box, side), here, out);
+    furnish_room(placer, type, rules, rng, geometry::area(z.polygon));
+    placer.poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
+  }
+  return out;
+}
+
+}  // namespace socsim::floorplan

@@ -1,0 +1,39 @@
+#pragma once
+// ROIs, POIs and entities placed by room type, as the floor-plan generators need them: a
+// reception counter with its queue lane and a waiting zone in a lobby, tables and a serving
+// counter in a dining hall, desks in offices, beds in patient rooms, a sofa in a living room,
+// water dispensers and coffee machines where they fit, corridor and entrance ROIs.
+#include <span>
+#include <vector>
+
+#include "core/common/rng.hpp"
+#include "core/floorplan/compliance.hpp"
+#include "core/world/world_builder.hpp"
+
+namespace socsim::floorplan {
+
+// Floor plans are built of the world model's types (World, Zone, Point, …).
+using namespace socsim::world;
+
+struct FurnishingRules {
+  double walkway_width = 1.2;     // m, aisles between shelves and racks (at least the code's aisle width)
+  double queue_lane_width = 1.0;  // m
+  double area_per_desk = 10.0;    // m² of work room per desk
+};
+
+// Rules that satisfy the retrieved constraints (aisle widths, workspace per person).
+FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> constraints,
+                                 const PlanRequirement& plan);
+
+struct Furnishing {
+  std::vector<Roi> rois;
+  std::vector<EntitySpec> entities;
+};
+
+// Furnishes every zone of a known type inside the largest axis-aligned rectangle of its polygon,
+// facing the room's main door and keeping the doors clear. Zones and doors are those handed to
+// WorldBuilder; the names made are "<zone>_<item>[_NN]". Deterministic for a given rng state.
+Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
+                   Rng& rng);
+
+}  // namespace socsim::floorplan

@@ -1,0 +1,780 @@
+#include "core/floorplan/offline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <set>
+
+#include "core/common/rng.hpp"
+#include "core/floorplan/furnish.hpp"
+#include "core/floorplan/rooms.hpp"
+#include "core/geometry/planar.hpp"
+#include "core/world/layout_check.hpp"
+
+namespace socsim::floorplan {
+namespace {
+
+using knowledge::MergedConstraint;
+
+// The layout works in integer centimetres so that coordinates are exact and the YAML is short.
+int cm_up(double metres, int step = 5) {
+  const int c = static_cast<int>(std::ceil(metres * 100.0 - 1e-6));
+  return (c + step - 1) / step * step;
+}
+double m(int cm) {
+  return cm / 100.0;
+}
+
+struct Rect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  [[nodiscard]] int w() const { return x1 - x0; }
+  [[nodiscard]] int h() const { return y1 - y0; }
+};
+
+// The wall two touching rectangles share: on x = c (vertical) or y = c (horizontal), from lo to hi.
+struct Wall {
+  bool vertical = false;
+  int c = 0, lo = 0, hi = 0;
+};
+
+std::optional<Wall> shared_wall(const Rect& a, const Rect& b) {
+  if (a.x1 == b.x0 || a.x0 == b.x1) {
+    const int lo = std::max(a.y0, b.y0), hi = std::min(a.y1, b.y1);
+    if (hi > lo) return Wall{true, a.x1 == b.x0 ? a.x1 : a.x0, lo, hi};
+  }
+  if (a.y1 == b.y0 || a.y0 == b.y1) {
+    const int lo = std::max(a.x0, b.x0), hi = std::min(a.x1, b.x1);
+    if (hi > lo) return Wall{false, a.y1 == b.y0 ? a.y1 : a.y0, lo, hi};
+  }
+  return std::nullopt;
+}
+
+// Parts of rect i's sides not shared with any other rectangle: the outside walls.
+std::vector<Wall> outside_walls(const std::vector<Rect>& rects, std::size_t i) {
+  const Rect& r = rects[i];
+  std::vector<Wall> sides = {{false, r.y0, r.x0, r.x1},
+                             {true, r.x1, r.y0, r.y1},
+                             {false, r.y1, r.x0, r.x1},
+                             {true, r.x0, r.y0, r.y1}};
+  std::vector<Wall> out;
+  for (const Wall& side : sides) {
+    std::vector<std::pair<int, int>> free{{side.lo, side.hi}};
+    for (std::size_t j = 0; j < rects.size(); ++j) {
+      if (j == i) continue;
+      const auto w = shared_wall(r, rects[j]);
+      if (!w || w->vertical != side.vertical || w->c != side.c) continue;
+      std::vector<std::pair<int, int>> next;
+      for (auto [lo, hi] : free) {
+        if (w->hi <= lo || w->lo >= hi) {
+          next.emplace_back(lo, hi);
+          continue;
+        }
+        if (w->lo > lo) next.emplace_back(lo, w->lo);
+        if (w->hi < hi) next.emplace_back(w->hi, hi);
+      }
+      free = std::move(next);
+    }
+    for (auto [lo, hi] : free) out.push_back({side.vertical, side.c, lo, hi});
+  }
+  return out;
+}
+
+struct PlanRoom {
+  std::string name;
+  std::string type;
+  double area = 0.0;  // target, m²
+  int min_dim = 0;    // cm
+  Rect rect;
+  bool placed = false;
+};
+
+struct DoorDraft {
+  std::string name;
+  int x = 0, y = 0;  // cm
+  bool vertical_wall = false;
+  int width = 0;  // cm
+  std::vector<std::string> connects;
+};
+
+struct DomainStyle {
+  double depth_lo, depth_hi;  // band depth range, m
+  const char* floor;
+};
+
+DomainStyle style_of(std::string_view domain) {
+  if (domain == "residential") return {3.4, 4.6, "wood"};
+  if (domain == "office") return {4.2, 6.0, "carpet"};
+  if (domain == "hospital") return {4.2, 5.4, "vinyl"};
+  if (domain == "school") return {6.4, 8.0, "linoleum"};
+  if (domain == "warehouse") return {3.8, 5.6, "concrete"};
+  if (domain == "airport") return {4.5, 6.5, "terrazzo"};
+  return {3.6, 5.4, "vinyl"};  // canteen, retail
+}
+
+std::string material_of(std::string_view domain, std::string_view type) {
+  if (is_toilet_type(type) || type == "kitchen" || type == "kitchenette") return "ceramic_tile";
+  if (domain == "hospital") return "washable_paint";
+  if (domain == "warehouse" && type != "private_office" && type != "break_room") return "concrete";
+  return "painted_plaster";
+}
+
+std::string circulation_for(std::string_view domain) {
+  return room_program(domain).rooms.front().type;
+}
+
+class Layout {
+ public:
+  Layout(const SceneGraph& graph, std::span<const MergedConstraint> constraints)
+      : graph_(graph), constraints_(constraints), plan_(plan_requirement(constraints, graph.domain)) {}
+
+  Status prepare() {
+    // Circulation: the first corridor or hall of the graph, else one the domain needs.
+    for (std::size_t i = 0; i < graph_.rooms.size(); ++i)
+      if (!circ_ && is_circulation_type(graph_.rooms[i].type)) circ_ = i;
+    if (!circ_) {
+      const std::string type = circulation_for(graph_.domain);
+      std::string name = type;
+      for (int k = 2; std::any_of(graph_.rooms.begin(), graph_.rooms.end(),
+                                  [&](const SceneRoom& r) { return r.name == name; });
+           ++k)
+        name = type + "_" + std::to_string(k);
+      for (const auto& r : graph_.rooms) graph_.adjacency.emplace_back(name, r.name);
+      graph_.rooms.push_back({name, type, std::nullopt});
+      circ_ = graph_.rooms.size() - 1;
+      notes_.push_back("added circulation room '" + name + "' (" + type + ") connected to every room");
+    }
+    const std::size_t n = graph_.rooms.size();
+    index_.clear();
+    for (std::size_t i = 0; i < n; ++i) index_[graph_.rooms[i].name] = i;
+    if (graph_.entrance.empty()) graph_.entrance = graph_.rooms[*circ_].name;
+    entrance_ = index_.at(graph_.entrance);
+    neighbours_.assign(n, {});
+    std::vector<FieldError> errors;
+    std::vector<std::size_t> parent(n);
+    for (std::size_t i = 0; i < n; ++i) parent[i] = i;
+    auto root = [&](std::size_t x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    for (std::size_t e = 0; e < graph_.adjacency.size(); ++e) {
+      const std::size_t a = index_.at(graph_.adjacency[e].first), b = index_.at(graph_.adjacency[e].second);
+      if (a == *circ_ || b == *circ_) continue;
+      const std::string ptr = "/adjacency/" + std::to_string(e);
+      for (std::size_t r : {a, b})
+        if (neighbours_[r].size() == 2) {
+          errors.push_back({ptr,
+                            "room '" + graph_.rooms[r].name + "' must already share walls with '" +
+                                graph_.rooms[neighbours_[r][0]].name + "' and '" +
+                                graph_.rooms[neighbours_[r][1]].name +
+                                "'; the offline layout puts at most two rooms beside a room on the " +
+                                graph_.rooms[*circ_].type + " — connect the others through '" +
+                                graph_.rooms[*circ_].name + "'",
+                            "", 0, 0});
+        }
+      if (!errors.empty()) break;
+      if (root(a) == root(b)) {
+        errors.push_back(
+            {ptr,
+             "rooms '" + graph_.rooms[a].name + "' and '" + graph_.rooms[b].name +
+                 "' would close a ring of rooms, which the offline layout cannot place; connect one "
+                 "of them through '" +
+                 graph_.rooms[*circ_].name + "'",
+             "", 0, 0});
+        break;
+      }
+      parent[root(a)] = root(b);
+      neighbours_[a].push_back(b);
+      neighbours_[b].push_back(a);
+    }
+    if (!errors.empty())
+      return fail(ErrorCode::kValidation, "the scene graph cannot be laid out by the offline generator",
+                  std::move(errors));
+    // Chains: the paths of rooms that must stand side by side, in graph order.
+    std::vector<bool> seen(n, false);
+    seen[*circ_] = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (seen[i] || neighbours_[i].size() == 2) continue;
+      std::vector<std::size_t> chain{i};
+      seen[i] = true;
+      for (std::size_t cur = i;;) {
+        std::optional<std::size_t> next;
+        for (auto nb : neighbours_[cur])
+          if (!seen[nb]) next = nb;
+        if (!next) break;
+        seen[*next] = true;
+        chain.push_back(*next);
+        cur = *next;
+      }
+      chains_.push_back(std::move(chain));
+    }
+    chain_of_.assign(n, 0);
+    for (std::size_t c = 0; c < chains_.size(); ++c)
+      for (auto r : chains_[c]) chain_of_[r] = c;
+    return {};
+  }
+
+  // One layout; nullopt (with a reason) when this draw does not fit, e.g. a wall too short for its door.
+  std::optional<std::string> attempt(Rng& rng, double scale) {
+    const std::size_t n = graph_.rooms.size();
+    rooms_.assign(n, {});
+    doors_.clear();
+    const DomainStyle style = style_of(graph_.domain);
+    const bool dwelling = graph_.domain == "residential";
+    door_w_ = cm_up(std::max(plan_.door_width, dwelling ? 0.85 : 0.9)) + 5 * static_cast<int>(rng.below(3));
+    public_w_ = std::max(door_w_, cm_up(plan_.public_door_width));
+    entrance_w_ = dwelling ? std::max(door_w_, cm_up(0.95))
+                           : std::max(public_w_, 180 + 10 * static_cast<int>(rng.below(3)));
+
+    // Target areas and narrowest dimensions.
+    std::optional<std::size_t> main_bedroom;
+    std::vector<double> bedroom_areas;
+    for (std::size_t i = 0; i < n; ++i) {
+      const SceneRoom& s = graph_.rooms[i];
+      PlanRoom& r = rooms_[i];
+      r.name = s.name;
+      r.type = s.type;
+      const RoomType* rt = find_room_type(s.type);
+      const double lo = rt && rt->area_hi > 0 ? rt->area_lo : 10.0,
+                   hi = rt && rt->area_hi > 0 ? rt->area_hi : 15.0;
+      r.area = s.area ? *s.area : rng.uniform(lo, hi);
+      const bool main = is_bedroom_type(s.type) && !main_bedroom;
+      if (main) main_bedroom = i;
+      const RoomRequirement req = room_requirement(constraints_, s.type, main);
+      r.area = std::max(r.area, req.min_area * 1.03) * scale;
+      r.min_dim = cm_up(std::max({req.min_dimension, m(door_w_) + 0.35, 1.2}));
+    }
+    if (main_bedroom) {
+      double biggest = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (is_bedroom_type(rooms_[i].type) && i != *main_bedroom)
+          biggest = std::max(biggest, rooms_[i].area);
+      rooms_[*main_bedroom].area = std::max(rooms_[*main_bedroom].area, biggest + 0.5);
+      for (const auto& r : rooms_)
+        if (is_bedroom_type(r.type)) bedroom_areas.push_back(r.area);
+      const DwellingRequirement dw = dwelling_requirement(constraints_, bedroom_areas);
+      std::vector<std::size_t> stores;
+      for (std::size_t i = 0; i < n; ++i)
+        if (rooms_[i].type == "storage") stores.push_back(i);
+      for (auto i : stores)
+        rooms_[i].area =
+            std::max(rooms_[i].area, dw.storage_area * 1.05 / static_cast<double>(stores.size()));
+    }
+
+    // Caps at the ends of the circulation, bands of rooms along its sides.
+    const bool corridor = is_corridor_type(rooms_[*circ_].type);
+    const std::size_t max_caps = entrance_ == *circ_ ? 1 : 2;
+    std::vector<std::size_t> caps;
+    auto try_cap = [&](std::size_t r, double p) {
+      if (caps.size() >= max_caps || r == *circ_ || !rng.chance(p)) return;
+      for (auto c : caps)
+        if (c == r || chain_of_[c] == chain_of_[r]) return;
+      caps.push_back(r);
+    };
+    try_cap(entrance_, 0.8);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string& t = rooms_[i].type;
+      if (t == "living_room" || t == "lobby" || t == "reception" || t == "waiting_room" || t == "security" ||
+          t == "open_office" || t == "loading_bay")
+        try_cap(i, 0.45);
+    }
+    bool needs_two_bands = false;
+    std::vector<std::vector<std::size_t>> pieces_of(caps.size());
+    for (std::size_t k = 0; k < caps.size(); ++k) {
+      const auto& chain = chains_[chain_of_[caps[k]]];
+      const auto pos =
+          static_cast<std::size_t>(std::find(chain.begin(), chain.end(), caps[k]) - chain.begin());
+      std::vector<std::size_t> before(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(pos));
+      std::reverse(before.begin(), before.end());
+      std::vector<std::size_t> after(chain.begin() + static_cast<std::ptrdiff_t>(pos) + 1, chain.end());
+      if (!before.empty() && !after.empty()) needs_two_bands = true;
+      pieces_of[k] = before.empty() ? after : before;
+      if (!before.empty() && !after.empty()) {
+        pieces_of[k] = before;
+        second_piece_[k] = after;
+      }
+    }
+    std::size_t band_rooms = n - 1 - caps.size();
+    const bool single =
+        !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
+    std::vector<std::size_t> left[2], middle[2], right[2];
+    const bool first_cap_left = rng.chance(0.5);
+    std::vector<bool> used(n, false);
+    used[*circ_] = true;
+    for (std::size_t k = 0; k < caps.size(); ++k) {
+      used[caps[k]] = true;
+      cap_left_[caps[k]] = (k == 0) == first_cap_left;
+      std::vector<std::vector<std::size_t>> pieces{pieces_of[k]};
+      if (second_piece_.count(k)) pieces.push_back(second_piece_[k]);
+      const int first_band = single ? 0 : static_cast<int>(rng.below(2));
+      for (std::size_t p = 0; p < pieces.size(); ++p) {
+        if (pieces[p].empty()) continue;
+        const int b = p == 0 ? first_band : 1 - first_band;
+        auto& dst = cap_left_[caps[k]] ? left[b] : right[b];
+        if (!dst.empty()) return "two end rooms want the same band end";
+        dst = pieces[p];
+        if (!cap_left_[caps[k]]) std::reverse(dst.begin(), dst.end());
+        for (auto r : pieces[p]) used[r] = true;
+      }
+    }
+    second_piece_.clear();
+    std::vector<std::size_t> order(chains_.size());
+    for (std::size_t c = 0; c < order.size(); ++c) order[c] = c;
+    rng.shuffle(order);
+    double load[2] = {0, 0};
+    for (int b = 0; b < 2; ++b)
+      for (auto* part : {&left[b], &right[b]})
+        for (auto r : *part) load[b] += rooms_[r].area;
+    for (auto c : order) {
+      std::vector<std::size_t> chain;
+      for (auto r : chains_[c])
+        if (!used[r]) chain.push_back(r);
+      if (chain.empty()) continue;
+      if (rng.chance(0.5)) std::reverse(chain.begin(), chain.end());
+      int b = load[0] <= load[1] ? 0 : 1;
+      if (rng.chance(0.2)) b = 1 - b;
+      if (single) b = 0;
+      for (auto r : chain) {
+        middle[b].push_back(r);
+        load[b] += rooms_[r].area;
+        used[r] = true;
+      }
+    }
+
+    // Band depths and room widths.
+    int depth[2] = {0, 0};
+    std::vector<std::size_t> band[2];
+    for (int b = 0; b < 2; ++b) {
+      band[b] = left[b];
+      band[b].insert(band[b].end(), middle[b].begin(), middle[b].end());
+      band[b].insert(band[b].end(), right[b].begin(), right[b].end());
+      depth[b] = cm_up(rng.uniform(style.depth_lo, style.depth_hi));
+      for (auto r : band[b]) depth[b] = std::max(depth[b], rooms_[r].min_dim);
+    }
+    std::vector<int> width(n, 0);
+    int length[2] = {0, 0};
+    for (int b = 0; b < 2; ++b)
+      for (auto r : band[b]) {
+        width[r] = cm_up(std::max(rooms_[r].area / m(depth[b]), m(rooms_[r].min_dim)));
+        length[b] += width[r];
+      }
+
+    // The circulation: a corridor as long as the longer band, or a hall of its own area.
+    PlanRoom& c = rooms_[*circ_];
+    int L = 0, W = 0;
+    if (corridor) {
+      W = cm_up(std::max(plan_.corridor_width, m(std::max(door_w_, public_w_)) + 0.35) +
+                rng.uniform(0.0, 0.3));
+      L = std::max({length[0], length[1], 300});
+    } else {
+      const RoomType* rt = find_room_type(c.type);
+      const double area =
+          graph_.rooms[*circ_].area ? *graph_.rooms[*circ_].area : rng.uniform(rt->area_lo, rt->area_hi);
+      c.area = area * scale;
+      L = std::max({length[0], length[1], cm_up(std::sqrt(c.area * rng.uniform(0.9, 1.7)))});
+      W = cm_up(std::max({c.area / m(L), 4.0, m(c.min_dim)}));
+    }
+    // Bands shorter than the circulation: stretched when a little short, else they leave a gap.
+    std::vector<int> x_of(n, 0);
+    for (int b = 0; b < 2; ++b) {
+      if (band[b].empty()) continue;
+      const int gap = L - length[b];
+      if (gap > 0 && corridor && gap * 100 <= L * 35) {
+        int given = 0;
+        for (std::size_t k = 0; k < band[b].size(); ++k) {
+          const auto r = band[b][k];
+          const int extra = k + 1 == band[b].size() ? gap - given : gap * width[r] / length[b] / 5 * 5;
+          width[r] += extra;
+          given += extra;
+        }
+        length[b] = L;
+      }
+      int x = 0;
+      for (std::size_t k = 0; k < band[b].size(); ++k) {
+        const auto r = band[b][k];
+        const bool first_right = !right[b].empty() && r == right[b].front();
+        if (first_right)
+          x = L - [&] {
+            int w = 0;
+            for (auto q : right[b]) w += width[q];
+            return w;
+          }();
+        x_of[r] = x;
+        x += width[r];
+      }
+    }
+    c.rect = {0, 0, L, W};
+    c.placed = true;
+    for (int b = 0; b < 2; ++b)
+      for (auto r : band[b]) {
+        rooms_[r].rect = b == 0 ? Rect{x_of[r], W, x_of[r] + width[r], W + depth[b]}
+                                : Rect{x_of[r], -depth[b], x_of[r] + width[r], 0};
+        rooms_[r].placed = true;
+      }
+    for (auto cap : caps) {
+      const int y0 = band[1].empty() ? 0 : -depth[1];
+      const int y1 = W + (band[0].empty() ? 0 : depth[0]);
+      // Public entrance rooms are not left as a sliver across the building's end.
+      const std::string& t = rooms_[cap].type;
+      const double stout = t == "lobby" || t == "reception" || t == "security" ? 0.4 * m(y1 - y0) : 0.0;
+      const int w = cm_up(std::max({rooms_[cap].area / m(y1 - y0), m(rooms_[cap].min_dim), 2.4, stout}));
+      rooms_[cap].rect = cap_left_[cap] ? Rect{-w, y0, 0, y1} : Rect{L, y0, L + w, y1};
+      rooms_[cap].placed = true;
+    }
+    cap_left_.clear();
+    for (const auto& r : rooms_)
+      if (!r.placed) return "room '" + r.name + "' was not placed";
+
+    // Doors: one per edge on the shared wall, one to the outside.
+    std::vector<Rect> rects;
+    for (const auto& r : rooms_) rects.push_back(r.rect);
+    std::set<std::string> names;
+    for (const auto& [an, bn] : graph_.adjacency) {
+      const std::size_t a = index_.at(an), b = index_.at(bn);
+      const auto wall = shared_wall(rects[a], rects[b]);
+      if (!wall) return "rooms '" + an + "' and '" + bn + "' do not touch";
+      const bool open = !dwelling && (is_public(a) || is_public(b));
+      const int w = open ? public_w_ : door_w_;
+      std::string name = "door_" + an + "_" + bn;
+      for (int k = 2; names.count(name); ++k) name = "door_" + an + "_" + bn + "_" + std::to_string(k);
+      names.insert(name);
+      if (!place_door(rng, name, *wall, w, {an, bn}))
+        return "the wall between '" + an + "' and '" + bn + "' is too short";
+    }
+    {
+      auto walls = outside_walls(rects, entrance_);
+      std::vector<Wall> fit;
+      for (const auto& wl : walls)
+        if (wl.hi - wl.lo >= entrance_w_ + 60) fit.push_back(wl);
+      if (fit.empty()) return "no outside wall of '" + rooms_[entrance_].name + "' takes the entrance";
+      const Wall& wl = fit[rng.below(static_cast<std::uint32_t>(fit.size()))];
+      place_door(rng, "main_entrance", wl, entrance_w_, {rooms_[entrance_].name});
+    }
+
+    // Orientation: a quarter turn or none, mirrored or not, then moved into the first quadrant.
+    rotate_ = static_cast<int>(rng.below(4));
+    mirror_ = rng.chance(0.5);
+    return std::nullopt;
+  }
+
+  // The laid-out plan as WorldBuilder input (metres, first quadrant).
+  void emit(WorldBuilder& builder, std::vector<Zone>& zones, std::vector<DoorSpec>& doors) const {
+    auto tf = [&](int x, int y) {
+      for (int k = 0; k < rotate_; ++k) {
+        const int t = x;
+        x = -y;
+        y = t;
+      }
+      if (mirror_) x = -x;
+      return std::pair{x, y};
+    };
+    int min_x = INT32_MAX, min_y = INT32_MAX;
+    for (const auto& r : rooms_)
+      for (auto [x, y] : {tf(r.rect.x0, r.rect.y0), tf(r.rect.x1, r.rect.y1)}) {
+        min_x = std::min(min_x, x);
+        min_y = std::min(min_y, y);
+      }
+    auto point = [&](int x, int y) {
+      auto [tx, ty] = tf(x, y);
+      return Point{m(tx - min_x), m(ty - min_y)};
+    };
+    for (const auto& r : rooms_) {
+      std::vector<Point> ring{point(r.rect.x0, r.rect.y0), point(r.rect.x1, r.rect.y0),
+                              point(r.rect.x1, r.rect.y1), point(r.rect.x0, r.rect.y1)};
+      if (geometry::signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+      // Start at the lower-left corner: stable text whatever the orientation.
+      const auto first = std::min_element(ring.begin(), ring.end(), [](const Point& a, const Point& b) {
+        return a.y < b.y || (a.y == b.y && a.x < b.x);
+      });
+      std::rotate(ring.begin(), first, ring.end());
+      Zone z{r.name, r.type, material_of(graph_.domain, r.type), Polygon{ring, {}}};
+      zones.push_back(z);
+      builder.add_zone(std::move(z));
+    }
+    for (const auto& d : doors_) {
+      const Point p = point(d.x, d.y);
+      // The opening's normal: across a vertical wall it points along x, before the turn.
+      bool along_x = d.vertical_wall;
+      if (rotate_ % 2 == 1) along_x = !along_x;
+      DoorSpec s{d.name, {p.x, p.y, along_x ? 0.0 : std::numbers::pi / 2}, m(d.width), d.connects};
+      doors.push_back(s);
+      builder.add_door(std::move(s));
+    }
+  }
+
+  // A second door to the outside as far from the main entrance as the outside walls allow
+  // (IBC 1007.1.1 wants at least half the building's diagonal): circulation and public rooms
+  // first, then other rooms except toilets, bedrooms and stores; no randomness, so a plan that
+  // needs no second exit is unchanged. False when no outside wall takes one.
+  std::optional<std::string> add_exit() {
+    const auto main = std::find_if(doors_.begin(), doors_.end(),
+                                   [](const DoorDraft& d) { return d.name == "main_entrance"; });
+    if (main == doors_.end()) return std::nullopt;
+    std::vector<Rect> rects;
+    for (const auto& r : rooms_) rects.push_back(r.rect);
+    double diagonal = 0.0;
+    for (const Rect& a : rects)
+      for (const Rect& b : rects)
+        for (auto [ax, ay] : {std::pair{a.x0, a.y0}, {a.x1, a.y0}, {a.x1, a.y1}, {a.x0, a.y1}})
+          for (auto [bx, by] : {std::pair{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}})
+            diagonal = std::max(diagonal, std::hypot(ax - bx, ay - by));
+    const int w = public_w_;
+    auto tier = [&](std::size_t r) {
+      const std::string& t = rooms_[r].type;
+      if (is_circulation_type(t)) return 0;
+      if (is_public(r) || t == "dining_hall" || t == "sales_floor" || t == "concourse" ||
+          t == "open_office" || t == "warehouse_floor" || t == "loading_bay")
+        return 1;
+      if (is_toilet_type(t) || is_bedroom_type(t) || t == "storage") return 3;
+      return 2;
+    };
+    struct Spot {
+      std::size_t room;
+      Wall wall;
+      int at;
+      double distance;
+    };
+    std::optional<Spot> best;
+    int best_tier = 4;
+    for (std::size_t r = 0; r < rooms_.size(); ++r) {
+      const int t = tier(r);
+      if (t == 3) continue;
+      for (const Wall& wall : outside_walls(rects, r)) {
+        const int lo = wall.lo + 15 + (w + 1) / 2, hi = wall.hi - 15 - (w + 1) / 2;
+        if (lo > hi) continue;
+        for (int at : {lo, (lo + hi) / 2 / 5 * 5, hi}) {
+          const int x = wall.vertical ? wall.c : at, y = wall.vertical ? at : wall.c;
+          bool clear = true;
+          for (const DoorDraft& d : doors_)
+            if (std::hypot(d.x - x, d.y - y) < (d.width + w) / 2.0 + 30.0) clear = false;
+          if (!clear) continue;
+          const double distance = std::hypot(main->x - x, main->y - y);
+          // A spot far enough apart in a better tier wins; within a tier, the farthest.
+          const bool enough = distance >= diagonal / 2.0;
+          const int rank = enough ? t : t + 4;
+          if (!best || rank < best_tier || (rank == best_tier && distance > best->distance)) {
+            best = Spot{r, wall, at, distance};
+            best_tier = rank;
+          }
+        }
+      }
+    }
+    if (!best) return std::nullopt;
+    DoorDraft d;
+    d.name = "emergency_exit";
+    d.vertical_wall = best->wall.vertical;
+    d.x = best->wall.vertical ? best->wall.c : best->at;
+    d.y = best->wall.vertical ? best->at : best->wall.c;
+    d.width = w;
+    d.connects = {rooms_[best->room].name};
+    doors_.push_back(std::move(d));
+    char metres[32];
+    std::snprintf(metres, sizeof metres, "%.1f", best->distance / 100.0);
+    return "added 'emergency_exit' from '" + rooms_[best->room].name + "', " + metres +
+           " m from the main entrance: the building code asks for a second exit";
+  }
+
+  [[nodiscard]] const SceneGraph& graph() const { return graph_; }
+  [[nodiscard]] const std::vector<std::string>& notes() const { return notes_; }
+  [[nodiscard]] const PlanRequirement& plan() const { return plan_; }
+
+ private:
+  bool is_public(std::size_t r) const {
+    const std::string& t = rooms_[r].type;
+    return is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room";
+  }
+
+  bool place_door(Rng& rng, const std::string& name, const Wall& wall, int width,
+                  std::vector<std::string> connects) {
+    const int margin = 15;
+    const int lo = wall.lo + margin + (width + 1) / 2, hi = wall.hi - margin - (width + 1) / 2;
+    if (lo > hi) return false;
+    // Near one end or in the middle, as doors usually are.
+    static constexpr double kAt[3] = {0.1, 0.5, 0.9};
+    const int at = lo + static_cast<int>(std::lround((hi - lo) * kAt[rng.below(3)]));
+    DoorDraft d;
+    d.name = name;
+    d.vertical_wall = wall.vertical;
+    d.x = wall.vertical ? wall.c : at;
+    d.y = wall.vertical ? at : wall.c;
+    d.width = width;
+    d.connects = std::move(connects);
+    doors_.push_back(std::move(d));
+    return true;
+  }
+
+  SceneGraph graph_;
+  std::span<const MergedConstraint> constraints_;
+  PlanRequirement plan_;
+  std::optional<std::size_t> circ_;
+  std::size_t entrance_ = 0;
+  std::map<std::string, std::size_t> index_;
+  std::vector<std::vector<std::size_t>> neighbours_;  // rooms that must stand side by side
+  std::vector<std::vector<std::size_t>> chains_;
+  std::vector<std::size_t> chain_of_;
+  std::vector<std::string> notes_;
+  // Per attempt.
+  std::vector<PlanRoom> rooms_;
+  std::vector<DoorDraft> doors_;
+  std::map<std::size_t, std::vector<std::size_t>> second_piece_;
+  std::map<std::size_t, bool> cap_left_;
+  int door_w_ = 90, public_w_ = 100, entrance_w_ = 100;
+  int rotate_ = 0;
+  bool mirror_ = false;
+};
+
+const char* floor_material(std::string_view domain) {
+  return style_of(domain).floor;
+}
+
+}  // namespace
+
+Json knowledge_provenance(std::span<const MergedConstraint> constraints) {
+  std::map<std::string, Json> by_ref;
+  std::vector<std::string> order;
+  for (const auto& c : constraints) {
+    auto it = by_ref.find(c.ref_id);
+    if (it == by_ref.end()) {
+      Json sources = Json::array();
+      for (const auto& s : c.sources)
+        sources.push_back({{"title", s.title}, {"url", s.url}, {"section", s.section}});
+      it = by_ref
+               .emplace(c.ref_id, Json{{"ref_id", c.ref_id},
+                                       {"title", c.title},
+                                       {"building_type", c.building_type},
+                                       {"jurisdiction", c.jurisdiction},
+                                       {"sources", std::move(sources)},
+                                       {"constraints", Json::array()}})
+               .first;
+      order.push_back(c.ref_id);
+    }
+    it->second["constraints"].push_back(c.constraint.name);
+  }
+  Json out = Json::array();
+  for (const auto& id : order) out.push_back(by_ref[id]);
+  return out;
+}
+
+Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const MergedConstraint> constraints,
+                                      const OfflineOptions& options) {
+  if (graph.rooms.empty())
+    return fail(ErrorCode::kValidation, "the scene graph has no rooms",
+                {{"/rooms", "needs at least one room", "", 0, 0}});
+  Layout layout(graph, constraints);
+  if (auto s = layout.prepare(); !s) return tl::unexpected(s.error());
+  const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
+  Rng rng(options.seed, fnv1a64("floorplan"));
+  double scale = 1.0;
+  std::vector<std::string> tried;
+  std::optional<Error> last_error;
+  std::optional<ComplianceReport> last_report;
+  const int attempts = std::max(1, options.max_attempts);
+  for (int attempt = 0; attempt < attempts; ++attempt) {
+    if (auto why = layout.attempt(rng, scale)) {
+      tried.push_back(*why);
+      continue;
+    }
+    const Rng furnishing_rng = rng.fork("furnish");
+    std::set<std::string> dropped;  // furniture the layout check found in the way, left out
+    auto build = [&]() {
+      WorldBuilder builder;
+      builder.set_name(layout.graph().domain + "_plan_" + std::to_string(options.seed));
+      builder.set_floor({floor_material(layout.graph().domain)});
+      std::vector<Zone> zones;
+      std::vector<DoorSpec> doors;
+      layout.emit(builder, zones, doors);
+      Rng furnishing = furnishing_rng;
+      Furnishing f = furnish(zones, doors, rules, furnishing);
+      for (auto& r : f.rois) builder.add_roi(std::move(r));
+      for (auto& e : f.entities)
+        if (!dropped.count(e.name)) builder.add_entity(std::move(e));
+      return builder.build(options.build);
+    };
+    auto world = build();
+    if (!world) {
+      tried.push_back("the world did not validate: " + world.error().message());
+      last_error = world.error();
+      continue;
+    }
+    ComplianceReport report = check_compliance(*world, layout.graph().domain, constraints);
+    // The occupant load or the travel distance asks for a second exit: add it and check again.
+    std::optional<std::string> exit_note;
+    const auto exit_count = std::find_if(report.checks.begin(), report.checks.end(),
+                                         [](const ComplianceCheck& c) { return c.name == "exit_count"; });
+    if (exit_count != report.checks.end() && exit_count->status == CheckStatus::kFail) {
+      exit_note = layout.add_exit();
+      if (exit_note) {
+        world = build();
+        if (!world) {
+          tried.push_back("the world with a second exit did not validate: " + world.error().message());
+          last_error = world.error();
+          continue;
+        }
+        report = check_compliance(*world, layout.graph().domain, constraints);
+      }
+    }
+    // Footprints clear of walls, doors and each other, every zone and piece of furniture
+    // reachable by a person 0.5 m wide: furniture in the way is left out (and the plan built
+    // again); a zone nobody can reach fails the attempt.
+    if (report.passed) {
+      LayoutCheck check = check_layout(*world);
+      if (!check.ok()) {
+        bool zones_ok = true;
+        for (const auto& f : check.findings) {
+          if (f.kind.rfind("entity_", 0) == 0) {
+            dropped.insert(f.element);
+            if (f.kind == "entity_overlap") dropped.insert(f.other);
+          } else {
+            zones_ok = false;
+          }
+        }
+        if (zones_ok) {
+          world = build();
+          if (world) check = check_layout(*world);
+        }
+        if (!zones_ok || !world || !check.ok()) {
+          tried.push_back("layout check: " + (world ? check.summary() : world.error().message()));
+          continue;
+        }
+        report = check_compliance(*world, layout.graph().domain, constraints);
+      }
+    }
+    if (!report.passed) {
+      double grow = 1.1;
+      for (const auto* c : report.failures())
+        if (c->value && *c->value > 0 && c->type == "min" && c->name.rfind("exit_", 0) != 0)
+          grow = std::max(grow, c->required / *c->value * 1.02);
+      scale *= std::min(grow, 1.6);
+      std::string what;
+      for (const auto* c : report.failures())
+        what += (what.empty() ? "" : ", ") + c->name + " at " + c->element;
+      tried.push_back("not compliant: " + what);
+      last_report = std::move(report);
+      continue;
+    }
+    FloorPlan plan{std::move(*world), std::move(report), layout.graph(), Json::object()};
+    Json notes = layout.notes();
+    if (exit_note) notes.push_back(*exit_note);
+    plan.provenance = {{"generator", "offline"},          {"seed", options.seed},
+                       {"domain", layout.graph().domain}, {"attempts", attempt + 1},
+                       {"notes", std::move(notes)},       {"knowledge", knowledge_provenance(constraints)}};
+    return plan;
+  }
+  std::vector<FieldError> errors;
+  if (last_report)
+    for (const auto* c : last_report->failures())
+      errors.push_back({"",
+                        c->name + " (" + c->ref_id + "): " + c->element + " has " +
+                            (c->value ? std::to_string(*c->value) : std::string("nothing")) + " " + c->unit +
+                            ", required " + std::to_string(c->required),
+                        "", 0, 0});
+  if (last_error)
+    for (const auto& e : last_error->errors) errors.push_back(e);
+  std::string detail = "no compliant plan after " + std::to_string(attempts) + " attempts";
+  if (!tried.empty()) detail += " (last: " + tried.back() + ")";
+  return fail(ErrorCode::kValidation, detail, std::move(errors));
+}
+
+}  // namespace socsim::floorplan

@@ -1,0 +1,451 @@
+#include "core/floorplan/placer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/geometry/geos.hpp"
+#include "core/geometry/planar.hpp"
+#include "core/world/footprint.hpp"
+
+namespace socsim::floorplan {
+
+using geometry::MultiPolygon;
+
+bool axis_aligned_rectangle(const Polygon& p) {
+  if (!p.holes.empty()) return false;
+  std::vector<Point> r = p.outer;
+  if (r.size() > 1 && r.front() == r.back()) r.pop_back();
+  if (r.size() != 4) return false;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Point& a = r[i];
+    const Point& b = r[(i + 1) % 4];
+    if (std::abs(a.x - b.x) > 1e-9 && std::abs(a.y - b.y) > 1e-9) return false;
+  }
+  return true;
+}
+
+Box inner_box(const Polygon& polygon) {
+  const Box bb = geometry::bounds(polygon.outer);
+  if (axis_aligned_rectangle(polygon)) return bb;
+  geometry::Geos geos;
+  const MultiPolygon shape{polygon};
+  Box best{{0, 0}, {0, 0}};
+  double best_area = 0.0;
+  std::vector<Point> centres{geometry::centroid(polygon.outer)};
+  for (double fx : {0.25, 0.5, 0.75})
+    for (double fy : {0.25, 0.5, 0.75})
+      centres.push_back({bb.min.x + fx * bb.width(), bb.min.y + fy * bb.height()});
+  for (const Point& c : centres) {
+    if (!geometry::contains(polygon, c)) continue;
+    auto box_at = [&](double s) {
+      return Box{{c.x - s * bb.width() / 2, c.y - s * bb.height() / 2},
+                 {c.x + s * bb.width() / 2, c.y + s * bb.height() / 2}};
+    };
+    auto fits = [&](double s) {
+      const Box b = box_at(s);
+      const Polygon r{{b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}, {}};
+      return geos.area(geos.difference({r}, shape)) < 1e-6;
+    };
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 14; ++i) {
+      const double mid = (lo + hi) / 2;
+      (fits(mid) ? lo : hi) = mid;
+    }
+    const Box b = box_at(lo);
+    if (b.width() * b.height() > best_area) {
+      best_area = b.width() * b.height();
+      best = b;
+    }
+  }
+  return best;
+}
+
+double wrap(double a) {
+  while (a > kPi) a -= 2 * kPi;
+  while (a <= -kPi) a += 2 * kPi;
+  return a;
+}
+
+int nearest_side(const Box& b, Point p) {
+  const double d[4] = {std::abs(p.y - b.min.y), std::abs(p.x - b.max.x), std::abs(p.y - b.max.y),
+                       std::abs(p.x - b.min.x)};
+  return static_cast<int>(std::min_element(d, d + 4) - d);
+}
+
+std::string numbered(const std::string& base, int i) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "_%02d", i);
+  return base + buf;
+}
+
+bool overlaps(const Box& a, const Box& b, double gap) {
+  return a.min.x < b.max.x + gap - 1e-9 && b.min.x < a.max.x + gap - 1e-9 && a.min.y < b.max.y + gap - 1e-9 &&
+         b.min.y < a.max.y + gap - 1e-9;
+}
+
+double box_distance(const Box& b, const Segment& s) {
+  // Distance between an axis-aligned box and a segment (0 when they meet).
+  const Point corners[4] = {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
+  auto inside = [&](Point p) { return p.x >= b.min.x && p.x <= b.max.x && p.y >= b.min.y && p.y <= b.max.y; };
+  if (inside(s.a) || inside(s.b)) return 0.0;
+  double d = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 4; ++k) {
+    const Segment e{corners[k], corners[(k + 1) % 4]};
+    d = std::min(d, geometry::distance(e, s));
+  }
+  return d;
+}
+
+Box footprint_box(const std::string& type, const Pose2& pose) {
+  return geometry::bounds(footprint_polygon(type, pose).outer);
+}
+
+Placer::Placer(const Zone& zone, const Frame& frame, std::vector<DoorAt> doors, Furnishing& out)
+    : zone_(zone), f_(frame), doors_(std::move(doors)), out_(out) {
+  for (const auto& d : doors_) {
+    const int side = nearest_side(f_.box, d.centre);
+    const bool horizontal = side == 0 || side == 2;
+    const double h = d.width / 2;
+    door_segments_.push_back(horizontal
+                                 ? Segment{{d.centre.x - h, d.centre.y}, {d.centre.x + h, d.centre.y}}
+                                 : Segment{{d.centre.x, d.centre.y - h}, {d.centre.x, d.centre.y + h}});
+  }
+}
+
+bool Placer::clear(Point p, double radius) const {
+  for (const auto& d : doors_)
+    if (geometry::distance(p, d.centre) < d.width / 2 + 0.6 + radius) return false;
+  return true;
+}
+
+bool Placer::box_free(const Box& b, std::optional<std::size_t> skip, Areas areas) const {
+  if (b.min.x < f_.box.min.x + kWallGap - 1e-9 || b.min.y < f_.box.min.y + kWallGap - 1e-9 ||
+      b.max.x > f_.box.max.x - kWallGap + 1e-9 || b.max.y > f_.box.max.y - kWallGap + 1e-9)
+    return false;
+  for (const auto& s : door_segments_)
+    if (box_distance(b, s) < kDoorGap) return false;
+  for (std::size_t k = 0; k < out_.entities.size(); ++k) {
+    if (skip && *skip == k) continue;
+    const EntitySpec& e = out_.entities[k];
+    const Box eb = footprint_box(e.type, e.pose);
+    if (mine(eb) && overlaps(b, eb, kItemGap)) return false;
+  }
+  if (areas != Areas::kNone) {
+    for (std::size_t k = 0; k < out_.rois.size(); ++k) {
+      const Roi& r = out_.rois[k];
+      const bool lane = r.kind == "queue_lane" || r.kind == "walkway";
+      if (!lane && (areas == Areas::kLanes || (r.kind != "entrance" && r.kind != "exit"))) continue;
+      if (overlaps(b, geometry::bounds(r.polygon.outer), 0.0)) return false;
+    }
+  }
+  return true;
+}
+
+std::pair<double, double> Placer::half_extents(const std::string& type, double local_yaw) {
+  const Footprint fp = footprint_of(type);
+  const bool across = std::abs(std::sin(local_yaw)) > 0.5;  // facing along ±u
+  return across ? std::pair{fp.depth / 2, fp.width / 2} : std::pair{fp.width / 2, fp.depth / 2};
+}
+
+std::optional<Point> Placer::fit(const std::string& type, double u, double v, double local_yaw) const {
+  const auto [hu, hv] = half_extents(type, local_yaw);
+  if (2 * (hu + kWallGap) > f_.len || 2 * (hv + kWallGap) > f_.depth) return std::nullopt;
+  u = std::clamp(u, hu + kWallGap, f_.len - hu - kWallGap);
+  v = std::clamp(v, hv + kWallGap, f_.depth - hv - kWallGap);
+  const Point p = f_.at(u, v);
+  if (!box_free(footprint_box(type, {p.x, p.y, f_.yaw(local_yaw)}))) return std::nullopt;
+  return Point{u, v};
+}
+
+std::optional<Point> Placer::entity(const std::string& type, const std::string& suffix,
+                                    std::initializer_list<std::pair<double, double>> candidates,
+                                    double local_yaw, std::vector<std::string> affordances) {
+  std::vector<std::pair<double, double>> tries(candidates);
+  if (!tries.empty()) {
+    const auto [u0, v0] = tries.front();
+    for (int k = 1; k <= 40; ++k) {
+      for (int sgn : {1, -1}) tries.emplace_back(u0 + sgn * 0.25 * k, v0);
+    }
+  }
+  for (const auto& [u, v] : tries) {
+    const auto at = fit(type, u, v, local_yaw);
+    if (!at) continue;
+    const Point p = f_.at(at->x, at->y);
+    out_.entities.push_back({type, zone_.name + "_" + suffix, {p.x, p.y, f_.yaw(local_yaw)}, affordances});
+    if (walkable()) return *at;
+    out_.entities.pop_back();  // it would wall something in: the next place
+  }
+  return std::nullopt;
+}
+
+bool Placer::walkable(std::size_t from, std::vector<std::size_t>* drop) const {
+  constexpr double kRes = 0.1, kRadius = 0.25, kReach = 0.4;
+  const Box& b = f_.box;
+  const int nx = std::max(1, static_cast<int>(std::ceil(b.width() / kRes)));
+  const int ny = std::max(1, static_cast<int>(std::ceil(b.height() / kRes)));
+  auto centre = [&](int x, int y) { return Point{b.min.x + (x + 0.5) * kRes, b.min.y + (y + 0.5) * kRes}; };
+  std::vector<std::uint8_t> blocked(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), 0);
+  auto at = [&](int x, int y) {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x);
+  };
+  for (int y = 0; y < ny; ++y)
+    for (int x = 0; x < nx; ++x) {
+      const Point c = centre(x, y);
+      if (c.x - b.min.x < kRadius || b.max.x - c.x < kRadius || c.y - b.min.y < kRadius ||
+          b.max.y - c.y < kRadius)
+        blocked[at(x, y)] = 1;
+    }
+  std::vector<Box> boxes;
+  std::vector<std::size_t> index_of;
+  for (std::size_t k = 0; k < out_.entities.size(); ++k) {
+    const EntitySpec& e = out_.entities[k];
+    const Box eb = footprint_box(e.type, e.pose);
+    if (!mine(eb)) continue;
+    boxes.push_back(eb);
+    index_of.push_back(k);
+    const Box& fb = boxes.back();
+    const int x0 = std::max(0, static_cast<int>(std::floor((fb.min.x - kRadius - b.min.x) / kRes)));
+    const int x1 = std::min(nx - 1, static_cast<int>(std::floor((fb.max.x + kRadius - b.min.x) / kRes)));
+    const int y0 = std::max(0, static_cast<int>(std::floor((fb.min.y - kRadius - b.min.y) / kRes)));
+    const int y1 = std::min(ny - 1, static_cast<int>(std::floor((fb.max.y + kRadius - b.min.y) / kRes)));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const Point c = centre(x, y);
+        const double dx = std::max({fb.min.x - c.x, 0.0, c.x - fb.max.x});
+        const double dy = std::max({fb.min.y - c.y, 0.0, c.y - fb.max.y});
+        if (std::hypot(dx, dy) < kRadius) blocked[at(x, y)] = 1;
+      }
+  }
+  // Seeds just inside each door.
+  std::vector<std::size_t> seeds;
+  for (const auto& d : doors_) {
+    const int side = nearest_side(b, d.centre);
+    Point p = d.centre;
+    const double in = kRadius + 0.1;
+    if (side == 0) p.y = b.min.y + in;
+    if (side == 1) p.x = b.max.x - in;
+    if (side == 2) p.y = b.max.y - in;
+    if (side == 3) p.x = b.min.x + in;
+    const int x = std::clamp(static_cast<int>(std::floor((p.x - b.min.x) / kRes)), 0, nx - 1);
+    const int y = std::clamp(static_cast<int>(std::floor((p.y - b.min.y) / kRes)), 0, ny - 1);
+    if (blocked[at(x, y)]) return false;
+    seeds.push_back(at(x, y));
+  }
+  if (seeds.empty()) return true;
+  std::vector<std::uint8_t> reached(blocked.size(), 0);
+  std::vector<std::size_t> queue{seeds.front()};
+  reached[seeds.front()] = 1;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int x = static_cast<int>(queue[head] % static_cast<std::size_t>(nx));
+    const int y = static_cast<int>(queue[head] / static_cast<std::size_t>(nx));
+    const int next[4][2] = {{x + 1, y}, {x - 1, y}, {x, y + 1}, {x, y - 1}};
+    for (const auto& n : next) {
+      if (n[0] < 0 || n[1] < 0 || n[0] >= nx || n[1] >= ny) continue;
+      const std::size_t k = at(n[0], n[1]);
+      if (blocked[k] || reached[k]) continue;
+      reached[k] = 1;
+      queue.push_back(k);
+    }
+  }
+  for (std::size_t s : seeds)
+    if (!reached[s]) return false;
+  bool ok = true;
+  for (std::size_t k = 0; k < boxes.size(); ++k) {
+    const Box& fb = boxes[k];
+    bool near = false;
+    const int x0 = std::max(0, static_cast<int>(std::floor((fb.min.x - kRadius - kReach - b.min.x) / kRes)));
+    const int x1 =
+        std::min(nx - 1, static_cast<int>(std::floor((fb.max.x + kRadius + kReach - b.min.x) / kRes)));
+    const int y0 = std::max(0, static_cast<int>(std::floor((fb.min.y - kRadius - kReach - b.min.y) / kRes)));
+    const int y1 =
+        std::min(ny - 1, static_cast<int>(std::floor((fb.max.y + kRadius + kReach - b.min.y) / kRes)));
+    for (int y = y0; y <= y1 && !near; ++y)
+      for (int x = x0; x <= x1 && !near; ++x) {
+        if (!reached[at(x, y)]) continue;
+        const Point c = centre(x, y);
+        const double dx = std::max({fb.min.x - c.x, 0.0, c.x - fb.max.x});
+        const double dy = std::max({fb.min.y - c.y, 0.0, c.y - fb.max.y});
+        near = std::hypot(dx, dy) <= kRadius + kReach - 0.05;
+      }
+    if (near) continue;
+    const std::size_t index = index_of[k];
+    if (drop && index >= from) {
+      drop->push_back(index);
+    } else {
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+void Placer::keep_walkable(std::size_t from) {
+  std::vector<std::size_t> drop;
+  if (!walkable(from, &drop) && drop.empty()) {
+    while (out_.entities.size() > from && !walkable()) out_.entities.pop_back();
+    return;
+  }
+  for (auto it = drop.rbegin(); it != drop.rend(); ++it)
+    out_.entities.erase(out_.entities.begin() + static_cast<std::ptrdiff_t>(*it));
+  while (out_.entities.size() > from && !walkable()) out_.entities.pop_back();
+}
+
+bool Placer::lane_clear(double u0, double v0, double u1, double v1, std::size_t keep,
+                        std::size_t first_roi) const {
+  const Box lane = geometry::bounds(f_.rect(u0, v0, u1, v1).outer);
+  for (std::size_t k = 0; k < out_.entities.size(); ++k) {
+    if (k == keep || !mine(footprint_box(out_.entities[k].type, out_.entities[k].pose))) continue;
+    const EntitySpec& e = out_.entities[k];
+    const bool serves =
+        e.type == "counter" || e.type == "desk" || e.type == "reception" ||
+        std::find(e.affordances.begin(), e.affordances.end(), "serve") != e.affordances.end() ||
+        std::find(e.affordances.begin(), e.affordances.end(), "queue_target") != e.affordances.end();
+    if (overlaps(lane, footprint_box(e.type, e.pose), serves ? 1.0 : 0.3)) return false;
+  }
+  const Box& b = lane;
+  for (std::size_t k = first_roi; k < out_.rois.size(); ++k) {
+    const Roi& o = out_.rois[k];
+    if (o.kind == "corridor" || o.kind == "work_area") continue;
+    const Box ob = geometry::bounds(o.polygon.outer);
+    if (ob.min.x < b.max.x - 1e-9 && b.min.x < ob.max.x - 1e-9 && ob.min.y < b.max.y - 1e-9 &&
+        b.min.y < ob.max.y - 1e-9)
+      return false;
+  }
+  for (const auto& s : door_segments_)
+    if (box_distance(lane, s) < 0.3) return false;
+  return true;
+}
+
+std::optional<Area> Placer::roi(const std::string& kind, const std::string& suffix, double u0, double v0,
+                                double u1, double v1, bool may_touch_doors) {
+  u0 = std::max(u0, 0.1);
+  v0 = std::max(v0, 0.1);
+  u1 = std::min(u1, f_.len - 0.1);
+  v1 = std::min(v1, f_.depth - 0.1);
+  if (!may_touch_doors) {
+    for (const auto& d : doors_) {
+      const Point q = f_.local(d.centre);
+      const double c = d.width / 2 + 0.3;
+      if (q.x < u0 - c || q.x > u1 + c || q.y < v0 - c || q.y > v1 + c) continue;
+      const double cuts[4][4] = {{u0, v0, u1, std::min(v1, q.y - c)},
+                                 {u0, std::max(v0, q.y + c), u1, v1},
+                                 {u0, v0, std::min(u1, q.x - c), v1},
+                                 {std::max(u0, q.x + c), v0, u1, v1}};
+      double best = -1.0;
+      std::size_t pick = 0;
+      for (std::size_t k = 0; k < 4; ++k) {
+        const double a = std::max(0.0, cuts[k][2] - cuts[k][0]) * std::max(0.0, cuts[k][3] - cuts[k][1]);
+        if (a > best) {
+          best = a;
+          pick = k;
+        }
+      }
+      u0 = cuts[pick][0];
+      v0 = cuts[pick][1];
+      u1 = cuts[pick][2];
+      v1 = cuts[pick][3];
+    }
+  }
+  if (u1 - u0 < 0.5 || v1 - v0 < 0.5) return std::nullopt;
+  out_.rois.push_back({zone_.name + "_" + suffix, kind, f_.rect(u0, v0, u1, v1)});
+  return Area{u0, v0, u1, v1};
+}
+
+void Placer::poi_lanes(std::size_t first, std::size_t first_roi, double width, double length) {
+  for (std::size_t k = first; k < out_.entities.size(); ++k) {
+    EntitySpec& poi = out_.entities[k];
+    if (poi.type != "water_dispenser" && poi.type != "coffee_machine" && poi.type != "vending_machine")
+      continue;
+    const Point at = f_.local({poi.pose.x, poi.pose.y});
+    // Facing in room coordinates: the world yaw turned back by the frame's base heading.
+    const double local = wrap(poi.pose.yaw - f_.yaw(0.0)) + kPi / 2;
+    const int facing = static_cast<int>(std::lround(local / (kPi / 2))) & 3;  // 0 +u, 1 +v, 2 -u, 3 -v
+    const auto [hu, hv] = half_extents(poi.type, 0.0);
+    for (int turn : {0, 1, 3}) {
+      const int dir = (facing + turn) & 3;
+      const double du = dir == 0 ? 1.0 : dir == 2 ? -1.0 : 0.0, dv = dir == 1 ? 1.0 : dir == 3 ? -1.0 : 0.0;
+      const double near = std::max(hu, hv) + 0.35, far = near + length;
+      // Across the lane: centred on the machine, moved off the walls (the machine stays in it).
+      auto across = [&](double c, double extent) {
+        return std::clamp(c - width / 2, std::min(0.1, c - 0.05),
+                          std::max(0.1, std::min(extent - 0.1 - width, c + 0.05 - width)));
+      };
+      const double u0 = du != 0 ? std::min(at.x + du * near, at.x + du * far) : across(at.x, len());
+      const double u1 = du != 0 ? std::max(at.x + du * near, at.x + du * far) : u0 + width;
+      const double v0 = dv != 0 ? std::min(at.y + dv * near, at.y + dv * far) : across(at.y, depth());
+      const double v1 = dv != 0 ? std::max(at.y + dv * near, at.y + dv * far) : v0 + width;
+      if (!inside(u0, v0, 0.1) || !inside(u1, v1, 0.1)) continue;
+      if (!lane_clear(u0, v0, u1, v1, k, first_roi)) continue;
+      const auto lane = roi("queue_lane", poi.name.substr(zone_.name.size() + 1) + "_queue", u0, v0, u1, v1);
+      if (!lane) continue;
+      if ((lane->u1 - lane->u0) * (lane->v1 - lane->v0) < (u1 - u0) * (v1 - v0) - 1e-6) {
+        out_.rois.pop_back();  // cut by a door's swing: too short to queue in
+        continue;
+      }
+      poi.affordances.push_back("queue_target");
+      break;
+    }
+  }
+}
+
+int Placer::grid(const std::string& type, const std::string& base, double u0, double v0, double u1, double v1,
+                 double du, double dv, int max_items, double local_yaw,
+                 const std::vector<std::string>& affordances) {
+  const int nu = std::max(0, static_cast<int>(std::floor((u1 - u0) / du + 1e-9)));
+  const int nv = std::max(0, static_cast<int>(std::floor((v1 - v0) / dv + 1e-9)));
+  const double su = u0 + ((u1 - u0) - nu * du) / 2 + du / 2;
+  const double sv = v0 + ((v1 - v0) - nv * dv) / 2 + dv / 2;
+  const auto [hu, hv] = half_extents(type, local_yaw);
+  int placed = 0;
+  for (int j = 0; j < nv && placed < max_items; ++j)
+    for (int i = 0; i < nu && placed < max_items; ++i) {
+      const double u = su + i * du, v = sv + j * dv;
+      if (!inside(u, v, 0.0) || u - hu < kWallGap || v - hv < kWallGap || u + hu > f_.len - kWallGap ||
+          v + hv > f_.depth - kWallGap)
+        continue;
+      const Point p = f_.at(u, v);
+      const Pose2 pose{p.x, p.y, f_.yaw(local_yaw)};
+      if (!box_free(footprint_box(type, pose), std::nullopt, Areas::kNone)) continue;
+      out_.entities.push_back({type, zone_.name + "_" + numbered(base, placed + 1), pose, affordances});
+      ++placed;
+    }
+  const std::size_t before = out_.entities.size();
+  keep_walkable(before - static_cast<std::size_t>(placed));
+  return placed - static_cast<int>(before - out_.entities.size());
+}
+
+std::optional<CounterPlace> Placer::counter_with_queue(const std::string& type, const std::string& name,
+                                                       double u, double v, double lane, bool inward,
+                                                       double lane_width,
+                                                       std::vector<std::string> affordances) {
+  const auto [hu, hv] = half_extents(type, inward ? 0.0 : kPi);
+  v = std::clamp(v, hv + kWallGap, depth() - hv - kWallGap);
+  lane = inward ? std::min(lane, depth() - v - hv - 0.3 - 1.0) : std::min(lane, v - hv - 0.3 - 0.9);
+  if (lane < 1.5) return std::nullopt;
+  for (double du : {0.0, -1.2, 1.2, -2.4, 2.4, -3.6, 3.6}) {
+    const double uu = u + du;
+    if (uu - hu < kWallGap || uu + hu > len() - kWallGap) continue;
+    if (uu - lane_width / 2 < 0.1 || uu + lane_width / 2 > len() - 0.1) continue;
+    const Point p = f_.at(uu, v);
+    const Pose2 pose{p.x, p.y, f_.yaw(inward ? 0.0 : kPi)};
+    if (!box_free(footprint_box(type, pose))) continue;
+    const double v0 = inward ? v + hv + 0.3 : v - hv - 0.3 - lane;
+    const Box lane_box =
+        geometry::bounds(f_.rect(uu - lane_width / 2, v0, uu + lane_width / 2, v0 + lane).outer);
+    // The lane may lead into the entrance area (people queue from the door) but not into another lane.
+    if (!box_free(lane_box, std::nullopt, Areas::kLanes)) continue;
+    if (!roi("queue_lane", name + "_queue", uu - lane_width / 2, v0, uu + lane_width / 2, v0 + lane, true))
+      continue;
+    out_.entities.push_back({type, zone_.name + "_" + name, pose, affordances});
+    if (!walkable()) {
+      out_.entities.pop_back();
+      out_.rois.pop_back();
+      continue;
+    }
+    return CounterPlace{uu, v, std::min(v0, v - hv), std::max(v0 + lane, v + hv)};
+  }
+  return std::nullopt;
+}
+
+}  // namespace socsim::floorplan

@@ -1,0 +1,73 @@
+#include "core/floorplan/request.hpp"
+
+#include "core/common/json_check.hpp"
+#include "core/knowledge/types.hpp"
+
+namespace socsim::floorplan {
+
+Result<FloorPlanRequest> floor_plan_request_from_json(const Json& body) {
+  JsonChecker c;
+  FloorPlanRequest r;
+  if (!body.is_object()) {
+    c.add("", "must be an object with scene_graph or prompt");
+    return tl::unexpected(c.error("the request is not an object"));
+  }
+  c.only_keys(body, "", {"scene_graph", "prompt", "domain", "seed", "generator", "model", "jurisdiction"});
+  if (const Json* g = c.object(body, "", "scene_graph", false)) r.scene_graph = *g;
+  r.prompt = c.string(body, "", "prompt", false, 1, 4000);
+  if (r.scene_graph && r.prompt) c.add("/prompt", "give either scene_graph or prompt, not both");
+  // A scene_graph or prompt that is given but bad has its own error already; null counts as not given.
+  if (!r.scene_graph && !r.prompt && !JsonChecker::given(body, "scene_graph") &&
+      !JsonChecker::given(body, "prompt"))
+    c.add("", "give scene_graph (rooms and adjacency) or prompt (a description of the building)");
+  r.domain = c.string(body, "", "domain", false, 1, 32);
+  if (r.domain && !knowledge::is_building_type(*r.domain)) {
+    std::string all;
+    for (auto t : knowledge::building_types()) all += (all.empty() ? "" : ", ") + std::string(t);
+    c.add("/domain", "unknown building type '" + *r.domain + "'; one of " + all);
+  }
+  if (auto seed = c.integer(body, "", "seed", false, 0, kMaxFloorPlanSeed))
+    r.seed = static_cast<std::uint64_t>(*seed);
+  if (auto g = c.string(body, "", "generator", false)) {
+    if (*g != "offline" && *g != "llm") c.add("/generator", "must be offline or llm");
+    r.generator = *g;
+  }
+  r.model = c.string(body, "", "model", false, 1, 200);
+  if (r.model && r.generator != "llm") c.add("/model", "a model is chosen only with generator llm");
+  if (auto j = c.string(body, "", "jurisdiction", false, 0, 64)) r.jurisdiction = *j;
+  if (!c.ok()) return tl::unexpected(c.error("the world request is invalid"));
+  return r;
+}
+
+Result<ResolvedSceneGraph> resolve_scene_graph(const FloorPlanRequest& request) {
+  ResolvedSceneGraph out;
+  if (request.scene_graph) {
+    auto g = scene_graph_from_json(*request.scene_graph, "/scene_graph");
+    if (!g) return tl::unexpected(g.error());
+    const bool had_domain = request.scene_graph->contains("domain");
+    if (request.domain && had_domain && g->domain != *request.domain)
+      return fail(
+          ErrorCode::kValidation, "the domain and the scene graph's domain disagree",
+          {{"/domain", "is " + *request.domain + " but /scene_graph/domain is " + g->domain, "", 0, 0}});
+    if (request.domain) g->domain = *request.domain;
+    out.classification = had_domain || request.domain
+                             ? Json{{"given", true}, {"type", g->domain}}
+                             : Json{{"given", false}, {"type", g->domain}, {"from", "room names"}};
+    out.graph = std::move(*g);
+    return out;
+  }
+  if (!request.prompt)
+    return fail(ErrorCode::kValidation, "the world request has neither scene_graph nor prompt",
+                {{"", "give scene_graph or prompt", "", 0, 0}});
+  auto p = scene_graph_from_prompt(*request.prompt, request.domain);
+  if (!p) return tl::unexpected(p.error());
+  out.graph = std::move(p->graph);
+  out.classification = knowledge::to_json(p->classification);
+  out.classification["given"] = request.domain.has_value();
+  Json counts = Json::object();
+  for (const auto& [type, n] : p->counts) counts[type] = n;
+  out.classification["room_counts"] = std::move(counts);
+  return out;
+}
+
+}  // namespace socsim::floorplan
