@@ -120,7 +120,8 @@ export function showIntent(intent, source) {
   $('understood-source').textContent = source;
   $('understood-problem').textContent = '';
   $('understood-prompt').replaceChildren(...highlighted(intent));
-  showLegend($('understood-legend'), KINDS.map(([, name, c]) => [name, c]));
+  const used = new Set([...$('understood-prompt').querySelectorAll('mark')].map((m) => m.dataset.kind));
+  showLegend($('understood-legend'), KINDS.filter(([k]) => used.has(k)).map(([, name, c]) => [name, c]));
   $('understood-facts').replaceChildren(...facts(intent));
   $('understood-groups').replaceChildren(...(intent.groups || []).map(groupItem));
   $('understood-warnings').replaceChildren(...(intent.warnings || []).map((w) => el('li', {}, w.message)));
@@ -133,4 +134,10 @@ export function showIntentProblem(message, source) {
   $('understood-problem').textContent = message;
   for (const id of ['understood-prompt', 'understood-legend', 'understood-facts', 'understood-groups', 'understood-warnings']) $(id).replaceChildren();
   $('understood').dataset.state = 'problem';
+}
+
+// Nothing to read yet (an empty box): a hint, not an error.
+export function clearIntent(hint) {
+  showIntentProblem('', hint);
+  $('understood').dataset.state = 'empty';
 }

@@ -4,7 +4,7 @@
 // interpolation between frames and trails; play/pause/speed/seek go over the socket. The stage
 // says how many people it shows (data-people, data-roles). Plain ES module, no build step.
 import { $, api, el, getJson, postJson, jobText, waitForJob, toast, serverInfo, showLegend, COLOURS, drawPlan } from './common.js';
-import { showIntent, showIntentProblem } from './intent.js';
+import { clearIntent, showIntent, showIntentProblem } from './intent.js';
 
 const STATE_COLOURS = COLOURS.state;
 const ROLE_PALETTE = COLOURS.role;
@@ -35,6 +35,11 @@ async function interpret(prompt, source) {
 
 function interpretTyped(delay = 300) {
   clearTimeout(interpretTimer);
+  if (!$('prompt').value.trim()) {
+    ++interpretSeq;
+    clearIntent('Type a prompt to see how it is read.');
+    return;
+  }
   interpretTimer = setTimeout(() => interpret($('prompt').value, 'From the prompt as you type:'), delay);
 }
 

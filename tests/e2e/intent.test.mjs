@@ -36,11 +36,17 @@ test('what was understood, then exactly the people asked for on the canvas', { s
   await page.goto(server.base + '/');
   assert.equal(await page.textContent('header nav a[aria-current=page]'), 'Text to scenario');
   assert.equal(await page.locator('#examples button[data-prompt]').count(), 6);
+  // Every page of the navigation is served (the catalogue moved to catalogue.html).
+  const links = await page.$$eval('header nav a', (as) => as.map((a) => a.href));
+  assert.equal(links.length, 4);
+  for (const href of links) assert.equal((await fetch(href)).status, 200, href);
   // The prompt already in the box is read on arrival.
   await page.waitForSelector('#understood[data-state=shown] #understood-groups li');
 
   interprets = 0;
   await page.fill('#prompt', '');
+  await page.waitForSelector('#understood[data-state=empty]');  // an empty box is a hint, not an error
+  assert.equal(await page.textContent('#understood-problem'), '');
   await page.locator('#prompt').pressSequentially(PROMPT, { delay: 15 });
   await page.waitForFunction((p) => document.getElementById('understood-prompt').textContent === p, PROMPT, { timeout: 10000 });
   assert.ok(interprets >= 1 && interprets <= 6, `typing ${PROMPT.length} characters sent ${interprets} interpret requests (debounced)`);
