@@ -277,10 +277,10 @@ KnownWord english_words(const WordNet& wordnet) {
     // French and Spanish articles would pass as English.
     if (w.size() <= 2 || w.find_first_not_of("abcdefghijklmnopqrstuvwxyz'") != std::string_view::npos)
       return false;
-    const std::string plain(w);
-    // Nouns by their common senses only: "gare", "der" are known as names or abbreviations.
-    return !wordnet.noun(plain).senses.empty() || wordnet.is_verb(plain) || wordnet.is_adjective(plain) ||
-           wordnet.is_adverb(plain);
+    // Nouns by their common senses only ("der", "gare" are known as names or abbreviations). One
+    // cached lookup gives the other parts of speech too, and the intent reader asks for the same words.
+    const NounEntry& e = wordnet.noun(w);
+    return !e.senses.empty() || e.verb || e.adjective || e.adverb;
   };
 }
 
