@@ -4,12 +4,13 @@
 // hold, and the warnings for words that could not be used. Plain ES module, no build step.
 import { $, el, showLegend } from './common.js';
 
-// Highlight kinds, weakest first: where spans overlap, the later kind wins (a count inside its group).
+// Highlight kinds, weakest first: where spans overlap, the later kind wins (a count inside its
+// group, the venue or a feature inside a place phrase: "in the café", "at the reception desk").
 const KINDS = [
   ['warning', 'not used', '#ffd8d8'],
+  ['place', 'place', '#c5f6fa'],
   ['venue', 'venue', '#d3f9d8'],
   ['world', 'feature, room, object', '#ffe8cc'],
-  ['place', 'place', '#c5f6fa'],
   ['only', 'only / except / density', '#eebefa'],
   ['group', 'people', '#d0ebff'],
   ['count', 'count', '#74c0fc'],

@@ -98,6 +98,13 @@ test('an example fills the box and is read; a prompt in another language is refu
   assert.equal(await page.getAttribute('#understood-groups li', 'data-kind'), 'range');
   assert.match(await page.textContent('[data-fact="venue"]'), /^train station/);
 
+  // Spans are UTF-8 byte offsets: after a two-byte 'é' the highlights still cover the right words.
+  await page.fill('#prompt', 'In the café, 20 customers wait');
+  await page.waitForFunction(() => document.getElementById('understood-prompt').textContent === 'In the café, 20 customers wait');
+  assert.deepEqual(await marks(page, 'venue'), ['café']);
+  assert.deepEqual(await marks(page, 'count'), ['20']);
+  assert.deepEqual(await marks(page, 'group'), [' customers']);
+
   const jobs = await jobCount();
   await page.fill('#prompt', 'Zwanzig Patienten warten im Wartezimmer auf den Arzt');
   await page.waitForSelector('#understood[data-state=problem]');
