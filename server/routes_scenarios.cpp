@@ -12,6 +12,7 @@
 #include "core/world/world_document.hpp"
 #include "core/world/world_yaml.hpp"
 #include "server/http_util.hpp"
+#include "server/prompt_gate.hpp"
 #include "server/routes.hpp"
 #include "server/stored_worlds.hpp"
 
@@ -27,21 +28,6 @@ scenario::ScenarioConfig scenario_config(const ServerConfig& config) {
   c.limits.max_agents = config.max_scenario_agents;
   c.limits.max_duration_s = config.max_scenario_seconds;
   return c;
-}
-
-// The prompt read and checked (form, language, content): its interpretation, or the 422 that
-// says why it cannot become a scenario.
-Result<scenario::ScenarioIntent> checked_prompt(const std::string& prompt, const ServerConfig& config) {
-  const scenario::PromptRules rules{.max_bytes = config.max_prompt_bytes};
-  if (auto s = scenario::check_prompt_form(prompt, rules); !s) return tl::unexpected(s.error());
-  auto wordnet = scenario::WordNet::open();
-  if (!wordnet) return tl::unexpected(wordnet.error());
-  if (auto s = scenario::check_prompt_language(prompt, scenario::english_words(**wordnet), rules); !s)
-    return tl::unexpected(s.error());
-  auto intent = scenario::interpret_prompt(prompt);
-  if (!intent) return tl::unexpected(intent.error());
-  if (auto s = scenario::check_prompt_content(*intent); !s) return tl::unexpected(s.error());
-  return intent;
 }
 
 // Errors of a nested document get the request field's pointer in front.
@@ -98,7 +84,7 @@ void scenario_routes(Router& http, RouteContext& ctx) {
         const auto config = scenario_config(ctx.config);
         auto request = scenario::scenario_request_from_json(*body, config);
         if (!request) return reply_problem(res, request.error(), req.path);
-        if (auto intent = checked_prompt(request->prompt, ctx.config); !intent)
+        if (auto intent = checked_prompt(request->prompt, ctx.config.max_prompt_bytes); !intent)
           return reply_problem(res, intent.error(), req.path);
         if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
         if (request->generator == "llm" && !ctx.llm)
@@ -159,7 +145,7 @@ void scenario_routes(Router& http, RouteContext& ctx) {
                    auto prompt = c.string(*body, "", "prompt", true, 0, std::string::npos);
                    if (!c.ok())
                      return reply_problem(res, c.error("the interpret request is not valid"), req.path);
-                   auto intent = checked_prompt(*prompt, ctx.config);
+                   auto intent = checked_prompt(*prompt, ctx.config.max_prompt_bytes);
                    if (!intent) return reply_problem(res, intent.error(), req.path);
                    reply_json(res, 200, scenario::to_json(*intent));
                  });
