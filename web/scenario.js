@@ -43,12 +43,15 @@ function interpretTyped(delay = 300) {
   interpretTimer = setTimeout(() => interpret($('prompt').value, 'From the prompt as you type:'), delay);
 }
 
-// A card's own interpretation when it stores one (`intent`), else its prompt read now.
+// A card's own interpretation when it stores one (`intent`; offline cards also carry it in their
+// provenance), else its prompt read now.
 function showCardIntent(card) {
   clearTimeout(interpretTimer);
-  if (card.intent && typeof card.intent === 'object') {
+  const stored = [card.intent, card.provenance?.program?.scenario_intent]
+    .find((i) => i && typeof i === 'object' && typeof i.prompt === 'string' && Array.isArray(i.groups));
+  if (stored) {
     ++interpretSeq;
-    showIntent(card.intent, `Stored with card ${card.id}:`);
+    showIntent(stored, `Stored with card ${card.id}:`);
   } else if (card.prompt) {
     interpret(card.prompt, `Card ${card.id} (its prompt, read now):`);
   }
