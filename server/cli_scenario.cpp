@@ -11,6 +11,7 @@
 #include "core/store/store.hpp"
 #include "core/world/world_yaml.hpp"
 #include "server/cli.hpp"
+#include "server/prompt_gate.hpp"
 #include "server/registry.hpp"
 
 namespace socsim::server {
@@ -80,6 +81,8 @@ int generate_command(const std::vector<std::string>& args) {
   scenario::ScenarioConfig config;
   auto request = scenario::scenario_request_from_json(body, config);
   if (!request) return cli_report(request.error());
+  if (auto intent = checked_prompt(request->prompt, config.max_prompt_bytes); !intent)
+    return cli_report(intent.error());
 
   auto store = store::Store::open(cli_db_path(a));
   if (!store) return cli_report(store.error());

@@ -1,11 +1,18 @@
 // Text to scenario over HTTP: POST /api/v1/scenarios (a job whose result is a scenario card),
-// GET /api/v1/trajectories/{sha256} (a card's trajectory log), POST /api/v1/cards/{id}/replay.
+// POST /api/v1/scenarios/interpret (what a prompt says, at once), GET /api/v1/trajectories/{sha256}
+// (a card's trajectory log), POST /api/v1/cards/{id}/replay. A prompt that cannot become a scenario
+// (scenario::check_prompt) is refused on both before anything is queued or stored.
+#include "core/common/json_check.hpp"
 #include "core/knowledge/building_type.hpp"
 #include "core/scenario/pipeline.hpp"
+#include "core/scenario/prompt_check.hpp"
+#include "core/scenario/scenario_intent.hpp"
 #include "core/scenario/trajectory_store.hpp"
+#include "core/scenario/wordnet.hpp"
 #include "core/world/world_document.hpp"
 #include "core/world/world_yaml.hpp"
 #include "server/http_util.hpp"
+#include "server/prompt_gate.hpp"
 #include "server/routes.hpp"
 #include "server/stored_worlds.hpp"
 
@@ -77,6 +84,8 @@ void scenario_routes(Router& http, RouteContext& ctx) {
         const auto config = scenario_config(ctx.config);
         auto request = scenario::scenario_request_from_json(*body, config);
         if (!request) return reply_problem(res, request.error(), req.path);
+        if (auto intent = checked_prompt(request->prompt, ctx.config.max_prompt_bytes); !intent)
+          return reply_problem(res, intent.error(), req.path);
         if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
         if (request->generator == "llm" && !ctx.llm)
           return reply_problem(res,
@@ -120,6 +129,26 @@ void scenario_routes(Router& http, RouteContext& ctx) {
         res.set_header("Location", "/api/v1/jobs/" + *id);
         reply_json(res, 202, *job);
       });
+
+  post_with_body(http, "/api/v1/scenarios/interpret", ctx.config.max_body_bytes,
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
+                   auto body = json_body(text);
+                   if (!body) return reply_problem(res, body.error(), req.path);
+                   JsonChecker c;
+                   if (!body->is_object())
+                     return reply_problem(res,
+                                          Error(ErrorCode::kValidation, "the request must be a JSON object",
+                                                {{"", "expected an object", "", 0, 0}}),
+                                          req.path);
+                   c.only_keys(*body, "", {"prompt"});
+                   // Emptiness and length are the prompt check's, with its messages.
+                   auto prompt = c.string(*body, "", "prompt", true, 0, std::string::npos);
+                   if (!c.ok())
+                     return reply_problem(res, c.error("the interpret request is not valid"), req.path);
+                   auto intent = checked_prompt(*prompt, ctx.config.max_prompt_bytes);
+                   if (!intent) return reply_problem(res, intent.error(), req.path);
+                   reply_json(res, 200, scenario::to_json(*intent));
+                 });
 
   http.Get(kTrajectoryPath, [&ctx](const Request& req, Response& res) {
     const std::string sha = req.matches[1];

@@ -75,8 +75,8 @@ export async function waitForJob(id, { bar = null, onUpdate = null, interval = 2
 // ---------------------------------------------------------------- page frame
 
 const PAGES = [
-  ['scenario.html', 'Text to scenario'],
-  ['index.html', 'Scenario cards'],
+  ['./', 'Text to scenario'],
+  ['catalogue.html', 'Scenario cards'],
   ['household.html', 'Households'],
   ['navbench.html', 'Navigation benchmark'],
 ];
@@ -85,10 +85,11 @@ const PAGES = [
 // server's version and (pages with a live feed only) the live badge.
 function mountHeader() {
   const file = location.pathname.split('/').pop() || 'index.html';
+  const current = (href) => (href === './' ? 'index.html' : href) === file;
   const nav = el('nav', { 'aria-label': 'Pages' }, ...PAGES.map(([href, text]) =>
-    el('a', href === file ? { href, 'aria-current': 'page' } : { href }, text)));
+    el('a', current(href) ? { href, 'aria-current': 'page' } : { href }, text)));
   document.body.prepend(el('header', {},
-    el('h1', {}, el('a', { href: 'index.html' }, 'socsim')), nav,
+    el('h1', {}, el('a', { href: './' }, 'socsim')), nav,
     el('span', { id: 'status', class: 'muted', 'aria-live': 'polite' }),
     el('span', { id: 'server-info', class: 'muted' }, 'connecting…'),
     el('span', { id: 'live', class: 'badge off', title: 'live events over WebSocket', hidden: '' }, 'live')));

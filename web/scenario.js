@@ -1,8 +1,10 @@
-// socsim text-to-scenario page: prompt → job (progress) → scenario card → a live session of the
+// socsim text-to-scenario page (the landing page, /): prompt → what was understood (POST
+// /api/v1/scenarios/interpret as you type) → job (progress) → scenario card → a live session of the
 // card's recorded trajectories streamed over WebSocket, drawn over the world on a Canvas 2D with
-// interpolation between frames and trails; play/pause/speed/seek go over the socket. Plain
-// ES module, no build step.
+// interpolation between frames and trails; play/pause/speed/seek go over the socket. The stage
+// says how many people it shows (data-people, data-roles). Plain ES module, no build step.
 import { $, api, el, getJson, postJson, jobText, waitForJob, toast, serverInfo, showLegend, COLOURS, drawPlan } from './common.js';
+import { clearIntent, showIntent, showIntentProblem } from './intent.js';
 
 const STATE_COLOURS = COLOURS.state;
 const ROLE_PALETTE = COLOURS.role;
@@ -14,6 +16,46 @@ const view = {
   prev: null, curr: null, prevIndex: new Map(), currIndex: new Map(), states: Object.keys(STATE_COLOURS), currAt: 0, interval: 0.1, t: 0, paused: false, trails: new Map(),
   roles: [], duration: 60, frames: 0, seeking: false,
 };
+
+// ---------------------------------------------------------------- prompt → what was understood
+// Only the latest request may paint the panel: answers that arrive after a newer one was sent
+// (typing on, a card opened) are dropped.
+let interpretSeq = 0;
+let interpretTimer = 0;
+
+async function interpret(prompt, source) {
+  const seq = ++interpretSeq;
+  try {
+    const intent = await postJson('/scenarios/interpret', { prompt });
+    if (seq === interpretSeq) showIntent(intent, source);
+  } catch (err) {
+    if (seq === interpretSeq) showIntentProblem(err.message, source);
+  }
+}
+
+function interpretTyped(delay = 300) {
+  clearTimeout(interpretTimer);
+  if (!$('prompt').value.trim()) {
+    ++interpretSeq;
+    clearIntent('Type a prompt to see how it is read.');
+    return;
+  }
+  interpretTimer = setTimeout(() => interpret($('prompt').value, 'From the prompt as you type:'), delay);
+}
+
+// A card's own interpretation when it stores one (`intent`; offline cards also carry it in their
+// provenance), else its prompt read now.
+function showCardIntent(card) {
+  clearTimeout(interpretTimer);
+  const stored = [card.intent, card.provenance?.program?.scenario_intent]
+    .find((i) => i && typeof i === 'object' && typeof i.prompt === 'string' && Array.isArray(i.groups));
+  if (stored) {
+    ++interpretSeq;
+    showIntent(stored, `Stored with card ${card.id}:`);
+  } else if (card.prompt) {
+    interpret(card.prompt, `Card ${card.id} (its prompt, read now):`);
+  }
+}
 
 // ---------------------------------------------------------------- prompt → job → card
 async function submitPrompt(e) {
@@ -49,14 +91,15 @@ async function openCard(id) {
   history.replaceState(null, '', `#card=${id}`);
   $('card-title').textContent = card.title;
   $('card-description').textContent = `${card.description} Seed ${card.seed}, ${card.generator.name}${card.generator.model ? ' (' + card.generator.model + ')' : ''}.`;
-  $('catalogue-link').href = `index.html#card=${id}`;
-  $('share').href = `scenario.html#card=${id}`;
+  $('catalogue-link').href = `catalogue.html#card=${id}`;
+  $('share').href = `./#card=${id}`;
   $('csv').href = `${api}/cards/${id}/export?format=csv`;
   view.world = card.world;
   view.duration = card.trajectory_log?.duration_s || 60;
   $('seek').max = String(view.duration);
   prepareStage();
   showMetrics(card.metrics);
+  showCardIntent(card);
   if (!card.trajectory_log) { $('stream-status').textContent = 'this card has no trajectory log'; return; }
   const session = await postJson('/simulations', { card_id: id, speed: Number($('speed').value) });
   connect(session);
@@ -103,6 +146,8 @@ function connect(session) {
 
 function stopStream() {
   if (view.ws) { const ws = view.ws; view.ws = null; ws.close(); }
+  $('stage').dataset.people = '0';
+  delete $('stage').dataset.roles;
   view.prev = null; view.curr = null; view.prevIndex = new Map(); view.currIndex = new Map(); view.trails.clear();
 }
 
@@ -165,6 +210,9 @@ function onFrame(f) {
   view.frames += 1;
   if (!view.seeking) $('seek').value = String(f.t);
   $('clock').textContent = `${f.t.toFixed(1)} s · ${f.n} people`;
+  const byRole = {};
+  for (let i = 0; i < f.n; i++) { const r = view.roles[f.role[i]] ?? String(f.role[i]); byRole[r] = (byRole[r] || 0) + 1; }
+  $('stage').dataset.roles = JSON.stringify(byRole);
   liveCounts();
 }
 
@@ -229,6 +277,7 @@ function draw() {
     if (!list) { list = []; byColour.set(c, list); }
     list.push(px(x), py(y), f.yaw[i]);
   }
+  stage.dataset.people = String(f.n);  // bodies on the canvas now
   for (const [c, list] of byColour) {
     ctx.fillStyle = c;
     ctx.beginPath();
@@ -288,6 +337,10 @@ async function loadWorlds() {
 
 async function main() {
   $('prompt-form').addEventListener('submit', submitPrompt);
+  $('prompt').addEventListener('input', () => interpretTyped());
+  for (const b of $('examples').querySelectorAll('button[data-prompt]')) {
+    b.addEventListener('click', () => { $('prompt').value = b.dataset.prompt; $('prompt').focus(); interpretTyped(0); });
+  }
   $('world-source').addEventListener('change', () => { $('scene-graph-label').hidden = $('world-source').value !== 'scene_graph'; });
   $('play').addEventListener('click', () => { send(view.paused ? 'resume' : 'pause'); view.paused = !view.paused; $('play').textContent = view.paused ? 'Play' : 'Pause'; });
   $('speed').addEventListener('change', () => send('speed', Number($('speed').value)));
@@ -306,7 +359,20 @@ async function main() {
   loadRecent();
   requestAnimationFrame(draw);
   const m = location.hash.match(/card=(crd_[0-9a-z]+)/);
-  if (m) openCard(m[1]).catch((e) => { $('error').textContent = e.message; });
+  if (m) openSharedCard(m[1]);
+  else interpretTyped(0);
+}
+
+// A shared link: scenario cards play here; other cards (the catalogue's links were /#card=… before
+// this page became the start page) open in the catalogue.
+async function openSharedCard(id) {
+  try {
+    const card = await getJson(`/cards/${encodeURIComponent(id)}`);
+    if (!card.trajectory_log) { location.replace(`catalogue.html#card=${id}`); return; }
+    await openCard(id);
+  } catch (e) {
+    $('error').textContent = e.message;
+  }
 }
 
 main();

@@ -44,3 +44,21 @@ test('created, listed and exported cards match card.schema.json', async () => {
   assert.equal(problem.status, 422);
   assert.deepEqual(problem.body.errors.map((e) => e.pointer), ['/title']);
 });
+
+test('POST /api/v1/scenarios/interpret answers match intent.schema.json; refusals are problems at /prompt', async () => {
+  const validate = ajv().getSchema('intent.schema.json');
+  for (const prompt of ['A library that is empty except for 3 librarians shelving books',
+    'Fire alarm in the hospital: about two hundred people leave through the two exits',
+    'Between 20 and 30 commuters squeeze through the narrow ticket gate of the train station',
+    'In the café, 20 customers wait']) {
+    const r = await server.post('/api/v1/scenarios/interpret', { prompt });
+    assert.equal(r.status, 200, JSON.stringify(r.body));
+    assert.ok(validate(r.body), `${prompt}: ${JSON.stringify(validate.errors)}`);
+    assert.equal(r.body.prompt, prompt);
+  }
+  for (const prompt of ['', '   ', 'Zwanzig Patienten warten im Wartezimmer auf den Arzt', 'hello there']) {
+    const r = await server.post('/api/v1/scenarios/interpret', { prompt });
+    assert.equal(r.status, 422, prompt);
+    assert.deepEqual(r.body.errors.map((e) => e.pointer), ['/prompt'], prompt);
+  }
+});

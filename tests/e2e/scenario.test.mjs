@@ -48,7 +48,8 @@ test('a prompt becomes a scenario whose people move', { skip }, async () => {
   const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
-  await page.goto(server.base + '/scenario.html');
+  await page.goto(server.base + '/scenario.html');  // the old address: now the start page
+  await page.waitForURL(server.base + '/');
   await page.fill('#prompt', 'About twenty patients queue at the reception desk while two nurses chat near the corridor');
   await page.fill('#seed', '3');
   await page.fill('#duration', '30');
@@ -84,14 +85,14 @@ test('a scenario card opens from the catalogue and plays', { skip }, async () =>
   assert.equal(done.status, 'succeeded', JSON.stringify(done.error));
 
   const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
-  await page.goto(server.base + '/');
+  await page.goto(server.base + '/catalogue.html');
   await page.fill('#q', 'evacuates');
   await page.click('#search button');
   await page.waitForFunction(() => document.querySelectorAll('#cards li').length === 1);
   await page.click('#cards li');
   await page.waitForSelector('a.watch');
   await page.click('a.watch');
-  await page.waitForURL(/scenario\.html#card=crd_/);
+  await page.waitForURL(/\/#card=crd_/);
   await waitForPeople(page);
   assert.match(await page.textContent('#card-title'), /evacuates/);
   assert.ok(await pixelsChange(page), 'the card plays');

@@ -129,4 +129,11 @@ code=$(curl -s -o "$WORK/p.json" -w '%{http_code}' -X POST -H 'Content-Type: app
 [ "$code" = 422 ] || fail "expected 422, got $code"
 grep -q '"/agents"' "$WORK/p.json" && grep -q '"/duration_s"' "$WORK/p.json" || fail "problem does not name the fields"
 [ "$(curl -fsS "$BASE/cards?page_size=100" | json 'len(d["items"])')" = "$before" ] || fail "a refused request stored something"
-echo "ok - bad requests are refused with pointers and store nothing"
+# A prompt in another language, or with nothing to simulate: 422 at /prompt, and the CLI says the same.
+code=$(curl -s -o "$WORK/p.json" -w '%{http_code}' -X POST -H 'Content-Type: application/json' \
+  -d '{"prompt":"Zwanzig Patienten warten im Wartezimmer auf den Arzt"}' "$BASE/scenarios")
+[ "$code" = 422 ] && grep -q 'socsim reads English prompts' "$WORK/p.json" || fail "non-English prompt: $code $(cat "$WORK/p.json")"
+if "$SOCSIM" scenario generate --prompt "hello there" --seconds 2 > "$WORK/cli.txt" 2>&1; then fail "CLI generated from 'hello there'"; fi
+grep -q "names no person, place or activity" "$WORK/cli.txt" || fail "CLI refusal: $(cat "$WORK/cli.txt")"
+[ "$(curl -fsS "$BASE/cards?page_size=100" | json 'len(d["items"])')" = "$before" ] || fail "a refused prompt stored something"
+echo "ok - bad requests and prompts are refused with pointers and store nothing"

@@ -1,5 +1,6 @@
-// The catalogue viewer in headless Debian Chromium, served by the daemon itself: cards listed,
-// searched, opened; a card POSTed while the page is open appears live over the WebSocket.
+// The catalogue viewer (catalogue.html) in headless Debian Chromium, served by the daemon itself:
+// cards listed, searched, opened; a card POSTed while the page is open appears live over the
+// WebSocket. Share links from before the catalogue moved off `/` (/#card=…) still open the card.
 // A screenshot per test lands in tests/e2e/artifacts/.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -28,7 +29,7 @@ after(async () => {
 
 test('catalogue lists, searches and opens cards', { skip }, async () => {
   const page = await browser.newPage();
-  await page.goto(server.base + '/');
+  await page.goto(server.base + '/catalogue.html');
   await page.waitForSelector('#cards li');
   assert.equal(await page.locator('#cards li').count(), 2);
   await page.fill('#q', 'evacuate');
@@ -53,7 +54,7 @@ test('a search sent before the first page arrives shows only its own results', {
     await route.continue();
   });
   const firstPage = page.waitForRequest((r) => isFirstPage(r.url()));
-  await page.goto(server.base + '/');
+  await page.goto(server.base + '/catalogue.html');
   await firstPage;
   await page.fill('#q', 'evacuate');
   await page.click('#search button');
@@ -94,14 +95,14 @@ test('a card with a world shows its floor plan', { skip }, async () => {
 
 test('a card created elsewhere appears live, and share links open it', { skip }, async () => {
   const page = await browser.newPage();
-  await page.goto(server.base + '/');
+  await page.goto(server.base + '/catalogue.html');
   await page.waitForSelector('#live.on');
   const created = await server.post('/api/v1/cards', card('Coffee break', 'staff gather at the coffee machine', ['social'], 'office'));
   assert.equal(created.status, 201);
   await page.waitForSelector(`#cards li[data-id="${created.body.id}"]`);
   await page.screenshot({ path: join(artifacts, 'live.png'), fullPage: true });
   const shared = await browser.newPage();
-  await shared.goto(`${server.base}/#card=${created.body.id}`);
+  await shared.goto(`${server.base}/catalogue.html#card=${created.body.id}`);
   await shared.waitForSelector('#detail h2');
   assert.equal(await shared.textContent('#detail h2'), 'Coffee break');
   await shared.close();

@@ -56,7 +56,7 @@ async function openCard(id) {
       el('p', {}, c.description || ''),
       el('div', { class: 'tags' }, ...c.tags.map((t) => el('span', {}, t))),
       dl,
-      c.trajectory_log ? el('p', {}, el('a', { href: `scenario.html#card=${c.id}`, class: 'watch' }, '▶ Watch the scenario')) : '',
+      c.trajectory_log ? el('p', {}, el('a', { href: `./#card=${c.id}`, class: 'watch' }, '▶ Watch the scenario')) : '',
       el('p', {}, el('a', { href: `${api}/cards/${c.id}/export`, download: `${c.id}.card.json` }, 'Download export file'),
         ' · ', el('a', { href: `#card=${c.id}`, onclick: () => { navigator.clipboard?.writeText(location.href); toast('Link copied'); } }, 'Share link')),
       el('h3', {}, 'Metrics'), el('pre', {}, JSON.stringify(c.metrics, null, 2)),
