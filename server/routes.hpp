@@ -38,6 +38,10 @@ struct RouteContext {
   // A model a request names must be one this server allows (llm::LlmConfig::resolve_model): 422 at
   // /model before any job is queued. Nothing to check without a model or an LLM endpoint.
   [[nodiscard]] Status check_model(const std::optional<std::string>& model) const;
+  // The answer to a request that queued a job: 202 with the job and Location: /api/v1/jobs/{id},
+  // or the problem that kept it from being queued (429 over the client's quota, 503 queue full).
+  void reply_job_accepted(Response& res, const Result<std::string>& job_id,
+                          const std::string& instance) const;
 };
 
 // Embedded copies of schemas/ (openapi.yaml and the JSON Schemas), keyed by file name.

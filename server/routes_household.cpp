@@ -208,11 +208,7 @@ void household_routes(Router& http, RouteContext& ctx) {
                          return finish(std::move(*personas));
                        },
                        ctx.client(req));
-                   if (!id) return reply_problem(res, id.error(), req.path);
-                   auto job = ctx.jobs.get(*id);
-                   if (!job) return reply_problem(res, job.error(), req.path);
-                   res.set_header("Location", "/api/v1/jobs/" + *id);
-                   reply_json(res, 202, *job);
+                   ctx.reply_job_accepted(res, id, req.path);
                  });
 
   // ---- households ----
@@ -295,11 +291,7 @@ void household_routes(Router& http, RouteContext& ctx) {
                           {"links", {{"household", "/api/v1/households/" + household}}}};
             },
             ctx.client(req));
-        if (!id) return reply_problem(res, id.error(), req.path);
-        auto job = ctx.jobs.get(*id);
-        if (!job) return reply_problem(res, job.error(), req.path);
-        res.set_header("Location", "/api/v1/jobs/" + *id);
-        reply_json(res, 202, *job);
+        ctx.reply_job_accepted(res, id, req.path);
       });
 
   http.Get("/api/v1/households", [&ctx](const Request& req, Response& res) {

@@ -81,11 +81,7 @@ void navbench_routes(Router& http, RouteContext& ctx) {
                          return out;
                        },
                        ctx.client(req));
-                   if (!id) return reply_problem(res, id.error(), req.path);
-                   auto job = ctx.jobs.get(*id);
-                   if (!job) return reply_problem(res, job.error(), req.path);
-                   res.set_header("Location", "/api/v1/jobs/" + *id);
-                   reply_json(res, 202, *job);
+                   ctx.reply_job_accepted(res, id, req.path);
                  });
 
   http.Get(R"(/api/v1/navbench/([^/]+)/episodes/([^/]+))", [&ctx, inputs](const Request& req, Response& res) {

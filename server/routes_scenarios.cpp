@@ -123,11 +123,7 @@ void scenario_routes(Router& http, RouteContext& ctx) {
                           {"trajectory_log", outcome->card.trajectory_log}};
             },
             ctx.client(req));
-        if (!id) return reply_problem(res, id.error(), req.path);
-        auto job = ctx.jobs.get(*id);
-        if (!job) return reply_problem(res, job.error(), req.path);
-        res.set_header("Location", "/api/v1/jobs/" + *id);
-        reply_json(res, 202, *job);
+        ctx.reply_job_accepted(res, id, req.path);
       });
 
   post_with_body(http, "/api/v1/scenarios/interpret", ctx.config.max_body_bytes,
@@ -195,11 +191,7 @@ void scenario_routes(Router& http, RouteContext& ctx) {
                           {"frames", out->log.frame_count()}};
             },
             ctx.client(req));
-        if (!id) return reply_problem(res, id.error(), req.path);
-        auto job = ctx.jobs.get(*id);
-        if (!job) return reply_problem(res, job.error(), req.path);
-        res.set_header("Location", "/api/v1/jobs/" + *id);
-        reply_json(res, 202, *job);
+        ctx.reply_job_accepted(res, id, req.path);
       });
 }
 

@@ -38,6 +38,15 @@ Status RouteContext::check_model(const std::optional<std::string>& model) const 
   return {};
 }
 
+void RouteContext::reply_job_accepted(Response& res, const Result<std::string>& job_id,
+                                      const std::string& instance) const {
+  if (!job_id) return reply_problem(res, job_id.error(), instance);
+  auto job = jobs.get(*job_id);
+  if (!job) return reply_problem(res, job.error(), instance);
+  res.set_header("Location", "/api/v1/jobs/" + *job_id);
+  reply_json(res, 202, *job);
+}
+
 std::string RouteContext::public_host(const Request& req) const {
   if (!config.public_host.empty()) return config.public_host;
   std::string host = req.get_header_value("Host");

@@ -236,11 +236,7 @@ void world_routes(Router& http, RouteContext& ctx) {
                           {"compliant", w->compliance["passed"]}};
             },
             ctx.client(req));
-        if (!id) return reply_problem(res, id.error(), req.path);
-        auto job = ctx.jobs.get(*id);
-        if (!job) return reply_problem(res, job.error(), req.path);
-        res.set_header("Location", "/api/v1/jobs/" + *id);
-        reply_json(res, 202, *job);
+        ctx.reply_job_accepted(res, id, req.path);
       });
 
   http.Get("/api/v1/worlds", [&ctx](const Request& req, Response& res) {
