@@ -150,8 +150,20 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
   } else if (type == "dining_hall") {
     // Serving counter at the far side, its queue towards the main door; tables on both sides of it.
     const double cu = L * (rng.chance(0.5) ? 0.3 : 0.7);
-    const auto at = p.counter_with_queue("counter", "serving_counter", cu, D - 1.0, 4.5, false,
-                                         rules.queue_lane_width, {"serve", "queue_target"});
+    auto at = p.counter_with_queue("counter", "serving_counter", cu, D - 1.0, 4.5, false,
+                                   rules.queue_lane_width, {"serve", "queue_target"});
+    // Pushed into the middle (an exit or door in the way): the other side may keep room for tables.
+    if (at && std::abs(at->u - cu) > 0.6) {
+      const Furnishing before = p.furnishing();
+      p.furnishing().entities.pop_back();
+      p.furnishing().rois.pop_back();
+      const auto other = p.counter_with_queue("counter", "serving_counter", L - cu, D - 1.0, 4.5, false,
+                                              rules.queue_lane_width, {"serve", "queue_target"});
+      if (other && std::abs(other->u - (L - cu)) <= 0.6)
+        at = other;
+      else
+        p.furnishing() = before;
+    }
     const double gap = rules.queue_lane_width / 2 + 1.0;
     const double split = at ? at->u : -10.0;
     if (auto a = split - gap - 0.8 >= 2.0
@@ -209,21 +221,12 @@ FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> co
 Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
                    Rng& rng) {
   Furnishing out;
-  std::map<std::string, std::string> type_of;
-  for (const auto& z : zones) type_of[z.name] = canonical_room_type(z.type);
   const bool named_entrance = std::any_of(doors.begin(), doors.end(), [](const DoorSpec& d) {
     return d.name == "main_entrance" && d.connects.size() == 1;
   });
   for (const auto& z : zones) {
     const std::string type = canonical_room_type(z.type);
-    std::vector<DoorAt> here;
-    for (const auto& d : doors) {
-      const auto it = std::find(d.connects.begin(), d.connects.end(), z.name);
-      if (it == d.connects.end()) continue;
-      DoorAt a{d.pose.position(), d.width, d.connects.size() == 1, "", d.name};
-      if (!a.exterior) a.other_type = type_of[d.connects[it == d.connects.begin() ? 1 : 0]];
-      here.push_back(std::move(a));
-    }
+    const std::vector<DoorAt> here = doors_of(z, zones, doors);
     if (is_circulation_type(type) && !is_hall_type(type)) {
       out.rois.push_back({z.name + "_walk", "corridor", z.polygon});
     }
@@ -268,25 +271,11 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
             {entrance ? z.name + "_entrance" : z.name + "_" + d.name, entrance ? "entrance" : "exit", poly});
     }
     if (!find_room_type(type) || is_corridor_type(type)) continue;
-    const Box box = inner_box(z.polygon);
-    if (box.width() < 1.0 || box.height() < 1.0) continue;
-    // Main door: the kitchen door of a dining hall, the entrance of a shop or lobby, else the door
-    // to circulation, else the first.
-    const DoorAt* main = nullptr;
-    auto pick = [&](auto pred) {
-      for (const auto& d : here)
-        if (!main && pred(d)) main = &d;
-    };
-    if (type == "sales_floor" || type == "dining_hall" || type == "lobby" || type == "reception" ||
-        type == "security" || type == "concourse")
-      pick([](const DoorAt& d) { return d.exterior; });
-    pick([](const DoorAt& d) { return !d.exterior && is_circulation_type(d.other_type); });
-    pick([](const DoorAt&) { return true; });
-    const int side = main ? nearest_side(box, main->centre) : 0;
+    auto placer = placer_for(z, zones, doors, out);
+    if (!placer) continue;
     const std::size_t first_entity = out.entities.size(), first_roi = out.rois.size();
-    Placer placer(z, Frame(box, side), here, out);
-    furnish_room(placer, type, rules, rng, geometry::area(z.polygon));
-    placer.poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
+    furnish_room(*placer, type, rules, rng, geometry::area(z.polygon));
+    placer->poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
   }
   return out;
 }

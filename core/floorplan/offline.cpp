@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
 #include <set>
 
 #include "core/common/rng.hpp"
+#include "core/floorplan/features.hpp"
 #include "core/floorplan/furnish.hpp"
 #include "core/floorplan/rooms.hpp"
 #include "core/geometry/planar.hpp"
@@ -509,9 +511,10 @@ class Layout {
   // first, then other rooms except toilets, bedrooms and stores; no randomness, so a plan that
   // needs no second exit is unchanged. False when no outside wall takes one.
   std::optional<std::string> add_exit() {
-    const auto main = std::find_if(doors_.begin(), doors_.end(),
-                                   [](const DoorDraft& d) { return d.name == "main_entrance"; });
-    if (main == doors_.end()) return std::nullopt;
+    std::vector<const DoorDraft*> exits;
+    for (const auto& d : doors_)
+      if (d.connects.size() == 1) exits.push_back(&d);
+    if (exits.empty()) return std::nullopt;
     std::vector<Rect> rects;
     for (const auto& r : rooms_) rects.push_back(r.rect);
     double diagonal = 0.0;
@@ -520,6 +523,9 @@ class Layout {
         for (auto [ax, ay] : {std::pair{a.x0, a.y0}, {a.x1, a.y0}, {a.x1, a.y1}, {a.x0, a.y1}})
           for (auto [bx, by] : {std::pair{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}})
             diagonal = std::max(diagonal, std::hypot(ax - bx, ay - by));
+    // The second exit half the diagonal from the first (IBC 1007.1.1); further exits spread out.
+    const double apart =
+        exits.size() == 1 ? diagonal / 2.0 : diagonal / (2.0 * static_cast<double>(exits.size()));
     const int w = public_w_;
     auto tier = [&](std::size_t r) {
       const std::string& t = rooms_[r].type;
@@ -544,15 +550,16 @@ class Layout {
       for (const Wall& wall : outside_walls(rects, r)) {
         const int lo = wall.lo + 15 + (w + 1) / 2, hi = wall.hi - 15 - (w + 1) / 2;
         if (lo > hi) continue;
-        for (int at : {lo, (lo + hi) / 2 / 5 * 5, hi}) {
+        for (int at : {lo, (lo + hi) / 2 / 5 * 5, hi, (3 * lo + hi) / 4 / 5 * 5, (lo + 3 * hi) / 4 / 5 * 5}) {
           const int x = wall.vertical ? wall.c : at, y = wall.vertical ? at : wall.c;
           bool clear = true;
           for (const DoorDraft& d : doors_)
             if (std::hypot(d.x - x, d.y - y) < (d.width + w) / 2.0 + 30.0) clear = false;
           if (!clear) continue;
-          const double distance = std::hypot(main->x - x, main->y - y);
+          double distance = std::numeric_limits<double>::infinity();
+          for (const DoorDraft* e : exits) distance = std::min(distance, std::hypot(e->x - x, e->y - y));
           // A spot far enough apart in a better tier wins; within a tier, the farthest.
-          const bool enough = distance >= diagonal / 2.0;
+          const bool enough = distance >= apart;
           const int rank = enough ? t : t + 4;
           if (!best || rank < best_tier || (rank == best_tier && distance > best->distance)) {
             best = Spot{r, wall, at, distance};
@@ -563,17 +570,18 @@ class Layout {
     }
     if (!best) return std::nullopt;
     DoorDraft d;
-    d.name = "emergency_exit";
+    d.name = exits.size() == 1 ? "emergency_exit" : "emergency_exit_" + std::to_string(exits.size());
     d.vertical_wall = best->wall.vertical;
     d.x = best->wall.vertical ? best->wall.c : best->at;
     d.y = best->wall.vertical ? best->at : best->wall.c;
     d.width = w;
     d.connects = {rooms_[best->room].name};
+    const std::string name = d.name;
     doors_.push_back(std::move(d));
     char metres[32];
     std::snprintf(metres, sizeof metres, "%.1f", best->distance / 100.0);
-    return "added 'emergency_exit' from '" + rooms_[best->room].name + "', " + metres +
-           " m from the main entrance: the building code asks for a second exit";
+    return "added '" + name + "' from '" + rooms_[best->room].name + "', " + metres + " m from " +
+           (exits.size() == 1 ? std::string("the main entrance") : std::string("the nearest exit"));
   }
 
   [[nodiscard]] const SceneGraph& graph() const { return graph_; }
@@ -657,6 +665,60 @@ Json knowledge_provenance(std::span<const MergedConstraint> constraints) {
   return out;
 }
 
+namespace {
+
+// The exits the code asks for: the exit_count check's requirement (1 when there is none).
+int code_exits(const ComplianceReport& report) {
+  for (const auto& c : report.checks)
+    if (c.name == "exit_count") return static_cast<int>(std::lround(c.required));
+  return 1;
+}
+
+const ComplianceCheck* exit_check(const ComplianceReport& report) {
+  for (const auto& c : report.checks)
+    if (c.name == "exit_count") return &c;
+  return nullptr;
+}
+
+// The exits (doors to the outside) a request asks for, at least: the most of its exits,
+// entrances and, when there are too few doors in all, doors.
+int asked_exits(const WorldRequirements& r) {
+  int n = 0;
+  for (const auto& f : r.features)
+    if (f.feature == Feature::kExit || f.feature == Feature::kEntrance) n = std::max(n, f.count);
+  return n;
+}
+
+// What the world lacks of the request: "2 of the 3 exits" …; empty when it holds all of it.
+std::vector<std::string> unmet(const World& world, const WorldRequirements& r, int code_needed) {
+  std::vector<std::string> out;
+  for (const auto& f : r.features) {
+    int have = count_feature(world, f.feature);
+    int want = f.count;
+    bool exact = !f.at_least;
+    if (f.feature == Feature::kExit || f.feature == Feature::kEntrance) {
+      want = std::max(want, code_needed);  // the code may ask for more than the request
+      if (f.count < code_needed) exact = false;
+      if (f.count == 0) exact = false;  // a building keeps its entrance
+    }
+    if (f.feature == Feature::kDoor) exact = false;  // every room keeps its doors
+    if (have < want || (exact && have > want))
+      out.push_back(std::to_string(have) + " " + std::string(info(f.feature).plural) + " built, " +
+                    std::to_string(want) + (exact ? "" : " or more") + " asked for");
+  }
+  for (const auto& room : r.rooms) {
+    const std::string type = room_type_for(room);
+    const auto have = std::count_if(world.zones().begin(), world.zones().end(), [&](const Zone& z) {
+      return canonical_room_type(z.type) == type || z.name == type;
+    });
+    if (have < room.count)
+      out.push_back("no room '" + room.name + "' (" + type + "): lay it out with apply_room_requirements");
+  }
+  return out;
+}
+
+}  // namespace
+
 Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const MergedConstraint> constraints,
                                       const OfflineOptions& options) {
   if (graph.rooms.empty())
@@ -665,11 +727,16 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
   Layout layout(graph, constraints);
   if (auto s = layout.prepare(); !s) return tl::unexpected(s.error());
   const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
+  const WorldRequirements& wants = options.requirements;
+  const std::optional<double> occupants =
+      wants.occupants ? std::optional<double>(*wants.occupants) : std::nullopt;
+  const std::string& domain = layout.graph().domain;
   Rng rng(options.seed, fnv1a64("floorplan"));
   double scale = 1.0;
   std::vector<std::string> tried;
   std::optional<Error> last_error;
   std::optional<ComplianceReport> last_report;
+  std::vector<std::string> last_unmet;
   const int attempts = std::max(1, options.max_attempts);
   for (int attempt = 0; attempt < attempts; ++attempt) {
     if (auto why = layout.attempt(rng, scale)) {
@@ -678,15 +745,17 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     }
     const Rng furnishing_rng = rng.fork("furnish");
     std::set<std::string> dropped;  // furniture the layout check found in the way, left out
+    FeatureOutcome outcome;
     auto build = [&]() {
       WorldBuilder builder;
-      builder.set_name(layout.graph().domain + "_plan_" + std::to_string(options.seed));
-      builder.set_floor({floor_material(layout.graph().domain)});
+      builder.set_name(domain + "_plan_" + std::to_string(options.seed));
+      builder.set_floor({floor_material(domain)});
       std::vector<Zone> zones;
       std::vector<DoorSpec> doors;
       layout.emit(builder, zones, doors);
       Rng furnishing = furnishing_rng;
       Furnishing f = furnish(zones, doors, rules, furnishing);
+      outcome = furnish_requirements(zones, doors, wants, rules, f);
       for (auto& r : f.rois) builder.add_roi(std::move(r));
       for (auto& e : f.entities)
         if (!dropped.count(e.name)) builder.add_entity(std::move(e));
@@ -698,22 +767,32 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       last_error = world.error();
       continue;
     }
-    ComplianceReport report = check_compliance(*world, layout.graph().domain, constraints);
-    // The occupant load or the travel distance asks for a second exit: add it and check again.
-    std::optional<std::string> exit_note;
-    const auto exit_count = std::find_if(report.checks.begin(), report.checks.end(),
-                                         [](const ComplianceCheck& c) { return c.name == "exit_count"; });
-    if (exit_count != report.checks.end() && exit_count->status == CheckStatus::kFail) {
-      exit_note = layout.add_exit();
-      if (exit_note) {
-        world = build();
-        if (!world) {
-          tried.push_back("the world with a second exit did not validate: " + world.error().message());
-          last_error = world.error();
-          continue;
-        }
-        report = check_compliance(*world, layout.graph().domain, constraints);
+    ComplianceReport report = check_compliance(*world, domain, constraints, occupants);
+    // Exits: as many as the request asks for and the code requires (occupant load, travel
+    // distance), each added as far from the others as the outside walls allow.
+    std::vector<std::string> exit_notes;
+    bool exits_ok = true;
+    for (int round = 0; round < 12 && world; ++round) {
+      const int target = std::max({code_exits(report), asked_exits(wants), 1});
+      if (count_feature(*world, Feature::kExit) >= target) break;
+      auto note = layout.add_exit();
+      if (!note) {
+        exits_ok = false;
+        break;
       }
+      exit_notes.push_back(*note);
+      world = build();
+      if (world) report = check_compliance(*world, domain, constraints, occupants);
+    }
+    if (!world) {
+      tried.push_back("the world with more exits did not validate: " + world.error().message());
+      last_error = world.error();
+      continue;
+    }
+    if (!exits_ok) {
+      tried.push_back("no outside wall takes another exit");
+      scale *= 1.15;
+      continue;
     }
     // Footprints clear of walls, doors and each other, every zone and piece of furniture
     // reachable by a person 0.5 m wide: furniture in the way is left out (and the plan built
@@ -738,7 +817,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
           tried.push_back("layout check: " + (world ? check.summary() : world.error().message()));
           continue;
         }
-        report = check_compliance(*world, layout.graph().domain, constraints);
+        report = check_compliance(*world, domain, constraints, occupants);
       }
     }
     if (!report.passed) {
@@ -754,12 +833,40 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       last_report = std::move(report);
       continue;
     }
+    // Everything the request counts or names is there (furniture that did not fit: larger rooms).
+    std::vector<std::string> lacking = outcome.missing;
+    for (auto& u : unmet(*world, wants, code_exits(report))) lacking.push_back(std::move(u));
+    if (!lacking.empty()) {
+      std::string what;
+      for (const auto& l : lacking) what += (what.empty() ? "" : "; ") + l;
+      tried.push_back("the request is not met: " + what);
+      last_unmet = std::move(lacking);
+      scale *= 1.15;
+      continue;
+    }
     FloorPlan plan{std::move(*world), std::move(report), layout.graph(), Json::object()};
     Json notes = layout.notes();
-    if (exit_note) notes.push_back(*exit_note);
-    plan.provenance = {{"generator", "offline"},          {"seed", options.seed},
-                       {"domain", layout.graph().domain}, {"attempts", attempt + 1},
-                       {"notes", std::move(notes)},       {"knowledge", knowledge_provenance(constraints)}};
+    for (const auto& n : exit_notes) notes.push_back(n);
+    const ComplianceCheck* exits = exit_check(plan.compliance);
+    const int asked = asked_exits(wants);
+    if (exits && asked > 0 && exits->required > asked)
+      notes.push_back(std::to_string(asked) + " exit" + (asked == 1 ? "" : "s") +
+                      " asked for; the building code (" + exits->ref_id + ") asks for " +
+                      std::to_string(static_cast<int>(exits->required)));
+    for (const auto& n : outcome.notes) notes.push_back(n);
+    plan.provenance = {{"generator", "offline"},    {"seed", options.seed},
+                       {"domain", domain},          {"attempts", attempt + 1},
+                       {"notes", std::move(notes)}, {"knowledge", knowledge_provenance(constraints)}};
+    if (!wants.empty()) {
+      Json met = Json::array();
+      for (const auto& f : wants.features)
+        met.push_back({{"feature", std::string(to_string(f.feature))},
+                       {"asked", f.count},
+                       {"at_least", f.at_least},
+                       {"built", count_feature(plan.world, f.feature)}});
+      plan.provenance["requirements"] = to_json(wants);
+      plan.provenance["requirements_met"] = std::move(met);
+    }
     return plan;
   }
   std::vector<FieldError> errors;
@@ -770,6 +877,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
                             (c->value ? std::to_string(*c->value) : std::string("nothing")) + " " + c->unit +
                             ", required " + std::to_string(c->required),
                         "", 0, 0});
+  for (const auto& u : last_unmet) errors.push_back({"/requirements", u, "", 0, 0});
   if (last_error)
     for (const auto& e : last_error->errors) errors.push_back(e);
   std::string detail = "no compliant plan after " + std::to_string(attempts) + " attempts";
