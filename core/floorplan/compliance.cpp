@@ -207,7 +207,9 @@ class Checker {
     if (!d.other) return true;
     for (ZoneId z : {d.zone, *d.other}) {
       const std::string& t = zones_[z.index()].type;
-      if (is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room") return true;
+      if (is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room" ||
+          t == "ticket_hall")
+        return true;
     }
     return false;
   }

@@ -113,13 +113,37 @@ DomainStyle style_of(std::string_view domain) {
   if (domain == "school") return {6.4, 8.0, "linoleum"};
   if (domain == "warehouse") return {3.8, 5.6, "concrete"};
   if (domain == "airport") return {4.5, 6.5, "terrazzo"};
-  return {3.6, 5.4, "vinyl"};  // canteen, retail
+  if (domain == "train_station") return {5.0, 7.0, "terrazzo"};
+  if (domain == "hotel") return {4.2, 5.6, "carpet"};
+  if (domain == "care_home") return {4.2, 5.4, "vinyl"};
+  if (domain == "library" || domain == "museum") return {4.5, 6.5, "oak_parquet"};
+  if (domain == "theatre" || domain == "arena") return {4.0, 6.0, "carpet"};
+  if (domain == "factory") return {4.0, 6.0, "concrete"};
+  if (domain == "mall") return {5.0, 7.5, "terrazzo"};
+  if (domain == "university") return {6.0, 8.0, "linoleum"};
+  if (domain == "gym") return {4.5, 6.5, "sports_floor"};
+  if (domain == "community_hall") return {3.8, 5.4, "wood"};
+  return {3.6, 5.4, "vinyl"};  // canteen, retail, supermarket, restaurant
+}
+
+// Rooms that are nearer square than a band's slice (halls for an audience, a sport, a show).
+bool stout_type(std::string_view type) {
+  return type == "auditorium" || type == "arena_floor" || type == "sports_hall" || type == "lecture_hall" ||
+         type == "food_court" || type == "fitness_room" || type == "gallery" || type == "day_room";
+}
+// Rooms that stand together along one side of the circulation (stout halls, platforms).
+bool grouped_type(std::string_view type) {
+  return stout_type(type) || type == "platform";
 }
 
 std::string material_of(std::string_view domain, std::string_view type) {
   if (is_toilet_type(type) || type == "kitchen" || type == "kitchenette") return "ceramic_tile";
   if (domain == "hospital") return "washable_paint";
-  if (domain == "warehouse" && type != "private_office" && type != "break_room") return "concrete";
+  if ((domain == "warehouse" || domain == "factory") && type != "private_office" && type != "break_room")
+    return "concrete";
+  if (domain == "care_home") return "washable_paint";
+  if (type == "auditorium" || type == "lecture_hall") return "acoustic_panel";
+  if (type == "platform") return "concrete";
   return "painted_plaster";
 }
 
@@ -247,7 +271,13 @@ class Layout {
       const RoomRequirement req = room_requirement(constraints_, s.type, main);
       r.area = std::max(r.area, req.min_area * 1.03) * scale;
       r.min_dim = cm_up(std::max({req.min_dimension, m(door_w_) + 0.35, 1.2}));
+      // Halls for an audience or a sport keep an aspect of at most 1.5; platforms are long and narrow.
+      if (stout_type(s.type))
+        r.min_dim = std::max(r.min_dim, cm_up(std::sqrt(r.area / rng.uniform(1.0, 1.5))));
+      if (s.type == "platform") r.min_dim = std::max(r.min_dim, cm_up(rng.uniform(5.0, 7.0)));
     }
+    bool grouped = false;
+    for (std::size_t i = 0; i < n; ++i) grouped = grouped || (i != *circ_ && grouped_type(rooms_[i].type));
     if (main_bedroom) {
       double biggest = 0.0;
       for (std::size_t i = 0; i < n; ++i)
@@ -279,7 +309,7 @@ class Layout {
     for (std::size_t i = 0; i < n; ++i) {
       const std::string& t = rooms_[i].type;
       if (t == "living_room" || t == "lobby" || t == "reception" || t == "waiting_room" || t == "security" ||
-          t == "open_office" || t == "loading_bay")
+          t == "open_office" || t == "loading_bay" || t == "ticket_hall" || t == "food_court")
         try_cap(i, 0.45);
     }
     bool needs_two_bands = false;
@@ -301,6 +331,7 @@ class Layout {
     std::size_t band_rooms = n - 1 - caps.size();
     const bool single =
         !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
+    grouped_band_ = grouped ? static_cast<int>(rng.below(2)) : 0;
     std::vector<std::size_t> left[2], middle[2], right[2];
     const bool first_cap_left = rng.chance(0.5);
     std::vector<bool> used(n, false);
@@ -337,6 +368,12 @@ class Layout {
       if (rng.chance(0.5)) std::reverse(chain.begin(), chain.end());
       int b = load[0] <= load[1] ? 0 : 1;
       if (rng.chance(0.2)) b = 1 - b;
+      // Stout halls and platforms on one side, the small rooms on the other (bands share a depth).
+      if (grouped)
+        b = std::any_of(chain.begin(), chain.end(),
+                        [&](std::size_t r) { return grouped_type(rooms_[r].type); })
+                ? grouped_band_
+                : 1 - grouped_band_;
       if (single) b = 0;
       for (auto r : chain) {
         middle[b].push_back(r);
@@ -370,6 +407,10 @@ class Layout {
       W = cm_up(std::max(plan_.corridor_width, m(std::max(door_w_, public_w_)) + 0.35) +
                 rng.uniform(0.0, 0.3));
       L = std::max({length[0], length[1], 300});
+      // A corridor longer than the passing-space interval is as wide as a passing space all along.
+      for (const auto& k : constraints_)
+        if (k.constraint.name == "passing_space_width" && L > 6096)
+          W = std::max(W, cm_up(k.constraint.value + 0.02));
     } else {
       const RoomType* rt = find_room_type(c.type);
       const double area =
@@ -510,7 +551,9 @@ class Layout {
   // (IBC 1007.1.1 wants at least half the building's diagonal): circulation and public rooms
   // first, then other rooms except toilets, bedrooms and stores; no randomness, so a plan that
   // needs no second exit is unchanged. False when no outside wall takes one.
-  std::optional<std::string> add_exit() {
+  // `wide`: a double door (the egress width is short); `near`: a room the exit should open from
+  // (the walk from it to an exit is too long), when it has an outside wall.
+  std::optional<std::string> add_exit(bool wide = false, const std::string& near = "") {
     std::vector<const DoorDraft*> exits;
     for (const auto& d : doors_)
       if (d.connects.size() == 1) exits.push_back(&d);
@@ -526,9 +569,13 @@ class Layout {
     // The second exit half the diagonal from the first (IBC 1007.1.1); further exits spread out.
     const double apart =
         exits.size() == 1 ? diagonal / 2.0 : diagonal / (2.0 * static_cast<double>(exits.size()));
-    const int w = public_w_;
+    const int w = wide ? std::max(public_w_, entrance_w_) : public_w_;
+    bool near_has_wall = false;
+    for (std::size_t r = 0; r < rooms_.size(); ++r)
+      if (rooms_[r].name == near && !outside_walls(rects, r).empty()) near_has_wall = true;
     auto tier = [&](std::size_t r) {
       const std::string& t = rooms_[r].type;
+      if (near_has_wall) return rooms_[r].name == near ? 0 : 3;
       if (is_circulation_type(t)) return 0;
       if (is_public(r) || t == "dining_hall" || t == "sales_floor" || t == "concourse" ||
           t == "open_office" || t == "warehouse_floor" || t == "loading_bay")
@@ -591,7 +638,8 @@ class Layout {
  private:
   bool is_public(std::size_t r) const {
     const std::string& t = rooms_[r].type;
-    return is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room";
+    return is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room" ||
+           t == "ticket_hall";
   }
 
   bool place_door(Rng& rng, const std::string& name, const Wall& wall, int width,
@@ -629,6 +677,7 @@ class Layout {
   std::map<std::size_t, std::vector<std::size_t>> second_piece_;
   std::map<std::size_t, bool> cap_left_;
   int door_w_ = 90, public_w_ = 100, entrance_w_ = 100;
+  int grouped_band_ = 0;  // the band stout halls and platforms go to
   int rotate_ = 0;
   bool mirror_ = false;
 };
@@ -774,8 +823,15 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     bool exits_ok = true;
     for (int round = 0; round < 12 && world; ++round) {
       const int target = std::max({code_exits(report), asked_exits(wants), 1});
-      if (count_feature(*world, Feature::kExit) >= target) break;
-      auto note = layout.add_exit();
+      bool egress_short = false;
+      std::string far_room;
+      for (const auto& c : report.checks) {
+        if (c.status != CheckStatus::kFail) continue;
+        if (c.name == "egress_width_per_occupant") egress_short = true;
+        if (c.name.rfind("exit_access_travel_distance", 0) == 0) far_room = c.element;
+      }
+      if (count_feature(*world, Feature::kExit) >= target && !egress_short && far_room.empty()) break;
+      auto note = layout.add_exit(egress_short, far_room);
       if (!note) {
         exits_ok = false;
         break;

@@ -44,7 +44,8 @@ TEST_F(Venues, EveryTypeTenSeedsIsCleanAndCompliant) {
       OfflineOptions o;
       o.seed = seed;
       auto plan = generate_floor_plan(room_program(type), cs, o);
-      ASSERT_TRUE(plan) << type << " seed " << seed << ": " << plan.error().message();
+      EXPECT_TRUE(plan) << type << " seed " << seed << ": " << plan.error().message();
+      if (!plan) continue;
       EXPECT_TRUE(plan->compliance.passed) << type << " seed " << seed;
       const LayoutCheck check = check_layout(plan->world);
       EXPECT_TRUE(check.ok()) << type << " seed " << seed << ":\n" << check.summary();
