@@ -19,3 +19,11 @@ endif()
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
 add_library(httplib::httplib ALIAS PkgConfig::HTTPLIB)
+
+# WordNet 3.0 (Debian wordnet-dev + wordnet-base): the open vocabulary of prompt understanding.
+# The data files are read at run time from WNSEARCHDIR or /usr/share/wordnet (core/scenario/wordnet.hpp).
+find_path(WORDNET_INCLUDE_DIR wn.h REQUIRED)
+find_library(WORDNET_LIBRARY NAMES wordnet REQUIRED)
+add_library(WordNet::WordNet UNKNOWN IMPORTED)
+set_target_properties(WordNet::WordNet PROPERTIES IMPORTED_LOCATION ${WORDNET_LIBRARY}
+                                                  INTERFACE_INCLUDE_DIRECTORIES ${WORDNET_INCLUDE_DIR})

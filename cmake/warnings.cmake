@@ -16,6 +16,15 @@ if(SOCSIM_SANITIZE)
                                                   -fno-sanitize-recover=undefined)
   target_link_options(socsim_options INTERFACE -fsanitize=address,undefined)
 endif()
+if(SOCSIM_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "SOCSIM_FUZZ needs clang (libFuzzer): -DCMAKE_CXX_COMPILER=clang++-14 or cmake --preset fuzz")
+  endif()
+  # Coverage instrumentation and both sanitizers for everything; fuzz targets add -fsanitize=fuzzer.
+  target_compile_options(socsim_options INTERFACE -fsanitize=fuzzer-no-link,address,undefined
+                                                  -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
+  target_link_options(socsim_options INTERFACE -fsanitize=address,undefined)
+endif()
 
 # socsim_module(name SOURCES ... [PUBLIC libs...] [PRIVATE libs...]): a core library target with
 # the project options. PUBLIC only for what the module's headers include (docs/ARCHITECTURE.md);

@@ -98,7 +98,10 @@ int card_command(const std::vector<std::string>& args) {
       }
       buf << f.rdbuf();
     }
-    auto outcome = catalogue.import_card(buf.str());
+    // The operator's own import keeps the author written in the file (the API does not).
+    auto card = cards::parse_export_document(buf.str(), catalogue.limits());
+    if (!card) return cli_report(card.error());
+    auto outcome = catalogue.import_card(*card);
     if (!outcome) return cli_report(outcome.error());
     std::cout << Json{{"id", outcome->card.id},
                       {"content_hash", outcome->card.content_hash},

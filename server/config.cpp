@@ -134,7 +134,15 @@ Status apply(ServerConfig& c, const std::string& flag, const std::string& value,
     return real(c.max_sim_duration_s);
   else if (flag == "--viewer-queue")
     return size(c.viewer_queue, 1);
-  else
+  else if (flag == "--max-jobs-per-client")
+    return size(c.max_jobs_per_client, 1);
+  else if (flag == "--llm-deadline") {
+    double s = 0;
+    if (auto st = real(s); !st) return st;
+    if (s < 1 || s > 86400) return bad("must be between 1 and 86400 seconds");
+    c.llm.deadline_ms = static_cast<int>(s * 1000);
+    c.llm.attempt_timeout_ms = std::min(c.llm.attempt_timeout_ms, c.llm.deadline_ms);
+  } else
     return fail(ErrorCode::kBadRequest, "unknown option " + flag + " (see socsim serve --help)");
   return {};
 }
@@ -188,6 +196,10 @@ const std::vector<FlagSpec>& serve_flags() {
       {"--llm-url", "SOCSIM_LLM_URL",
        "OpenAI-compatible endpoint base URL, e.g. http://localhost:11434 (optional)"},
       {"--llm-model", "SOCSIM_LLM_MODEL", "model name for the LLM generator"},
+      {"--llm-deadline", "SOCSIM_LLM_DEADLINE_S",
+       "seconds one LLM call may take, retries included (default 60; SOCSIM_LLM_DEADLINE_MS also works)"},
+      {"--max-jobs-per-client", "SOCSIM_MAX_JOBS_PER_CLIENT",
+       "generation jobs one key (or address, without keys) may have queued or running (default 8)"},
   };
   return flags;
 }

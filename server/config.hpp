@@ -41,6 +41,7 @@ struct ServerConfig {
   std::vector<std::string> trusted_proxies;  // addresses or CIDRs whose X-Forwarded-For is believed
   std::vector<ApiKey> api_keys;              // empty: writes are open (local use)
   int job_workers = 2;
+  std::size_t max_jobs_per_client = 8;  // queued + running per key (or address, without keys)
   // Text to scenario (/api/v1/scenarios): bounds on what one request may ask for.
   std::size_t max_scenario_agents = 2000;  // people in one scenario (spotlight + ambient)
   double max_scenario_seconds = 600.0;     // simulated seconds logged into a card

@@ -36,8 +36,12 @@ bool is_job_id(std::string_view s) {
   return is_random_id(s, "job_");
 }
 
-JobRunner::JobRunner(store::Store& store, EventHub& events, int workers, std::size_t max_queued)
-    : store_(store), events_(events), max_queued_(max_queued) {
+JobRunner::JobRunner(store::Store& store, EventHub& events, int workers, std::size_t max_queued,
+                     std::size_t max_per_client)
+    : store_(store),
+      events_(events),
+      max_queued_(max_queued),
+      max_per_client_(std::max<std::size_t>(1, max_per_client)) {
   (void)store_.write([](Database& db) -> Result<bool> {
     auto st = db.prepare(
         "UPDATE jobs SET status = 'failed', finished_at = ?, error = ? WHERE status IN ('queued', "
@@ -74,7 +78,8 @@ void JobRunner::shutdown() {
 }
 
 Result<std::string> JobRunner::submit(const std::string& kind, const Json& request, const std::string& author,
-                                      JobFn fn) {
+                                      JobFn fn, const std::string& client_key) {
+  const std::string client = client_key.empty() ? author : client_key;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (stopping_) return fail(ErrorCode::kStoreBusy, "the server is shutting down");
@@ -84,6 +89,14 @@ Result<std::string> JobRunner::submit(const std::string& kind, const Json& reque
       e.retry_after_s = 5;
       return tl::unexpected(e);
     }
+    if (per_client_[client] >= max_per_client_) {
+      Error e(ErrorCode::kRateLimited, "this client already has " + std::to_string(max_per_client_) +
+                                           " jobs queued or running, the most one client may; retry when one "
+                                           "has finished (see GET /api/v1/jobs)");
+      e.retry_after_s = 5;
+      return tl::unexpected(e);
+    }
+    ++per_client_[client];  // held from here, so that concurrent submits cannot overshoot
   }
   const std::string id = random_id("job_");
   auto r = store_.write([&](Database& db) -> Result<bool> {
@@ -94,10 +107,14 @@ Result<std::string> JobRunner::submit(const std::string& kind, const Json& reque
     if (auto s = st->run(); !s) return tl::unexpected(s.error());
     return true;
   });
-  if (!r) return tl::unexpected(r.error());
+  if (!r) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    release(client);
+    return tl::unexpected(r.error());
+  }
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    queue_.push_back({id, std::move(fn), llm::CancelToken()});
+    queue_.push_back({id, std::move(fn), llm::CancelToken(), client});
   }
   cv_.notify_one();
   events_.publish("jobs", {{"type", "job.queued"}, {"id", id}, {"kind", kind}});
@@ -119,6 +136,7 @@ void JobRunner::work() {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       running_.erase(job.id);
+      release(job.client);
     }
     done_cv_.notify_all();
   }
@@ -191,6 +209,12 @@ Status JobRunner::set_status(const std::string& id, const std::string& status,
   return {};
 }
 
+void JobRunner::release(const std::string& client) {
+  auto it = per_client_.find(client);
+  if (it == per_client_.end()) return;
+  if (--it->second == 0) per_client_.erase(it);
+}
+
 Result<Json> JobRunner::get(const std::string& id) {
   if (!is_job_id(id)) return tl::unexpected(not_found(id));
   return store_.read([&](Database& db) -> Result<Json> {
@@ -259,6 +283,7 @@ Status JobRunner::cancel(const std::string& id, const std::string& author, bool 
   std::unique_lock<std::mutex> lock(mutex_);
   for (auto it = queue_.begin(); it != queue_.end(); ++it) {
     if (it->id == id) {
+      release(it->client);
       queue_.erase(it);
       lock.unlock();
       return set_status(id, "cancelled", std::nullopt,

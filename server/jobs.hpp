@@ -4,6 +4,7 @@
 #include <condition_variable>
 #include <deque>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -45,14 +46,18 @@ struct JobPage {
 class JobRunner {
  public:
   // Marks jobs left queued or running by a previous process as failed (interrupted).
-  JobRunner(store::Store& store, EventHub& events, int workers = 2, std::size_t max_queued = 64);
+  // max_per_client bounds the jobs one client has queued or running, so that one client cannot
+  // fill the queue and starve everyone else.
+  JobRunner(store::Store& store, EventHub& events, int workers = 2, std::size_t max_queued = 64,
+            std::size_t max_per_client = 8);
   ~JobRunner();
   JobRunner(const JobRunner&) = delete;
   JobRunner& operator=(const JobRunner&) = delete;
 
-  // Records the job and queues it. kRateLimited (429) when the queue is full.
+  // Records the job and queues it. kRateLimited (429, with retry_after_s) when the queue is full or
+  // `client` (the author when empty) already has max_per_client jobs queued or running.
   Result<std::string> submit(const std::string& kind, const Json& request, const std::string& author,
-                             JobFn fn);
+                             JobFn fn, const std::string& client = {});
   // The job record: id, kind, status, progress, message, author, request, result, error, times.
   Result<Json> get(const std::string& id);
   Result<JobPage> list(std::size_t page_size, const std::optional<std::string>& cursor,
@@ -69,7 +74,9 @@ class JobRunner {
     std::string id;
     JobFn fn;
     llm::CancelToken cancel;
+    std::string client;
   };
+  void release(const std::string& client);  // under mutex_
   void work();
   void run_one(Pending& job);
   Status set_status(const std::string& id, const std::string& status, const std::optional<Json>& result,
@@ -78,6 +85,8 @@ class JobRunner {
   store::Store& store_;
   EventHub& events_;
   std::size_t max_queued_;
+  std::size_t max_per_client_;
+  std::map<std::string, std::size_t> per_client_;  // queued + running
   std::mutex mutex_;
   std::condition_variable cv_;
   std::condition_variable done_cv_;

@@ -33,6 +33,11 @@ struct RouteContext {
   [[nodiscard]] std::string public_host(const Request& req) const;
   // Whether a write may touch another author's resource (open servers have no authors to protect).
   [[nodiscard]] bool any_author() const { return !keys.enabled(); }
+  // Who a per-client quota counts against: the key's name, or the client address on an open server.
+  [[nodiscard]] std::string client(const Request& req) const;
+  // A model a request names must be one this server allows (llm::LlmConfig::resolve_model): 422 at
+  // /model before any job is queued. Nothing to check without a model or an LLM endpoint.
+  [[nodiscard]] Status check_model(const std::optional<std::string>& model) const;
 };
 
 // Embedded copies of schemas/ (openapi.yaml and the JSON Schemas), keyed by file name.

@@ -1,5 +1,6 @@
 // The scenario-card catalogue over HTTP: /api/v1/cards …
 #include "server/http_util.hpp"
+#include "server/pagination.hpp"
 #include "server/routes.hpp"
 
 namespace socsim::server {
@@ -56,25 +57,25 @@ void card_routes(Router& http, RouteContext& ctx) {
 
   http.Get("/api/v1/cards", [&ctx](const Request& req, Response& res) {
     cards::CardQuery q;
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
-    q.page_size = static_cast<std::size_t>(*size);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    q.page_size = page->page_size;
     q.text = query(req, "q");
     q.tag = query(req, "tag");
     q.author = query(req, "author");
     q.domain = query(req, "domain");
-    q.cursor = query(req, "cursor");
+    q.cursor = page->cursor;
     if (q.text && q.text->size() > 500)
       return reply_problem(
           res, Error(ErrorCode::kValidation, "search text too long", {{"", "at most 500 bytes", "q", 0, 0}}),
           req.path);
-    auto page = ctx.catalogue.list(q);
-    if (!page) return reply_problem(res, page.error(), req.path);
+    auto listed = ctx.catalogue.list(q);
+    if (!listed) return reply_problem(res, listed.error(), req.path);
     Json items = Json::array();
-    for (const auto& c : page->items) items.push_back(cards::summary_json(c));
+    for (const auto& c : listed->items) items.push_back(cards::summary_json(c));
     Json out = {{"items", items},
-                {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}};
+                {"next_cursor", listed->next_cursor ? Json(*listed->next_cursor) : Json(nullptr)}};
     reply_json(res, 200, out);
   });
 
@@ -114,7 +115,7 @@ void card_routes(Router& http, RouteContext& ctx) {
 
   post_with_body(http, "/api/v1/cards/import", max_body,
                  [&ctx](const Request& req, Response& res, const std::string& text) {
-                   auto outcome = ctx.catalogue.import_card(text);
+                   auto outcome = ctx.catalogue.import_card(text, ctx.author(req));
                    if (!outcome) return reply_problem(res, outcome.error(), req.path);
                    if (outcome->created) ctx.events.publish("cards", event("card.created", outcome->card));
                    reply_card(res, outcome->created ? 201 : 200, outcome->card);

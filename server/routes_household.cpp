@@ -10,6 +10,7 @@
 #include "core/household/procthor.hpp"
 #include "core/household/statistics.hpp"
 #include "server/http_util.hpp"
+#include "server/pagination.hpp"
 #include "server/routes.hpp"
 
 namespace socsim::server {
@@ -111,9 +112,10 @@ void household_routes(Router& http, RouteContext& ctx) {
 
   // ---- personas ----
   http.Get("/api/v1/personas", [&ctx](const Request& req, Response& res) {
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    const std::size_t size = page->page_size;
     auto all = all_personas(ctx.store);
     if (!all) return reply_problem(res, all.error(), req.path);
     auto posted = hh::list_stored_personas(ctx.store, false);
@@ -121,18 +123,14 @@ void household_routes(Router& http, RouteContext& ctx) {
     std::set<std::string> posted_ids;
     for (const auto& p : *posted) posted_ids.insert(hh::persona_id(p));
     std::size_t start = 0;
-    if (auto cursor = query(req, "cursor")) {
+    if (const auto& cursor = page->cursor) {
       auto it = std::find_if(all->begin(), all->end(),
                              [&](const hh::Persona& p) { return hh::persona_id(p) == *cursor; });
-      if (it == all->end())
-        return reply_problem(res,
-                             Error(ErrorCode::kValidation, "unknown cursor",
-                                   {{"", "must be a next_cursor from an earlier page", "cursor", 0, 0}}),
-                             req.path);
+      if (it == all->end()) return reply_problem(res, bad_cursor(), req.path);
       start = static_cast<std::size_t>(it - all->begin()) + 1;
     }
     Json items = Json::array();
-    const std::size_t end = std::min(all->size(), start + static_cast<std::size_t>(*size));
+    const std::size_t end = std::min(all->size(), start + size);
     for (std::size_t i = start; i < end; ++i)
       items.push_back(persona_item((*all)[i], !posted_ids.count(hh::persona_id((*all)[i]))));
     Json next = end < all->size() ? Json(hh::persona_id((*all)[end - 1])) : Json(nullptr);
@@ -166,70 +164,56 @@ void household_routes(Router& http, RouteContext& ctx) {
                    reply_json(res, 201, persona_item(*p, false));
                  });
 
-  post_with_body(
-      http, "/api/v1/personas/generate", max_body,
-      [&ctx](const Request& req, Response& res, const std::string& text) {
-        auto body = json_body(text);
-        if (!body) return reply_problem(res, body.error(), req.path);
-        if (!body->is_object())
-          return reply_problem(
-              res, Error(ErrorCode::kValidation, "invalid request", {{"", "must be an object", "", 0, 0}}),
-              req.path);
-        Json rest = *body;
-        const std::string generator = body->value("generator", "offline");
-        const bool store = body->value("store", false);
-        std::optional<std::string> model;
-        if (body->contains("model") && (*body)["model"].is_string())
-          model = (*body)["model"].get<std::string>();
-        for (const char* k : {"generator", "store", "model"}) rest.erase(k);
-        auto request = hh::persona_request_from_json(rest);
-        Error problems(ErrorCode::kValidation, "invalid persona request");
-        if (!request) problems = request.error();
-        for (const auto& [k, v] : body->items())
-          if (k != "count" && k != "seed" && k != "constraints" && k != "generator" && k != "store" &&
-              k != "model")
-            problems.errors.push_back({"/" + json_pointer_token(k), "is not a known field", {}, 0, 0});
-        if (generator != "offline" && generator != "llm")
-          problems.errors.push_back({"/generator", "must be offline or llm", {}, 0, 0});
-        if (body->contains("store") && !(*body)["store"].is_boolean())
-          problems.errors.push_back({"/store", "must be true or false", {}, 0, 0});
-        if (!problems.errors.empty()) return reply_problem(res, problems, req.path);
-        auto existing = all_personas(ctx.store);
-        if (!existing) return reply_problem(res, existing.error(), req.path);
+  post_with_body(http, "/api/v1/personas/generate", max_body,
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
+                   auto body = json_body(text);
+                   if (!body) return reply_problem(res, body.error(), req.path);
+                   auto parsed = hh::persona_generate_request_from_json(*body);
+                   if (!parsed) return reply_problem(res, parsed.error(), req.path);
+                   if (auto s = ctx.check_model(parsed->model); !s)
+                     return reply_problem(res, s.error(), req.path);
+                   const hh::PersonaRequest& request = parsed->personas;
+                   const std::string generator = parsed->generator;
+                   const bool store = parsed->store;
+                   const std::optional<std::string> model = parsed->model;
+                   auto existing = all_personas(ctx.store);
+                   if (!existing) return reply_problem(res, existing.error(), req.path);
 
-        auto finish = [&ctx, store](std::vector<hh::Persona> personas) -> Result<Json> {
-          Json items = Json::array();
-          for (const auto& p : personas) {
-            if (store)
-              if (auto s = hh::store_persona(ctx.store, p); !s) return tl::unexpected(s.error());
-            items.push_back(persona_item(p, false));
-          }
-          return Json{{"personas", items}, {"stored", store}};
-        };
-        if (generator == "offline") {
-          auto personas = hh::generate_personas_offline(*request, *existing);
-          if (!personas) return reply_problem(res, personas.error(), req.path);
-          auto out = finish(std::move(*personas));
-          if (!out) return reply_problem(res, out.error(), req.path);
-          return reply_json(res, store ? 201 : 200, *out);
-        }
-        if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
-        const hh::PersonaRequest r = *request;
-        auto id = ctx.jobs.submit(
-            "personas", *body, ctx.author(req),
-            [&ctx, r, model, finish, existing = *existing](const JobContext& job) -> Result<Json> {
-              llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
-              job.progress(0.0, "asking the LLM for " + std::to_string(r.count) + " personas");
-              auto personas = hh::generate_personas_llm(r, existing, llm_settings(ctx, gen, job, model));
-              if (!personas) return tl::unexpected(personas.error());
-              return finish(std::move(*personas));
-            });
-        if (!id) return reply_problem(res, id.error(), req.path);
-        auto job = ctx.jobs.get(*id);
-        if (!job) return reply_problem(res, job.error(), req.path);
-        res.set_header("Location", "/api/v1/jobs/" + *id);
-        reply_json(res, 202, *job);
-      });
+                   auto finish = [&ctx, store](std::vector<hh::Persona> personas) -> Result<Json> {
+                     Json items = Json::array();
+                     for (const auto& p : personas) {
+                       if (store)
+                         if (auto s = hh::store_persona(ctx.store, p); !s) return tl::unexpected(s.error());
+                       items.push_back(persona_item(p, false));
+                     }
+                     return Json{{"personas", items}, {"stored", store}};
+                   };
+                   if (generator == "offline") {
+                     auto personas = hh::generate_personas_offline(request, *existing);
+                     if (!personas) return reply_problem(res, personas.error(), req.path);
+                     auto out = finish(std::move(*personas));
+                     if (!out) return reply_problem(res, out.error(), req.path);
+                     return reply_json(res, store ? 201 : 200, *out);
+                   }
+                   if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+                   const hh::PersonaRequest r = request;
+                   auto id = ctx.jobs.submit(
+                       "personas", *body, ctx.author(req),
+                       [&ctx, r, model, finish, existing = *existing](const JobContext& job) -> Result<Json> {
+                         llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
+                         job.progress(0.0, "asking the LLM for " + std::to_string(r.count) + " personas");
+                         auto personas =
+                             hh::generate_personas_llm(r, existing, llm_settings(ctx, gen, job, model));
+                         if (!personas) return tl::unexpected(personas.error());
+                         return finish(std::move(*personas));
+                       },
+                       ctx.client(req));
+                   if (!id) return reply_problem(res, id.error(), req.path);
+                   auto job = ctx.jobs.get(*id);
+                   if (!job) return reply_problem(res, job.error(), req.path);
+                   res.set_header("Location", "/api/v1/jobs/" + *id);
+                   reply_json(res, 202, *job);
+                 });
 
   // ---- households ----
   post_with_body(
@@ -239,6 +223,7 @@ void household_routes(Router& http, RouteContext& ctx) {
         if (!body) return reply_problem(res, body.error(), req.path);
         auto request = hh::household_request_from_json(*body);
         if (!request) return reply_problem(res, request.error(), req.path);
+        if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
         if (request->generator == "llm")
           if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
         auto k = state->knowledge();
@@ -308,7 +293,8 @@ void household_routes(Router& http, RouteContext& ctx) {
               return Json{{"household_id", household},
                           {"summary", summary},
                           {"links", {{"household", "/api/v1/households/" + household}}}};
-            });
+            },
+            ctx.client(req));
         if (!id) return reply_problem(res, id.error(), req.path);
         auto job = ctx.jobs.get(*id);
         if (!job) return reply_problem(res, job.error(), req.path);
@@ -317,13 +303,17 @@ void household_routes(Router& http, RouteContext& ctx) {
       });
 
   http.Get("/api/v1/households", [&ctx](const Request& req, Response& res) {
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
-    auto rows = hh::list_households(ctx.store, static_cast<std::size_t>(*size) + 1, query(req, "cursor"));
-    if (!rows) return reply_problem(res, rows.error(), req.path);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    const std::size_t size = page->page_size;
+    auto rows = hh::list_households(ctx.store, size + 1, page->cursor);
+    if (!rows) {
+      if (rows.error().code == ErrorCode::kNotFound) return reply_problem(res, bad_cursor(), req.path);
+      return reply_problem(res, rows.error(), req.path);
+    }
     Json items = Json::array();
-    for (std::size_t i = 0; i < rows->size() && i < static_cast<std::size_t>(*size); ++i) {
+    for (std::size_t i = 0; i < rows->size() && i < size; ++i) {
       const auto& r = (*rows)[i];
       items.push_back({{"id", r.id},
                        {"job_id", r.job_id ? Json(*r.job_id) : Json(nullptr)},
@@ -332,7 +322,7 @@ void household_routes(Router& http, RouteContext& ctx) {
                        {"created_at", r.created_at},
                        {"summary", r.summary}});
     }
-    Json next = rows->size() > static_cast<std::size_t>(*size) ? Json(items.back()["id"]) : Json(nullptr);
+    Json next = rows->size() > size ? Json(items.back()["id"]) : Json(nullptr);
     reply_json(res, 200, {{"items", items}, {"next_cursor", next}});
   });
 
@@ -387,18 +377,23 @@ void household_routes(Router& http, RouteContext& ctx) {
     auto resident =
         query_int(req, "resident", -1, -1, static_cast<std::int64_t>(h->scene.residents().size()) - 1);
     if (!resident) return reply_problem(res, resident.error(), req.path);
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
-    auto cursor = query_int(req, "cursor", 0, 0, INT32_MAX);
-    if (!cursor) return reply_problem(res, cursor.error(), req.path);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    const std::size_t size = page->page_size;
+    std::size_t first = 0;  // the cursor is the index of the next event
+    if (page->cursor) {
+      auto at = parse_sequence_cursor(*page->cursor, "");
+      if (!at) return reply_problem(res, at.error(), req.path);
+      first = static_cast<std::size_t>(*at);
+    }
     std::vector<int> picked;
     for (int e : h->scene.events_between(*from, *to))
       if (*resident < 0 || h->scene.events()[static_cast<std::size_t>(e)].resident == *resident)
         picked.push_back(e);
     Json items = Json::array();
-    const auto first = static_cast<std::size_t>(*cursor);
-    const std::size_t last = std::min(picked.size(), first + static_cast<std::size_t>(*size));
+    if (first > picked.size()) return reply_problem(res, bad_cursor(), req.path);
+    const std::size_t last = std::min(picked.size(), first + size);
     for (std::size_t i = first; i < last; ++i) items.push_back(hh::event_json(h->scene, picked[i]));
     reply_json(res, 200,
                {{"items", items},

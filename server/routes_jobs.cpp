@@ -1,6 +1,7 @@
 // /api/v1/jobs: progress, result or problem of long-running work, its LLM calls, cancellation.
 #include "core/llm/call_log.hpp"
 #include "server/http_util.hpp"
+#include "server/pagination.hpp"
 #include "server/routes.hpp"
 
 namespace socsim::server {
@@ -10,9 +11,9 @@ constexpr const char* kJobPath = R"(/api/v1/jobs/([^/]+))";
 
 void job_routes(Router& http, RouteContext& ctx) {
   http.Get("/api/v1/jobs", [&ctx](const Request& req, Response& res) {
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
     auto status = query(req, "status");
     if (status && *status != "queued" && *status != "running" && *status != "succeeded" &&
         *status != "failed" && *status != "cancelled")
@@ -21,21 +22,28 @@ void job_routes(Router& http, RouteContext& ctx) {
           Error(ErrorCode::kValidation, "unknown job status",
                 {{"", "one of queued, running, succeeded, failed, cancelled", "status", 0, 0}}),
           req.path);
-    auto page =
-        ctx.jobs.list(static_cast<std::size_t>(*size), query(req, "cursor"), query(req, "kind"), status);
-    if (!page) return reply_problem(res, page.error(), req.path);
+    auto listed = ctx.jobs.list(page->page_size, page->cursor, query(req, "kind"), status);
+    if (!listed) return reply_problem(res, listed.error(), req.path);
     reply_json(res, 200,
-               {{"items", page->items},
-                {"next_cursor", page->next_cursor ? Json(*page->next_cursor) : Json(nullptr)}});
+               {{"items", listed->items},
+                {"next_cursor", listed->next_cursor ? Json(*listed->next_cursor) : Json(nullptr)}});
   });
 
   http.Get(kJobPath, [&ctx](const Request& req, Response& res) {
     const std::string id = req.matches[1].str();
     auto job = ctx.jobs.get(id);
     if (!job) return reply_problem(res, job.error(), req.path);
-    // Prompts, token counts, latency and cache hits of every LLM call the job made.
+    // Token counts, latency and cache hits of every LLM call the job made; the prompts and answers
+    // (which carry the author's request and what the model made of it) only for the job's author,
+    // authenticated by key. A server without keys authenticates nobody, so it shows them to nobody.
     auto calls = llm::job_llm_calls(ctx.store, id);
     (*job)["llm"] = calls ? *calls : Json(nullptr);
+    const bool owner = !ctx.any_author() && (*job)["author"] == ctx.author(req);
+    if (calls && !owner) {
+      for (auto& call : (*job)["llm"]["calls"])
+        for (const char* k : {"prompt", "response", "error"}) call[k] = nullptr;
+      (*job)["llm"]["redacted"] = "prompts and answers are shown to the job's author's key only";
+    }
     const std::string status = (*job)["status"];
     if (status == "queued" || status == "running") res.set_header("Retry-After", "1");
     reply_json(res, 200, *job);

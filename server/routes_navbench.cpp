@@ -79,7 +79,8 @@ void navbench_routes(Router& http, RouteContext& ctx) {
                          Json out = navbench::to_json(*result, true);
                          out["table"] = navbench::format_table(*result);
                          return out;
-                       });
+                       },
+                       ctx.client(req));
                    if (!id) return reply_problem(res, id.error(), req.path);
                    auto job = ctx.jobs.get(*id);
                    if (!job) return reply_problem(res, job.error(), req.path);

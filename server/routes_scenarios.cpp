@@ -77,6 +77,7 @@ void scenario_routes(Router& http, RouteContext& ctx) {
         const auto config = scenario_config(ctx.config);
         auto request = scenario::scenario_request_from_json(*body, config);
         if (!request) return reply_problem(res, request.error(), req.path);
+        if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
         if (request->generator == "llm" && !ctx.llm)
           return reply_problem(res,
                                Error(ErrorCode::kValidation,
@@ -111,7 +112,8 @@ void scenario_routes(Router& http, RouteContext& ctx) {
                           {"title", card->content.title},
                           {"categories", outcome->card.provenance.value("categories", Json::array())},
                           {"trajectory_log", outcome->card.trajectory_log}};
-            });
+            },
+            ctx.client(req));
         if (!id) return reply_problem(res, id.error(), req.path);
         auto job = ctx.jobs.get(*id);
         if (!job) return reply_problem(res, job.error(), req.path);
@@ -149,20 +151,21 @@ void scenario_routes(Router& http, RouteContext& ctx) {
               Error(ErrorCode::kValidation, "the card has no trajectory log to replay",
                     {{"/trajectory_log", "only scenario cards (POST /api/v1/scenarios) replay", "", 0, 0}}),
               req.path);
-        auto id =
-            ctx.jobs.submit("scenario.replay", Json{{"card_id", card_id}}, ctx.author(req),
-                            [content = card->content, card_id](const JobContext& job) -> Result<Json> {
-                              auto out = scenario::replay_card(
-                                  content, [&job](double f, const std::string& m) { job.progress(f, m); },
-                                  job.cancel_token());
-                              if (!out) return tl::unexpected(out.error());
-                              const std::string expected = content.trajectory_log.value("sha256", "");
-                              return Json{{"card_id", card_id},
-                                          {"expected_sha256", expected},
-                                          {"sha256", out->log.sha256()},
-                                          {"identical", out->log.sha256() == expected},
-                                          {"frames", out->log.frame_count()}};
-                            });
+        auto id = ctx.jobs.submit(
+            "scenario.replay", Json{{"card_id", card_id}}, ctx.author(req),
+            [content = card->content, card_id](const JobContext& job) -> Result<Json> {
+              auto out = scenario::replay_card(
+                  content, [&job](double f, const std::string& m) { job.progress(f, m); },
+                  job.cancel_token());
+              if (!out) return tl::unexpected(out.error());
+              const std::string expected = content.trajectory_log.value("sha256", "");
+              return Json{{"card_id", card_id},
+                          {"expected_sha256", expected},
+                          {"sha256", out->log.sha256()},
+                          {"identical", out->log.sha256() == expected},
+                          {"frames", out->log.frame_count()}};
+            },
+            ctx.client(req));
         if (!id) return reply_problem(res, id.error(), req.path);
         auto job = ctx.jobs.get(*id);
         if (!job) return reply_problem(res, job.error(), req.path);

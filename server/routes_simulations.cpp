@@ -7,6 +7,7 @@
 #include "core/world/world_document.hpp"
 #include "core/world/world_yaml.hpp"
 #include "server/http_util.hpp"
+#include "server/pagination.hpp"
 #include "server/routes.hpp"
 
 namespace socsim::server {
@@ -189,18 +190,32 @@ void simulation_routes(Router& http, RouteContext& ctx) {
                  });
 
   http.Get("/api/v1/simulations", [&ctx](const Request& req, Response& res) {
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    std::size_t first = 0;  // sessions are few and short-lived: the cursor is an offset
+    if (page->cursor) {
+      auto at = parse_sequence_cursor(*page->cursor, "sim1.");
+      if (!at) return reply_problem(res, at.error(), req.path);
+      first = static_cast<std::size_t>(*at);
+    }
     Json items = Json::array();
-    std::size_t running = 0;
+    std::size_t running = 0, index = 0;
+    Json next = nullptr;
     for (const auto& s : ctx.services.simulations->list()) {
       Json st = with_urls(ctx, req, s->status());
       running += st["status"] != "ended" ? 1 : 0;
-      items.push_back(std::move(st));
+      if (index >= first && items.size() < page->page_size)
+        items.push_back(std::move(st));
+      else if (index >= first && next.is_null())
+        next = "sim1." + std::to_string(index);
+      ++index;
     }
     const auto& l = ctx.services.simulations->limits();
     reply_json(res, 200,
                {{"items", items},
                 {"running", running},
-                {"next_cursor", nullptr},
+                {"next_cursor", next},
                 {"limits",
                  {{"max_sessions", l.max_sessions},
                   {"max_viewers", l.max_viewers},

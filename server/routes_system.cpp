@@ -26,6 +26,18 @@ std::string RouteContext::author(const Request& req) const {
   return keys.authenticate(req.get_header_value("Authorization")).value_or("anonymous");
 }
 
+std::string RouteContext::client(const Request& req) const {
+  if (keys.enabled()) return author(req);
+  return "address:" + req.remote_addr;
+}
+
+Status RouteContext::check_model(const std::optional<std::string>& model) const {
+  if (!model || !llm) return {};
+  auto resolved = llm->config().resolve_model(model);
+  if (!resolved) return tl::unexpected(resolved.error());
+  return {};
+}
+
 std::string RouteContext::public_host(const Request& req) const {
   if (!config.public_host.empty()) return config.public_host;
   std::string host = req.get_header_value("Host");

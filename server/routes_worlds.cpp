@@ -10,6 +10,7 @@
 #include "core/world/world_export.hpp"
 #include "core/world/world_yaml.hpp"
 #include "server/http_util.hpp"
+#include "server/pagination.hpp"
 #include "server/routes.hpp"
 #include "server/stored_worlds.hpp"
 
@@ -188,6 +189,7 @@ void world_routes(Router& http, RouteContext& ctx) {
         if (!body) return reply_problem(res, body.error(), req.path);
         auto request = floorplan::floor_plan_request_from_json(*body);
         if (!request) return reply_problem(res, request.error(), req.path);
+        if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
         auto resolved = floorplan::resolve_scene_graph(*request);
         if (!resolved) return reply_problem(res, resolved.error(), req.path);
         auto cs = constraints(ctx, resolved->graph.domain, request->jurisdiction);
@@ -233,7 +235,8 @@ void world_routes(Router& http, RouteContext& ctx) {
               return Json{{"world_id", w->id},
                           {"location", "/api/v1/worlds/" + w->id},
                           {"compliant", w->compliance["passed"]}};
-            });
+            },
+            ctx.client(req));
         if (!id) return reply_problem(res, id.error(), req.path);
         auto job = ctx.jobs.get(*id);
         if (!job) return reply_problem(res, job.error(), req.path);
@@ -242,32 +245,28 @@ void world_routes(Router& http, RouteContext& ctx) {
       });
 
   http.Get("/api/v1/worlds", [&ctx](const Request& req, Response& res) {
-    auto size = query_int(req, "page_size", static_cast<std::int64_t>(ctx.config.default_page_size), 1,
-                          static_cast<std::int64_t>(ctx.config.max_page_size));
-    if (!size) return reply_problem(res, size.error(), req.path);
+    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
+                           ctx.config.max_page_size);
+    if (!page) return reply_problem(res, page.error(), req.path);
+    const auto size = static_cast<std::int64_t>(page->page_size);
     std::optional<std::int64_t> before;
-    if (auto cursor = query(req, "cursor")) {
-      const std::string digits =
-          cursor->rfind(kCursorPrefix, 0) == 0 ? cursor->substr(kCursorPrefix.size()) : "";
-      if (digits.empty() || digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
-        return reply_problem(res,
-                             Error(ErrorCode::kBadRequest, "the cursor is not one this server issued",
-                                   {{"", "use next_cursor from a previous page", "cursor", 0, 0}}),
-                             req.path);
-      before = std::stoll(digits);
+    if (page->cursor) {
+      auto seq = parse_sequence_cursor(*page->cursor, kCursorPrefix);
+      if (!seq) return reply_problem(res, seq.error(), req.path);
+      before = *seq;
     }
     const auto domain = query(req, "domain");
     std::string sql = std::string("SELECT ") + kColumns + ", seq FROM worlds WHERE 1";
     if (before) sql += " AND seq < :before";
     if (domain) sql += " AND domain = :domain";
     sql += " ORDER BY seq DESC LIMIT :limit";
-    auto page = ctx.store.read([&](Database& d) -> Result<Json> {
+    auto listed = ctx.store.read([&](Database& d) -> Result<Json> {
       auto st = d.prepare(sql);
       if (!st) return tl::unexpected(st.error());
       int i = 1;
       if (before) st->bind(i++, *before);
       if (domain) st->bind(i++, *domain);
-      st->bind(i, *size + 1);
+      st->bind(i, size + 1);
       Json items = Json::array();
       Json next = nullptr;
       std::int64_t last = 0;
@@ -275,7 +274,7 @@ void world_routes(Router& http, RouteContext& ctx) {
         auto r = st->step();
         if (!r) return tl::unexpected(r.error());
         if (!*r) break;
-        if (static_cast<std::int64_t>(items.size()) == *size) {
+        if (static_cast<std::int64_t>(items.size()) == size) {
           next = std::string(kCursorPrefix) + std::to_string(last);
           break;
         }
@@ -284,8 +283,8 @@ void world_routes(Router& http, RouteContext& ctx) {
       }
       return Json{{"items", std::move(items)}, {"next_cursor", next}};
     });
-    if (!page) return reply_problem(res, page.error(), req.path);
-    reply_json(res, 200, *page);
+    if (!listed) return reply_problem(res, listed.error(), req.path);
+    reply_json(res, 200, *listed);
   });
 
   http.Get(kWorldPath, [&ctx](const Request& req, Response& res) {

@@ -25,7 +25,8 @@ Result<std::unique_ptr<Services>> Services::create(ServerConfig config, store::S
     }
   }
   s->knowledge = std::make_unique<knowledge::KnowledgeBase>(store, std::move(embeddings));
-  s->jobs = std::make_unique<JobRunner>(store, s->events, s->config.job_workers);
+  s->jobs =
+      std::make_unique<JobRunner>(store, s->events, s->config.job_workers, 64, s->config.max_jobs_per_client);
   SimulationLimits limits;
   limits.max_sessions = s->config.max_simulations;
   limits.max_viewers = s->config.max_viewers;

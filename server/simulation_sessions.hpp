@@ -22,6 +22,7 @@
 #include "core/crowd/program.hpp"
 #include "core/scenario/trajectory_log.hpp"
 #include "core/world/world.hpp"
+#include "server/frame_codec.hpp"
 
 namespace socsim::server {
 
@@ -60,33 +61,10 @@ struct ViewerCounters {
   std::atomic<std::uint64_t> dropped{0};
 };
 
-// One agent of a frame, at wire precision.
-struct FrameAgent {
-  std::uint32_t id = 0;
-  float x = 0, y = 0, yaw = 0, vx = 0, vy = 0;
-  std::int32_t group_id = -1;
-  std::uint8_t state = 0;    // crowd::Activity
-  std::uint8_t role = 0;     // index into the session's roles
-  std::uint16_t target = 0;  // index into the session's targets; 0 = none
-  friend bool operator==(const FrameAgent&, const FrameAgent&) = default;
-};
-
-inline constexpr std::size_t kBinaryHeaderBytes = 24;
-inline constexpr std::size_t kBinaryAgentBytes = 32;
-
-// The frame encodings (byte layout in schemas/simulation_binary_frame.md). `roles` and `targets`
-// are the session's tables; targets[0] is "" (none).
+// The JSON frame (schemas/simulation_frame.schema.json; the binary one is in frame_codec.hpp).
+// `roles` and `targets` are the session's tables; targets[0] is "" (none).
 std::string encode_frame_json(std::uint32_t seq, double t, std::span<const FrameAgent> agents,
                               const std::vector<std::string>& roles, const std::vector<std::string>& targets);
-std::string encode_frame_binary(std::uint32_t seq, double t, std::span<const FrameAgent> agents);
-
-struct BinaryFrame {
-  std::uint32_t seq = 0;
-  double t = 0;
-  std::vector<FrameAgent> agents;
-};
-// Untrusted bytes: magic, sizes and count are checked.
-Result<BinaryFrame> decode_frame_binary(std::string_view bytes);
 
 class SimulationSession;
 

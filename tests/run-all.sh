@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is needed, builds, and runs every test: a Debug build (preset ci: the dev build
-# with line tables only), then the same suite under AddressSanitizer + UndefinedBehaviorSanitizer.
+# with line tables only), then the same suite under AddressSanitizer + UndefinedBehaviorSanitizer;
+# with SOCSIM_FUZZ_SECONDS set, then every libFuzzer target for that long (tests/fuzz/run.sh).
 # Used by README and by .ci/run. Each phase prints its wall time (docs/PERFORMANCE.md, CI time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,5 +21,12 @@ for preset in ci asan; do
   phase "${preset}: test"
   ctest --preset "$preset" -j "$jobs"
 done
+# Both presets above replay every fuzz target's corpus (CTest label fuzz). Running libFuzzer itself
+# is opt-in: its clang build costs about 11.5 CPU-minutes from a cold ccache (docs/RELIABILITY.md,
+# Fuzzing), more than CI's budget. SOCSIM_FUZZ_SECONDS=10 runs each target 10 s under ASan + UBSan.
+if [[ -n "${SOCSIM_FUZZ_SECONDS:-}" ]]; then
+  phase "fuzz: clang build and ${SOCSIM_FUZZ_SECONDS} s per target"
+  FUZZ_JOBS=$jobs bash tests/fuzz/run.sh "$SOCSIM_FUZZ_SECONDS"
+fi
 phase "done"
 command -v ccache >/dev/null && ccache -s | grep -E 'Hits|Misses' || true

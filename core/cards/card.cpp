@@ -243,6 +243,11 @@ Result<Card> parse_export_document(std::string_view text, const CardLimits& limi
     return fail(ErrorCode::kValidation,
                 "not a socsim card export (expected {\"socsim_card_export\": 1, \"card\": {...}})",
                 {{"", "missing socsim_card_export or card", "", 0, 0}});
+  for (const auto& [key, value] : doc->items())
+    if (key != "socsim_card_export" && key != "card")
+      return fail(ErrorCode::kValidation, "unknown field in a card export",
+                  {{"/" + json_pointer_token(key), "unknown field (expected socsim_card_export and card)", "",
+                    0, 0}});
   if ((*doc)["socsim_card_export"] != kExportFormat)
     return fail(ErrorCode::kValidation, "unsupported export format",
                 {{"/socsim_card_export", "this build reads format 1", "", 0, 0}});

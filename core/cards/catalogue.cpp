@@ -219,9 +219,10 @@ Result<std::string> CardCatalogue::export_card(const std::string& id) {
   return export_document(*c);
 }
 
-Result<ImportOutcome> CardCatalogue::import_card(std::string_view document) {
+Result<ImportOutcome> CardCatalogue::import_card(std::string_view document, const std::string& importer) {
   auto card = parse_export_document(document, limits_);
   if (!card) return tl::unexpected(card.error());
+  card->author = importer;
   return import_card(*card);
 }
 

@@ -41,7 +41,11 @@ class CardCatalogue {
   // Deletes when `author` wrote the card (or when `any_author` is set, for open deployments).
   Status remove(const std::string& id, const std::string& author, bool any_author);
   Result<std::string> export_card(const std::string& id);
-  Result<ImportOutcome> import_card(std::string_view document);
+  // Imports an export file on behalf of `importer` (the author the request was authenticated as),
+  // who becomes the card's author: the author written in the file is not part of the content hash,
+  // so it proves nothing. Id, creation time, content and hash are kept.
+  Result<ImportOutcome> import_card(std::string_view document, const std::string& importer);
+  // Stores a complete card as it is, author included (trusted callers: the local CLI).
   Result<ImportOutcome> import_card(const Card& card);
   Result<std::int64_t> count();
 

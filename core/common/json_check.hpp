@@ -43,6 +43,14 @@ class JsonChecker {
   const Json* array(const Json& obj, const std::string& ptr, std::string_view key, bool required,
                     std::size_t max_items = 1u << 20);
 
+  // Whether `key` carries a value: present and not null. The readers treat an explicit null as an
+  // absent optional field, so "was it given?" must be asked this way, never with contains().
+  static bool given(const Json& obj, std::string_view key) {
+    if (!obj.is_object()) return false;
+    auto it = obj.find(std::string(key));
+    return it != obj.end() && !it->is_null();
+  }
+
   static std::string child(const std::string& ptr, std::string_view key) {
     return ptr + "/" + json_pointer_token(key);
   }

@@ -41,13 +41,18 @@ std::vector<const BtNodeType*> BtRegistry::types() const {
 
 // --- document ----------------------------------------------------------------------------------
 
-namespace {
-
+// The parsed document; BtDocument::Impl is one (a named namespace: a base of a class declared in
+// the header cannot have internal linkage).
+namespace document_detail {
 struct DocumentData {
   std::map<std::string, BtNodeSpec, std::less<>> trees;
   std::string main;
   std::map<std::string, BtFactory, std::less<>> factories;
 };
+}  // namespace document_detail
+using document_detail::DocumentData;
+
+namespace {
 
 using world::XmlElement;
 
@@ -190,7 +195,7 @@ class Loader {
     }
     for (const BtNodeType* t : registry_.types()) impl.factories.emplace(t->name, t->factory);
     check_keys();
-    check_recursion(impl);
+    check_instances(impl);
   }
 
   [[nodiscard]] bool ok() const { return errors_.empty(); }
@@ -455,29 +460,63 @@ class Loader {
     }
   }
 
-  void check_recursion(const DocumentData& impl) {
-    std::map<std::string, int> state;  // 1 visiting, 2 done
-    std::function<bool(const std::string&)> visit = [&](const std::string& id) -> bool {
-      auto it = impl.trees.find(id);
-      if (it == impl.trees.end()) return true;
-      if (state[id] == 2) return true;
-      if (state[id] == 1) return false;
-      state[id] = 1;
-      bool fine = true;
-      std::function<void(const BtNodeSpec&)> walk = [&](const BtNodeSpec& s) {
-        if (!fine) return;
-        if (s.kind == BtNodeKind::kSubTree && !s.subtree_id.empty() && !visit(s.subtree_id)) {
-          error(s.file, s.line, 0,
-                "SubTree '" + s.subtree_id + "' includes itself (recursive trees cannot be instantiated)");
-          fine = false;
-        }
-        for (const BtNodeSpec& c : s.children) walk(c);
-      };
-      walk(it->second);
-      state[id] = 2;
-      return fine;
+  // Size and depth of one instance of each tree (SubTrees copied in), and recursive SubTrees,
+  // before anything is instantiated: 2 KB of trees that each use the next twice made 2^25 nodes
+  // per agent, and a long chain of SubTrees nested deeper than the stack holds. Each tree is
+  // measured once; the walk stops at max_instance_depth, so it cannot exhaust the stack itself.
+  void check_instances(const DocumentData& impl) {
+    struct Shape {
+      std::size_t nodes = 0;
+      int depth = 0;
     };
-    for (const auto& [id, spec] : impl.trees) visit(id);
+    const std::size_t max_nodes = options_.max_instance_nodes;
+    const int max_depth = options_.max_instance_depth;
+    const Shape too_big{max_nodes + 1, max_depth + 1};
+    std::map<std::string, Shape, std::less<>> measured;
+    std::set<std::string, std::less<>> visiting;
+    bool recursive = false;
+    std::function<Shape(const BtNodeSpec&, int)> node;
+    auto tree = [&](const BtNodeSpec& at, const std::string& id, int level) -> Shape {
+      if (auto it = measured.find(id); it != measured.end()) return it->second;
+      auto t = impl.trees.find(id);
+      if (t == impl.trees.end()) return {};
+      if (visiting.count(id) != 0) {
+        recursive = true;
+        error(at.file, at.line, 0,
+              "SubTree '" + id + "' includes itself (recursive trees cannot be instantiated)");
+        return too_big;
+      }
+      visiting.insert(id);
+      const Shape shape = node(t->second, level);
+      visiting.erase(id);
+      measured.emplace(id, shape);
+      return shape;
+    };
+    // `level` is the node's depth in the instance (1 for the root).
+    node = [&](const BtNodeSpec& s, int level) -> Shape {
+      if (level > max_depth) return Shape{1, max_depth + 1};
+      Shape out{1, 1};
+      auto add = [&](const Shape& below) {
+        out.nodes = std::min(out.nodes + below.nodes, max_nodes + 1);
+        out.depth = std::min(std::max(out.depth, below.depth + 1), max_depth + 1);
+      };
+      if (s.kind == BtNodeKind::kSubTree && !s.subtree_id.empty()) add(tree(s, s.subtree_id, level + 1));
+      for (const BtNodeSpec& c : s.children) add(node(c, level + 1));
+      return out;
+    };
+    for (const auto& [id, spec] : impl.trees) (void)tree(spec, id, 1);
+    if (recursive) return;  // reported where the SubTree names a tree it is part of
+    for (const auto& [id, spec] : impl.trees) {
+      const Shape shape = measured.at(id);
+      if (shape.nodes > max_nodes)
+        error(spec.file, spec.line, 0,
+              "BehaviorTree '" + id + "' expands to more than " + std::to_string(max_nodes) +
+                  " nodes (every SubTree is copied into each instance)");
+      else if (shape.depth > max_depth)
+        error(
+            spec.file, spec.line, 0,
+            "BehaviorTree '" + id + "' nests SubTrees deeper than " + std::to_string(max_depth) + " levels");
+    }
   }
 
   struct Read {

@@ -46,6 +46,10 @@ struct BtLoadOptions {
   // Includes must resolve to files under base_dir (no absolute paths or ".." escapes).
   bool confine_includes = true;
   int max_include_depth = 8;
+  // One instance of a tree holds a copy of every SubTree it uses: a few trees that each use the
+  // next one twice expand exponentially. Nodes and levels of an instance, SubTrees expanded.
+  std::size_t max_instance_nodes = 10'000;
+  int max_instance_depth = 256;
   // Blackboard entries every instance starts with and their types ({id} and {dt}).
   std::vector<std::pair<std::string, BtPortType>> seeded_keys = {{"id", BtPortType::kInt},
                                                                  {"dt", BtPortType::kDouble}};

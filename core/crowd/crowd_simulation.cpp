@@ -79,10 +79,6 @@ Vec2 tie_break_direction(std::uint32_t i, std::uint32_t j) {
   return i < j ? u : Vec2{-u.x, -u.y};
 }
 
-double orient(Vec2 a, Vec2 b, Vec2 c) {
-  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
 // Where along from→to the move meets the wall's line (0..1).
 double hit_parameter(Vec2 from, Vec2 to, const WallSegment& w) {
   const double o1 = orient(w.a, w.b, from);

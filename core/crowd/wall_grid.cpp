@@ -6,10 +6,6 @@
 namespace socsim::crowd {
 namespace {
 
-double orient(Vec2 a, Vec2 b, Vec2 c) {
-  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
 bool segments_intersect(Vec2 p, Vec2 q, Vec2 a, Vec2 b) {
   const double o1 = orient(p, q, a);
   const double o2 = orient(p, q, b);

@@ -44,6 +44,11 @@ class WallGrid {
 // Distance from point p to segment [a, b] (a == b allowed).
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
 
+// Twice the signed area of triangle a, b, c: > 0 when c lies left of a→b.
+inline double orient(Vec2 a, Vec2 b, Vec2 c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
 // True when moving straight from `from` to `to` would cross or land on the wall [a, b].
 // A point cannot be crossed (a == b), and a move starting exactly on the wall is never blocked by
 // it, so an agent placed on a wall can always step off. Exact sign tests on doubles: the same

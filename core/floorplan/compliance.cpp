@@ -7,8 +7,10 @@
 #include <map>
 #include <numbers>
 
+#include "core/common/text.hpp"
 #include "core/floorplan/rooms.hpp"
 #include "core/geometry/geos.hpp"
+#include "core/geometry/hull.hpp"
 #include "core/geometry/planar.hpp"
 #include "core/world/export_format.hpp"
 #include "core/world/geodesic.hpp"
@@ -82,11 +84,6 @@ double corner_loss(const Polygon& p, double r) {
   return loss;
 }
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
 std::string num2(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2f", v);
@@ -102,6 +99,8 @@ double value_of(std::span<const MergedConstraint> cs, std::string_view name, dou
   const auto* c = find(cs, name);
   return c ? c->constraint.value : fallback;
 }
+
+constexpr double kUnmeasured = std::numeric_limits<double>::quiet_NaN();
 
 struct ZoneInfo {
   std::string type;  // canonical
@@ -132,9 +131,9 @@ class Checker {
   // How the occupant load was found, for check details.
   [[nodiscard]] std::string load_words() const {
     if (scenario_occupants_ && *scenario_occupants_ >= area_load_ && *scenario_occupants_ > 0)
-      return num(occupant_load_) + " occupants (the scenario's people; the floor areas give " +
-             num(area_load_) + ")";
-    return num(occupant_load_) + " occupants";
+      return compact_number(occupant_load_) + " occupants (the scenario's people; the floor areas give " +
+             compact_number(area_load_) + ")";
+    return compact_number(occupant_load_) + " occupants";
   }
 
   ComplianceReport run() {
@@ -175,12 +174,26 @@ class Checker {
 
  private:
   // --- measurements -------------------------------------------------------------------
+  // Widths of outlines other than rectangles come from GEOS morphological openings, whose cost
+  // grows faster than the vertex count (a 2,000-vertex sawtooth ran for minutes). A report measures
+  // outlines of at most kMaxMeasuredVertices, kMeasuredVertexBudget in all; the rest are NaN,
+  // which measure() reports as not checked.
+  bool afford(const Polygon& p) {
+    if (rectangle_sides(p)) return true;
+    std::size_t n = p.outer.size();
+    for (const auto& h : p.holes) n += h.size();
+    if (n > kMaxMeasuredVertices || n > measure_budget_) return false;
+    measure_budget_ -= n;
+    return true;
+  }
   double width_of(std::size_t z) {
-    if (!zones_[z].width) zones_[z].width = clear_width(world_.zones()[z].polygon);
+    const Polygon& p = world_.zones()[z].polygon;
+    if (!zones_[z].width) zones_[z].width = afford(p) ? clear_width(p) : kUnmeasured;
     return *zones_[z].width;
   }
   double diameter_of(std::size_t z) {
-    if (!zones_[z].diameter) zones_[z].diameter = inscribed_diameter(world_.zones()[z].polygon);
+    const Polygon& p = world_.zones()[z].polygon;
+    if (!zones_[z].diameter) zones_[z].diameter = afford(p) ? inscribed_diameter(p) : kUnmeasured;
     return *zones_[z].diameter;
   }
   std::vector<std::size_t> zones_where(const std::function<bool(const ZoneInfo&)>& pred) const {
@@ -250,7 +263,12 @@ class Checker {
   // Measures `elements` with `measure`, keeps the worst value and the failures.
   void measure(ComplianceCheck& c, const std::vector<std::pair<std::string, double>>& values) {
     c.checked = values.size();
+    std::size_t unmeasured = 0;
     for (const auto& [element, v] : values) {
+      if (std::isnan(v)) {
+        ++unmeasured;
+        continue;
+      }
       const bool worse = !c.value || (c.type == "max" ? v > *c.value : v < *c.value);
       if (worse) {
         c.value = v;
@@ -265,6 +283,11 @@ class Checker {
     const bool ok = c.failures.empty();
     c.status =
         ok ? CheckStatus::kPass : (c.type == "recommended" ? CheckStatus::kAdvisory : CheckStatus::kFail);
+    if (unmeasured > 0) {
+      c.checked -= unmeasured;
+      if (ok) c.status = CheckStatus::kNotChecked;
+      c.unmeasured = unmeasured;
+    }
   }
   void zone_values(ComplianceCheck& c, const std::vector<std::size_t>& zs,
                    const std::function<double(std::size_t)>& f, const std::string& what,
@@ -273,6 +296,13 @@ class Checker {
     for (auto z : zs) values.emplace_back(world_.zones()[z].name, f(z));
     measure(c, values);
     c.detail = values.empty() ? none : what;
+    note_unmeasured(c);
+  }
+  static void note_unmeasured(ComplianceCheck& c) {
+    if (c.unmeasured == 0) return;
+    c.detail += "; " + std::to_string(c.unmeasured) + " outline(s) not measured (more than " +
+                std::to_string(kMaxMeasuredVertices) + " vertices, or past the report's budget of " +
+                std::to_string(kMeasuredVertexBudget) + ")";
   }
   static void not_checked(ComplianceCheck& c, std::string why) {
     c.status = CheckStatus::kNotChecked;
@@ -321,9 +351,10 @@ class Checker {
       std::vector<std::size_t> others;
       for (auto z : beds)
         if (z != *l && zones_[z].area >= dbl - kEps) others.push_back(z);
-      return zone_values(c, others, width,
-                         "bedrooms other than the main one that are double-sized (≥ " + num(dbl) + " m²)",
-                         "no other double-sized bedroom");
+      return zone_values(
+          c, others, width,
+          "bedrooms other than the main one that are double-sized (≥ " + compact_number(dbl) + " m²)",
+          "no other double-sized bedroom");
     }
     if (n == "patient_bedroom_area")
       return zone_values(c, zones_where([](const ZoneInfo& z) { return z.type == "patient_room"; }), area,
@@ -355,7 +386,7 @@ class Checker {
       measure(c, values);
       c.detail = values.empty()
                      ? "no corridor"
-                     : "corridors longer than " + num(kPassingInterval) +
+                     : "corridors longer than " + compact_number(kPassingInterval) +
                            " m (ADA 403.5.3 interval) must be this wide throughout; shorter ones pass";
       return;
     }
@@ -396,7 +427,7 @@ class Checker {
       c.status = CheckStatus::kUsed;
       c.value = it->second.first;
       c.checked = 1;
-      c.detail = num(it->second.second) + " persons over " + num2(it->second.first) +
+      c.detail = compact_number(it->second.second) + " persons over " + num2(it->second.first) +
                  " m² (area ÷ factor, per zone); used by the egress-width check";
       return;
     }
@@ -430,11 +461,13 @@ class Checker {
           applies =
               roi.kind == "walkway" && (zt == "warehouse_floor" || zt == "stock_room" || zt == "loading_bay");
         if (n == "checkout_aisle_width") applies = roi.kind == "queue_lane" && zt == "sales_floor";
-        if (applies) values.emplace_back(roi.name, clear_width(roi.polygon));
+        if (applies)
+          values.emplace_back(roi.name, afford(roi.polygon) ? clear_width(roi.polygon) : kUnmeasured);
       }
       measure(c, values);
       c.detail = values.empty() ? "no aisle in the plan (walkway / check-out queue_lane ROIs)"
                                 : "clear width of every aisle ROI it applies to";
+      note_unmeasured(c);
       return;
     }
     if (n.rfind("stair_", 0) == 0 || n.rfind("ramp_", 0) == 0)
@@ -590,10 +623,11 @@ class Checker {
     count.required = needed;
     measure(count, {{names.empty() ? "exits" : names, static_cast<double>(ex.size())}});
     count.detail =
-        "doors to the outside against the single-exit limit (" + num(max_occupants) + " occupants, " +
-        num2(max_travel) + " m travel, " + occupants->ref_id + ")" +
-        (three ? std::string(" and the exits per occupant load (3 from ") + num(three->constraint.value) +
-                     (four ? ", 4 from " + num(four->constraint.value) : std::string()) + ", " +
+        "doors to the outside against the single-exit limit (" + compact_number(max_occupants) +
+        " occupants, " + num2(max_travel) + " m travel, " + occupants->ref_id + ")" +
+        (three ? std::string(" and the exits per occupant load (3 from ") +
+                     compact_number(three->constraint.value) +
+                     (four ? ", 4 from " + compact_number(four->constraint.value) : std::string()) + ", " +
                      three->ref_id + ")"
                : std::string()) +
         ": " + load_words() +
@@ -603,11 +637,10 @@ class Checker {
     const double fraction = spread != nullptr ? spread->constraint.value : 0.0;
     ComplianceCheck apart =
         base("exit_separation", "m", "separation of two exits", spread != nullptr ? *spread : *occupants);
-    double diagonal = 0.0;
-    for (const auto& a : world_.zones())
-      for (const auto& b : world_.zones())
-        for (const Point& p : a.polygon.outer)
-          for (const Point& q : b.polygon.outer) diagonal = std::max(diagonal, geometry::distance(p, q));
+    std::vector<Point> corners;
+    for (const auto& z : world_.zones())
+      corners.insert(corners.end(), z.polygon.outer.begin(), z.polygon.outer.end());
+    const double diagonal = geometry::diameter(corners);
     apart.required = diagonal * fraction;
     if (spread == nullptr) {
       not_checked(apart, "the knowledge store gives no separation rule");
@@ -688,6 +721,7 @@ class Checker {
   std::string building_type_;
   std::span<const MergedConstraint> constraints_;
   std::vector<ZoneInfo> zones_;
+  std::size_t measure_budget_ = kMeasuredVertexBudget;
   bool residential_ = false;
   std::optional<double> scenario_occupants_;
   double occupant_load_ = 0.0;
@@ -738,22 +772,24 @@ Json to_json(const ComplianceCheck& c) {
   Json failures = Json::array();
   for (const auto& f : c.failures)
     failures.push_back({{"element", f.element}, {"value", round_micro(f.value)}});
-  return Json{{"name", c.name},
-              {"applies_to", c.applies_to},
-              {"type", c.type},
-              {"required", round_micro(c.required)},
-              {"unit", c.unit},
-              {"value", c.value ? Json(round_micro(*c.value)) : Json(nullptr)},
-              {"element", c.element},
-              {"checked", c.checked},
-              {"status", to_string(c.status)},
-              {"failures", std::move(failures)},
-              {"detail", c.detail},
-              {"ref_id", c.ref_id},
-              {"title", c.title},
-              {"section", c.section},
-              {"jurisdiction", c.jurisdiction},
-              {"confidence", c.confidence}};
+  Json j{{"name", c.name},
+         {"applies_to", c.applies_to},
+         {"type", c.type},
+         {"required", round_micro(c.required)},
+         {"unit", c.unit},
+         {"value", c.value ? Json(round_micro(*c.value)) : Json(nullptr)},
+         {"element", c.element},
+         {"checked", c.checked},
+         {"status", to_string(c.status)},
+         {"failures", std::move(failures)},
+         {"detail", c.detail},
+         {"ref_id", c.ref_id},
+         {"title", c.title},
+         {"section", c.section},
+         {"jurisdiction", c.jurisdiction},
+         {"confidence", c.confidence}};
+  if (c.unmeasured > 0) j["unmeasured"] = c.unmeasured;
+  return j;
 }
 
 Json to_json(const ComplianceReport& r) {

@@ -32,6 +32,13 @@ struct ComplianceFinding {
   double value = 0.0;
 };
 
+// Clear widths and inscribed circles of outlines other than rectangles are measured with GEOS
+// morphological openings, whose cost grows much faster than the vertex count. A report measures
+// outlines of at most kMaxMeasuredVertices vertices, kMeasuredVertexBudget vertices in all; a check
+// that needed an outline beyond these is not_checked (unless a measured element already fails it).
+inline constexpr std::size_t kMaxMeasuredVertices = 64;
+inline constexpr std::size_t kMeasuredVertexBudget = 1024;
+
 struct ComplianceCheck {
   std::string name;  // constraint name, e.g. corridor_clear_width
   std::string applies_to;
@@ -41,6 +48,7 @@ struct ComplianceCheck {
   std::optional<double> value;  // the worst measured value (smallest for min, largest for max)
   std::string element;          // where that value was measured
   std::size_t checked = 0;      // elements measured
+  std::size_t unmeasured = 0;   // elements too detailed to measure (see kMaxMeasuredVertices)
   std::vector<ComplianceFinding> failures;
   CheckStatus status = CheckStatus::kNotChecked;
   std::string detail;  // how it was measured, or why it was not

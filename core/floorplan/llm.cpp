@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/common/rng.hpp"
+#include "core/common/text.hpp"
 #include "core/floorplan/furnish.hpp"
 #include "core/floorplan/rooms.hpp"
 #include "core/floorplan/schemas.hpp"
@@ -13,12 +14,6 @@ namespace socsim::floorplan {
 namespace {
 
 using knowledge::MergedConstraint;
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
 
 // Builder pointers (/zones/3/polygon, /doors/1/pose) as pointers into the answer.
 std::string answer_pointer(const std::string& p) {
@@ -134,12 +129,12 @@ Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& g
     for (std::size_t i = 0; i < doors.size() && where.empty(); ++i)
       if (doors[i].name == c->element) where = "/doors/" + std::to_string(i) + "/width";
     const std::string bound = c->type == "max" ? "at most " : "at least ";
-    errors.push_back({where,
-                      c->name + " (" + c->ref_id + (c->section.empty() ? "" : ", " + c->section) +
-                          "): " + c->element + " has " + (c->value ? num(*c->value) : std::string("none")) +
-                          " " + c->unit + ", must be " + bound + num(c->required) + " " + c->unit + " — " +
-                          c->detail,
-                      "", 0, 0});
+    errors.push_back(
+        {where,
+         c->name + " (" + c->ref_id + (c->section.empty() ? "" : ", " + c->section) + "): " + c->element +
+             " has " + (c->value ? compact_number(*c->value) : std::string("none")) + " " + c->unit +
+             ", must be " + bound + compact_number(c->required) + " " + c->unit + " — " + c->detail,
+         "", 0, 0});
   }
   if (!errors.empty())
     return fail(ErrorCode::kValidation, "the floor plan breaks building-code constraints", std::move(errors));

@@ -19,7 +19,9 @@ Result<FloorPlanRequest> floor_plan_request_from_json(const Json& body) {
   if (const Json* g = c.object(body, "", "scene_graph", false)) r.scene_graph = *g;
   r.prompt = c.string(body, "", "prompt", false, 1, 4000);
   if (r.scene_graph && r.prompt) c.add("/prompt", "give either scene_graph or prompt, not both");
-  if (!r.scene_graph && !r.prompt && !body.contains("scene_graph") && !body.contains("prompt"))
+  // A scene_graph or prompt that is given but bad has its own error already; null counts as not given.
+  if (!r.scene_graph && !r.prompt && !JsonChecker::given(body, "scene_graph") &&
+      !JsonChecker::given(body, "prompt"))
     c.add("", "give scene_graph (rooms and adjacency) or prompt (a description of the building)");
   r.domain = c.string(body, "", "domain", false, 1, 32);
   if (r.domain && !knowledge::is_building_type(*r.domain)) {
@@ -67,6 +69,9 @@ Result<ResolvedSceneGraph> resolve_scene_graph(const FloorPlanRequest& request) 
       return tl::unexpected(s.error());
     return out;
   }
+  if (!request.prompt)
+    return fail(ErrorCode::kValidation, "the world request has neither scene_graph nor prompt",
+                {{"", "give scene_graph or prompt", "", 0, 0}});
   auto p = scene_graph_from_prompt(*request.prompt, request.domain);
   if (!p) return tl::unexpected(p.error());
   out.graph = std::move(p->graph);

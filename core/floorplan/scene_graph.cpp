@@ -379,8 +379,9 @@ SceneGraph room_program(std::string_view domain, const std::map<std::string, int
   std::vector<ProgramRoom> rooms = p.rooms;
   for (const auto& [type, n] : counts) {
     if (is_circulation_type(type)) continue;
+    const std::string& wanted = type;  // clang 14 cannot capture structured bindings
     const bool known =
-        std::any_of(rooms.begin(), rooms.end(), [&](const ProgramRoom& r) { return r.type == type; });
+        std::any_of(rooms.begin(), rooms.end(), [&](const ProgramRoom& r) { return r.type == wanted; });
     if (!known) {
       const RoomType* rt = find_room_type(type);
       if (rt) rooms.push_back({rt->type, n, ""});

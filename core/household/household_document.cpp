@@ -22,7 +22,7 @@ Result<HouseholdRequest> household_request_from_json(const Json& json) {
   }
   check.only_keys(json, "",
                   {"rooms", "house", "residents", "days", "start_weekday", "seed", "generator", "model"});
-  const bool has_rooms = json.contains("rooms"), has_house = json.contains("house");
+  const bool has_rooms = JsonChecker::given(json, "rooms"), has_house = JsonChecker::given(json, "house");
   if (has_rooms == has_house)
     check.add(has_rooms ? "/house" : "/rooms",
               has_rooms ? "give rooms or house, not both" : "give rooms (1-10) or a ProcTHOR house");
@@ -281,6 +281,14 @@ Result<Json> load_household_document(store::Store& store, const std::string& id)
 Result<std::vector<HouseholdRow>> list_households(store::Store& store, std::size_t limit,
                                                   const std::optional<std::string>& after_id) {
   return store.read([&](store::Database& db) -> Result<std::vector<HouseholdRow>> {
+    if (after_id) {  // an id that is not there would silently give an empty page
+      auto known = db.prepare("SELECT 1 FROM households WHERE id = ?");
+      if (!known) return tl::unexpected(known.error());
+      known->bind(1, *after_id);
+      auto found = known->step();
+      if (!found) return tl::unexpected(found.error());
+      if (!*found) return fail(ErrorCode::kNotFound, "no household '" + *after_id + "' to continue after");
+    }
     auto st = db.prepare(
         after_id ? "SELECT id, job_id, author, generator, summary, created_at FROM households WHERE rowid < "
                    "(SELECT rowid FROM households WHERE id = ?) ORDER BY rowid DESC LIMIT ?"

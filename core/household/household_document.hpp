@@ -86,6 +86,7 @@ struct HouseholdRow {
 Status store_household(store::Store& store, const HouseholdDocument& document, const Json& summary,
                        const std::string& author, const std::optional<std::string>& job_id);
 Result<Json> load_household_document(store::Store& store, const std::string& id);  // kNotFound when unknown
+// kNotFound when after_id names no stored household.
 Result<std::vector<HouseholdRow>> list_households(store::Store& store, std::size_t limit,
                                                   const std::optional<std::string>& after_id);
 

@@ -52,7 +52,7 @@ std::string plan_text(const DayPlan& plan) {
   return out;
 }
 
-std::string lower(std::string_view s) {
+std::string lower_trimmed(std::string_view s) {
   std::string out(s);
   for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   while (!out.empty() && (out.back() == ' ' || out.back() == '.')) out.pop_back();
@@ -181,7 +181,7 @@ Result<std::vector<ScheduleEntry>> LlmDecomposer::decompose(const Persona& perso
     e.start = parse_clock(a["start"].get<std::string>());
     e.end = parse_clock(a["end"].get<std::string>());
     const std::string name = a["activity"].get<std::string>();
-    const bool away = lower(name) == "leave home";
+    const bool away = lower_trimmed(name) == "leave home";
     e.name = away ? "leave home" : name;
     const auto r = vocabulary.add(e.name);
     e.primary = r.primary;
@@ -309,7 +309,7 @@ Result<Hint> LlmHintGenerator::hint(const HintQuery& q) {
   for (auto it = events.rbegin(); it != events.rend() && !out.activity.empty(); ++it) {
     const SceneEvent& e = scene.events()[static_cast<std::size_t>(*it)];
     if (e.start >= q.time || e.end <= q.time - q.lookback ||
-        lower(scene.entry(e).name) != lower(out.activity))
+        lower_trimmed(scene.entry(e).name) != lower_trimmed(out.activity))
       continue;
     out.event = *it;
     out.when = e.end;

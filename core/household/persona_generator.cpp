@@ -6,6 +6,7 @@
 
 #include "core/common/json_check.hpp"
 #include "core/common/rng.hpp"
+#include "core/common/text.hpp"
 
 namespace socsim::household {
 namespace {
@@ -737,12 +738,6 @@ std::string fill(std::string text, const Voice& v, std::string_view variant = {}
   return replace_all(std::move(text), "{p}", v.p);
 }
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
 bool contains_word(const std::string& text, const std::string& phrase) {
   for (std::size_t pos = text.find(phrase); pos != std::string::npos; pos = text.find(phrase, pos + 1)) {
     const bool left = pos == 0 || !std::isalnum(static_cast<unsigned char>(text[pos - 1]));
@@ -761,7 +756,7 @@ std::set<std::string> content_words(const Persona& p) {
       "long",  "very",  "some",   "than",  "then",     "more", "each"};
   std::set<std::string> names;
   std::string w;
-  for (char c : lower(p.name) + " ") {
+  for (char c : ascii_lower(p.name) + " ") {
     if (std::isalpha(static_cast<unsigned char>(c)))
       w += c;
     else if (!w.empty())
@@ -770,7 +765,7 @@ std::set<std::string> content_words(const Persona& p) {
   std::string text = p.occupation + " " + p.routine + " " + p.lifestyle;
   for (const auto& t : p.personality) text += " " + t;
   std::set<std::string> out;
-  for (char c : lower(text) + " ") {
+  for (char c : ascii_lower(text) + " ") {
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '-') {
       w += c;
     } else if (!w.empty()) {
@@ -826,7 +821,7 @@ std::string routine_text(Rng& rng, const Voice& v, const Occupation& o, int bed,
 std::vector<const Occupation*> matching_occupations(const PersonaConstraints& c, HouseholdRole role, int lo,
                                                     int hi) {
   std::vector<const Occupation*> out;
-  const std::string wanted = c.occupation ? lower(*c.occupation) : "";
+  const std::string wanted = c.occupation ? ascii_lower(*c.occupation) : "";
   for (const auto& o : occupations()) {
     if ((role == HouseholdRole::kChild) != is_child_occupation(o)) continue;
     if (o.pattern == WorkPattern::kHomemaker && role != HouseholdRole::kParent) continue;
@@ -922,6 +917,30 @@ Result<PersonaRequest> persona_request_from_json(const Json& json, const std::st
   return r;
 }
 
+Result<PersonaGenerateRequest> persona_generate_request_from_json(const Json& json) {
+  PersonaGenerateRequest r;
+  JsonChecker check;
+  if (json.is_object()) {
+    check.only_keys(json, "", {"count", "seed", "constraints", "generator", "store", "model"});
+    if (auto v = check.string(json, "", "generator", false, 1, 20)) {
+      if (*v != "offline" && *v != "llm")
+        check.add("/generator", "must be offline or llm");
+      else
+        r.generator = *v;
+    }
+    r.store = check.boolean(json, "", "store", false).value_or(false);
+    r.model = check.string(json, "", "model", false, 1, 200);
+    if (r.model && r.generator != "llm") check.add("/model", "a model is chosen only with generator llm");
+  }
+  auto personas = persona_request_from_json(json);
+  std::vector<FieldError> errors = personas ? std::vector<FieldError>{} : personas.error().errors;
+  errors.insert(errors.end(), check.errors().begin(), check.errors().end());
+  if (!errors.empty())
+    return fail(ErrorCode::kValidation, "invalid persona generation request", std::move(errors));
+  r.personas = *personas;
+  return r;
+}
+
 Json to_json(const PersonaConstraints& c) {
   Json j = Json::object();
   if (c.min_age) j["min_age"] = *c.min_age;
@@ -942,7 +961,7 @@ double persona_similarity(const Persona& a, const Persona& b) {
 
 bool near_duplicate(const Persona& a, const Persona& b) {
   if (persona_id(a) == persona_id(b)) return true;
-  if (lower(a.gender) != lower(b.gender) || std::abs(a.age - b.age) > 5) return false;
+  if (ascii_lower(a.gender) != ascii_lower(b.gender) || std::abs(a.age - b.age) > 5) return false;
   return persona_similarity(a, b) >= 0.5;
 }
 
@@ -994,8 +1013,8 @@ Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& req
   std::string custom_text;
   if (options.empty() && c.occupation && (!c.household_role || *c.household_role != HouseholdRole::kChild) &&
       hi >= 18) {
-    custom_text =
-        "{F} works as " + article_for(*c.occupation) + " " + lower(*c.occupation) + " from 9 am to 5 pm.";
+    custom_text = "{F} works as " + article_for(*c.occupation) + " " + ascii_lower(*c.occupation) +
+                  " from 9 am to 5 pm.";
     custom.text = custom_text.c_str();
     custom.min_age = std::max(18, lo);
     custom.max_age = std::min(70, hi);

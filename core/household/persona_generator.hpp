@@ -37,6 +37,16 @@ struct PersonaRequest {
 Result<PersonaRequest> persona_request_from_json(const Json& json, const std::string& pointer = "");
 Json to_json(const PersonaConstraints& constraints);
 
+// The body of POST /api/v1/personas/generate: a PersonaRequest and how to make and keep them,
+// {count, seed, constraints, generator: offline|llm, store: bool, model (llm only)}.
+struct PersonaGenerateRequest {
+  PersonaRequest personas;
+  std::string generator = "offline";
+  bool store = false;
+  std::optional<std::string> model;
+};
+Result<PersonaGenerateRequest> persona_generate_request_from_json(const Json& json);
+
 // Two personas are near-duplicates when they share an id (name), or have the same gender, ages
 // within 5 years and mostly the same words in occupation, routine, lifestyle and personality.
 double persona_similarity(const Persona& a, const Persona& b);  // content-word Jaccard, 0 … 1

@@ -115,6 +115,14 @@ struct Importer {
     return Vec3{*x, y.value_or(0.0), *z};
   }
 
+  // False (with an error) unless v is an object: JsonChecker reads fields of objects only and
+  // would silently skip a number or a list where a room, wall, door or point belongs.
+  bool is_object(const Json& v, const std::string& ptr) {
+    if (v.is_object()) return true;
+    check.add(ptr, "must be an object");
+    return false;
+  }
+
   static Json without(const Json& obj, std::initializer_list<std::string_view> keys) {
     Json e = obj;
     for (auto key : keys) e.erase(std::string(key));
@@ -228,6 +236,7 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
     for (std::size_t i = 0; i < rooms->size(); ++i) {
       const Json& r = (*rooms)[i];
       const std::string p = "/rooms/" + std::to_string(i);
+      if (!im.is_object(r, p)) continue;
       Room room;
       if (auto rid = check.string(r, p, "id", true, 1, 100)) room.id = *rid;
       if (auto t = check.string(r, p, "roomType", true, 1, 40)) {
@@ -240,6 +249,7 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
         if (poly->size() < 3) check.add(p + "/floorPolygon", "needs at least 3 points");
         for (std::size_t j = 0; j < poly->size(); ++j) {
           const std::string pp = p + "/floorPolygon/" + std::to_string(j);
+          if (!im.is_object((*poly)[j], pp)) continue;
           auto x = check.number((*poly)[j], pp, "x", true), z = check.number((*poly)[j], pp, "z", true);
           if (x && z) room.floor.push_back({*x, *z});
         }
@@ -254,6 +264,7 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
     for (std::size_t i = 0; i < walls->size(); ++i) {
       const Json& w = (*walls)[i];
       const std::string p = "/walls/" + std::to_string(i);
+      if (!im.is_object(w, p)) continue;
       Wall wall;
       if (auto wid = check.string(w, p, "id", true, 1, 200)) wall.id = *wid;
       if (auto rid = check.string(w, p, "roomId", true, 1, 100)) wall.room_id = *rid;
@@ -263,6 +274,7 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
         double top = 0.0;
         for (std::size_t j = 0; j < poly->size(); ++j) {
           const std::string pp = p + "/polygon/" + std::to_string(j);
+          if (!im.is_object((*poly)[j], pp)) continue;
           auto x = check.number((*poly)[j], pp, "x", true), y = check.number((*poly)[j], pp, "y", true),
                z = check.number((*poly)[j], pp, "z", true);
           if (!x || !y || !z) continue;
@@ -280,6 +292,7 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
     for (std::size_t i = 0; i < doors->size(); ++i) {
       const Json& d = (*doors)[i];
       const std::string p = "/doors/" + std::to_string(i);
+      if (!im.is_object(d, p)) continue;
       Door door;
       if (auto v = check.string(d, p, "id", true, 1, 200)) door.id = *v;
       if (auto v = check.string(d, p, "room0", true, 1, 100)) {
@@ -300,6 +313,7 @@ Result<House> import_procthor(const Json& json, const HouseholdKnowledge& knowle
           const Json& h0 = (*hole)[0];
           const Json& h1 = (*hole)[1];
           auto rd = [&](const Json& o, const std::string& pp, Vec3& out) {
+            if (!im.is_object(o, pp)) return;
             auto x = check.number(o, pp, "x", true), y = check.number(o, pp, "y", true),
                  z = check.number(o, pp, "z", false);
             if (x && y) out = {*x, *y, z.value_or(0.0)};

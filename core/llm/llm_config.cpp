@@ -80,10 +80,15 @@ Result<std::string> resolve(const LlmConfig& cfg, const std::optional<std::strin
     return fail(
         ErrorCode::kValidation, "model name is not valid",
         {FieldError{"/model", "must be 1-200 characters of letters, digits and . _ - : / @ +", {}, 0, 0}});
-  if (!cfg.allowed_models.empty() && std::find(cfg.allowed_models.begin(), cfg.allowed_models.end(),
-                                               *requested) == cfg.allowed_models.end()) {
+  // Without an allow-list only the configured model may be named: a client must not be able to
+  // spend the operator's quota on a larger (dearer) model the endpoint happens to serve.
+  const std::vector<std::string> allowed = cfg.allowed_models.empty() && !fallback.empty()
+                                               ? std::vector<std::string>{fallback}
+                                               : cfg.allowed_models;
+  if (std::find(allowed.begin(), allowed.end(), *requested) == allowed.end()) {
     std::string list;
-    for (const auto& m : cfg.allowed_models) list += (list.empty() ? "" : ", ") + m;
+    for (const auto& m : allowed) list += (list.empty() ? "" : ", ") + m;
+    if (list.empty()) list = "(none: no model is configured)";
     return fail(ErrorCode::kValidation, "model \"" + *requested + "\" is not allowed on this server",
                 {FieldError{"/model", "must be one of: " + list, {}, 0, 0}});
   }

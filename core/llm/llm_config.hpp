@@ -21,15 +21,16 @@ struct LlmConfig {
   std::string model;                        // default chat model
   std::string embedding_model;              // default embedding model; empty = `model`
   std::string api_key;                      // sent as "Authorization: Bearer …" when not empty
-  std::vector<std::string> allowed_models;  // when not empty, per-request model names must be listed
+  std::vector<std::string> allowed_models;  // per-request model names allowed; empty: only `model`
 
   int connect_timeout_ms = 5000;
-  int attempt_timeout_ms = 300000;  // one HTTP exchange, from connect to the last byte
-  int stall_timeout_ms = 120000;    // abort when under 1 byte/s this long (non-streaming servers send
-                                    // nothing while generating, so this also bounds generation time)
-  int deadline_ms = 600000;         // one call: all attempts and back-off waits together
-  int max_retries = 3;              // extra attempts after timeouts, 429 and 5xx
-  int initial_backoff_ms = 500;     // doubled per retry, capped at max_backoff_ms, with jitter
+  // A hung endpoint holds a job worker until the deadline, so the defaults are one minute a call.
+  int attempt_timeout_ms = 60000;  // one HTTP exchange, from connect to the last byte
+  int stall_timeout_ms = 30000;    // abort when under 1 byte/s this long (non-streaming servers send
+                                   // nothing while generating, so this also bounds generation time)
+  int deadline_ms = 60000;         // one call: all attempts and back-off waits together
+  int max_retries = 3;             // extra attempts after timeouts, 429 and 5xx
+  int initial_backoff_ms = 500;    // doubled per retry, capped at max_backoff_ms, with jitter
   int max_backoff_ms = 20000;
   int max_retry_after_s = 60;  // a longer Retry-After fails the call instead of waiting
   int max_concurrency = 4;     // requests in flight per client
@@ -46,7 +47,8 @@ struct LlmConfig {
   Status validate();
 
   // The model for one request: the configured default, or `requested` after checking it is a
-  // plausible model name (and in allowed_models when that list is set). kValidation at "/model".
+  // plausible model name in allowed_models (the default model alone when that list is empty).
+  // kValidation at "/model".
   [[nodiscard]] Result<std::string> resolve_model(const std::optional<std::string>& requested) const;
   [[nodiscard]] Result<std::string> resolve_embedding_model(
       const std::optional<std::string>& requested) const;

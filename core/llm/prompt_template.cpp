@@ -154,8 +154,9 @@ Result<std::vector<ChatMessage>> render_prompt(const PromptTemplate& tpl, const 
     std::string rendered;
     std::size_t copied = 0;
     std::string missing;
-    scan(*section, [&](const std::string& name, std::size_t begin, std::size_t end) {
-      rendered.append(*section, copied, begin - copied);
+    const std::string& text = *section;  // clang 14 cannot capture structured bindings
+    scan(text, [&](const std::string& name, std::size_t begin, std::size_t end) {
+      rendered.append(text, copied, begin - copied);
       if (auto it = variables.find(name); it != variables.end())
         rendered += it->second;
       else if (missing.empty())

@@ -546,20 +546,31 @@ Status plan_reception(Draft& d, const Activity& a, Rng& rng) {
     d.place_used(C::kReception, "counter", lane->counter, "the serving entity at the lane's head");
 
   // The receptionist (one by default) faces the lane from behind the counter.
-  if (receptionists == 0 && !lane->counter.empty()) receptionists = 1;
+  if (receptionists == 0 && !lane->counter.empty() && !d.named_only) receptionists = 1;
   if (receptionists > 0) {
+    auto tree = d.add_tree(C::kReception, "receptionist", [&](TreeXml& t) {
+      t.open("Sequence");
+      t.leaf("LookAtPoint", {{"agent_id", "{id}"}, {"goal", lane->name}});
+      t.leaf("StopAndWait", {{"agent_id", "{id}"}, {"wait_duration", num(kForever)}});
+      t.close();
+    });
+    if (!tree) return tl::unexpected(tree.error());
+    std::size_t placed = 0;
     if (auto spot = behind_counter(p, *lane); spot && d.take_spotlight(1) == 1) {
-      auto tree = d.add_tree(C::kReception, "receptionist", [&](TreeXml& t) {
-        t.open("Sequence");
-        t.leaf("LookAtPoint", {{"agent_id", "{id}"}, {"goal", lane->name}});
-        t.leaf("StopAndWait", {{"agent_id", "{id}"}, {"wait_duration", num(kForever)}});
-        t.close();
-      });
-      if (!tree) return tl::unexpected(tree.error());
       d.add_agent_at("receptionist", "receptionist", *spot, *tree, C::kReception);
-      if (receptionists > 1) d.note("only one receptionist fits behind '" + lane->counter + "'");
-    } else {
+      placed = 1;
+    }
+    if (placed < receptionists && d.named_only) {
+      // Receptionists the prompt names all take part: the others wait by the counter facing the lane.
+      const std::size_t n = d.take_spotlight(receptionists - placed);
+      spawn_people(d, {People{"receptionist", n, true, "named in the prompt"}}, around(p, lane->zone, true),
+                   "receptionist", *tree, -1, C::kReception);
+      d.note(std::to_string(n) + " receptionist" + (n == 1 ? "" : "s") + " wait" + (n == 1 ? "s" : "") +
+             " by '" + counter + "'" + (placed == 0 ? " (no free spot behind it)" : " (one fits behind it)"));
+    } else if (placed == 0) {
       d.note("no free spot behind '" + counter + "' for a receptionist; the counter serves without one");
+    } else if (receptionists > 1) {
+      d.note("only one receptionist fits behind '" + lane->counter + "'");
     }
   }
 
@@ -1036,7 +1047,7 @@ Status plan_normal_operation(Draft& d, const Activity& a, Rng& rng) {
     if (!z.empty() && !contains(entrance_zones, z)) entrance_zones.push_back(z);
   }
   std::vector<People> traffic = rest;
-  if (traffic.empty() && area >= 120.0 && !entrances.empty()) {
+  if (traffic.empty() && !d.named_only && area >= 120.0 && !entrances.empty()) {
     double circ_area = 0.0;
     for (const std::string& z : circulation) circ_area += p.zone_area(z);
     const std::size_t n = std::clamp<std::size_t>(

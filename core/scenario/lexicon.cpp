@@ -162,6 +162,24 @@ const std::vector<CategoryPhrase> kCategoryPhrases = {
     {"commute", C::kNormalOperation, 0.5},
     {"dinner", C::kNormalOperation, 0.5},
     {"shift", C::kNormalOperation, 0.4},
+    // everyday words for waiting, gathering, registering, pushing and walking
+    {"wait", C::kQueuing, 0.6},
+    {"waits", C::kQueuing, 0.6},
+    {"waiting", C::kQueuing, 0.6},
+    {"waiting room", C::kQueuing, 0.9},
+    {"a line of", C::kQueuing, 0.9},
+    {"gather", C::kSocialParty, 0.9},
+    {"gathers", C::kSocialParty, 0.9},
+    {"gathered", C::kSocialParty, 0.8},
+    {"dances", C::kSocialParty, 0.8},
+    {"signs in", C::kReception, 0.9},
+    {"registers", C::kReception, 0.9},
+    {"greets", C::kReception, 0.8},
+    {"crowd the", C::kBottleneck, 0.6},
+    {"pour out", C::kBottleneck, 1.0},
+    {"walk", C::kNormalOperation, 0.4},
+    {"walks", C::kNormalOperation, 0.4},
+    {"reading", C::kNormalOperation, 0.4},
 };
 
 const std::vector<RoleWord> kRoleWords = {

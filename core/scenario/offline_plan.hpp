@@ -49,6 +49,11 @@ class Draft {
   std::optional<double> alarm_s;     // emergency in the prompt: every tree evacuates from then on
   std::optional<double> start_s;     // "after 20 seconds" without an emergency: activities start then
   std::optional<double> activity_s;  // "for two minutes": how long chats, gatherings, visits last
+  // The prompt names who is there (scenario_intent.hpp) and asks for nobody else: planners add no
+  // default people (no receptionist nobody asked for, no passing traffic).
+  bool named_only = false;
+  // Program role → the known role whose crowd parameters it takes ("librarian" → "worker").
+  std::map<std::string, std::string> role_basis;
 
   // Who takes part: the activity's roles with their counts (defaults where the prompt gives none),
   // else the world's usual people for the category, `default_total` in all.

@@ -84,7 +84,8 @@ void TreeXml::element(std::string_view node, const Attributes& attributes, bool 
     problems_.push_back("the knowledge store has no behaviour node '" + std::string(node) + "'");
   } else {
     catalogue_.use(n->name, category_);
-    for (const auto& [key, value] : attributes) {
+    for (const auto& attribute : attributes) {
+      const auto& key = attribute.first;  // clang 14 cannot capture structured bindings
       const bool known = std::any_of(n->ports.begin(), n->ports.end(),
                                      [&](const knowledge::Port& p) { return p.name == key; });
       if (!known)

@@ -12,6 +12,7 @@
 #include "core/floorplan/request.hpp"
 #include "core/scenario/program_check.hpp"
 #include "core/scenario/program_llm.hpp"
+#include "core/scenario/scenario_intent.hpp"
 #include "core/world/world_document.hpp"
 #include "core/world/world_yaml.hpp"
 
@@ -198,7 +199,22 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
     fp["scene_graph"] = *request.scene_graph;
   else
     fp["prompt"] = request.prompt;
-  if (request.domain) fp["domain"] = *request.domain;
+  // The venue the prompt names ("train station", "library") decides the building type, by the
+  // nearest type the floor-plan generator knows; a given domain or scene graph wins.
+  Json venue = nullptr;
+  if (request.domain) {
+    fp["domain"] = *request.domain;
+  } else if (!request.scene_graph) {
+    auto intent = interpret_prompt(request.prompt);
+    if (!intent) return tl::unexpected(intent.error());
+    if (intent->venue) {
+      fp["domain"] = intent->venue->building_type;
+      venue = Json{{"type", intent->venue->type},
+                   {"building_type", intent->venue->building_type},
+                   {"words", intent->venue->words},
+                   {"why", intent->venue->why}};
+    }
+  }
   if (request.model) fp["model"] = *request.model;
   auto fpr = floorplan::floor_plan_request_from_json(fp);
   if (!fpr) return tl::unexpected(fpr.error());
@@ -223,6 +239,7 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
   if (!plan) return tl::unexpected(plan.error());
   plan->provenance["classification"] = resolved->classification;
   plan->provenance["compliance_passed"] = plan->compliance.passed;
+  if (!venue.is_null()) plan->provenance["venue"] = venue;
   return ScenarioWorld{std::move(plan->world), resolved->graph.domain, std::move(plan->provenance)};
 }
 
@@ -329,6 +346,14 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
   auto& c = out.card;
   c.title = request.title.empty() ? short_title(request.prompt) : request.title;
   c.description = describe_program(generated->program);
+  // People the prompt asked for that the program could not hold are said on the card.
+  for (const auto& note : generated->provenance.value("notes", Json::array())) {
+    if (!note.is_string()) continue;
+    const std::string n = note.get<std::string>();
+    if (n.find("fit") != std::string::npos || n.find("scaled down") != std::string::npos ||
+        n.find("left out") != std::string::npos)
+      c.description += " " + n + ".";
+  }
   c.prompt = request.prompt;
   c.seed = request.seed;
   c.generator.name = request.generator;

@@ -6,6 +6,7 @@
 
 #include "core/scenario/offline_plan.hpp"
 #include "core/scenario/program_check.hpp"
+#include "core/scenario/scenario_intent.hpp"
 
 namespace socsim::scenario {
 
@@ -87,6 +88,34 @@ Json role_json(const std::string& role) {
   if (!p) return Json::object();
   return Json{{"speed", {{"mean", p->mean}, {"sd", p->sd}, {"min", p->min}, {"max", p->max}}},
               {"radius", p->radius}};
+}
+
+// The groups the prompt names (scenario_intent.hpp) replace the lexicon's role mentions: exactly
+// those people, counted as written, each in the clause it was said in.
+void take_groups(Intent& intent, const ScenarioIntent& named) {
+  if (named.groups.empty() || intent.clauses.empty()) return;
+  const auto tokens = tokenize(intent.prompt);
+  for (Clause& c : intent.clauses) c.roles.clear();
+  intent.crowd_size.reset();
+  for (const PeopleGroup& g : named.groups) {
+    std::size_t clause = 0;
+    for (const Token& t : tokens) {
+      if (t.offset > g.span.begin) break;
+      clause = t.clause;
+    }
+    clause = std::min(clause, intent.clauses.size() - 1);
+    RoleMention m;
+    m.role = g.program_role;
+    m.phrase = g.role;
+    if (g.count.specified()) {
+      m.count = g.count.people();
+      m.count_phrase = g.count.phrase;
+      m.approximate = g.count.kind != CountKind::kExact;
+    }
+    m.clause = clause;
+    m.offset = g.span.begin;
+    intent.clauses[clause].roles.push_back(std::move(m));
+  }
 }
 
 }  // namespace
@@ -236,6 +265,30 @@ Status Draft::add_ambient(Category category, Ambient group) {
   group.name = name;
   std::size_t cap = 0;
   for (const std::string& s : group.start) cap += room_left(s);
+  if (group.size > cap && group.explicit_count) {
+    // A count the prompt gave is kept while the building holds it: the people who do not fit
+    // where the activity happens start in the other rooms, largest first.
+    std::vector<std::string> more;
+    for (const world::Zone& z : probe.world().zones())
+      if (!probe.is_toilet(z.name) &&
+          std::find(group.start.begin(), group.start.end(), z.name) == group.start.end() &&
+          std::find(group.goal.begin(), group.goal.end(), z.name) == group.goal.end() &&
+          room_left(z.name) > 0)
+        more.push_back(z.name);
+    std::stable_sort(more.begin(), more.end(),
+                     [&](const std::string& a, const std::string& b) { return room_left(a) > room_left(b); });
+    std::size_t added = 0;
+    for (const std::string& z : more) {
+      if (cap >= group.size) break;
+      group.start.push_back(z);
+      cap += room_left(z);
+      ++added;
+    }
+    if (added > 0)
+      note("ambient group '" + name + "': its start regions hold too few of the " +
+           std::to_string(group.size) + " people the prompt asks for; " + std::to_string(added) +
+           " more rooms added as start regions");
+  }
   if (group.size > cap) {
     note("ambient group '" + name + "': " + std::to_string(group.size) +
          " people do not fit in its start regions; " + std::to_string(cap) + " placed");
@@ -334,8 +387,11 @@ void Draft::fit(std::size_t bound) {
 
 Json Draft::program(const std::string& name) const {
   Json roles = Json::object();
-  for (const std::string& r : roles_)
-    if (!is_builtin_role(r)) roles[r] = role_json(r);
+  for (const std::string& r : roles_) {
+    if (is_builtin_role(r)) continue;
+    const auto basis = role_basis.find(r);
+    roles[r] = role_json(basis == role_basis.end() ? r : basis->second);
+  }
   Json trees = Json::object();
   for (const auto& [n, xml] : trees_) trees[n] = Json{{"xml", xml}};
   for (const AmbientEntry& a : ambient_)
@@ -522,7 +578,10 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   if (!errors.empty())
     return fail(ErrorCode::kValidation, errors.front().pointer + ": " + errors.front().message, errors);
 
-  const Intent intent = parse_intent(prompt);
+  Intent intent = parse_intent(prompt);
+  auto named = interpret_prompt(prompt);
+  if (!named) return tl::unexpected(named.error());
+  take_groups(intent, *named);
   WorldProbe probe(world);
   auto catalogue = NodeCatalogue::load(knowledge);
   if (!catalogue) return tl::unexpected(catalogue.error());
@@ -530,6 +589,22 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   std::vector<Activity> activities = plan_activities(intent, world, place_log);
 
   Draft draft(probe, *catalogue, intent, request, limits);
+  // Counted groups ("twelve patients and one nurse") or "only"/"except" say who is there; a bare
+  // "visitors check in at the front desk" leaves the usual staff (a receptionist) to the planner.
+  const bool counted = std::any_of(named->groups.begin(), named->groups.end(),
+                                   [](const PeopleGroup& g) { return g.count.specified(); });
+  draft.named_only =
+      !named->groups.empty() && !named->background && (counted || named->exclusivity.exclusive);
+  for (const PeopleGroup& g : named->groups) draft.role_basis[g.program_role] = g.normalized_role;
+  if (draft.named_only &&
+      std::any_of(activities.begin(), activities.end(), [](const Activity& a) { return !a.roles.empty(); })) {
+    // Activities nobody named takes part in would bring people of their own; an emergency among
+    // them still sounds the alarm for everyone (below).
+    const auto before = activities.size();
+    std::erase_if(activities, [](const Activity& a) { return a.roles.empty(); });
+    if (activities.size() < before)
+      draft.note("activities without any of the people named were left out: the prompt names who is there");
+  }
   Rng rng(request.seed);
   Rng timing = rng.fork("timing");
   const bool emergency_activity = std::any_of(activities.begin(), activities.end(), [](const Activity& a) {
@@ -593,6 +668,7 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   provenance["domain"] = probe.domain();
   provenance["categories"] = categories;
   provenance["intent"] = to_json(intent);
+  provenance["scenario_intent"] = to_json(*named);
   provenance["activities"] = activity_log;
   provenance["place_mentions"] = place_log;
   provenance["knowledge"] = catalogue->provenance();

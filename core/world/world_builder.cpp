@@ -8,6 +8,7 @@
 
 #include "core/geometry/geos.hpp"
 #include "core/geometry/planar.hpp"
+#include "core/geometry/segment_index.hpp"
 #include "core/world/occupancy_grid.hpp"
 
 namespace socsim::world {
@@ -16,6 +17,7 @@ namespace {
 
 using geometry::Geos;
 using geometry::MultiPolygon;
+using geometry::SegmentIndex;
 
 constexpr std::size_t kMaxNameLength = 128;
 
@@ -33,12 +35,21 @@ std::string pt(Point p) {
   return "(" + num(p.x) + ", " + num(p.y) + ")";
 }
 
+bool coordinate(double v) {
+  return std::isfinite(v) && std::abs(v) <= kMaxCoordinate;
+}
+// Finite and within ±kMaxCoordinate.
 bool finite(Point p) {
-  return std::isfinite(p.x) && std::isfinite(p.y);
+  return coordinate(p.x) && coordinate(p.y);
 }
 bool finite(const Pose2& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.yaw);
+  return coordinate(p.x) && coordinate(p.y) && std::isfinite(p.yaw);
 }
+// Above this many vertices (two zones, or a zone and the plan), shared boundaries are computed
+// from capsules instead of a GEOS buffer (see host_of in build).
+constexpr std::size_t kExactBoundaryVertices = 2000;
+
+const std::string kOutOfRange = "must be finite and within ±100000 m";
 
 // Names are referenced from behaviour trees, XML and SVG ids: keep them to a safe alphabet.
 std::optional<std::string> name_problem(const std::string& name) {
@@ -72,19 +83,54 @@ double distance_to_boundary(const Polygon& poly, Point p) {
   return d;
 }
 
-struct Nearest {
-  std::size_t index = 0;
-  double distance = std::numeric_limits<double>::infinity();
-};
-
-Nearest nearest_segment(const std::vector<Segment>& segs, Point p) {
-  Nearest best;
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    const double d = geometry::distance(segs[i], p);
-    if (d < best.distance) best = {i, d};
+// Every zone edge in one spatial index: which zones' boundaries pass near a point, without
+// comparing the point with every edge of every zone (quadratic for large worlds).
+class ZoneBoundaries {
+ public:
+  explicit ZoneBoundaries(const std::vector<Zone>& zones) {
+    std::vector<Segment> all;
+    for (std::size_t z = 0; z < zones.size(); ++z) {
+      auto add = [&](const std::vector<Point>& ring) {
+        for (const auto& e : geometry::edges(ring)) {
+          all.push_back(e);
+          zone_.push_back(z);
+        }
+      };
+      add(zones[z].polygon.outer);
+      for (const auto& h : zones[z].polygon.holes) add(h);
+    }
+    index_ = SegmentIndex(std::move(all));
   }
-  return best;
-}
+  // (distance, zone) of every zone whose boundary is within `radius` of p, nearest first.
+  [[nodiscard]] std::vector<std::pair<double, std::size_t>> within(Point p, double radius) const {
+    std::map<std::size_t, double> best;
+    for (std::size_t e : index_.within(p, radius)) {
+      const double d = geometry::distance(index_.segment(e), p);
+      auto [it, fresh] = best.emplace(zone_[e], d);
+      if (!fresh) it->second = std::min(it->second, d);
+    }
+    std::vector<std::pair<double, std::size_t>> out;
+    for (const auto& [z, d] : best) out.emplace_back(d, z);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  // The first zone (lowest index) whose boundary is within `radius` of p.
+  [[nodiscard]] std::optional<std::size_t> first_within(Point p, double radius) const {
+    const auto edges = index_.within(p, radius);
+    if (edges.empty()) return std::nullopt;
+    return zone_[edges.front()];  // edges are numbered zone by zone
+  }
+  // (distance, zone) of the nearest zone boundary (the lowest zone among equals).
+  [[nodiscard]] std::pair<double, std::size_t> nearest(Point p) const {
+    const auto n = index_.nearest(p);
+    if (!n) return {std::numeric_limits<double>::infinity(), 0};
+    return {n->distance, zone_[n->index]};
+  }
+
+ private:
+  SegmentIndex index_;
+  std::vector<std::size_t> zone_;  // of each edge
+};
 
 class Validator {
  public:
@@ -111,6 +157,19 @@ class Validator {
     if (auto p = label_problem(value, allow_empty)) add(ptr, *p);
   }
   bool polygon(const Geos& geos, const std::string& ptr, const Polygon& poly, const std::string& owner) {
+    bool in_range = true;
+    for (std::size_t i = 0; i < poly.outer.size(); ++i)
+      if (!finite(poly.outer[i])) {
+        add(ptr + "/" + std::to_string(i), owner + ": a vertex " + kOutOfRange);
+        in_range = false;
+        break;
+      }
+    for (const auto& hole : poly.holes)
+      if (in_range && !std::all_of(hole.begin(), hole.end(), [](Point p) { return finite(p); })) {
+        add(ptr, owner + ": a hole's vertex " + kOutOfRange);
+        in_range = false;
+      }
+    if (!in_range) return false;
     const auto v = geos.validity(poly);
     if (!v.valid) {
       std::string msg = owner + " has an invalid polygon: " + v.reason;
@@ -154,7 +213,8 @@ std::vector<Segment> uncovered_parts(const Segment& s, std::span<const Wall> cov
   std::vector<std::pair<double, double>> covered;
   for (const auto& w : cover) {
     if (off(w.segment.a) > tol || off(w.segment.b) > tol) continue;
-    const auto [lo, hi] = std::minmax(along(w.segment.a), along(w.segment.b));
+    // By value: minmax of two temporaries would return references to them.
+    const auto [lo, hi] = std::minmax({along(w.segment.a), along(w.segment.b)});
     if (hi > tol && lo < len - tol) covered.emplace_back(std::max(lo, 0.0), std::min(hi, len));
   }
   std::sort(covered.begin(), covered.end());
@@ -339,6 +399,10 @@ std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector
   MultiPolygon polys;
   for (const auto& z : zones) polys.push_back(z.polygon);
   const double tol = options.boundary_tolerance;
+  const ZoneBoundaries boundaries(zones);
+  std::vector<Segment> openings;
+  for (const auto& d : doors) openings.push_back(d.opening);
+  const SegmentIndex door_index(std::move(openings));
   std::vector<Wall> walls;
   for (const Segment& s : geos.boundary_segments(polys)) {
     const double len = geometry::length(s);
@@ -353,7 +417,8 @@ std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector
     std::vector<Cut> cuts;
     auto along = [&](Point p) { return (p.x - s.a.x) * u.x + (p.y - s.a.y) * u.y; };
     auto off = [&](Point p) { return std::abs((p.x - s.a.x) * u.y - (p.y - s.a.y) * u.x); };
-    for (const auto& d : doors) {
+    for (std::size_t k : door_index.within(s, tol)) {  // an opening on s lies within tol of it
+      const Door& d = doors[k];
       if (off(d.opening.a) > tol || off(d.opening.b) > tol) continue;
       Cut c{along(d.opening.a), along(d.opening.b), d.opening.a, d.opening.b};
       if (c.t0 > c.t1) std::swap(c.t0, c.t1), std::swap(c.p0, c.p1);
@@ -373,12 +438,8 @@ std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector
       if (piece.t1 - piece.t0 <= tol) continue;
       const Point mid{(piece.p0.x + piece.p1.x) / 2, (piece.p0.y + piece.p1.y) / 2};
       std::string style = options.default_wall_style;
-      for (const auto& z : zones) {
-        if (distance_to_boundary(z.polygon, mid) <= tol) {
-          if (!z.material.empty()) style = z.material;
-          break;
-        }
-      }
+      if (auto z = boundaries.first_within(mid, tol); z && !zones[*z].material.empty())
+        style = zones[*z].material;
       walls.push_back(Wall{{piece.p0, piece.p1}, options.default_wall_height, style});
     }
   }
@@ -411,7 +472,12 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
 
   // 1. Each element on its own: names, labels, numbers, polygon validity.
   if (auto p = label_problem(name_, true)) v.add("/name", *p);
-  if (!finite(origin_)) v.add("/origin", "must be finite");
+  bool out_of_range = false;
+  const auto check_point = [&](const std::string& ptr, bool ok) {
+    if (!ok) v.add(ptr, kOutOfRange);
+    out_of_range = out_of_range || !ok;
+  };
+  check_point("/origin", finite(origin_));
   v.label("/floor/material", floor_.material, true);
   std::vector<bool> zone_ok(zones.size(), false);
   for (std::size_t i = 0; i < zones.size(); ++i) {
@@ -428,8 +494,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
   for (std::size_t i = 0; i < walls_.size(); ++i) {
     const auto& w = walls_[i];
     const std::string ptr = "/walls/" + std::to_string(i);
-    if (!finite(w.segment.a)) v.add(ptr + "/start", "must be finite");
-    if (!finite(w.segment.b)) v.add(ptr + "/end", "must be finite");
+    check_point(ptr + "/start", finite(w.segment.a));
+    check_point(ptr + "/end", finite(w.segment.b));
     if (finite(w.segment.a) && finite(w.segment.b) && geometry::length(w.segment) <= opt.boundary_tolerance) {
       v.add(ptr + "/end", "wall from " + pt(w.segment.a) + " to " + pt(w.segment.b) + " has no length");
     }
@@ -441,9 +507,10 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
     const auto& d = doors_[i];
     const std::string ptr = door_ptr(i);
     v.name(ptr + "/name", d.name, names);
-    if (!finite(d.pose)) v.add(ptr + "/pose", "must be finite");
-    if (!(d.width > 0 && std::isfinite(d.width))) {
-      v.add(ptr + "/width", "must be a positive number of metres");
+    check_point(ptr + "/pose", finite(d.pose));
+    if (!(d.width > 0 && d.width <= kMaxCoordinate)) {
+      v.add(ptr + "/width", "must be a positive number of metres, at most 100000");
+      out_of_range = true;
     } else if (d.width < 2 * opt.agent_radius) {
       v.add(ptr + "/width", "door '" + d.name + "' is " + num(d.width) +
                                 " m wide, narrower than an agent of radius " + num(opt.agent_radius) + " m");
@@ -473,7 +540,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
     const std::string ptr = "/entities/" + std::to_string(i);
     v.name(ptr + "/name", e.name, names);
     v.label(ptr + "/type", e.type, false);
-    if (!finite(e.pose)) v.add(ptr + "/pose", "must be finite");
+    check_point(ptr + "/pose", finite(e.pose));
     std::set<std::string> seen;
     for (std::size_t k = 0; k < e.affordances.size(); ++k) {
       const std::string aptr = ptr + "/affordances/" + std::to_string(k);
@@ -482,7 +549,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
         v.add(aptr, "duplicate affordance '" + e.affordances[k] + "'");
     }
   }
-  if (std::find(zone_ok.begin(), zone_ok.end(), false) != zone_ok.end() || zones.empty()) return v.failure();
+  if (std::find(zone_ok.begin(), zone_ok.end(), false) != zone_ok.end() || zones.empty() || out_of_range)
+    return v.failure();
 
   try {
     // 2. Zones against each other.
@@ -508,18 +576,59 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
     std::vector<Segment> outline = geos.boundary_segments(plan);
 
     // 3. Doors: find their zones and their opening on the shared (or outside) boundary.
+    // Boundaries are computed once per zone pair (or zone and outside) and indexed, so each door
+    // costs a few index queries, not a pass over every edge.
     std::vector<Door> doors;
-    std::map<std::pair<std::size_t, std::size_t>, std::vector<Segment>> shared_cache;
-    auto shared = [&](std::size_t a, std::size_t b) -> const std::vector<Segment>& {
-      const auto key = std::minmax(a, b);
-      auto it = shared_cache.find(key);
-      if (it == shared_cache.end()) {
-        it = shared_cache
-                 .emplace(key, geos.shared_boundary(zones[key.first].polygon, zones[key.second].polygon, tol))
-                 .first;
+    const ZoneBoundaries boundaries(zones);
+    std::map<std::string, std::size_t> zone_index;
+    for (std::size_t z = 0; z < zones.size(); ++z) zone_index[zones[z].name] = z;
+    constexpr std::size_t kOutside = std::numeric_limits<std::size_t>::max();
+    std::map<std::pair<std::size_t, std::size_t>, SegmentIndex> host_cache;
+    std::optional<SegmentIndex> outline_index;
+    const auto vertices = [](const Polygon& p) {
+      std::size_t n = p.outer.size();
+      for (const auto& h : p.holes) n += h.size();
+      return n;
+    };
+    const auto rings = [](const Polygon& p) {
+      std::vector<std::vector<Point>> r{p.outer};
+      r.insert(r.end(), p.holes.begin(), p.holes.end());
+      return r;
+    };
+    std::size_t plan_vertices = 0;
+    for (const auto& part : plan) plan_vertices += vertices(part);
+    // The boundary shared by zones a and b, or (b == kOutside) the part of a's that is the outline.
+    // Small boundaries go through GEOS as they always did (the same bits, so stored scenarios
+    // replay identically); large ones through exact capsules, since GEOS's buffer of a boundary
+    // with features finer than the tolerance grows without bound (8 GB for a 10k-vertex sawtooth).
+    auto host_of = [&](std::size_t a, std::size_t b) -> const SegmentIndex& {
+      const std::pair<std::size_t, std::size_t> key =
+          b == kOutside ? std::make_pair(a, b) : std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = host_cache.find(key);
+      if (it == host_cache.end()) {
+        std::vector<Segment> segs;
+        if (b == kOutside && vertices(zones[a].polygon) + plan_vertices <= kExactBoundaryVertices) {
+          for (const auto& part : plan) {
+            const auto pieces = geos.shared_boundary(zones[a].polygon, part, tol);
+            segs.insert(segs.end(), pieces.begin(), pieces.end());
+          }
+        } else if (b == kOutside) {
+          if (!outline_index) outline_index.emplace(outline);
+          segs = geometry::pieces_near(rings(zones[a].polygon), *outline_index, tol);
+        } else if (vertices(zones[a].polygon) + vertices(zones[b].polygon) <= kExactBoundaryVertices) {
+          segs = geos.shared_boundary(zones[key.first].polygon, zones[key.second].polygon, tol);
+        } else {
+          std::vector<Segment> other_edges;
+          for (const auto& ring : rings(zones[key.second].polygon))
+            for (const auto& e : geometry::edges(ring)) other_edges.push_back(e);
+          segs = geometry::pieces_near(rings(zones[key.first].polygon), SegmentIndex(std::move(other_edges)),
+                                       tol);
+        }
+        it = host_cache.emplace(key, SegmentIndex(std::move(segs))).first;
       }
       return it->second;
     };
+    SegmentIndex accepted_openings;  // of `doors`, in order
     for (std::size_t i = 0; i < doors_.size(); ++i) {
       const auto& spec = doors_[i];
       const std::string ptr = door_ptr(i);
@@ -528,15 +637,12 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
       std::vector<std::size_t> ends;
       bool resolved = true;
       for (std::size_t k = 0; k < spec.connects.size(); ++k) {
-        std::optional<std::size_t> found;
-        for (std::size_t z = 0; z < zones.size(); ++z) {
-          if (zones[z].name == spec.connects[k]) found = z;
-        }
-        if (!found) {
+        auto found = zone_index.find(spec.connects[k]);
+        if (found == zone_index.end()) {
           v.add(ptr + "/connects/" + std::to_string(k), "unknown zone '" + spec.connects[k] + "'");
           resolved = false;
         } else {
-          ends.push_back(*found);
+          ends.push_back(found->second);
         }
       }
       if (!resolved) continue;
@@ -547,19 +653,9 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
       }
       if (ends.empty()) {
         // Infer: the zones whose boundary passes by the door.
-        std::vector<std::pair<double, std::size_t>> near;
-        for (std::size_t z = 0; z < zones.size(); ++z) {
-          const double d = distance_to_boundary(zones[z].polygon, c);
-          if (d <= opt.door_snap_distance) near.emplace_back(d, z);
-        }
-        std::sort(near.begin(), near.end());
+        const auto near = boundaries.within(c, opt.door_snap_distance);
         if (near.empty()) {
-          double best = std::numeric_limits<double>::infinity();
-          std::size_t bz = 0;
-          for (std::size_t z = 0; z < zones.size(); ++z) {
-            const double d = distance_to_boundary(zones[z].polygon, c);
-            if (d < best) best = d, bz = z;
-          }
+          const auto [best, bz] = boundaries.nearest(c);
           v.add(ptr + "/pose", "door '" + spec.name + "' at " + pt(c) +
                                    " is on no zone boundary (nearest is zone '" + zones[bz].name + "', " +
                                    num(best) + " m away; at most " + num(opt.door_snap_distance) +
@@ -568,8 +664,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
         }
         for (std::size_t x = 0; x < near.size() && ends.empty(); ++x) {
           for (std::size_t y = x + 1; y < near.size() && ends.empty(); ++y) {
-            const auto& sh = shared(near[x].second, near[y].second);
-            if (!sh.empty() && nearest_segment(sh, c).distance <= opt.door_snap_distance) {
+            const auto n = host_of(near[x].second, near[y].second).nearest(c);
+            if (n && n->distance <= opt.door_snap_distance) {
               ends = {std::min(near[x].second, near[y].second), std::max(near[x].second, near[y].second)};
             }
           }
@@ -577,34 +673,24 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
         if (ends.empty()) ends = {near[0].second};
       }
       const Zone& za = zones[ends[0]];
-      std::vector<Segment> host;
-      if (ends.size() == 2) {
-        host = shared(ends[0], ends[1]);
-        if (host.empty()) {
-          v.add(ptr + "/connects", "zones '" + za.name + "' and '" + zones[ends[1]].name +
-                                       "' share no boundary, so door '" + spec.name +
-                                       "' cannot connect them");
-          continue;
-        }
-      } else {
-        // The parts of the zone's boundary that are also the plan's outline.
-        for (const auto& part : plan) {
-          const auto pieces = geos.shared_boundary(za.polygon, part, tol);
-          host.insert(host.end(), pieces.begin(), pieces.end());
-        }
+      const SegmentIndex& host = host_of(ends[0], ends.size() == 2 ? ends[1] : kOutside);
+      if (ends.size() == 2 && host.size() == 0) {
+        v.add(ptr + "/connects", "zones '" + za.name + "' and '" + zones[ends[1]].name +
+                                     "' share no boundary, so door '" + spec.name + "' cannot connect them");
+        continue;
       }
-      const Nearest nh = nearest_segment(host, c);
-      if (host.empty() || nh.distance > opt.door_snap_distance) {
+      const auto nh = host.nearest(c);
+      if (!nh || nh->distance > opt.door_snap_distance) {
         const std::string where = ends.size() == 2 ? "the boundary shared by zones '" + za.name + "' and '" +
                                                          zones[ends[1]].name + "'"
                                                    : "the outside boundary of zone '" + za.name + "'";
         std::string msg = "door '" + spec.name + "' at " + pt(c) + " is not on " + where;
-        if (!host.empty())
-          msg += " (" + num(nh.distance) + " m away; at most " + num(opt.door_snap_distance) + " m allowed)";
+        if (nh)
+          msg += " (" + num(nh->distance) + " m away; at most " + num(opt.door_snap_distance) + " m allowed)";
         v.add(ptr + "/pose", msg);
         continue;
       }
-      const Segment& s = host[nh.index];
+      const Segment& s = host.segment(nh->index);
       const double len = geometry::length(s);
       const Point u{(s.b.x - s.a.x) / len, (s.b.y - s.a.y) / len};
       const double t = (c.x - s.a.x) * u.x + (c.y - s.a.y) * u.y;
@@ -625,8 +711,9 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
       // From the projected centre, so that round numbers stay round (2 ± 0.6, not 10 − 7.4).
       const Point mid{s.a.x + u.x * t, s.a.y + u.y * t};
       d.opening = {{mid.x - u.x * half, mid.y - u.y * half}, {mid.x + u.x * half, mid.y + u.y * half}};
-      // Two doors in one opening would double-count it.
-      for (const auto& other : doors) {
+      // Two doors in one opening would double-count it (an overlapping opening lies within tol).
+      for (std::size_t k : accepted_openings.within(d.opening, tol)) {
+        const Door& other = doors[k];
         const Segment& o = other.opening;
         auto off = [&](Point p) {
           return std::abs((p.x - d.opening.a.x) * u.y - (p.y - d.opening.a.y) * u.x);
@@ -638,6 +725,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
         if (hi - lo > tol)
           v.add(ptr + "/pose", "door '" + spec.name + "' overlaps door '" + other.name + "'");
       }
+      accepted_openings.insert(d.opening);
       doors.push_back(std::move(d));
     }
 
@@ -646,21 +734,26 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
     if (walls.empty()) {
       walls = derive_walls(zones, doors, opt);
     } else {
+      std::vector<Segment> inner_openings;
+      for (const auto& d : doors) {
+        const double len = geometry::length(d.opening);
+        const double cut = std::min(2 * tol, len / 4);
+        const Point u{(d.opening.b.x - d.opening.a.x) / len, (d.opening.b.y - d.opening.a.y) / len};
+        inner_openings.push_back({{d.opening.a.x + u.x * cut, d.opening.a.y + u.y * cut},
+                                  {d.opening.b.x - u.x * cut, d.opening.b.y - u.y * cut}});
+      }
+      const SegmentIndex inner_index(std::move(inner_openings));
       for (std::size_t k = 0; k < walls.size(); ++k) {
-        for (const auto& d : doors) {
-          const double len = geometry::length(d.opening);
-          const double cut = std::min(2 * tol, len / 4);
-          const Point u{(d.opening.b.x - d.opening.a.x) / len, (d.opening.b.y - d.opening.a.y) / len};
-          const Segment inner{{d.opening.a.x + u.x * cut, d.opening.a.y + u.y * cut},
-                              {d.opening.b.x - u.x * cut, d.opening.b.y - u.y * cut}};
-          if (geometry::distance(walls[k].segment, inner) < tol) {
+        for (std::size_t di : inner_index.within(walls[k].segment, tol)) {
+          if (geometry::distance(walls[k].segment, inner_index.segment(di)) < tol) {
             v.add("/walls/" + std::to_string(k), "wall from " + pt(walls[k].segment.a) + " to " +
-                                                     pt(walls[k].segment.b) + " blocks door '" + d.name +
-                                                     "'");
+                                                     pt(walls[k].segment.b) + " blocks door '" +
+                                                     doors[di].name + "'");
           }
         }
       }
     }
+
     if (inferred && !walls_.empty()) {
       // The written walls need not close the zone whose region was inferred: close it where
       // they leave it open (less its doors), like the written walls when they agree on a style.
@@ -714,8 +807,12 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
       const auto& e = entities_[i];
       if (!finite(e.pose)) continue;
       std::optional<std::size_t> in;
+      const Point p = e.pose.position();
       for (std::size_t z = 0; z < zones.size() && !in; ++z) {
-        if (geometry::contains(zones[z].polygon, e.pose.position(), tol)) in = z;
+        const auto& b = boxes[z];
+        if (p.x < b.min.x - tol || p.x > b.max.x + tol || p.y < b.min.y - tol || p.y > b.max.y + tol)
+          continue;
+        if (geometry::contains(zones[z].polygon, p, tol)) in = z;
       }
       if (!in) {
         v.add("/entities/" + std::to_string(i) + "/pose",

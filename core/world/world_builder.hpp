@@ -11,6 +11,11 @@
 
 namespace socsim::world {
 
+// The largest |x| or |y| of any point of a world, in metres (100 km): far beyond any building,
+// and small enough that areas, distances and the geometry library stay exact and finite
+// (coordinates of 1e200 made GEOS fail on overflowing orientation tests).
+inline constexpr double kMaxCoordinate = 1e5;
+
 struct BuildOptions {
   double agent_radius = 0.25;        // m; every zone must be reachable for an agent this wide
   double boundary_tolerance = 0.01;  // m; points this close to a boundary lie on it

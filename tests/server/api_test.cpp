@@ -5,6 +5,7 @@
 
 #include <set>
 
+#include "core/cards/card.hpp"
 #include "core/common/json_io.hpp"
 #include "tests/server/test_server.hpp"
 
@@ -163,6 +164,33 @@ TEST(Api, WritesNeedAKeyWhenKeysAreSetAndOnlyTheAuthorDeletes) {
   expect_problem(c.Get(("/api/v1/cards/" + id).c_str()), 404);
 }
 
+// Issue 14 #10: the author is not part of the content hash, so a key holder could write any name
+// into an export file and import it; the importer's key is the author, whatever the file says.
+TEST(Api, ImportRecordsTheImportingKeyAsAuthor) {
+  ServerConfig cfg;
+  cfg.api_keys = parse_api_keys("alice:alice-secret-0123456789,bob:bob-secret-0123456789").value();
+  TestServer s(cfg);
+  auto c = s.client();
+  cards::Card forged;
+  forged.id = cards::new_card_id();
+  forged.content = cards::parse_card_content(Json::parse(kCard), {}).value();
+  forged.author = "alice";
+  forged.created_at = "2026-01-02T03:04:05.000Z";
+  forged.content_hash = cards::content_hash(forged.content, forged.version, forged.parent_id);
+  const std::string doc = cards::export_document(forged);
+  auto r = c.Post("/api/v1/cards/import", {{"Authorization", "Bearer bob-secret-0123456789"}}, doc,
+                  "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 201) << r->body;
+  EXPECT_EQ(body_of(r)["author"], "bob");
+  EXPECT_EQ(body_of(r)["content_hash"], forged.content_hash) << "the content and its hash are kept";
+  EXPECT_EQ(body_of(c.Get(("/api/v1/cards/" + forged.id).c_str()))["author"], "bob");
+  // So alice's key, not bob's, is the one that cannot delete it.
+  expect_problem(
+      c.Delete(("/api/v1/cards/" + forged.id).c_str(), {{"Authorization", "Bearer alice-secret-0123456789"}}),
+      403);
+}
+
 TEST(Api, PageWalkVisitsEveryCardExactlyOnce) {
   TestServer s;
   auto c = s.client();
@@ -194,6 +222,47 @@ TEST(Api, PageWalkVisitsEveryCardExactlyOnce) {
   EXPECT_EQ(body_of(bad)["errors"][0]["parameter"], "page_size");
   expect_problem(c.Get("/api/v1/cards?page_size=1000"), 422);
   expect_problem(c.Get("/api/v1/cards?cursor=forged"), 400);
+}
+
+// Issue 14 #12: households?cursor=garbage answered 200 with an empty page, personas 422, the
+// others 400; simulations ignored page_size=abc. One parser (server/pagination.hpp) now reads
+// them for every list: page_size out of range → 422, a cursor the list did not issue → 400, both
+// naming the parameter.
+TEST(Api, EveryListReadsPageParametersTheSameWay) {
+  TestServer s;
+  auto c = s.client();
+  for (const char* list : {"/api/v1/cards", "/api/v1/jobs", "/api/v1/worlds", "/api/v1/personas",
+                           "/api/v1/households", "/api/v1/simulations"}) {
+    for (const char* size : {"abc", "0", "-1", "101", "1e2", "", "99999999999999999999"}) {
+      auto r = c.Get((std::string(list) + "?page_size=" + size).c_str());
+      expect_problem(r, 422);
+      EXPECT_EQ(body_of(r)["errors"][0]["parameter"], "page_size") << list << " page_size=" << size;
+    }
+    for (const char* cursor : {"garbage", "w1.x", "j1.-5", "s1.", "hh_0000", "%20"}) {
+      auto r = c.Get((std::string(list) + "?cursor=" + cursor).c_str());
+      expect_problem(r, 400);
+      EXPECT_EQ(body_of(r)["errors"][0]["parameter"], "cursor") << list << " cursor=" << cursor;
+    }
+    // A NUL in the query is refused by the transport before any list reads it.
+    expect_problem(c.Get((std::string(list) + "?cursor=%00").c_str()), 400);
+    auto ok = c.Get((std::string(list) + "?page_size=1").c_str());
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(ok->status, 200) << list << ": " << ok->body;
+  }
+}
+
+// Issue 14 #12: a key named twice in one object was accepted (nlohmann keeps the last).
+TEST(Api, DuplicateKeysInABodyAre400WithThePointer) {
+  TestServer s;
+  auto c = s.client();
+  auto r = c.Post("/api/v1/cards", R"({"title": "a", "title": "b", "generator": {"name": "offline"}})",
+                  "application/json");
+  expect_problem(r, 400);
+  EXPECT_EQ(body_of(r)["errors"][0]["pointer"], "/title");
+  auto nested =
+      c.Post("/api/v1/worlds", R"({"scene_graph": {"rooms": [], "rooms": []}})", "application/json");
+  expect_problem(nested, 400);
+  EXPECT_EQ(body_of(nested)["errors"][0]["pointer"], "/scene_graph/rooms");
 }
 
 TEST(Api, SearchAndFilters) {

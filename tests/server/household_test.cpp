@@ -89,6 +89,31 @@ TEST(HouseholdApi, PersonasArePaginatedPostedAndGenerated) {
   EXPECT_TRUE(pointers(Json::parse(llm->body)).count("/generator"));
 }
 
+// Issue 14 #11: generator and store were read with json::value(), which throws on a wrong type (500).
+TEST(HouseholdApi, PersonaGenerationFieldsOfTheWrongTypeAre422) {
+  TestServer s;
+  auto c = s.client();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"count": 1, "store": "yes"})", "/store"},
+      {R"({"count": 1, "store": 1})", "/store"},
+      {R"({"count": 1, "generator": 5})", "/generator"},
+      {R"({"count": 1, "generator": {"name": "offline"}})", "/generator"},
+      {R"({"count": 1, "generator": "llm", "model": 7})", "/model"},
+      {R"({"count": 1, "generator": "offline", "model": "gpt-4o"})", "/model"}};
+  for (const auto& [body, pointer] : cases) {
+    auto r = c.Post("/api/v1/personas/generate", body, "application/json");
+    ASSERT_TRUE(r) << body;
+    EXPECT_EQ(r->status, 422) << body << " → " << r->body;
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json");
+    EXPECT_TRUE(pointers(Json::parse(r->body)).count(pointer)) << body << " → " << r->body;
+  }
+  // null is not given: the defaults (offline, not stored) apply.
+  auto defaults = c.Post("/api/v1/personas/generate", R"({"count": 1, "generator": null, "store": null})",
+                         "application/json");
+  ASSERT_TRUE(defaults);
+  EXPECT_EQ(defaults->status, 200) << defaults->body;
+}
+
 TEST(HouseholdApi, HouseholdJobStoresASceneThatAnswersQueries) {
   TestServer s;
   auto c = s.client();

@@ -81,6 +81,53 @@ TEST(Jobs, CancelStopsARunningJob) {
   EXPECT_EQ(again->status, 409);
 }
 
+// Issue 14 #8: one client could fill the whole queue (64) and starve everyone else. Each key (or
+// address, on a server without keys) may have max_jobs_per_client queued or running; the next
+// submission is 429 with Retry-After, while other clients are still served.
+TEST(Jobs, OneClientCannotTakeEveryJobSlot) {
+  ServerConfig cfg;
+  cfg.api_keys = parse_api_keys("alice:alice-secret-0123456789,bob:bob-secret-0123456789").value();
+  cfg.max_jobs_per_client = 2;
+  cfg.job_workers = 1;
+  TestServer s(cfg);
+  auto& jobs = *s.services().jobs;
+  std::atomic<bool> release{false};
+  const auto blocking = [&](const JobContext& ctx) -> Result<Json> {
+    while (!release && !ctx.cancelled()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    return Json::object();
+  };
+  std::vector<std::string> held;
+  for (int i = 0; i < 2; ++i) held.push_back(jobs.submit("hold", Json::object(), "alice", blocking).value());
+  auto third = jobs.submit("hold", Json::object(), "alice", blocking);
+  ASSERT_FALSE(third);
+  EXPECT_EQ(third.error().code, ErrorCode::kRateLimited);
+  EXPECT_GT(third.error().retry_after_s, 0);
+
+  const std::string navbench = R"({"split": "normal", "scenes": 1, "seed": 1, "tasks_per_scene": 1})";
+  auto c = s.client();
+  auto refused = c.Post("/api/v1/navbench", {{"Authorization", "Bearer alice-secret-0123456789"}}, navbench,
+                        "application/json");
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->status, 429) << refused->body;
+  EXPECT_EQ(refused->get_header_value("Content-Type"), "application/problem+json");
+  EXPECT_FALSE(refused->get_header_value("Retry-After").empty());
+  auto other = c.Post("/api/v1/navbench", {{"Authorization", "Bearer bob-secret-0123456789"}}, navbench,
+                      "application/json");
+  ASSERT_TRUE(other);
+  EXPECT_EQ(other->status, 202) << "another key still gets a slot: " << other->body;
+  ASSERT_TRUE(jobs.cancel(Json::parse(other->body)["id"], "bob", false));
+
+  // A finished job frees its slot.
+  release = true;
+  for (const auto& id : held) ASSERT_TRUE(jobs.wait(id, std::chrono::seconds(10)));
+  bool again = false;
+  for (int i = 0; i < 100 && !again; ++i) {
+    again = jobs.submit("tiny", Json::object(), "alice", blocking).has_value();
+    if (!again) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_TRUE(again);
+}
+
 TEST(Jobs, UnknownJobsAndBadQueriesAreProblems) {
   TestServer s;
   auto c = s.client();

@@ -100,6 +100,23 @@ TEST(Scenarios, BadRequestsNameTheirFields) {
   }
 }
 
+// Issue 14 #11: a world of 1e308 metres was accepted and stored with the scenario.
+TEST(Scenarios, AnInlineWorldBeyondTheCoordinateRangeIs422) {
+  TestServer s;
+  auto c = s.client();
+  const Json world = {
+      {"name", "huge"},
+      {"zones",
+       Json::array({{{"name", "hall"},
+                     {"type", "hall"},
+                     {"polygon", Json::array({Json::array({0, 0}), Json::array({1e308, 0}),
+                                              Json::array({1e308, 1e308}), Json::array({0, 1e308})})}}})}};
+  auto r = post(c, "/api/v1/scenarios", {{"prompt", "people walk through the hall"}, {"world", world}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 422) << r->body;
+  EXPECT_EQ(Json::parse(r->body)["errors"][0]["pointer"], "/world/zones/0/polygon/1") << r->body;
+}
+
 TEST(Scenarios, AgentCountsAndDurationsAreBoundedByConfig) {
   ServerConfig config;
   config.max_scenario_agents = 10;
@@ -185,8 +202,10 @@ TEST(Scenarios, AnLlmJobRecordsItsPromptsTokensAndCacheHits) {
   config.llm.base_url = llm.base_url();
   config.llm.model = "scripted";
   config.llm.max_retries = 0;
+  config.api_keys = parse_api_keys("alice:alice-secret-0123456789,bob:bob-secret-0123456789").value();
   TestServer s(config);
   auto c = s.client();
+  c.set_default_headers({{"Authorization", "Bearer alice-secret-0123456789"}});
   // A stored world, so that only the scenario program comes from the model.
   auto w = post(c, "/api/v1/worlds", {{"prompt", "a clinic"}, {"seed", 1}, {"domain", "hospital"}});
   ASSERT_EQ(w->status, 201) << w->body;
@@ -220,6 +239,17 @@ TEST(Scenarios, AnLlmJobRecordsItsPromptsTokensAndCacheHits) {
   EXPECT_EQ(job["llm"]["totals"]["prompt_tokens"], 900);
   EXPECT_EQ(job["llm"]["calls"][0]["artifact"], "scenario_program");
   EXPECT_THAT(job["llm"]["calls"][0]["prompt"].dump(), HasSubstr("a nurse waits while visitors walk in"));
+  // Issue 14 #12: the prompts and answers are the author's; another key, or none, sees the
+  // counts only (a server without keys authenticates nobody, so there nobody sees them).
+  for (const char* other : {"Bearer bob-secret-0123456789", ""}) {
+    auto peek = s.client();
+    if (*other) peek.set_default_headers({{"Authorization", other}});
+    const Json seen = Json::parse(peek.Get(("/api/v1/jobs/" + job["id"].get<std::string>()).c_str())->body);
+    EXPECT_EQ(seen["llm"]["totals"]["prompt_tokens"], 900);
+    EXPECT_TRUE(seen["llm"]["calls"][0]["prompt"].is_null()) << other;
+    EXPECT_TRUE(seen["llm"]["calls"][0]["response"].is_null()) << other;
+    EXPECT_THAT(seen.dump(), ::testing::Not(HasSubstr("visitors walking in"))) << other;
+  }
   const Json card =
       Json::parse(c.Get(("/api/v1/cards/" + job["result"]["card_id"].get<std::string>()).c_str())->body);
   EXPECT_EQ(card["generator"]["name"], "llm");
@@ -236,6 +266,31 @@ TEST(Scenarios, AnLlmJobRecordsItsPromptsTokensAndCacheHits) {
       Json::parse(c.Get(("/api/v1/cards/" + again["result"]["card_id"].get<std::string>()).c_str())->body);
   EXPECT_EQ(card2["provenance"]["program"]["llm"]["cache_hits"], 1);
   EXPECT_EQ(card2["trajectory_log"]["sha256"], card["trajectory_log"]["sha256"]);
+}
+
+// Issue 14 #12: the model a request names was passed to the endpoint unchecked (any model it
+// serves, at the operator's cost); now it must be allowed, by default the configured one alone.
+TEST(Scenarios, ARequestedModelMustBeAllowed) {
+  socsim::testing::ScriptedServer llm;
+  ServerConfig config;
+  config.llm.base_url = llm.base_url();
+  config.llm.model = "scripted";
+  config.llm.max_retries = 0;
+  TestServer s(config);
+  auto c = s.client();
+  const Json base = {{"prompt", "people walk through an office"}, {"generator", "llm"}, {"duration_s", 2}};
+  for (const char* path : {"/api/v1/scenarios", "/api/v1/worlds"}) {
+    Json body = base;
+    if (std::string(path) == "/api/v1/worlds") body.erase("duration_s");
+    body["model"] = "gpt-4o-expensive";
+    auto r = post(c, path, body);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 422) << path << ": " << r->body;
+    EXPECT_EQ(Json::parse(r->body)["errors"][0]["pointer"], "/model") << r->body;
+  }
+  auto jobs = Json::parse(c.Get("/api/v1/jobs")->body);
+  EXPECT_TRUE(jobs["items"].empty()) << "nothing is queued for a refused model";
+  EXPECT_EQ(llm.count(), 0);
 }
 
 }  // namespace

@@ -163,6 +163,56 @@ TEST(Worlds, BadRequestsNameTheirFields) {
   EXPECT_EQ(Json::parse(llm->body)["errors"][0]["pointer"], "/generator");
 }
 
+// Issue 14 #1: an explicit null was read as "absent" by the field reader but as "given" by the
+// presence check, so the prompt of an empty optional was read (a crash, or a bogus "prompt too long").
+TEST(Worlds, NullPromptOrSceneGraphIsRefusedNotCrashed) {
+  TestServer s;
+  auto c = s.client();
+  for (const Json& body : {Json{{"prompt", nullptr}}, Json{{"scene_graph", nullptr}},
+                           Json{{"prompt", nullptr}, {"scene_graph", nullptr}, {"seed", 3}}}) {
+    auto r = post(c, "/api/v1/worlds", body);
+    ASSERT_TRUE(r) << "server died on " << body.dump();
+    EXPECT_EQ(r->status, 422) << body.dump() << " → " << r->body;
+    EXPECT_THAT(r->body, HasSubstr("give scene_graph (rooms and adjacency) or prompt"));
+    EXPECT_THAT(r->body, ::testing::Not(HasSubstr("too long")));
+  }
+  EXPECT_EQ(c.Get("/api/v1/health")->status, 200);
+}
+
+// Issue 14 #11: coordinates of 1e200 passed every check and made GEOS fail inside the validation
+// (500); every coordinate is now bounded to ±100 km (world::kMaxCoordinate) and refused with 422.
+TEST(Worlds, CoordinatesBeyondTheDocumentedRangeAre422WithThePointer) {
+  TestServer s;
+  auto c = s.client();
+  for (const std::string e : {"1e200", "1e308", "-1e300", "100001"}) {
+    const std::string yaml =
+        "name: \"far\"\nzones:\n  - {name: \"lobby\", type: \"lobby\", polygon: [[0, 0], [" + e + ", 0], [" +
+        e + ", " + e + "], [0, " + e + "]]}\n";
+    auto r = c.Post("/api/v1/worlds/validate", yaml, "application/yaml");
+    ASSERT_TRUE(r) << e;
+    EXPECT_EQ(r->status, 422) << e << ": " << r->body;
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/problem+json");
+    EXPECT_EQ(Json::parse(r->body)["errors"][0]["pointer"], "/zones/0/polygon/1") << r->body;
+    EXPECT_THAT(r->body, HasSubstr("within ±100000 m"));
+  }
+  const std::string door_far = R"(name: "door"
+zones:
+  - {name: "lobby", type: "lobby", polygon: [[0, 0], [6, 0], [6, 6], [0, 6]]}
+doors:
+  - {name: "entrance", pose: [3, 1e250], width: 1.8, connects: ["lobby"]}
+)";
+  auto r = c.Post("/api/v1/worlds/validate", door_far, "application/yaml");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 422) << r->body;
+  EXPECT_EQ(Json::parse(r->body)["errors"][0]["pointer"], "/doors/0/pose") << r->body;
+  // 100 km is accepted.
+  const std::string edge = R"(name: "edge"
+zones:
+  - {name: "lobby", type: "lobby", polygon: [[99990, 0], [100000, 0], [100000, 10], [99990, 10]]}
+)";
+  EXPECT_EQ(c.Post("/api/v1/worlds/validate", edge, "application/yaml")->status, 200);
+}
+
 TEST(Worlds, ListIsPaginatedNewestFirst) {
   TestServer s;
   auto c = s.client();

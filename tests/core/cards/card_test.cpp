@@ -92,6 +92,21 @@ TEST(Card, TamperedExportIsRejectedByItsHash) {
   EXPECT_EQ(pointers(back.error()), std::vector<std::string>{"/card/content_hash"});
 }
 
+// Found by tests/server/bad_input_property_test.cpp: an unknown key beside the card was ignored.
+TEST(Card, ExportWithAnUnknownTopLevelFieldIsRefused) {
+  Card card;
+  card.id = new_card_id();
+  card.content = parse_card_content(sample(), {}).value();
+  card.author = "alice";
+  card.created_at = "2026-01-01T00:00:00.000Z";
+  card.content_hash = content_hash(card.content, card.version, card.parent_id);
+  Json doc = Json::parse(export_document(card));
+  doc["signature"] = "trust me";
+  auto back = parse_export_document(doc.dump(), {});
+  ASSERT_FALSE(back);
+  EXPECT_EQ(pointers(back.error()), std::vector<std::string>{"/signature"});
+}
+
 TEST(Card, IdsAreWellFormedAndDistinct) {
   const auto a = new_card_id(), b = new_card_id();
   EXPECT_TRUE(is_card_id(a));

@@ -142,14 +142,27 @@ TEST_F(CatalogueTest, ExportImportIntoAnotherDatabaseKeepsHashAndBytes) {
   testing::TempDir other_dir;
   auto other_store = store::Store::open(other_dir.file("other.db")).value();
   CardCatalogue other(*other_store);
-  auto imported = other.import_card(doc);
+  auto imported = other.import_card(doc, "alice");
   ASSERT_TRUE(imported) << imported.error().message();
   EXPECT_TRUE(imported->created);
   EXPECT_EQ(imported->card.content_hash, c.content_hash);
   EXPECT_EQ(other.export_card(c.id).value(), doc);
-  auto again = other.import_card(doc);
+  auto again = other.import_card(doc, "alice");
   ASSERT_TRUE(again);
   EXPECT_FALSE(again->created) << "importing the same card twice is a no-op";
+}
+
+TEST_F(CatalogueTest, ImportRecordsTheImporterAsAuthorNotTheFile) {
+  auto c = catalogue_->create(content("Queue", "a queue", {}), "alice").value();
+  const std::string doc = catalogue_->export_card(c.id).value();
+  testing::TempDir other_dir;
+  auto other_store = store::Store::open(other_dir.file("other.db")).value();
+  CardCatalogue other(*other_store);
+  auto imported = other.import_card(doc, "bob");
+  ASSERT_TRUE(imported) << imported.error().message();
+  EXPECT_EQ(imported->card.author, "bob");
+  EXPECT_EQ(imported->card.content_hash, c.content_hash);
+  EXPECT_EQ(other.get(c.id)->author, "bob");
 }
 
 TEST_F(CatalogueTest, ImportOfADifferentCardUnderAnExistingIdConflicts) {
@@ -157,7 +170,7 @@ TEST_F(CatalogueTest, ImportOfADifferentCardUnderAnExistingIdConflicts) {
   Card forged = c;
   forged.content.title = "B";
   forged.content_hash = content_hash(forged.content, forged.version, forged.parent_id);
-  auto r = catalogue_->import_card(export_document(forged));
+  auto r = catalogue_->import_card(export_document(forged), "alice");
   ASSERT_FALSE(r);
   EXPECT_EQ(r.error().code, ErrorCode::kConflict);
   EXPECT_EQ(catalogue_->get(c.id)->content.title, "A");

@@ -14,19 +14,14 @@
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/store/store.hpp"
 #include "core/world/world_yaml.hpp"
+#include "tests/core/crowd/crowd_fixtures.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::crowd {
 namespace {
+using fixtures::read;
 
 using ::testing::HasSubstr;
-
-std::string read(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 world::World clinic() {
   auto w = world::world_from_yaml(

@@ -383,6 +383,32 @@ TEST_F(BtTreeTest, IncludesResolveRelativeToTheFile) {
   std::filesystem::remove_all(dir);
 }
 
+// Found while writing tests/fuzz (bt_xml): 2.4 KB of trees that each use the next twice made
+// 2^25 nodes per instance (the target and every agent of a run hung), and a long chain of SubTrees
+// recursed as deep as the chain in the checks and in instantiate().
+TEST_F(BtTreeTest, InstancesThatExpandTooFarAreRefusedBeforeInstantiation) {
+  auto chain = [](int trees, int uses) {
+    std::string xml = "<root BTCPP_format=\"4\" main_tree_to_execute=\"T0\">";
+    for (int i = 0; i < trees; ++i) {
+      xml += "<BehaviorTree ID=\"T" + std::to_string(i) + "\"><Sequence>";
+      for (int u = 0; u < uses; ++u) xml += "<SubTree ID=\"T" + std::to_string(i + 1) + "\"/>";
+      xml += "</Sequence></BehaviorTree>";
+    }
+    return xml + "<BehaviorTree ID=\"T" + std::to_string(trees) + "\"><AlwaysSuccess/></BehaviorTree></root>";
+  };
+  const Error doubling = error_of(chain(24, 2));
+  EXPECT_EQ(doubling.code, ErrorCode::kValidation);
+  EXPECT_THAT(doubling.detail, HasSubstr("BehaviorTree 'T0' expands to more than 10000 nodes"));
+  EXPECT_THAT(error_of(chain(20'000, 1)).detail, HasSubstr("nests SubTrees deeper than 256 levels"));
+  // Within the limits: 2^10 copies of the leaf, 11 trees nested.
+  auto fits = BtDocument::parse(chain(10, 2), registry);
+  ASSERT_TRUE(fits) << fits.error().message();
+  EXPECT_EQ(fits->instantiate().tick(0.0), kSuccess);
+  BtLoadOptions small;
+  small.max_instance_nodes = 100;
+  EXPECT_THAT(error_of(chain(10, 2), small).detail, HasSubstr("expands to more than 100 nodes"));
+}
+
 TEST_F(BtTreeTest, LoadErrorsNameTheLineAndTheProblem) {
   struct Case {
     std::string body;

@@ -1,6 +1,7 @@
 // CrowdSimulation: validation of inputs, LightSFM's force terms, determinism (seed and thread
 // count), agreement with the O(N²) reference, and the hard guarantees: no wall crossing, no NaN.
 #include "core/crowd/crowd_simulation.hpp"
+#include "tests/core/crowd/crowd_fixtures.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -13,15 +14,10 @@
 
 namespace socsim::crowd {
 namespace {
+using fixtures::make;
 
 using ::testing::Contains;
 using ::testing::Field;
-
-CrowdSimulation make(SimulationConfig config = {}) {
-  auto sim = CrowdSimulation::create(config);
-  EXPECT_TRUE(sim) << sim.error().message();
-  return std::move(*sim);
-}
 
 AgentId add(CrowdSimulation& sim, Vec2 p, Vec2 v = {}, double speed = 1.3, std::int64_t group = -1) {
   AgentSpec spec;

@@ -12,15 +12,11 @@
 
 #include "core/common/rng.hpp"
 #include "core/crowd/crowd_simulation.hpp"
+#include "tests/core/crowd/crowd_fixtures.hpp"
 
 namespace socsim::crowd {
 namespace {
-
-CrowdSimulation make(SimulationConfig config = {}) {
-  auto sim = CrowdSimulation::create(config);
-  EXPECT_TRUE(sim) << sim.error().message();
-  return std::move(*sim);
-}
+using fixtures::make;
 
 AgentId walker(CrowdSimulation& sim, Vec2 p, std::vector<Goal> goals,
                std::optional<double> speed = std::nullopt) {

@@ -12,24 +12,12 @@
 
 #include "core/crowd/scenario_runner.hpp"
 #include "core/world/world_yaml.hpp"
+#include "tests/core/crowd/crowd_fixtures.hpp"
 
 namespace socsim::crowd {
 namespace {
-
-RunnerOptions options(std::uint64_t seed, unsigned threads = 1, std::filesystem::path base = {}) {
-  RunnerOptions o;
-  o.seed = seed;
-  o.threads = threads;
-  o.base_dir = std::move(base);
-  return o;
-}
-
-std::string read(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using fixtures::options;
+using fixtures::read;
 
 const std::filesystem::path kExamples = std::filesystem::path(SOCSIM_SOURCE_DIR) / "schemas/examples";
 

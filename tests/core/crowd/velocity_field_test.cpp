@@ -12,17 +12,11 @@
 #include "core/crowd/velocity_field.hpp"
 #include "core/geometry/planar.hpp"
 #include "core/world/world_yaml.hpp"
+#include "tests/core/crowd/crowd_fixtures.hpp"
 
 namespace socsim::crowd {
 namespace {
-
-RunnerOptions options(std::uint64_t seed, unsigned threads = 1, std::filesystem::path base = {}) {
-  RunnerOptions o;
-  o.seed = seed;
-  o.threads = threads;
-  o.base_dir = std::move(base);
-  return o;
-}
+using fixtures::options;
 
 using ::testing::HasSubstr;
 

@@ -1,5 +1,6 @@
 // Plain-double plane geometry: distances, areas, containment and frame transforms.
 #include "core/geometry/planar.hpp"
+#include "core/geometry/hull.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -65,6 +66,27 @@ TEST(Planar, EdgesCloseTheRing) {
   const auto e = edges(kSquare.outer);
   ASSERT_EQ(e.size(), 4u);
   EXPECT_EQ(e.back(), (Segment{{0, 4}, {0, 0}}));
+}
+
+// The building diagonal of compliance reports was a loop over every pair of vertices (6.4e9
+// distances for eight 10k-vertex zones); diameter() must give exactly the same maximum.
+TEST(Planar, DiameterIsTheLargestPairwiseDistance) {
+  const auto brute = [](const std::vector<Point>& pts) {
+    double best = 0.0;
+    for (const Point& p : pts)
+      for (const Point& q : pts) best = std::max(best, distance(p, q));
+    return best;
+  };
+  std::vector<Point> circle, jagged, line;
+  for (int i = 0; i < 500; ++i) {
+    const double a = 2 * std::numbers::pi * i / 500;
+    circle.push_back({10 * std::cos(a), 7 * std::sin(a)});
+    jagged.push_back({i * 0.01, (i % 2) * 0.5 + std::sin(i * 0.37)});
+    line.push_back({i * 0.5, i * 0.25});
+  }
+  for (const auto* pts : {&circle, &jagged, &line}) EXPECT_EQ(diameter(*pts), brute(*pts));
+  EXPECT_EQ(diameter(std::vector<Point>{{1, 1}}), 0.0);
+  EXPECT_EQ(diameter(std::vector<Point>{{0, 0}, {3, 4}, {3, 4}}), 5.0);
 }
 
 }  // namespace

@@ -45,6 +45,10 @@ TEST(HouseholdDocument, BadRequestsNameTheirFields) {
   auto neither = household_request_from_json(Json{{"days", 3}});
   ASSERT_FALSE(neither);
   EXPECT_TRUE(pointers(neither.error()).count("/rooms"));
+  // An explicit null is no value (issue 14 #1): {"rooms": null} asks for neither rooms nor a house.
+  auto null_rooms = household_request_from_json(Json{{"rooms", nullptr}, {"days", 3}});
+  ASSERT_FALSE(null_rooms);
+  EXPECT_TRUE(pointers(null_rooms.error()).count("/rooms"));
   auto ok = household_request_from_json(
       Json{{"rooms", 5}, {"residents", 2}, {"days", 3}, {"start_weekday", "monday"}, {"seed", 7}});
   ASSERT_TRUE(ok) << ok.error().message();

@@ -131,6 +131,23 @@ TEST(ProcThor, BrokenHousesAreRefusedWithPointers) {
   EXPECT_FALSE(import_procthor(Json::array(), knowledge()));
 }
 
+// Found by tests/fuzz (procthor_json): a number where a room, wall, door or point belongs threw
+// nlohmann's type_error from erase() (a 500 at POST /households) or was silently skipped.
+TEST(ProcThor, ElementsThatAreNotObjectsAreRefusedWithPointers) {
+  Json j = Json::parse(R"({"rooms":[{"id":"r","roomType":"Kitchen","floorPolygon":[1,2,3]}, 7],
+                           "walls":[5, {"id":"w","roomId":"r","polygon":[[0,0,0],{"x":1,"y":2,"z":0}]}],
+                           "doors":["d", {"id":"d","room0":"r","room1":"r","wall0":"w","wall1":"w",
+                                          "holePolygon":[1,{"x":1,"y":2}]}],
+                           "objects":[]})");
+  auto h = import_procthor(j, knowledge());
+  ASSERT_FALSE(h);
+  std::set<std::string> ptrs;
+  for (const auto& f : h.error().errors) ptrs.insert(f.pointer);
+  for (const char* p : {"/rooms/0/floorPolygon/0", "/rooms/0/floorPolygon/2", "/rooms/1", "/walls/0",
+                        "/walls/1/polygon/0", "/doors/0", "/doors/1/holePolygon/0"})
+    EXPECT_TRUE(ptrs.count(p)) << p;
+}
+
 TEST(ProcThor, GeneratedHousesRoundTripToo) {
   auto h = generate_house({8, std::nullopt, 4}, knowledge());
   ASSERT_TRUE(h);

@@ -94,12 +94,29 @@ TEST(LlmConfig, UrlsOtherThanPlainHttpEndpointsAreRefused) {
   }
 }
 
+// Issue 14 #8: a hung endpoint held a job worker for up to 600 s by default.
+TEST(LlmConfig, DefaultsHoldAWorkerAMinuteAtMost) {
+  const LlmConfig c;
+  EXPECT_LE(c.deadline_ms, 60000);
+  EXPECT_LE(c.attempt_timeout_ms, c.deadline_ms);
+  auto env = LlmConfig::from_environment([](const char*) -> const char* { return nullptr; });
+  ASSERT_TRUE(env.has_value());
+  EXPECT_LE(env->deadline_ms, 60000);
+}
+
 TEST(LlmConfig, ResolvesPerRequestModelNames) {
   LlmConfig c;
   c.model = "default-model";
   EXPECT_EQ(*c.resolve_model(std::nullopt), "default-model");
-  EXPECT_EQ(*c.resolve_model("llama3.1:8b"), "llama3.1:8b");
+  EXPECT_EQ(*c.resolve_model("default-model"), "default-model");
+  // Issue 14 #12: without an allow-list only the configured model may be named.
+  auto other = c.resolve_model("llama3.1:8b");
+  ASSERT_FALSE(other.has_value());
+  EXPECT_EQ(other.error().errors.at(0).pointer, "/model");
+  EXPECT_THAT(other.error().errors.at(0).message, HasSubstr("default-model"));
   EXPECT_EQ(*c.resolve_embedding_model(std::nullopt), "default-model");
+  c.allowed_models = {"default-model", "llama3.1:8b"};
+  EXPECT_EQ(*c.resolve_model("llama3.1:8b"), "llama3.1:8b");
   EXPECT_FALSE(c.resolve_model("").has_value());
   EXPECT_FALSE(c.resolve_model("a b").has_value());
   EXPECT_FALSE(c.resolve_model(std::string(201, 'm')).has_value());

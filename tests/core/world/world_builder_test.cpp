@@ -55,6 +55,22 @@ TEST(WorldBuilder, DerivedWallsAreZoneBoundariesMinusTheDoorOpening) {
   EXPECT_NEAR(geometry::length(d.opening), 1.0, 1e-12);
 }
 
+// Issue 14 #11: a vertex at 1e200 m passed and made GEOS fail on overflowing arithmetic.
+TEST(WorldBuilder, CoordinatesAreBoundedToAHundredKilometres) {
+  for (double far : {1e200, -1e308, kMaxCoordinate * 1.01}) {
+    WorldBuilder b;
+    b.add_zone(Zone{"hall", "hall", "", {{{0, 0}, {far, 0}, {far, 10}, {0, 10}}, {}}});
+    b.add_door(DoorSpec{"d", Pose2{5, 1e300, 0}, 1.0, {"hall"}});
+    auto w = b.build();
+    ASSERT_FALSE(w);
+    EXPECT_THAT(error_at(w.error(), "/zones/0/polygon/1")->message, HasSubstr("within ±100000 m"));
+    EXPECT_TRUE(error_at(w.error(), "/doors/0/pose"));
+  }
+  WorldBuilder edge;
+  edge.add_zone(Zone{"hall", "hall", "", {{{-kMaxCoordinate, 0}, {kMaxCoordinate, 0}, {0, 10}}, {}}});
+  EXPECT_TRUE(edge.build()) << "±100 km itself is inside the range";
+}
+
 TEST(WorldBuilder, DerivedWallsTakeTheZoneMaterialAsStyle) {
   auto b = testing::row_of_rooms(2);
   const World w = b.build().value();

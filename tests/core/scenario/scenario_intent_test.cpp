@@ -1,0 +1,318 @@
+// ScenarioIntent, construction by construction: numbers, products, ranges, exceptions, negation,
+// coordination, relative clauses and several clauses with different places; open vocabulary
+// (WordNet roles and venues the lexicon lacks), robots, background, warnings, spans, determinism,
+// and every fixture's interpretation against schemas/intent.schema.json.
+#include "core/scenario/scenario_intent.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/common/json_schema.hpp"
+#include "tests/core/scenario/prompt_facts.hpp"
+
+namespace socsim::scenario {
+namespace {
+
+ScenarioIntent read(const std::string& prompt) {
+  auto i = interpret_prompt(prompt);
+  EXPECT_TRUE(i.has_value()) << (i ? "" : i.error().message());
+  return i ? *i : ScenarioIntent{};
+}
+
+const PeopleGroup* group(const ScenarioIntent& i, const std::string& role) {
+  for (const PeopleGroup& g : i.groups)
+    if (facts::role_matches(role, g.role)) return &g;
+  return nullptr;
+}
+
+std::string roles(const ScenarioIntent& i) {
+  std::string out;
+  for (const PeopleGroup& g : i.groups) out += g.role + "=" + facts::describe(g.count) + " ";
+  return out;
+}
+
+void expect_exact(const ScenarioIntent& i, const std::string& role, double n) {
+  const PeopleGroup* g = group(i, role);
+  ASSERT_NE(g, nullptr) << role << " in " << i.prompt << ": " << roles(i);
+  EXPECT_EQ(g->count.kind, CountKind::kExact) << role << " in " << i.prompt;
+  EXPECT_EQ(g->count.value, n) << role << " in " << i.prompt;
+}
+
+TEST(ScenarioIntent, Numbers) {
+  expect_exact(read("Exactly forty people attend a seminar at the university."), "person", 40);
+  expect_exact(read("Two hundred and fifty pupils gather in the hall."), "pupil", 250);
+  const auto i = read("About 1,500 fans leave the arena.");
+  EXPECT_EQ(group(i, "fan")->count.kind, CountKind::kApprox);
+  expect_exact(read("A dozen nurses walk down the corridor."), "nurse", 12);
+  expect_exact(read("Seventy-five children play in the school playground."), "child", 75);
+}
+
+TEST(ScenarioIntent, Products) {
+  expect_exact(read("Two classes of 25 pupils each line up in the schoolyard."), "pupil", 50);
+  expect_exact(read("Three checkouts are open and each has a queue of six customers."), "customer", 18);
+  expect_exact(read("Three ticket machines in the hall, each with a queue of five people."), "person", 15);
+  expect_exact(read("A queue of 20 children and their parents, one parent per child."), "parent", 20);
+  expect_exact(read("A gallery with a guard at each of its 4 doors."), "guard", 4);
+  expect_exact(read("A plant with 3 production lines and four operators per line."), "operator", 12);
+  expect_exact(read("Sports hall: two teams of five players each warm up."), "player", 10);
+}
+
+TEST(ScenarioIntent, Ranges) {
+  const auto i = read("Between 20 and 30 visitors crowd the doorway.");
+  const PeopleGroup* g = group(i, "visitor");
+  ASSERT_NE(g, nullptr);
+  EXPECT_EQ(g->count.kind, CountKind::kRange);
+  EXPECT_EQ(g->count.min, 20);
+  EXPECT_EQ(g->count.max, 30);
+  const auto j = read("A coffee shop with 10-15 people waiting and a few baristas.");
+  EXPECT_EQ(group(j, "person")->count.max, 15);
+  EXPECT_EQ(group(j, "barista")->count.min, 3);
+  EXPECT_EQ(group(j, "barista")->count.max, 5);
+}
+
+TEST(ScenarioIntent, Exceptions) {
+  const auto i = read("The hospital ward is empty except for one security guard doing his rounds.");
+  ASSERT_EQ(i.groups.size(), 1u) << roles(i);
+  expect_exact(i, "security guard", 1);
+  EXPECT_EQ(i.groups[0].normalized_role, "security");
+  EXPECT_TRUE(i.exclusivity.exclusive);
+  EXPECT_FALSE(i.background);
+  const auto j = read("Everyone has left the office except two cleaners.");
+  ASSERT_EQ(j.groups.size(), 1u) << roles(j);
+  expect_exact(j, "cleaner", 2);
+}
+
+TEST(ScenarioIntent, Negation) {
+  const auto i =
+      read("At the emergency department nobody is waiting; a single triage nurse sits at the desk.");
+  ASSERT_EQ(i.groups.size(), 1u) << roles(i);
+  expect_exact(i, "nurse", 1);
+  EXPECT_TRUE(i.exclusivity.exclusive);
+  const auto j = read("Two library assistants reshelve books; no visitors.");
+  ASSERT_EQ(j.groups.size(), 1u) << roles(j);
+  EXPECT_EQ(j.exclusivity.excluded_roles, std::vector<std::string>{"visitor"});
+  const auto k = read("A waiting room with eight patients but without any staff.");
+  ASSERT_EQ(k.groups.size(), 1u) << roles(k);
+  EXPECT_EQ(k.exclusivity.excluded_roles, std::vector<std::string>{"staff"});
+}
+
+TEST(ScenarioIntent, Coordination) {
+  const auto i = read("Two nurses and three doctors chat by the coffee machine.");
+  ASSERT_EQ(i.groups.size(), 2u) << roles(i);
+  expect_exact(i, "nurse", 2);
+  expect_exact(i, "doctor", 3);
+  EXPECT_EQ(i.total().value, 5);
+  const auto j = read("A consultant, two junior doctors and a medical student walk together.");
+  ASSERT_EQ(j.groups.size(), 3u) << roles(j);
+  expect_exact(j, "consultant", 1);
+  expect_exact(j, "doctor", 2);
+  expect_exact(j, "student", 1);
+  for (const PeopleGroup& g : j.groups) EXPECT_TRUE(g.together) << g.role;
+  // A rarer sense of a word (a cleaner is first a substance in WordNet) is a person next to people.
+  const auto k = read("Only the cleaner and one security guard are left.");
+  ASSERT_EQ(k.groups.size(), 2u) << roles(k);
+}
+
+TEST(ScenarioIntent, RelativeClauses) {
+  const auto i = read("The nurse who works at the reception greets two visitors who arrived late.");
+  ASSERT_EQ(i.groups.size(), 2u) << roles(i);
+  expect_exact(i, "nurse", 1);
+  expect_exact(i, "visitor", 2);
+  const auto j = read(
+      "Patients who are waiting for their results sit in the waiting room; there are nine of them, "
+      "plus one receptionist.");
+  ASSERT_EQ(j.groups.size(), 2u) << roles(j);
+  expect_exact(j, "patient", 9);
+  expect_exact(j, "receptionist", 1);
+}
+
+TEST(ScenarioIntent, SeveralClausesWithDifferentPlaces) {
+  const auto i = read("At the office, 3 people queue at the microwave while 4 others chat near the windows.");
+  ASSERT_EQ(i.groups.size(), 2u) << roles(i);
+  EXPECT_EQ(i.groups[0].count.value, 3);
+  EXPECT_EQ(i.groups[0].place, "at the microwave");
+  EXPECT_EQ(i.groups[1].count.value, 4);
+  EXPECT_EQ(i.groups[1].place, "near the windows");
+  EXPECT_EQ(i.total().value, 7);
+  const auto j =
+      read("At platform 2, 70 passengers board a train, and at platform 5 another 30 passengers wait.");
+  ASSERT_EQ(j.groups.size(), 2u) << roles(j);
+  EXPECT_EQ(j.total().value, 100);
+}
+
+TEST(ScenarioIntent, OpenVocabularyRolesAndVenues) {
+  const auto i = read("A quiet library afternoon: one librarian at the issue desk and six students reading.");
+  ASSERT_TRUE(i.venue);
+  EXPECT_EQ(i.venue->type, "library");
+  expect_exact(i, "librarian", 1);
+  EXPECT_EQ(group(i, "librarian")->program_role, "librarian");
+  // WordNet hypernyms: an inn is a hotel, a brasserie a restaurant; a docent is a person.
+  EXPECT_EQ(read("A quiet evening at the inn with two guests.").venue->type, "hotel");
+  EXPECT_EQ(read("Twelve diners at the brasserie.").venue->type, "restaurant");
+  expect_exact(read("In the museum, three docents take a coffee break."), "docent", 3);
+  // The nearest known role keeps the user's word.
+  const auto g = read("Two police officers stand at the entrance.");
+  EXPECT_EQ(group(g, "police officer")->normalized_role, "security");
+  // Venues outside the old list keep their kind and map to the nearest building type for worlds.
+  const auto s = read("Rush hour at the central train station.");
+  EXPECT_EQ(s.venue->type, "train_station");
+  EXPECT_FALSE(s.venue->building_type.empty());
+}
+
+TEST(ScenarioIntent, WorldRequirements) {
+  const auto i =
+      read("Supermarket with 2 exits and 4 checkouts, 35 customers shopping around a music system.");
+  std::map<std::string, double> features;
+  for (const Feature& f : i.world.features) features[f.head] = f.count.value;
+  EXPECT_EQ(features["exit"], 2);
+  EXPECT_EQ(features["checkout"], 4);
+  const auto j = read("Guests evacuate through the front door and the back door.");
+  ASSERT_EQ(j.world.features.size(), 1u);
+  EXPECT_EQ(j.world.features[0].count.value, 2);
+  const auto k = read("Fifteen friends dance around the music system in the living room.");
+  ASSERT_FALSE(k.world.objects.empty());
+  EXPECT_EQ(k.world.objects[0].name, "music system");
+  ASSERT_FALSE(k.world.rooms.empty());
+}
+
+TEST(ScenarioIntent, RobotsBackgroundAndWarnings) {
+  const auto i = read("A delivery robot drives through the hospital lobby among about 40 visitors.");
+  ASSERT_EQ(i.robots.size(), 1u);
+  EXPECT_EQ(i.robots[0].count.value, 1);
+  ASSERT_EQ(i.groups.size(), 1u) << roles(i);
+  const auto j = read("A busy hospital corridor with a dozen nurses and lots of other people.");
+  EXPECT_TRUE(j.background);
+  ASSERT_EQ(j.groups.size(), 1u) << roles(j);
+  const auto k = read("A busy crowd of about 250 shoppers strolls through the mall.");
+  EXPECT_FALSE(k.background);  // the crowd is counted: "busy" describes it
+  const auto z = read("Three zeppelins float over the stadium.");
+  EXPECT_TRUE(z.groups.empty());
+  bool warned = false;
+  for (const IntentWarning& w : z.warnings)
+    warned = warned || w.message.find("zeppelins") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
+TEST(ScenarioIntent, ZeroMoreAndOddCounts) {
+  const auto i = read("0 people in the office.");
+  EXPECT_TRUE(i.groups.empty());
+  EXPECT_TRUE(i.exclusivity.exclusive);
+  EXPECT_EQ(read("Ten people and ten more people.").total().value, 20);
+  const auto j = read("Twenty-odd students and 40-odd parents.");
+  EXPECT_EQ(group(j, "student")->count.kind, CountKind::kApprox);
+  EXPECT_EQ(group(j, "parent")->count.value, 40);
+  for (const IntentWarning& w : j.warnings)
+    EXPECT_EQ(w.message.find("English"), std::string::npos) << w.message;
+}
+
+TEST(ScenarioIntent, OtherLanguagesAreSaidToBe) {
+  const auto i = read("Bonjour, deux infirmières attendent dans le couloir.");
+  EXPECT_TRUE(i.groups.empty());
+  bool said = false;
+  for (const IntentWarning& w : i.warnings) said = said || w.message.find("English") != std::string::npos;
+  EXPECT_TRUE(said);
+}
+
+TEST(ScenarioIntent, SpansPointAtTheWords) {
+  const std::string prompt = "In the lobby, two nurses wait near the elevator.";
+  const auto i = read(prompt);
+  ASSERT_EQ(i.groups.size(), 1u);
+  const PeopleGroup& g = i.groups[0];
+  EXPECT_EQ(prompt.substr(g.span.begin, g.span.end - g.span.begin), "two nurses");
+  EXPECT_EQ(prompt.substr(g.place_span.begin, g.place_span.end - g.place_span.begin), "near the elevator");
+  EXPECT_EQ(prompt.substr(g.count.span.begin, g.count.span.end - g.count.span.begin), "two");
+}
+
+TEST(ScenarioIntent, OddTextNeverBreaksItAndSpansStayInside) {
+  // Random sequences of tricky pieces: numbers, dashes, apostrophes, UTF-8, bare punctuation.
+  const std::vector<std::string> pieces = {"two",
+                                           "20-30",
+                                           "1,500",
+                                           "'s",
+                                           "nurses'",
+                                           "\xE2\x80\x93",
+                                           "\xE2\x80\x94",
+                                           "café",
+                                           "-",
+                                           "each",
+                                           "per",
+                                           "of",
+                                           "them",
+                                           "a",
+                                           "the",
+                                           "queue",
+                                           "of",
+                                           "per",
+                                           "except",
+                                           "no",
+                                           "nobody",
+                                           "around",
+                                           "one",
+                                           "between",
+                                           "and",
+                                           ",",
+                                           ";",
+                                           ".",
+                                           "?",
+                                           "hundred",
+                                           "dozen",
+                                           "robot",
+                                           "guard",
+                                           "exits",
+                                           "-odd",
+                                           "\xF0\x9F\x98\x80",
+                                           "",
+                                           "  ",
+                                           "9am",
+                                           "or",
+                                           "so",
+                                           "at",
+                                           "'",
+                                           "each of"};
+  std::uint64_t x = 12345;
+  for (int n = 0; n < 300; ++n) {
+    std::string prompt;
+    const int len = static_cast<int>(x % 14);
+    for (int k = 0; k < len; ++k) {
+      x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+      prompt += pieces[(x >> 33) % pieces.size()];
+      if ((x >> 20) % 3 != 0) prompt += " ";
+    }
+    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+    auto i = interpret_prompt(prompt);
+    ASSERT_TRUE(i.has_value()) << prompt;
+    for (const PeopleGroup& g : i->groups) {
+      EXPECT_LE(g.span.begin, g.span.end) << prompt;
+      EXPECT_LE(g.span.end, prompt.size()) << prompt;
+      EXPECT_GE(g.count.value, 0) << prompt;
+    }
+    (void)to_json(*i).dump();
+  }
+}
+
+TEST(ScenarioIntent, SamePromptSameIntent) {
+  const std::string prompt =
+      "Hotel lobby: four guests check in at the front desk where two receptionists work.";
+  EXPECT_EQ(to_json(read(prompt)).dump(), to_json(read(prompt)).dump());
+}
+
+TEST(ScenarioIntent, EveryFixtureMatchesTheSchema) {
+  std::ifstream in(std::string(SOCSIM_SOURCE_DIR) + "/schemas/intent.schema.json");
+  ASSERT_TRUE(in.good());
+  auto schema = JsonSchema::compile(Json::parse(in));
+  ASSERT_TRUE(schema.has_value()) << schema.error().message();
+  for (const std::string file : {"everyday", "unseen"}) {
+    for (const auto& p :
+         facts::load(std::string(SOCSIM_SOURCE_DIR) + "/tests/fixtures/prompts/" + file + ".jsonl")) {
+      const Json j = to_json(read(p.prompt));
+      const auto errors = schema->validate(j);
+      EXPECT_TRUE(errors.empty()) << p.id << ": "
+                                  << (errors.empty() ? "" : errors[0].pointer + " " + errors[0].message);
+    }
+  }
+  EXPECT_TRUE(schema->validate(to_json(read(""))).empty());
+}
+
+}  // namespace
+}  // namespace socsim::scenario
