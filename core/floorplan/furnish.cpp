@@ -99,8 +99,9 @@ int seat_rows(Placer& p, const std::string& type, double u0, double v0, double u
 
 // Rows of shelves (or racks, machines) along u from v_start, walkway aisles between them.
 void rows_of(Placer& p, const std::string& type, const std::string& base, double v_start, double item_depth,
-             double walk, double pitch_u, int max_rows, const std::vector<std::string>& affordances) {
-  const double L = p.len(), D = p.depth();
+             double walk, double pitch_u, int max_rows, const std::vector<std::string>& affordances,
+             std::optional<double> v_end = std::nullopt) {
+  const double L = p.len(), D = v_end.value_or(p.depth());
   int row = 0;
   for (double v = v_start; v + item_depth + walk <= D - 0.3 && row < max_rows; v += item_depth + walk) {
     ++row;
@@ -128,6 +129,18 @@ void gate_line(Placer& p, double v) {
                             {"pass_gate"}});
   }
   p.keep_walkable(first);
+}
+
+// A counter against one of the room's side walls (either, at random first), else against its far
+// wall: a bar in a foyer or restaurant, where the door wall and the queue lanes leave room.
+void against_a_wall(Placer& p, Rng& rng, const std::string& type, const std::string& name,
+                    const std::vector<std::string>& affordances) {
+  const int first = rng.chance(0.5) ? 1 : 3;
+  for (int turn : {first, 4 - first}) {
+    Placer side = p.turned((p.side() + turn) % 4);
+    if (side.entity(type, name, {{side.len() / 2, side.depth()}}, kPi, affordances)) return;
+  }
+  p.entity(type, name, {{p.len() / 2, p.depth()}}, kPi, affordances);
 }
 
 void furnish_venue_room(Placer& p, const std::string& type, const FurnishingRules& rules, Rng& rng) {
@@ -166,7 +179,9 @@ void furnish_venue_room(Placer& p, const std::string& type, const FurnishingRule
       p.grid("armchair", "armchair", a->u0, a->v0, a->u1, a->v1, 1.5, 1.7, 16, 0, {"sit", "rest", "watch"});
     p.grid("table", "table", 0.6, 1.4, L - 0.6, D * 0.45 - 0.2, 2.6, 2.4, 4, 0, {"eat", "sit"});
   } else if (type == "reading_room") {
-    rows_of(p, "bookshelf", "shelf", D - 1.4, 0.4, 1.0, 1.9, 1, {"browse", "pick"});
+    // Shelving along the far wall (a free-standing row would leave its walkway behind it).
+    p.grid("bookshelf", "wall_shelf", 0.5, D - 0.5, L - 0.5, D - 0.05, 2.0, 0.45, 12, kPi,
+           {"browse", "pick"});
     if (auto a = p.roi("seating_area", "reading", 0.8, 1.6, L - 0.8, D - 2.0))
       p.grid("reading_table", "table", a->u0, a->v0, a->u1, a->v1, 2.7, 2.4, 30, 0, {"read", "sit"});
   } else if (type == "library_stacks") {
@@ -185,8 +200,7 @@ void furnish_venue_room(Placer& p, const std::string& type, const FurnishingRule
   } else if (type == "foyer") {
     p.counter_with_queue("counter", "box_office", L * (rng.chance(0.5) ? 0.25 : 0.75), D - 1.0, 3.5, false,
                          lane_w, {"serve", "sell_ticket", "queue_target"});
-    p.turned((p.side() + (rng.chance(0.5) ? 1 : 3)) % 4)
-        .entity("bar_counter", "bar", {{p.depth() / 2, L}}, kPi, {"serve", "drink"});
+    against_a_wall(p, rng, "bar_counter", "bar", {"serve", "drink"});
     p.entity("water_dispenser", "water_dispenser", {{left, 0.4}, {right, 0.4}}, 0, {"drink"});
   } else if (type == "auditorium" || type == "lecture_hall") {
     // Screen or stage at the far wall, seats in rows facing it, cross aisle by the doors.
@@ -232,8 +246,10 @@ void furnish_venue_room(Placer& p, const std::string& type, const FurnishingRule
     const double lane = std::clamp(D * 0.3, 1.5, 3.0);
     p.counter_with_queue("counter", "checkout", L * (rng.chance(0.5) ? 0.3 : 0.7), 1.8, lane, true, lane_w,
                          {"pay", "queue_target"});
+    // Shelving along the back wall, and free-standing rows between it and the queue where they fit.
+    p.grid("shelf", "wall_shelf", 0.5, D - 0.6, L - 0.5, D - 0.05, 2.0, 0.55, 8, kPi, {"browse", "pick"});
     rows_of(p, "shelf", "shelf", 1.8 + 0.7 + lane + 0.6, 0.5, std::max(1.2, rules.walkway_width), 2.0, 6,
-            {"browse", "pick"});
+            {"browse", "pick"}, D - 0.6);
   } else if (type == "food_court") {
     int counters = 0;
     for (double frac : {0.2, 0.5, 0.8})
@@ -244,8 +260,7 @@ void furnish_venue_room(Placer& p, const std::string& type, const FurnishingRule
     if (auto a = p.roi("seating_area", "seating", 0.8, 1.6, L - 0.8, std::max(2.6, D - 5.6)))
       p.grid("table", "table", a->u0, a->v0, a->u1, a->v1, 2.2, 2.3, 40, 0, {"eat", "sit"});
   } else if (type == "restaurant") {
-    p.turned((p.side() + (rng.chance(0.5) ? 1 : 3)) % 4)
-        .entity("bar_counter", "bar", {{p.depth() / 2, L}}, kPi, {"serve", "drink"});
+    against_a_wall(p, rng, "bar_counter", "bar", {"serve", "drink"});
     if (auto a = p.roi("seating_area", "seating", 0.8, 1.6, L - 0.8, D - 0.8))
       p.grid("table", "table", a->u0, a->v0, a->u1, a->v1, 2.2, 2.3, 40, 0, {"eat", "sit"});
   } else if (type == "sports_hall") {
@@ -308,9 +323,17 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
     const int wanted = type == "open_office"
                            ? std::max(1, static_cast<int>(std::floor(area / rules.area_per_desk)))
                            : std::max(1, static_cast<int>(std::floor(area / 2.0)));
-    const int n = p.grid("desk", "desk", 1.0, 1.4, L - 1.0, D - 1.0, type == "open_office" ? 1.8 : 1.3,
-                         type == "open_office" ? 2.4 : 1.6, wanted, 0, {"work", "sit"});
+    const double du = type == "open_office" ? 1.8 : 1.3, dv = type == "open_office" ? 2.4 : 1.6;
+    int n = p.grid("desk", "desk", 1.0, 1.4, L - 1.0, D - 1.0, du, dv, wanted, 0, {"work", "sit"});
     if (n > 0) p.roi("work_area", "desks", 0.8, 1.3, L - 0.8, D - 0.8, true);
+    if (n == 0) {
+      // A room too shallow for a row of desks facing its door (a long room entered from its long
+      // side): the desks run along its length instead, seen from a side wall.
+      Placer side = p.turned((p.side() + 1) % 4);
+      const double sl = side.len(), sd = side.depth();
+      n = side.grid("desk", "desk", 1.0, 1.4, sl - 1.0, sd - 1.0, du, dv, wanted, 0, {"work", "sit"});
+      if (n > 0) side.roi("work_area", "desks", 0.8, 1.3, sl - 0.8, sd - 0.8, true);
+    }
     if (type == "open_office") {
       p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}, {left, D - 0.4}}, 0,
                {"drink"});

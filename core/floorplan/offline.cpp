@@ -406,6 +406,8 @@ class Layout {
     if (corridor) {
       W = cm_up(std::max(plan_.corridor_width, m(std::max(door_w_, public_w_)) + 0.35) +
                 rng.uniform(0.0, 0.3));
+      // Never narrower than its own minimum dimension (the turning circle, 1.525 m in offices).
+      W = std::max(W, c.min_dim);
       L = std::max({length[0], length[1], 300});
       // A corridor longer than the passing-space interval is as wide as a passing space all along.
       for (const auto& k : constraints_)
