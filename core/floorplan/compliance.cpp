@@ -603,13 +603,15 @@ class Checker {
     const auto ex = exits();
     std::string names;
     for (auto i : ex) names += (names.empty() ? "" : ", ") + world_.doors()[i].name;
-    // The travel distance one exit alone would give: the best of the exits, each on its own.
-    std::optional<double> far;
-    for (auto i : ex) {
-      const double d = travel_distance({i}).first;
-      far = far ? std::min(*far, d) : d;
-    }
     const bool crowded = occupant_load_ > max_occupants + kEps;
+    // The travel distance one exit alone would give: the best of the exits, each on its own (a
+    // geodesic field per exit). Not needed when the occupant load alone asks for two exits.
+    std::optional<double> far;
+    if (!crowded)
+      for (auto i : ex) {
+        const double d = travel_distance({i}).first;
+        far = far ? std::min(*far, d) : d;
+      }
     const bool distant = far && *far > max_travel + kEps;
 
     // More exits for larger loads (IBC 2018 Table 1006.3.2: 3 from 501, 4 from 1001 occupants).
@@ -631,7 +633,9 @@ class Checker {
                      three->ref_id + ")"
                : std::string()) +
         ": " + load_words() +
-        (far ? ", " + num2(*far) + " m of travel to the best single exit" : std::string(", no exit")) +
+        (far       ? ", " + num2(*far) + " m of travel to the best single exit"
+         : crowded ? std::string(", more than one exit for the occupant load alone")
+                   : std::string(", no exit")) +
         "; decided by " + decided->ref_id;
 
     const double fraction = spread != nullptr ? spread->constraint.value : 0.0;

@@ -832,13 +832,17 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
         if (c.name == "egress_width_per_occupant") egress_short = true;
         if (c.name.rfind("exit_access_travel_distance", 0) == 0) far_room = c.element;
       }
-      if (count_feature(*world, Feature::kExit) >= target && !egress_short && far_room.empty()) break;
-      auto note = layout.add_exit(egress_short, far_room);
-      if (!note) {
-        exits_ok = false;
-        break;
+      const int have = count_feature(*world, Feature::kExit);
+      if (have >= target && !egress_short && far_room.empty()) break;
+      // The exits the count lacks are added together (one build and report for all of them).
+      for (int k = 0; k < std::max(1, target - have) && exits_ok; ++k) {
+        auto note = k == 0 ? layout.add_exit(egress_short, far_room) : layout.add_exit();
+        if (note)
+          exit_notes.push_back(*note);
+        else
+          exits_ok = false;
       }
-      exit_notes.push_back(*note);
+      if (!exits_ok) break;
       world = build();
       if (world) report = check_compliance(*world, domain, constraints, occupants);
     }
