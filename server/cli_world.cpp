@@ -93,6 +93,7 @@ int generate(const CliArgs& a) {
   if (!cs) return cli_report(cs.error());
   floorplan::OfflineOptions o;
   o.seed = request->seed;
+  o.requirements = request->requirements;
   auto plan = floorplan::generate_floor_plan(resolved->graph, *cs, o);
   if (!plan) return cli_report(plan.error());
   const std::string yaml = world::world_to_yaml(plan->world);

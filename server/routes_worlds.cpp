@@ -198,6 +198,7 @@ void world_routes(Router& http, RouteContext& ctx) {
         if (request->generator == "offline") {
           floorplan::OfflineOptions o;
           o.seed = request->seed;
+          o.requirements = request->requirements;
           auto plan = floorplan::generate_floor_plan(resolved->graph, *cs, o);
           if (!plan) return reply_problem(res, plan.error(), req.path);
           plan->provenance["classification"] = resolved->classification;

@@ -112,20 +112,36 @@ struct ZoneInfo {
 
 class Checker {
  public:
-  Checker(const World& world, std::string_view building_type, std::span<const MergedConstraint> constraints)
-      : world_(world), building_type_(building_type), constraints_(constraints) {
+  Checker(const World& world, std::string_view building_type, std::span<const MergedConstraint> constraints,
+          std::optional<double> occupants)
+      : world_(world),
+        building_type_(building_type),
+        constraints_(constraints),
+        scenario_occupants_(occupants) {
     for (const auto& z : world.zones())
       zones_.push_back({canonical_room_type(z.type), geometry::area(z.polygon), {}, {}, 0});
     for (const auto& e : world.entities())
       if (e.type == "desk" || e.type == "workstation") ++zones_[e.zone.index()].desks;
     residential_ = building_type_ == "residential";
     compute_occupant_load();
+    area_load_ = occupant_load_;
+    if (scenario_occupants_ && *scenario_occupants_ > occupant_load_) occupant_load_ = *scenario_occupants_;
+  }
+
+  // How the occupant load was found, for check details.
+  [[nodiscard]] std::string load_words() const {
+    if (scenario_occupants_ && *scenario_occupants_ >= area_load_ && *scenario_occupants_ > 0)
+      return compact_number(occupant_load_) + " occupants (the scenario's people; the floor areas give " +
+             compact_number(area_load_) + ")";
+    return compact_number(occupant_load_) + " occupants";
   }
 
   ComplianceReport run() {
     ComplianceReport report;
     report.building_type = building_type_;
     report.occupant_load = occupant_load_;
+    report.occupant_load_from_area = area_load_;
+    report.scenario_occupants = scenario_occupants_;
     for (const auto& m : constraints_) {
       if (is_exit_rule(m.constraint.name)) continue;  // thresholds of exit_checks() below
       ComplianceCheck c;
@@ -204,7 +220,9 @@ class Checker {
     if (!d.other) return true;
     for (ZoneId z : {d.zone, *d.other}) {
       const std::string& t = zones_[z.index()].type;
-      if (is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room") return true;
+      if (is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room" ||
+          t == "ticket_hall")
+        return true;
     }
     return false;
   }
@@ -547,13 +565,13 @@ class Checker {
     c.required = c.required * occupant_load_;
     c.unit = "m";
     measure(c, {{names.empty() ? "exits" : names, width}});
-    c.detail = "total width of the exits against " + compact_number(occupant_load_) +
-               " occupants × the per-occupant width";
+    c.detail = "total width of the exits against " + load_words() + " × the per-occupant width";
   }
 
   static bool is_exit_rule(std::string_view name) {
     return name == "single_exit_occupant_load" || name == "single_exit_travel_distance" ||
-           name == "exit_separation_diagonal_fraction";
+           name == "exit_separation_diagonal_fraction" || name == "three_exits_occupant_load" ||
+           name == "four_exits_occupant_load";
   }
 
   // The exit count against the single-exit limits (occupants, travel distance) and, where two
@@ -585,23 +603,40 @@ class Checker {
     const auto ex = exits();
     std::string names;
     for (auto i : ex) names += (names.empty() ? "" : ", ") + world_.doors()[i].name;
-    // The travel distance one exit alone would give: the best of the exits, each on its own.
-    std::optional<double> far;
-    for (auto i : ex) {
-      const double d = travel_distance({i}).first;
-      far = far ? std::min(*far, d) : d;
-    }
     const bool crowded = occupant_load_ > max_occupants + kEps;
+    // The travel distance one exit alone would give: the best of the exits, each on its own (a
+    // geodesic field per exit). Not needed when the occupant load alone asks for two exits.
+    std::optional<double> far;
+    if (!crowded)
+      for (auto i : ex) {
+        const double d = travel_distance({i}).first;
+        far = far ? std::min(*far, d) : d;
+      }
     const bool distant = far && *far > max_travel + kEps;
 
-    ComplianceCheck count = base("exit_count", "exits", "number of exits from a story", *occupants);
-    count.required = crowded || distant ? 2.0 : 1.0;
+    // More exits for larger loads (IBC 2018 Table 1006.3.2: 3 from 501, 4 from 1001 occupants).
+    const MergedConstraint* three = find(constraints_, "three_exits_occupant_load");
+    const MergedConstraint* four = find(constraints_, "four_exits_occupant_load");
+    const MergedConstraint* decided = occupants;
+    double needed = crowded || distant ? 2.0 : 1.0;
+    if (three && occupant_load_ >= three->constraint.value - kEps) needed = 3.0, decided = three;
+    if (four && occupant_load_ >= four->constraint.value - kEps) needed = 4.0, decided = four;
+    ComplianceCheck count = base("exit_count", "exits", "number of exits from a story", *decided);
+    count.required = needed;
     measure(count, {{names.empty() ? "exits" : names, static_cast<double>(ex.size())}});
     count.detail =
         "doors to the outside against the single-exit limit (" + compact_number(max_occupants) +
-        " occupants, " + num2(max_travel) + " m travel, " + occupants->ref_id +
-        "): " + compact_number(occupant_load_) + " occupants" +
-        (far ? ", " + num2(*far) + " m of travel to the best single exit" : std::string(", no exit"));
+        " occupants, " + num2(max_travel) + " m travel, " + occupants->ref_id + ")" +
+        (three ? std::string(" and the exits per occupant load (3 from ") +
+                     compact_number(three->constraint.value) +
+                     (four ? ", 4 from " + compact_number(four->constraint.value) : std::string()) + ", " +
+                     three->ref_id + ")"
+               : std::string()) +
+        ": " + load_words() +
+        (far       ? ", " + num2(*far) + " m of travel to the best single exit"
+         : crowded ? std::string(", more than one exit for the occupant load alone")
+                   : std::string(", no exit")) +
+        "; decided by " + decided->ref_id;
 
     const double fraction = spread != nullptr ? spread->constraint.value : 0.0;
     ComplianceCheck apart =
@@ -692,7 +727,9 @@ class Checker {
   std::vector<ZoneInfo> zones_;
   std::size_t measure_budget_ = kMeasuredVertexBudget;
   bool residential_ = false;
+  std::optional<double> scenario_occupants_;
   double occupant_load_ = 0.0;
+  double area_load_ = 0.0;
   std::map<std::string, std::pair<double, double>> load_by_use_;  // use → (area, persons)
   std::optional<OccupancyGrid> grid_;
   std::map<std::vector<std::size_t>, std::optional<std::pair<double, std::string>>> travel_;
@@ -730,8 +767,9 @@ std::vector<const ComplianceCheck*> ComplianceReport::failures() const {
 }
 
 ComplianceReport check_compliance(const World& world, std::string_view building_type,
-                                  std::span<const MergedConstraint> constraints) {
-  return Checker(world, building_type, constraints).run();
+                                  std::span<const MergedConstraint> constraints,
+                                  std::optional<double> occupants) {
+  return Checker(world, building_type, constraints, occupants).run();
 }
 
 Json to_json(const ComplianceCheck& c) {
@@ -768,11 +806,16 @@ Json to_json(const ComplianceReport& r) {
     summary[std::string(to_string(c.status))] = summary[std::string(to_string(c.status))].get<int>() + 1;
     checks.push_back(to_json(c));
   }
-  return Json{{"building_type", r.building_type},
-              {"passed", r.passed},
-              {"occupant_load", round_micro(r.occupant_load)},
-              {"summary", std::move(summary)},
-              {"checks", std::move(checks)}};
+  Json out{{"building_type", r.building_type},
+           {"passed", r.passed},
+           {"occupant_load", round_micro(r.occupant_load)},
+           {"summary", std::move(summary)},
+           {"checks", std::move(checks)}};
+  if (r.scenario_occupants) {
+    out["scenario_occupants"] = round_micro(*r.scenario_occupants);
+    out["occupant_load_from_area"] = round_micro(r.occupant_load_from_area);
+  }
+  return out;
 }
 
 RoomRequirement room_requirement(std::span<const MergedConstraint> cs, std::string_view room_type,

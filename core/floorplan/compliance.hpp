@@ -62,14 +62,19 @@ struct ComplianceCheck {
 struct ComplianceReport {
   std::string building_type;
   bool passed = true;          // no check has status kFail
-  double occupant_load = 0.0;  // persons, from the occupant-load factors
+  double occupant_load = 0.0;  // persons: from the occupant-load factors, or the scenario's people when more
+  double occupant_load_from_area = 0.0;      // persons, from the occupant-load factors alone
+  std::optional<double> scenario_occupants;  // the people the scenario puts in the building, when given
   std::vector<ComplianceCheck> checks;
   [[nodiscard]] std::vector<const ComplianceCheck*> failures() const;
 };
 
 // Checks the world against every constraint (one check per constraint, in the given order).
+// `occupants`: the people the scenario puts in the building; egress width and the number of
+// exits are checked for them when they outnumber the occupant load of the floor areas.
 ComplianceReport check_compliance(const World& world, std::string_view building_type,
-                                  std::span<const knowledge::MergedConstraint> constraints);
+                                  std::span<const knowledge::MergedConstraint> constraints,
+                                  std::optional<double> occupants = std::nullopt);
 
 // {building_type, passed, occupant_load, summary: {pass, fail, …}, checks: [...]}
 Json to_json(const ComplianceReport& report);

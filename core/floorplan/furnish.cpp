@@ -51,6 +51,236 @@ void furnish_waiting(Placer& p, const std::string& type, const std::optional<Cou
              {{on_left ? 0.4 : L - 0.4, D - 0.4}, {on_left ? 0.4 : L - 0.4, 1.2}}, 0, {"drink"});
 }
 
+// Rows of `type` facing +v (towards a screen or stage at the far wall) in [u0, u1] × [v0, v1]:
+// blocks of at most `per_block` seats 0.55 m apart between aisles `aisle` m wide (one at each
+// end), rows `pitch` m apart; a walkway ROI per aisle and a seating area per block. Seats are
+// named <zone>_seat_rNN_MM. Returns the seats placed (all of them reachable).
+int seat_rows(Placer& p, const std::string& type, double u0, double v0, double u1, double v1, double pitch,
+              int per_block, double aisle, const std::vector<std::string>& affordances) {
+  constexpr double kSeat = 0.55;
+  const double width = u1 - u0;
+  int blocks = 1, per = 0;
+  for (; blocks <= 8; ++blocks) {
+    per = static_cast<int>(std::floor((width - (blocks + 1) * aisle) / (blocks * kSeat) + 1e-9));
+    if (per <= per_block) break;
+  }
+  if (per < 2) return 0;
+  const int rows = static_cast<int>(std::floor((v1 - v0) / pitch + 1e-9));
+  if (rows < 1) return 0;
+  const double used = (blocks + 1) * aisle + blocks * per * kSeat;
+  const double start = u0 + (width - used) / 2;
+  Furnishing& out = p.furnishing();
+  const std::size_t first = out.entities.size();
+  const std::string& zone = p.zone().name;
+  int placed = 0;
+  for (int b = 0; b < blocks; ++b) {
+    const double bu0 = start + aisle + b * (per * kSeat + aisle);
+    p.roi("seating_area", numbered("seats", b + 1), bu0, v0, bu0 + per * kSeat, v0 + rows * pitch, true);
+    for (int r = 0; r < rows; ++r)
+      for (int k = 0; k < per; ++k) {
+        const double u = bu0 + (k + 0.5) * kSeat, v = v0 + r * pitch + 0.3;
+        const Point w = p.frame().at(u, v);
+        const Pose2 pose{w.x, w.y, p.frame().yaw(0.0)};
+        if (!p.box_free(footprint_box(type, pose), std::nullopt, Placer::Areas::kNone)) continue;
+        char name[48];
+        std::snprintf(name, sizeof name, "_seat_r%02d_%02d", r + 1, b * per + k + 1);
+        out.entities.push_back({type, zone + name, pose, affordances});
+        ++placed;
+      }
+  }
+  for (int a = 0; a <= blocks; ++a) {
+    const double au0 = start + a * (per * kSeat + aisle);
+    p.roi("walkway", numbered("aisle", a + 1), au0, v0, au0 + aisle, v0 + rows * pitch, true);
+  }
+  p.keep_walkable(first);
+  (void)placed;
+  return static_cast<int>(out.entities.size() - first);
+}
+
+// Rows of shelves (or racks, machines) along u from v_start, walkway aisles between them.
+void rows_of(Placer& p, const std::string& type, const std::string& base, double v_start, double item_depth,
+             double walk, double pitch_u, int max_rows, const std::vector<std::string>& affordances,
+             std::optional<double> v_end = std::nullopt) {
+  const double L = p.len(), D = v_end.value_or(p.depth());
+  int row = 0;
+  for (double v = v_start; v + item_depth + walk <= D - 0.3 && row < max_rows; v += item_depth + walk) {
+    ++row;
+    p.roi("walkway", numbered("aisle", row), 0.6, v + item_depth, L - 0.6, v + item_depth + walk, true);
+    p.grid(type, numbered(base, row), 1.0, v, L - 1.0, v + item_depth, pitch_u, item_depth, 30, 0,
+           affordances);
+  }
+}
+
+// A line of ticket-gate posts across the room at depth v, 0.9 m passages between them.
+void gate_line(Placer& p, double v) {
+  const double L = p.len();
+  const int n = static_cast<int>(std::floor((L - 2.0) / 1.2)) + 1;
+  if (n < 2) return;
+  Furnishing& out = p.furnishing();
+  const std::size_t first = out.entities.size();
+  const double u0 = (L - (n - 1) * 1.2) / 2;
+  for (int k = 0; k < n; ++k) {
+    const auto at = p.fit("ticket_gate", u0 + k * 1.2, v, 0.0);
+    if (!at || std::abs(at->x - (u0 + k * 1.2)) > 1e-9) continue;
+    const Point w = p.frame().at(at->x, at->y);
+    out.entities.push_back({"ticket_gate",
+                            p.zone().name + "_" + numbered("gate", k + 1),
+                            {w.x, w.y, p.frame().yaw(0.0)},
+                            {"pass_gate"}});
+  }
+  p.keep_walkable(first);
+}
+
+// A counter against one of the room's side walls (either, at random first), else against its far
+// wall: a bar in a foyer or restaurant, where the door wall and the queue lanes leave room.
+void against_a_wall(Placer& p, Rng& rng, const std::string& type, const std::string& name,
+                    const std::vector<std::string>& affordances) {
+  const int first = rng.chance(0.5) ? 1 : 3;
+  for (int turn : {first, 4 - first}) {
+    Placer side = p.turned((p.side() + turn) % 4);
+    if (side.entity(type, name, {{side.len() / 2, side.depth()}}, kPi, affordances)) return;
+  }
+  p.entity(type, name, {{p.len() / 2, p.depth()}}, kPi, affordances);
+}
+
+void furnish_venue_room(Placer& p, const std::string& type, const FurnishingRules& rules, Rng& rng) {
+  const double L = p.len(), D = p.depth();
+  const double left = rng.chance(0.5) ? 0.45 : L - 0.45;
+  const double right = L - left;
+  const double lane_w = rules.queue_lane_width;
+  if (type == "ticket_hall") {
+    p.counter_with_queue("counter", "ticket_counter", L * (rng.chance(0.5) ? 0.3 : 0.7), D - 1.0, 3.5, false,
+                         lane_w, {"serve", "sell_ticket", "queue_target"});
+    p.turned((p.side() + 1) % 4)
+        .entity("ticket_machine", "ticket_machine_01", {{p.depth() / 2, L}}, kPi,
+                {"buy_ticket", "queue_target"});
+    p.turned((p.side() + 3) % 4)
+        .entity("ticket_machine", "ticket_machine_02", {{p.depth() / 2, L}}, kPi,
+                {"buy_ticket", "queue_target"});
+    p.entity("info_board", "info_board", {{L / 2, D}}, kPi, {"read"});
+    if (D >= 7.0) gate_line(p, D * 0.45);
+  } else if (type == "platform") {
+    // The far side is the track edge: people wait along it; benches down the middle.
+    p.roi("waiting_zone", "edge", 0.6, D - 2.1, L - 0.6, D - 0.6, true);
+    p.grid("bench", "bench", 1.0, D / 2 - 0.6, L - 1.0, D / 2 + 0.6, 6.0, 1.2, 20, 0, {"sit", "wait"});
+    p.entity("info_board", "info_board", {{L / 2, 0.0}}, 0.0, {"read"});
+  } else if (type == "hotel_room" || type == "resident_room") {
+    p.entity("bed", "bed", {{L / 2, D - 1.1}, {L / 2, D / 2 + 0.3}}, kPi, {"lie", "sleep"});
+    p.entity("wardrobe", "wardrobe", {{left, D - 0.4}, {right, D - 0.4}}, kPi, {"store"});
+    if (type == "hotel_room") {
+      p.entity("desk", "desk", {{right, 1.5}, {left, 1.5}}, kPi / 2, {"work", "sit"});
+      p.entity("luggage_rack", "luggage_rack", {{left, 1.2}, {right, 1.2}}, 0, {"store"});
+    } else {
+      p.entity("armchair", "armchair", {{right, 1.4}, {left, 1.4}}, 0, {"sit", "rest"});
+    }
+  } else if (type == "day_room") {
+    p.entity("tv", "tv", {{L / 2, D}}, kPi, {"watch"});
+    if (auto a = p.roi("seating_area", "seating", 0.6, D * 0.45, L - 0.6, D - 1.0))
+      p.grid("armchair", "armchair", a->u0, a->v0, a->u1, a->v1, 1.5, 1.7, 16, 0, {"sit", "rest", "watch"});
+    p.grid("table", "table", 0.6, 1.4, L - 0.6, D * 0.45 - 0.2, 2.6, 2.4, 4, 0, {"eat", "sit"});
+  } else if (type == "reading_room") {
+    // Shelving along the far wall (a free-standing row would leave its walkway behind it).
+    p.grid("bookshelf", "wall_shelf", 0.5, D - 0.5, L - 0.5, D - 0.05, 2.0, 0.45, 12, kPi,
+           {"browse", "pick"});
+    if (auto a = p.roi("seating_area", "reading", 0.8, 1.6, L - 0.8, D - 2.0))
+      p.grid("reading_table", "table", a->u0, a->v0, a->u1, a->v1, 2.7, 2.4, 30, 0, {"read", "sit"});
+  } else if (type == "library_stacks") {
+    rows_of(p, "bookshelf", "shelf", 1.4, 0.4, std::max(1.0, rules.walkway_width), 1.9, 12,
+            {"browse", "pick"});
+  } else if (type == "study_room") {
+    p.entity("reading_table", "table", {{L / 2, D / 2}}, 0, {"study", "sit"});
+    p.entity("chair", "chair", {{L / 2 - 0.5, D / 2 + 0.8}, {L / 2, D / 2 + 0.8}}, kPi, {"sit"});
+  } else if (type == "gallery") {
+    for (int turn : {0, 1, 3})
+      p.turned((p.side() + turn) % 4)
+          .entity("painting", numbered("painting", turn + 1), {{0, 0}}, kPi, {"view"});
+    p.grid("exhibit", "exhibit", 1.6, 2.0, L - 1.6, D - 1.6, 3.6, 3.6, 6, 0, {"view"});
+    p.entity("bench", "bench", {{L / 2, D / 2}}, 0, {"sit", "view"});
+    p.roi("goal_area", "view", L / 2 - 1.0, D / 2 - 2.0, L / 2 + 1.0, D / 2 - 0.8);
+  } else if (type == "foyer") {
+    p.counter_with_queue("counter", "box_office", L * (rng.chance(0.5) ? 0.25 : 0.75), D - 1.0, 3.5, false,
+                         lane_w, {"serve", "sell_ticket", "queue_target"});
+    against_a_wall(p, rng, "bar_counter", "bar", {"serve", "drink"});
+    p.entity("water_dispenser", "water_dispenser", {{left, 0.4}, {right, 0.4}}, 0, {"drink"});
+  } else if (type == "auditorium" || type == "lecture_hall") {
+    // Screen or stage at the far wall, seats in rows facing it, cross aisle by the doors.
+    const bool stage = type == "auditorium" && D >= 13.0 && L >= 8.0 && rng.chance(0.5);
+    double front = D - 2.6;
+    if (stage && p.entity("stage", "stage", {{L / 2, D}}, kPi, {"perform"})) front = D - 3.2 - 1.5;
+    p.entity("screen", "screen", {{L / 2, D}}, kPi, {"watch"});
+    if (type == "lecture_hall") p.entity("lectern", "lectern", {{L * 0.2, D - 1.4}}, kPi, {"present"});
+    seat_rows(p, "seat", 0.3, 1.8, L - 0.3, front, 1.1, 14, std::max(1.1, rules.walkway_width),
+              {"sit", "watch"});
+  } else if (type == "arena_floor") {
+    p.entity("stage", "stage", {{L / 2, D}}, kPi, {"perform"});
+    p.roi("assembly_zone", "standing", 1.0, D * 0.45, L - 1.0, D - 4.6);
+    seat_rows(p, "seat", 0.3, 1.8, L - 0.3, std::min(D * 0.45 - 0.5, 1.8 + 1.1 * 12), 1.1, 20,
+              std::max(1.2, rules.walkway_width), {"sit", "watch"});
+  } else if (type == "backstage") {
+    p.entity("table", "table", {{L / 2, D / 2}}, 0, {"sit"});
+    p.entity("wardrobe", "wardrobe", {{left, D - 0.4}, {right, D - 0.4}}, kPi, {"store"});
+  } else if (type == "concession") {
+    if (!p.counter_with_queue("counter", "counter", L / 2, D - 0.6, 3.0, false, lane_w,
+                              {"serve", "queue_target"}))
+      p.entity("counter", "counter", {{L / 2, D}}, kPi, {"serve"});
+  } else if (type == "first_aid") {
+    p.entity("exam_table", "bed", {{L / 2, D - 1.2}}, kPi, {"examine", "lie"});
+    p.entity("desk", "desk", {{left, 1.0}, {right, 1.0}}, 0, {"work", "sit"});
+    p.entity("sink", "sink", {{right, D - 0.3}, {left, D - 0.3}}, kPi, {"wash"});
+  } else if (type == "seminar_room") {
+    const int n = p.grid("desk", "desk", 1.0, 1.6, L - 1.0, D - 1.4, 1.6, 1.7, 40, 0, {"work", "sit"});
+    if (n > 0) p.roi("work_area", "desks", 0.8, 1.5, L - 0.8, D - 1.2, true);
+    p.entity("screen", "screen", {{L / 2, D}}, kPi, {"watch"});
+  } else if (type == "production_floor") {
+    p.roi("work_area", "staging", 0.8, 0.8, std::min(L - 0.8, 6.0), 3.0);
+    p.entity("conveyor", "conveyor", {{L / 2, 4.0}}, 0, {"load", "pick"});
+    rows_of(p, "machine", "machine", 5.4, 1.5, std::max(1.5, rules.walkway_width), 3.0, 8, {"operate"});
+  } else if (type == "locker_room" || type == "changing_room") {
+    p.grid("locker", "locker", 0.3, D - 0.6, L - 0.3, D - 0.05, 0.42, 0.55, 24, kPi, {"store"});
+    p.entity("changing_bench", "bench", {{L / 2, D / 2}}, 0, {"sit", "change"});
+  } else if (type == "mall_concourse") {
+    p.grid("bench", "bench", 2.0, D / 2 - 0.6, L - 2.0, D / 2 + 0.6, 9.0, 1.2, 12, 0, {"sit", "rest"});
+    p.entity("info_board", "info_board", {{L * 0.15, D / 2 + 2.0}}, 0, {"read"});
+    p.entity("vending_machine", "vending_machine", {{left, D}, {right, D}}, kPi, {"buy"});
+  } else if (type == "shop_unit") {
+    const double lane = std::clamp(D * 0.3, 1.5, 3.0);
+    p.counter_with_queue("counter", "checkout", L * (rng.chance(0.5) ? 0.3 : 0.7), 1.8, lane, true, lane_w,
+                         {"pay", "queue_target"});
+    // Shelving along the back wall, and free-standing rows between it and the queue where they fit.
+    p.grid("shelf", "wall_shelf", 0.5, D - 0.6, L - 0.5, D - 0.05, 2.0, 0.55, 8, kPi, {"browse", "pick"});
+    rows_of(p, "shelf", "shelf", 1.8 + 0.7 + lane + 0.6, 0.5, std::max(1.2, rules.walkway_width), 2.0, 6,
+            {"browse", "pick"}, D - 0.6);
+  } else if (type == "food_court") {
+    int counters = 0;
+    for (double frac : {0.2, 0.5, 0.8})
+      counters += p.counter_with_queue("counter", numbered("food_counter", counters + 1), L * frac, D - 1.0,
+                                       3.0, false, lane_w, {"serve", "queue_target"})
+                      ? 1
+                      : 0;
+    if (auto a = p.roi("seating_area", "seating", 0.8, 1.6, L - 0.8, std::max(2.6, D - 5.6)))
+      p.grid("table", "table", a->u0, a->v0, a->u1, a->v1, 2.2, 2.3, 40, 0, {"eat", "sit"});
+  } else if (type == "restaurant") {
+    against_a_wall(p, rng, "bar_counter", "bar", {"serve", "drink"});
+    if (auto a = p.roi("seating_area", "seating", 0.8, 1.6, L - 0.8, D - 0.8))
+      p.grid("table", "table", a->u0, a->v0, a->u1, a->v1, 2.2, 2.3, 40, 0, {"eat", "sit"});
+  } else if (type == "sports_hall") {
+    p.roi("assembly_zone", "court", 2.0, 2.0, L - 2.0, D - 2.0, true);
+    p.grid("bench", "bench", 1.0, 0.3, L - 1.0, 1.3, 4.0, 1.0, 6, 0, {"sit", "watch"});
+  } else if (type == "fitness_room") {
+    p.grid("fitness_machine", "machine", 0.8, 1.6, L - 0.8, D - 0.8, 1.6, 2.6, 20, 0, {"exercise"});
+    p.entity("water_dispenser", "water_dispenser", {{left, 0.4}, {right, 0.4}}, 0, {"drink"});
+  } else if (type == "main_hall") {
+    // A registration desk with its queue, voting booths along one wall, tables in the middle.
+    p.counter_with_queue("counter", "registration", L * (rng.chance(0.5) ? 0.3 : 0.7), std::min(D - 1.0, 5.5),
+                         3.5, false, lane_w, {"serve", "register", "queue_target"});
+    Placer side = p.turned((p.side() + (rng.chance(0.5) ? 1 : 3)) % 4);
+    side.grid("voting_booth", "booth", 1.0, side.depth() - 1.1, side.len() - 1.0, side.depth() - 0.1, 1.0,
+              1.0, 8, kPi, {"vote"});
+    if (auto a = p.roi("seating_area", "seating", 1.0, 1.6, L - 2.2, D - 2.2))
+      p.grid("table", "table", a->u0, a->v0, a->u1, a->v1, 2.4, 2.4, 12, 0, {"sit", "meet"});
+  }
+}
+
 void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rules, Rng& rng, double area) {
   const double L = p.len(), D = p.depth();
   const double left = rng.chance(0.5) ? 0.45 : L - 0.45;  // corner for small appliances
@@ -93,9 +323,17 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
     const int wanted = type == "open_office"
                            ? std::max(1, static_cast<int>(std::floor(area / rules.area_per_desk)))
                            : std::max(1, static_cast<int>(std::floor(area / 2.0)));
-    const int n = p.grid("desk", "desk", 1.0, 1.4, L - 1.0, D - 1.0, type == "open_office" ? 1.8 : 1.3,
-                         type == "open_office" ? 2.4 : 1.6, wanted, 0, {"work", "sit"});
+    const double du = type == "open_office" ? 1.8 : 1.3, dv = type == "open_office" ? 2.4 : 1.6;
+    int n = p.grid("desk", "desk", 1.0, 1.4, L - 1.0, D - 1.0, du, dv, wanted, 0, {"work", "sit"});
     if (n > 0) p.roi("work_area", "desks", 0.8, 1.3, L - 0.8, D - 0.8, true);
+    if (n == 0) {
+      // A room too shallow for a row of desks facing its door (a long room entered from its long
+      // side): the desks run along its length instead, seen from a side wall.
+      Placer side = p.turned((p.side() + 1) % 4);
+      const double sl = side.len(), sd = side.depth();
+      n = side.grid("desk", "desk", 1.0, 1.4, sl - 1.0, sd - 1.0, du, dv, wanted, 0, {"work", "sit"});
+      if (n > 0) side.roi("work_area", "desks", 0.8, 1.3, sl - 0.8, sd - 0.8, true);
+    }
     if (type == "open_office") {
       p.entity("water_dispenser", "water_dispenser", {{left, 0.5}, {right, 0.5}, {left, D - 0.4}}, 0,
                {"drink"});
@@ -150,8 +388,20 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
   } else if (type == "dining_hall") {
     // Serving counter at the far side, its queue towards the main door; tables on both sides of it.
     const double cu = L * (rng.chance(0.5) ? 0.3 : 0.7);
-    const auto at = p.counter_with_queue("counter", "serving_counter", cu, D - 1.0, 4.5, false,
-                                         rules.queue_lane_width, {"serve", "queue_target"});
+    auto at = p.counter_with_queue("counter", "serving_counter", cu, D - 1.0, 4.5, false,
+                                   rules.queue_lane_width, {"serve", "queue_target"});
+    // Pushed into the middle (an exit or door in the way): the other side may keep room for tables.
+    if (at && std::abs(at->u - cu) > 0.6) {
+      const Furnishing before = p.furnishing();
+      p.furnishing().entities.pop_back();
+      p.furnishing().rois.pop_back();
+      const auto other = p.counter_with_queue("counter", "serving_counter", L - cu, D - 1.0, 4.5, false,
+                                              rules.queue_lane_width, {"serve", "queue_target"});
+      if (other && std::abs(other->u - (L - cu)) <= 0.6)
+        at = other;
+      else
+        p.furnishing() = before;
+    }
     const double gap = rules.queue_lane_width / 2 + 1.0;
     const double split = at ? at->u : -10.0;
     if (auto a = split - gap - 0.8 >= 2.0
@@ -189,6 +439,8 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
   } else if (type == "loading_bay") {
     p.roi("work_area", "dock", 0.6, 0.6, L - 0.6, D - 0.6);
     p.grid("pallet", "pallet", 0.8, D - 2.0, L - 0.8, D - 0.6, 1.6, 1.4, 6, 0, {"pick", "store"});
+  } else {
+    furnish_venue_room(p, type, rules, rng);
   }
 }
 
@@ -209,21 +461,12 @@ FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> co
 Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
                    Rng& rng) {
   Furnishing out;
-  std::map<std::string, std::string> type_of;
-  for (const auto& z : zones) type_of[z.name] = canonical_room_type(z.type);
   const bool named_entrance = std::any_of(doors.begin(), doors.end(), [](const DoorSpec& d) {
     return d.name == "main_entrance" && d.connects.size() == 1;
   });
   for (const auto& z : zones) {
     const std::string type = canonical_room_type(z.type);
-    std::vector<DoorAt> here;
-    for (const auto& d : doors) {
-      const auto it = std::find(d.connects.begin(), d.connects.end(), z.name);
-      if (it == d.connects.end()) continue;
-      DoorAt a{d.pose.position(), d.width, d.connects.size() == 1, "", d.name};
-      if (!a.exterior) a.other_type = type_of[d.connects[it == d.connects.begin() ? 1 : 0]];
-      here.push_back(std::move(a));
-    }
+    const std::vector<DoorAt> here = doors_of(z, zones, doors);
     if (is_circulation_type(type) && !is_hall_type(type)) {
       out.rois.push_back({z.name + "_walk", "corridor", z.polygon});
     }
@@ -268,25 +511,11 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
             {entrance ? z.name + "_entrance" : z.name + "_" + d.name, entrance ? "entrance" : "exit", poly});
     }
     if (!find_room_type(type) || is_corridor_type(type)) continue;
-    const Box box = inner_box(z.polygon);
-    if (box.width() < 1.0 || box.height() < 1.0) continue;
-    // Main door: the kitchen door of a dining hall, the entrance of a shop or lobby, else the door
-    // to circulation, else the first.
-    const DoorAt* main = nullptr;
-    auto pick = [&](auto pred) {
-      for (const auto& d : here)
-        if (!main && pred(d)) main = &d;
-    };
-    if (type == "sales_floor" || type == "dining_hall" || type == "lobby" || type == "reception" ||
-        type == "security" || type == "concourse")
-      pick([](const DoorAt& d) { return d.exterior; });
-    pick([](const DoorAt& d) { return !d.exterior && is_circulation_type(d.other_type); });
-    pick([](const DoorAt&) { return true; });
-    const int side = main ? nearest_side(box, main->centre) : 0;
+    auto placer = placer_for(z, zones, doors, out);
+    if (!placer) continue;
     const std::size_t first_entity = out.entities.size(), first_roi = out.rois.size();
-    Placer placer(z, Frame(box, side), here, out);
-    furnish_room(placer, type, rules, rng, geometry::area(z.polygon));
-    placer.poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
+    furnish_room(*placer, type, rules, rng, geometry::area(z.polygon));
+    placer->poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
   }
   return out;
 }

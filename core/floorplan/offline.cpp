@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
 #include <set>
 
 #include "core/common/rng.hpp"
+#include "core/floorplan/features.hpp"
 #include "core/floorplan/furnish.hpp"
 #include "core/floorplan/rooms.hpp"
 #include "core/geometry/planar.hpp"
@@ -111,13 +113,37 @@ DomainStyle style_of(std::string_view domain) {
   if (domain == "school") return {6.4, 8.0, "linoleum"};
   if (domain == "warehouse") return {3.8, 5.6, "concrete"};
   if (domain == "airport") return {4.5, 6.5, "terrazzo"};
-  return {3.6, 5.4, "vinyl"};  // canteen, retail
+  if (domain == "train_station") return {5.0, 7.0, "terrazzo"};
+  if (domain == "hotel") return {4.2, 5.6, "carpet"};
+  if (domain == "care_home") return {4.2, 5.4, "vinyl"};
+  if (domain == "library" || domain == "museum") return {4.5, 6.5, "oak_parquet"};
+  if (domain == "theatre" || domain == "arena") return {4.0, 6.0, "carpet"};
+  if (domain == "factory") return {4.0, 6.0, "concrete"};
+  if (domain == "mall") return {5.0, 7.5, "terrazzo"};
+  if (domain == "university") return {6.0, 8.0, "linoleum"};
+  if (domain == "gym") return {4.5, 6.5, "sports_floor"};
+  if (domain == "community_hall") return {3.8, 5.4, "wood"};
+  return {3.6, 5.4, "vinyl"};  // canteen, retail, supermarket, restaurant
+}
+
+// Rooms that are nearer square than a band's slice (halls for an audience, a sport, a show).
+bool stout_type(std::string_view type) {
+  return type == "auditorium" || type == "arena_floor" || type == "sports_hall" || type == "lecture_hall" ||
+         type == "food_court" || type == "fitness_room" || type == "gallery" || type == "day_room";
+}
+// Rooms that stand together along one side of the circulation (stout halls, platforms).
+bool grouped_type(std::string_view type) {
+  return stout_type(type) || type == "platform";
 }
 
 std::string material_of(std::string_view domain, std::string_view type) {
   if (is_toilet_type(type) || type == "kitchen" || type == "kitchenette") return "ceramic_tile";
   if (domain == "hospital") return "washable_paint";
-  if (domain == "warehouse" && type != "private_office" && type != "break_room") return "concrete";
+  if ((domain == "warehouse" || domain == "factory") && type != "private_office" && type != "break_room")
+    return "concrete";
+  if (domain == "care_home") return "washable_paint";
+  if (type == "auditorium" || type == "lecture_hall") return "acoustic_panel";
+  if (type == "platform") return "concrete";
   return "painted_plaster";
 }
 
@@ -245,7 +271,13 @@ class Layout {
       const RoomRequirement req = room_requirement(constraints_, s.type, main);
       r.area = std::max(r.area, req.min_area * 1.03) * scale;
       r.min_dim = cm_up(std::max({req.min_dimension, m(door_w_) + 0.35, 1.2}));
+      // Halls for an audience or a sport keep an aspect of at most 1.5; platforms are long and narrow.
+      if (stout_type(s.type))
+        r.min_dim = std::max(r.min_dim, cm_up(std::sqrt(r.area / rng.uniform(1.0, 1.5))));
+      if (s.type == "platform") r.min_dim = std::max(r.min_dim, cm_up(rng.uniform(5.0, 7.0)));
     }
+    bool grouped = false;
+    for (std::size_t i = 0; i < n; ++i) grouped = grouped || (i != *circ_ && grouped_type(rooms_[i].type));
     if (main_bedroom) {
       double biggest = 0.0;
       for (std::size_t i = 0; i < n; ++i)
@@ -277,7 +309,7 @@ class Layout {
     for (std::size_t i = 0; i < n; ++i) {
       const std::string& t = rooms_[i].type;
       if (t == "living_room" || t == "lobby" || t == "reception" || t == "waiting_room" || t == "security" ||
-          t == "open_office" || t == "loading_bay")
+          t == "open_office" || t == "loading_bay" || t == "ticket_hall" || t == "food_court")
         try_cap(i, 0.45);
     }
     bool needs_two_bands = false;
@@ -299,6 +331,7 @@ class Layout {
     std::size_t band_rooms = n - 1 - caps.size();
     const bool single =
         !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
+    grouped_band_ = grouped ? static_cast<int>(rng.below(2)) : 0;
     std::vector<std::size_t> left[2], middle[2], right[2];
     const bool first_cap_left = rng.chance(0.5);
     std::vector<bool> used(n, false);
@@ -335,6 +368,12 @@ class Layout {
       if (rng.chance(0.5)) std::reverse(chain.begin(), chain.end());
       int b = load[0] <= load[1] ? 0 : 1;
       if (rng.chance(0.2)) b = 1 - b;
+      // Stout halls and platforms on one side, the small rooms on the other (bands share a depth).
+      if (grouped)
+        b = std::any_of(chain.begin(), chain.end(),
+                        [&](std::size_t r) { return grouped_type(rooms_[r].type); })
+                ? grouped_band_
+                : 1 - grouped_band_;
       if (single) b = 0;
       for (auto r : chain) {
         middle[b].push_back(r);
@@ -367,7 +406,13 @@ class Layout {
     if (corridor) {
       W = cm_up(std::max(plan_.corridor_width, m(std::max(door_w_, public_w_)) + 0.35) +
                 rng.uniform(0.0, 0.3));
+      // Never narrower than its own minimum dimension (the turning circle, 1.525 m in offices).
+      W = std::max(W, c.min_dim);
       L = std::max({length[0], length[1], 300});
+      // A corridor longer than the passing-space interval is as wide as a passing space all along.
+      for (const auto& k : constraints_)
+        if (k.constraint.name == "passing_space_width" && L > 6096)
+          W = std::max(W, cm_up(k.constraint.value + 0.02));
     } else {
       const RoomType* rt = find_room_type(c.type);
       const double area =
@@ -508,10 +553,13 @@ class Layout {
   // (IBC 1007.1.1 wants at least half the building's diagonal): circulation and public rooms
   // first, then other rooms except toilets, bedrooms and stores; no randomness, so a plan that
   // needs no second exit is unchanged. False when no outside wall takes one.
-  std::optional<std::string> add_exit() {
-    const auto main = std::find_if(doors_.begin(), doors_.end(),
-                                   [](const DoorDraft& d) { return d.name == "main_entrance"; });
-    if (main == doors_.end()) return std::nullopt;
+  // `wide`: a double door (the egress width is short); `near`: a room the exit should open from
+  // (the walk from it to an exit is too long), when it has an outside wall.
+  std::optional<std::string> add_exit(bool wide = false, const std::string& near = "") {
+    std::vector<const DoorDraft*> exits;
+    for (const auto& d : doors_)
+      if (d.connects.size() == 1) exits.push_back(&d);
+    if (exits.empty()) return std::nullopt;
     std::vector<Rect> rects;
     for (const auto& r : rooms_) rects.push_back(r.rect);
     double diagonal = 0.0;
@@ -520,9 +568,16 @@ class Layout {
         for (auto [ax, ay] : {std::pair{a.x0, a.y0}, {a.x1, a.y0}, {a.x1, a.y1}, {a.x0, a.y1}})
           for (auto [bx, by] : {std::pair{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}})
             diagonal = std::max(diagonal, std::hypot(ax - bx, ay - by));
-    const int w = public_w_;
+    // The second exit half the diagonal from the first (IBC 1007.1.1); further exits spread out.
+    const double apart =
+        exits.size() == 1 ? diagonal / 2.0 : diagonal / (2.0 * static_cast<double>(exits.size()));
+    const int w = wide ? std::max(public_w_, entrance_w_) : public_w_;
+    bool near_has_wall = false;
+    for (std::size_t r = 0; r < rooms_.size(); ++r)
+      if (rooms_[r].name == near && !outside_walls(rects, r).empty()) near_has_wall = true;
     auto tier = [&](std::size_t r) {
       const std::string& t = rooms_[r].type;
+      if (near_has_wall) return rooms_[r].name == near ? 0 : 3;
       if (is_circulation_type(t)) return 0;
       if (is_public(r) || t == "dining_hall" || t == "sales_floor" || t == "concourse" ||
           t == "open_office" || t == "warehouse_floor" || t == "loading_bay")
@@ -544,15 +599,16 @@ class Layout {
       for (const Wall& wall : outside_walls(rects, r)) {
         const int lo = wall.lo + 15 + (w + 1) / 2, hi = wall.hi - 15 - (w + 1) / 2;
         if (lo > hi) continue;
-        for (int at : {lo, (lo + hi) / 2 / 5 * 5, hi}) {
+        for (int at : {lo, (lo + hi) / 2 / 5 * 5, hi, (3 * lo + hi) / 4 / 5 * 5, (lo + 3 * hi) / 4 / 5 * 5}) {
           const int x = wall.vertical ? wall.c : at, y = wall.vertical ? at : wall.c;
           bool clear = true;
           for (const DoorDraft& d : doors_)
             if (std::hypot(d.x - x, d.y - y) < (d.width + w) / 2.0 + 30.0) clear = false;
           if (!clear) continue;
-          const double distance = std::hypot(main->x - x, main->y - y);
+          double distance = std::numeric_limits<double>::infinity();
+          for (const DoorDraft* e : exits) distance = std::min(distance, std::hypot(e->x - x, e->y - y));
           // A spot far enough apart in a better tier wins; within a tier, the farthest.
-          const bool enough = distance >= diagonal / 2.0;
+          const bool enough = distance >= apart;
           const int rank = enough ? t : t + 4;
           if (!best || rank < best_tier || (rank == best_tier && distance > best->distance)) {
             best = Spot{r, wall, at, distance};
@@ -563,17 +619,18 @@ class Layout {
     }
     if (!best) return std::nullopt;
     DoorDraft d;
-    d.name = "emergency_exit";
+    d.name = exits.size() == 1 ? "emergency_exit" : "emergency_exit_" + std::to_string(exits.size());
     d.vertical_wall = best->wall.vertical;
     d.x = best->wall.vertical ? best->wall.c : best->at;
     d.y = best->wall.vertical ? best->at : best->wall.c;
     d.width = w;
     d.connects = {rooms_[best->room].name};
+    const std::string name = d.name;
     doors_.push_back(std::move(d));
     char metres[32];
     std::snprintf(metres, sizeof metres, "%.1f", best->distance / 100.0);
-    return "added 'emergency_exit' from '" + rooms_[best->room].name + "', " + metres +
-           " m from the main entrance: the building code asks for a second exit";
+    return "added '" + name + "' from '" + rooms_[best->room].name + "', " + metres + " m from " +
+           (exits.size() == 1 ? std::string("the main entrance") : std::string("the nearest exit"));
   }
 
   [[nodiscard]] const SceneGraph& graph() const { return graph_; }
@@ -583,7 +640,8 @@ class Layout {
  private:
   bool is_public(std::size_t r) const {
     const std::string& t = rooms_[r].type;
-    return is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room";
+    return is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room" ||
+           t == "ticket_hall";
   }
 
   bool place_door(Rng& rng, const std::string& name, const Wall& wall, int width,
@@ -621,6 +679,7 @@ class Layout {
   std::map<std::size_t, std::vector<std::size_t>> second_piece_;
   std::map<std::size_t, bool> cap_left_;
   int door_w_ = 90, public_w_ = 100, entrance_w_ = 100;
+  int grouped_band_ = 0;  // the band stout halls and platforms go to
   int rotate_ = 0;
   bool mirror_ = false;
 };
@@ -657,6 +716,60 @@ Json knowledge_provenance(std::span<const MergedConstraint> constraints) {
   return out;
 }
 
+namespace {
+
+// The exits the code asks for: the exit_count check's requirement (1 when there is none).
+int code_exits(const ComplianceReport& report) {
+  for (const auto& c : report.checks)
+    if (c.name == "exit_count") return static_cast<int>(std::lround(c.required));
+  return 1;
+}
+
+const ComplianceCheck* exit_check(const ComplianceReport& report) {
+  for (const auto& c : report.checks)
+    if (c.name == "exit_count") return &c;
+  return nullptr;
+}
+
+// The exits (doors to the outside) a request asks for, at least: the most of its exits,
+// entrances and, when there are too few doors in all, doors.
+int asked_exits(const WorldRequirements& r) {
+  int n = 0;
+  for (const auto& f : r.features)
+    if (f.feature == Feature::kExit || f.feature == Feature::kEntrance) n = std::max(n, f.count);
+  return n;
+}
+
+// What the world lacks of the request: "2 of the 3 exits" …; empty when it holds all of it.
+std::vector<std::string> unmet(const World& world, const WorldRequirements& r, int code_needed) {
+  std::vector<std::string> out;
+  for (const auto& f : r.features) {
+    int have = count_feature(world, f.feature);
+    int want = f.count;
+    bool exact = !f.at_least;
+    if (f.feature == Feature::kExit || f.feature == Feature::kEntrance) {
+      want = std::max(want, code_needed);  // the code may ask for more than the request
+      if (f.count < code_needed) exact = false;
+      if (f.count == 0) exact = false;  // a building keeps its entrance
+    }
+    if (f.feature == Feature::kDoor) exact = false;  // every room keeps its doors
+    if (have < want || (exact && have > want))
+      out.push_back(std::to_string(have) + " " + std::string(info(f.feature).plural) + " built, " +
+                    std::to_string(want) + (exact ? "" : " or more") + " asked for");
+  }
+  for (const auto& room : r.rooms) {
+    const std::string type = room_type_for(room);
+    const auto have = std::count_if(world.zones().begin(), world.zones().end(), [&](const Zone& z) {
+      return canonical_room_type(z.type) == type || z.name == type;
+    });
+    if (have < room.count)
+      out.push_back("no room '" + room.name + "' (" + type + "): lay it out with apply_room_requirements");
+  }
+  return out;
+}
+
+}  // namespace
+
 Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const MergedConstraint> constraints,
                                       const OfflineOptions& options) {
   if (graph.rooms.empty())
@@ -665,11 +778,16 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
   Layout layout(graph, constraints);
   if (auto s = layout.prepare(); !s) return tl::unexpected(s.error());
   const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
+  const WorldRequirements& wants = options.requirements;
+  const std::optional<double> occupants =
+      wants.occupants ? std::optional<double>(*wants.occupants) : std::nullopt;
+  const std::string& domain = layout.graph().domain;
   Rng rng(options.seed, fnv1a64("floorplan"));
   double scale = 1.0;
   std::vector<std::string> tried;
   std::optional<Error> last_error;
   std::optional<ComplianceReport> last_report;
+  std::vector<std::string> last_unmet;
   const int attempts = std::max(1, options.max_attempts);
   for (int attempt = 0; attempt < attempts; ++attempt) {
     if (auto why = layout.attempt(rng, scale)) {
@@ -678,15 +796,17 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     }
     const Rng furnishing_rng = rng.fork("furnish");
     std::set<std::string> dropped;  // furniture the layout check found in the way, left out
+    FeatureOutcome outcome;
     auto build = [&]() {
       WorldBuilder builder;
-      builder.set_name(layout.graph().domain + "_plan_" + std::to_string(options.seed));
-      builder.set_floor({floor_material(layout.graph().domain)});
+      builder.set_name(domain + "_plan_" + std::to_string(options.seed));
+      builder.set_floor({floor_material(domain)});
       std::vector<Zone> zones;
       std::vector<DoorSpec> doors;
       layout.emit(builder, zones, doors);
       Rng furnishing = furnishing_rng;
       Furnishing f = furnish(zones, doors, rules, furnishing);
+      outcome = furnish_requirements(zones, doors, wants, rules, f);
       for (auto& r : f.rois) builder.add_roi(std::move(r));
       for (auto& e : f.entities)
         if (!dropped.count(e.name)) builder.add_entity(std::move(e));
@@ -698,22 +818,43 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       last_error = world.error();
       continue;
     }
-    ComplianceReport report = check_compliance(*world, layout.graph().domain, constraints);
-    // The occupant load or the travel distance asks for a second exit: add it and check again.
-    std::optional<std::string> exit_note;
-    const auto exit_count = std::find_if(report.checks.begin(), report.checks.end(),
-                                         [](const ComplianceCheck& c) { return c.name == "exit_count"; });
-    if (exit_count != report.checks.end() && exit_count->status == CheckStatus::kFail) {
-      exit_note = layout.add_exit();
-      if (exit_note) {
-        world = build();
-        if (!world) {
-          tried.push_back("the world with a second exit did not validate: " + world.error().message());
-          last_error = world.error();
-          continue;
-        }
-        report = check_compliance(*world, layout.graph().domain, constraints);
+    ComplianceReport report = check_compliance(*world, domain, constraints, occupants);
+    // Exits: as many as the request asks for and the code requires (occupant load, travel
+    // distance), each added as far from the others as the outside walls allow.
+    std::vector<std::string> exit_notes;
+    bool exits_ok = true;
+    for (int round = 0; round < 12 && world; ++round) {
+      const int target = std::max({code_exits(report), asked_exits(wants), 1});
+      bool egress_short = false;
+      std::string far_room;
+      for (const auto& c : report.checks) {
+        if (c.status != CheckStatus::kFail) continue;
+        if (c.name == "egress_width_per_occupant") egress_short = true;
+        if (c.name.rfind("exit_access_travel_distance", 0) == 0) far_room = c.element;
       }
+      const int have = count_feature(*world, Feature::kExit);
+      if (have >= target && !egress_short && far_room.empty()) break;
+      // The exits the count lacks are added together (one build and report for all of them).
+      for (int k = 0; k < std::max(1, target - have) && exits_ok; ++k) {
+        auto note = k == 0 ? layout.add_exit(egress_short, far_room) : layout.add_exit();
+        if (note)
+          exit_notes.push_back(*note);
+        else
+          exits_ok = false;
+      }
+      if (!exits_ok) break;
+      world = build();
+      if (world) report = check_compliance(*world, domain, constraints, occupants);
+    }
+    if (!world) {
+      tried.push_back("the world with more exits did not validate: " + world.error().message());
+      last_error = world.error();
+      continue;
+    }
+    if (!exits_ok) {
+      tried.push_back("no outside wall takes another exit");
+      scale *= 1.15;
+      continue;
     }
     // Footprints clear of walls, doors and each other, every zone and piece of furniture
     // reachable by a person 0.5 m wide: furniture in the way is left out (and the plan built
@@ -738,7 +879,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
           tried.push_back("layout check: " + (world ? check.summary() : world.error().message()));
           continue;
         }
-        report = check_compliance(*world, layout.graph().domain, constraints);
+        report = check_compliance(*world, domain, constraints, occupants);
       }
     }
     if (!report.passed) {
@@ -754,12 +895,40 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       last_report = std::move(report);
       continue;
     }
+    // Everything the request counts or names is there (furniture that did not fit: larger rooms).
+    std::vector<std::string> lacking = outcome.missing;
+    for (auto& u : unmet(*world, wants, code_exits(report))) lacking.push_back(std::move(u));
+    if (!lacking.empty()) {
+      std::string what;
+      for (const auto& l : lacking) what += (what.empty() ? "" : "; ") + l;
+      tried.push_back("the request is not met: " + what);
+      last_unmet = std::move(lacking);
+      scale *= 1.15;
+      continue;
+    }
     FloorPlan plan{std::move(*world), std::move(report), layout.graph(), Json::object()};
     Json notes = layout.notes();
-    if (exit_note) notes.push_back(*exit_note);
-    plan.provenance = {{"generator", "offline"},          {"seed", options.seed},
-                       {"domain", layout.graph().domain}, {"attempts", attempt + 1},
-                       {"notes", std::move(notes)},       {"knowledge", knowledge_provenance(constraints)}};
+    for (const auto& n : exit_notes) notes.push_back(n);
+    const ComplianceCheck* exits = exit_check(plan.compliance);
+    const int asked = asked_exits(wants);
+    if (exits && asked > 0 && exits->required > asked)
+      notes.push_back(std::to_string(asked) + " exit" + (asked == 1 ? "" : "s") +
+                      " asked for; the building code (" + exits->ref_id + ") asks for " +
+                      std::to_string(static_cast<int>(exits->required)));
+    for (const auto& n : outcome.notes) notes.push_back(n);
+    plan.provenance = {{"generator", "offline"},    {"seed", options.seed},
+                       {"domain", domain},          {"attempts", attempt + 1},
+                       {"notes", std::move(notes)}, {"knowledge", knowledge_provenance(constraints)}};
+    if (!wants.empty()) {
+      Json met = Json::array();
+      for (const auto& f : wants.features)
+        met.push_back({{"feature", std::string(to_string(f.feature))},
+                       {"asked", f.count},
+                       {"at_least", f.at_least},
+                       {"built", count_feature(plan.world, f.feature)}});
+      plan.provenance["requirements"] = to_json(wants);
+      plan.provenance["requirements_met"] = std::move(met);
+    }
     return plan;
   }
   std::vector<FieldError> errors;
@@ -770,6 +939,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
                             (c->value ? std::to_string(*c->value) : std::string("nothing")) + " " + c->unit +
                             ", required " + std::to_string(c->required),
                         "", 0, 0});
+  for (const auto& u : last_unmet) errors.push_back({"/requirements", u, "", 0, 0});
   if (last_error)
     for (const auto& e : last_error->errors) errors.push_back(e);
   std::string detail = "no compliant plan after " + std::to_string(attempts) + " attempts";

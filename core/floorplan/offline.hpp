@@ -10,6 +10,7 @@
 #include "core/floorplan/compliance.hpp"
 #include "core/floorplan/scene_graph.hpp"
 #include "core/knowledge/knowledge_base.hpp"
+#include "core/world/requirements.hpp"
 #include "core/world/world_builder.hpp"
 
 namespace socsim::floorplan {
@@ -28,6 +29,10 @@ struct OfflineOptions {
   std::uint64_t seed = 0;
   int max_attempts = 8;  // layouts tried until one builds and passes its compliance report
   BuildOptions build;
+  // What the request asks the world to hold: exits (as many as asked and as the code requires,
+  // far apart), counted furniture (exactly, or at least), named objects, the scenario's people
+  // (egress checked for them). Named rooms must be in the graph (apply_room_requirements).
+  WorldRequirements requirements;
 };
 
 // Same graph, constraints and seed → the same World (identical world.yaml bytes).

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "core/floorplan/rooms.hpp"
 #include "core/geometry/geos.hpp"
 #include "core/geometry/planar.hpp"
 #include "core/world/footprint.hpp"
@@ -165,7 +166,8 @@ std::optional<Point> Placer::entity(const std::string& type, const std::string& 
   std::vector<std::pair<double, double>> tries(candidates);
   if (!tries.empty()) {
     const auto [u0, v0] = tries.front();
-    for (int k = 1; k <= 40; ++k) {
+    const int steps = static_cast<int>(std::ceil(f_.len / 0.25));
+    for (int k = 1; k <= steps; ++k) {
       for (int sgn : {1, -1}) tries.emplace_back(u0 + sgn * 0.25 * k, v0);
     }
   }
@@ -407,7 +409,14 @@ int Placer::grid(const std::string& type, const std::string& base, double u0, do
       const Point p = f_.at(u, v);
       const Pose2 pose{p.x, p.y, f_.yaw(local_yaw)};
       if (!box_free(footprint_box(type, pose), std::nullopt, Areas::kNone)) continue;
-      out_.entities.push_back({type, zone_.name + "_" + numbered(base, placed + 1), pose, affordances});
+      std::string name;
+      for (int k = placed + 1;; ++k) {
+        name = zone_.name + "_" + numbered(base, k);
+        if (std::none_of(out_.entities.begin(), out_.entities.end(),
+                         [&](const EntitySpec& e) { return e.name == name; }))
+          break;
+      }
+      out_.entities.push_back({type, name, pose, affordances});
       ++placed;
     }
   const std::size_t before = out_.entities.size();
@@ -446,6 +455,44 @@ std::optional<CounterPlace> Placer::counter_with_queue(const std::string& type, 
     return CounterPlace{uu, v, std::min(v0, v - hv), std::max(v0 + lane, v + hv)};
   }
   return std::nullopt;
+}
+
+std::vector<DoorAt> doors_of(const Zone& z, std::span<const Zone> zones, std::span<const DoorSpec> doors) {
+  std::vector<DoorAt> here;
+  for (const auto& d : doors) {
+    const auto it = std::find(d.connects.begin(), d.connects.end(), z.name);
+    if (it == d.connects.end()) continue;
+    DoorAt a{d.pose.position(), d.width, d.connects.size() == 1, "", d.name};
+    if (!a.exterior) {
+      const std::string& other = d.connects[it == d.connects.begin() ? 1 : 0];
+      for (const auto& o : zones)
+        if (o.name == other) a.other_type = canonical_room_type(o.type);
+    }
+    here.push_back(std::move(a));
+  }
+  return here;
+}
+
+std::optional<Placer> placer_for(const Zone& z, std::span<const Zone> zones, std::span<const DoorSpec> doors,
+                                 Furnishing& out) {
+  const Box box = inner_box(z.polygon);
+  if (box.width() < 1.0 || box.height() < 1.0) return std::nullopt;
+  const std::vector<DoorAt> here = doors_of(z, zones, doors);
+  const std::string type = canonical_room_type(z.type);
+  const DoorAt* main = nullptr;
+  auto pick = [&](auto pred) {
+    for (const auto& d : here)
+      if (!main && pred(d)) main = &d;
+  };
+  if (type == "sales_floor" || type == "dining_hall" || type == "lobby" || type == "reception" ||
+      type == "security" || type == "concourse" || type == "ticket_hall" || type == "foyer" ||
+      type == "main_hall" || type == "restaurant" || type == "mall_concourse" || type == "production_floor" ||
+      type == "reading_room")
+    pick([](const DoorAt& d) { return d.exterior; });
+  pick([](const DoorAt& d) { return !d.exterior && is_circulation_type(d.other_type); });
+  pick([](const DoorAt&) { return true; });
+  const int side = main ? nearest_side(box, main->centre) : 0;
+  return Placer(z, Frame(box, side), here, out);
 }
 
 }  // namespace socsim::floorplan

@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -120,6 +121,8 @@ class Placer {
   [[nodiscard]] double len() const { return f_.len; }
   [[nodiscard]] double depth() const { return f_.depth; }
   [[nodiscard]] const Zone& zone() const { return zone_; }
+  // Everything furnished so far (all rooms): for a room that tries two arrangements.
+  [[nodiscard]] Furnishing& furnishing() { return out_; }
   // Whether a box lies (partly) in this room: furniture and areas belong to the room they are in.
   [[nodiscard]] bool mine(const Box& b) const { return overlaps(f_.box, b, -0.01); }
 
@@ -195,5 +198,14 @@ class Placer {
   std::vector<Segment> door_segments_;
   Furnishing& out_;
 };
+
+// The doors of zone `z` as the placer sees them (centre, width, outside or the type beyond).
+std::vector<DoorAt> doors_of(const Zone& z, std::span<const Zone> zones, std::span<const DoorSpec> doors);
+
+// A placer for zone `z` in the largest rectangle inside it, facing its main door: the entrance
+// of a shop, hall or lobby, else the door to circulation, else the first. nullopt for a room
+// less than 1 m across.
+std::optional<Placer> placer_for(const Zone& z, std::span<const Zone> zones, std::span<const DoorSpec> doors,
+                                 Furnishing& out);
 
 }  // namespace socsim::floorplan

@@ -1,6 +1,7 @@
 #include "core/floorplan/request.hpp"
 
 #include "core/common/json_check.hpp"
+#include "core/floorplan/features.hpp"
 #include "core/knowledge/types.hpp"
 
 namespace socsim::floorplan {
@@ -12,7 +13,9 @@ Result<FloorPlanRequest> floor_plan_request_from_json(const Json& body) {
     c.add("", "must be an object with scene_graph or prompt");
     return tl::unexpected(c.error("the request is not an object"));
   }
-  c.only_keys(body, "", {"scene_graph", "prompt", "domain", "seed", "generator", "model", "jurisdiction"});
+  c.only_keys(
+      body, "",
+      {"scene_graph", "prompt", "domain", "seed", "generator", "model", "jurisdiction", "requirements"});
   if (const Json* g = c.object(body, "", "scene_graph", false)) r.scene_graph = *g;
   r.prompt = c.string(body, "", "prompt", false, 1, 4000);
   if (r.scene_graph && r.prompt) c.add("/prompt", "give either scene_graph or prompt, not both");
@@ -35,7 +38,15 @@ Result<FloorPlanRequest> floor_plan_request_from_json(const Json& body) {
   r.model = c.string(body, "", "model", false, 1, 200);
   if (r.model && r.generator != "llm") c.add("/model", "a model is chosen only with generator llm");
   if (auto j = c.string(body, "", "jurisdiction", false, 0, 64)) r.jurisdiction = *j;
-  if (!c.ok()) return tl::unexpected(c.error("the world request is invalid"));
+  std::vector<FieldError> errors = c.errors();
+  if (const auto it = body.find("requirements"); it != body.end() && !it->is_null()) {
+    auto req = world_requirements_from_json(*it, "/requirements");
+    if (req)
+      r.requirements = std::move(*req);
+    else
+      errors.insert(errors.end(), req.error().errors.begin(), req.error().errors.end());
+  }
+  if (!errors.empty()) return fail(ErrorCode::kValidation, "the world request is invalid", std::move(errors));
   return r;
 }
 
@@ -54,6 +65,8 @@ Result<ResolvedSceneGraph> resolve_scene_graph(const FloorPlanRequest& request) 
                              ? Json{{"given", true}, {"type", g->domain}}
                              : Json{{"given", false}, {"type", g->domain}, {"from", "room names"}};
     out.graph = std::move(*g);
+    if (auto s = apply_room_requirements(out.graph, request.requirements, true); !s)
+      return tl::unexpected(s.error());
     return out;
   }
   if (!request.prompt)
@@ -67,6 +80,10 @@ Result<ResolvedSceneGraph> resolve_scene_graph(const FloorPlanRequest& request) 
   Json counts = Json::object();
   for (const auto& [type, n] : p->counts) counts[type] = n;
   out.classification["room_counts"] = std::move(counts);
+  std::vector<std::string> notes;
+  if (auto s = apply_room_requirements(out.graph, request.requirements, false, &notes); !s)
+    return tl::unexpected(s.error());
+  if (!notes.empty()) out.classification["requirement_notes"] = notes;
   return out;
 }
 

@@ -16,6 +16,7 @@ struct ProgramRoom {
   std::string_view type;
   int count;
   std::string_view link;  // room type it opens onto; empty: the circulation room
+  bool en_suite = false;  // each room after the first opens onto the one before (galleries)
 };
 
 struct Program {
@@ -75,6 +76,111 @@ const std::vector<Program>& programs() {
        "concourse",
        "security",
        {{"security", 1, ""}, {"gate_area", 2, ""}, {"cafe", 1, ""}, {"toilet", 2, ""}}},
+      {"train_station",
+       "concourse",
+       "ticket_hall",
+       {{"ticket_hall", 1, ""},
+        {"platform", 2, ""},
+        {"waiting_room", 1, ""},
+        {"cafe", 1, ""},
+        {"toilet", 2, ""},
+        {"staff_room", 1, ""}}},
+      {"hotel",
+       "corridor",
+       "lobby",
+       {{"lobby", 1, ""},
+        {"hotel_room", 8, ""},
+        {"restaurant", 1, ""},
+        {"kitchen", 1, "restaurant"},
+        {"storage", 1, ""},
+        {"staff_room", 1, ""},
+        {"toilet", 2, ""}}},
+      {"library",
+       "reading_room",
+       "lobby",
+       {{"lobby", 1, ""},
+        {"library_stacks", 2, ""},
+        {"study_room", 3, ""},
+        {"private_office", 1, ""},
+        {"toilet", 2, ""}}},
+      {"museum",
+       "foyer",
+       "foyer",
+       {{"gallery", 5, "", true},
+        {"cafe", 1, ""},
+        {"shop_unit", 1, ""},
+        {"storage", 1, ""},
+        {"toilet", 2, ""}}},
+      {"theatre",
+       "foyer",
+       "foyer",
+       {{"auditorium", 2, ""}, {"backstage", 1, "auditorium"}, {"storage", 1, ""}, {"toilet", 2, ""}}},
+      {"arena",
+       "concourse",
+       "concourse",
+       {{"arena_floor", 1, ""},
+        {"concession", 3, ""},
+        {"locker_room", 2, ""},
+        {"first_aid", 1, ""},
+        {"storage", 1, ""},
+        {"toilet", 4, ""}}},
+      {"factory",
+       "production_floor",
+       "production_floor",
+       {{"loading_bay", 1, ""},
+        {"storage", 1, ""},
+        {"private_office", 1, ""},
+        {"break_room", 1, ""},
+        {"locker_room", 1, ""},
+        {"toilet", 2, ""}}},
+      {"mall",
+       "mall_concourse",
+       "mall_concourse",
+       {{"shop_unit", 8, ""}, {"food_court", 1, ""}, {"private_office", 1, ""}, {"toilet", 2, ""}}},
+      {"supermarket",
+       "sales_floor",
+       "sales_floor",
+       {{"stock_room", 1, ""},
+        {"loading_bay", 1, "stock_room"},
+        {"private_office", 1, ""},
+        {"staff_room", 1, ""},
+        {"toilet", 1, ""}}},
+      {"restaurant",
+       "restaurant",
+       "restaurant",
+       {{"kitchen", 1, ""}, {"storage", 1, "kitchen"}, {"toilet", 2, ""}}},
+      {"university",
+       "corridor",
+       "lobby",
+       {{"lobby", 1, ""},
+        {"lecture_hall", 2, ""},
+        {"seminar_room", 3, ""},
+        {"private_office", 2, ""},
+        {"cafe", 1, ""},
+        {"toilet", 2, ""}}},
+      {"gym",
+       "corridor",
+       "lobby",
+       {{"lobby", 1, ""},
+        {"sports_hall", 1, ""},
+        {"fitness_room", 1, ""},
+        {"changing_room", 2, ""},
+        {"storage", 1, ""},
+        {"toilet", 1, ""}}},
+      {"care_home",
+       "corridor",
+       "lobby",
+       {{"lobby", 1, ""},
+        {"resident_room", 8, ""},
+        {"day_room", 1, ""},
+        {"nurse_station", 1, ""},
+        {"kitchen", 1, ""},
+        {"staff_room", 1, ""},
+        {"toilet", 2, ""}}},
+      {"community_hall",
+       "main_hall",
+       "main_hall",
+       {{"kitchen", 1, ""}, {"meeting_room", 1, ""}, {"storage", 1, ""}, {"toilet", 2, ""}}},
   };
   return p;
 }
@@ -140,6 +246,40 @@ const std::vector<Term>& terms() {
       {{"office"}, "private_office", true},
       {{"gate"}, "gate_area", true},
       {{"ward"}, "patient_room", true},
+      {{"ticket", "hall"}, "ticket_hall"},
+      {{"platform"}, "platform", true},
+      {{"hotel", "room"}, "hotel_room"},
+      {{"guest", "room"}, "hotel_room"},
+      {{"room"}, "hotel_room", true},
+      {{"restaurant"}, "restaurant"},
+      {{"reading", "room"}, "reading_room"},
+      {{"study", "room"}, "study_room"},
+      {{"stack"}, "library_stacks"},
+      {{"gallery"}, "gallery", true},
+      {{"exhibition", "room"}, "gallery"},
+      {{"foyer"}, "foyer"},
+      {{"auditorium"}, "auditorium", true},
+      {{"screen"}, "auditorium", true},
+      {{"cinema", "hall"}, "auditorium"},
+      {{"backstage"}, "backstage"},
+      {{"concession", "stand"}, "concession"},
+      {{"kiosk"}, "concession", true},
+      {{"first", "aid", "room"}, "first_aid"},
+      {{"lecture", "hall"}, "lecture_hall"},
+      {{"lecture", "theatre"}, "lecture_hall"},
+      {{"seminar", "room"}, "seminar_room"},
+      {{"production", "floor"}, "production_floor"},
+      {{"production", "hall"}, "production_floor"},
+      {{"locker", "room"}, "locker_room"},
+      {{"changing", "room"}, "changing_room"},
+      {{"shop"}, "shop_unit", true},
+      {{"store"}, "shop_unit", true},
+      {{"food", "court"}, "food_court"},
+      {{"sports", "hall"}, "sports_hall"},
+      {{"fitness", "room"}, "fitness_room"},
+      {{"resident", "room"}, "resident_room"},
+      {{"day", "room"}, "day_room"},
+      {{"main", "hall"}, "main_hall"},
   };
   return t;
 }
@@ -152,7 +292,19 @@ std::string_view localise(std::string_view domain, std::string_view type) {
   if ((domain == "hospital" || domain == "school" || domain == "airport") && type == "reception")
     return "lobby";
   if (domain == "office" && type == "lobby") return "reception";
-  if (domain == "retail" && type == "storage") return "stock_room";
+  if ((domain == "retail" || domain == "supermarket") && type == "storage") return "stock_room";
+  if ((domain == "care_home") && (type == "bedroom" || type == "patient_room" || type == "hotel_room"))
+    return "resident_room";
+  if (domain == "hotel" && type == "bedroom") return "hotel_room";
+  // "twenty rooms": guest rooms in a hotel, residents' rooms in a care home, bedrooms at home.
+  if (domain != "hotel" && type == "hotel_room")
+    return domain == "care_home" ? "resident_room" : domain == "residential" ? "bedroom" : "";
+  if ((domain == "hotel" || domain == "gym" || domain == "university" || domain == "care_home" ||
+       domain == "library") &&
+      type == "reception")
+    return "lobby";
+  if ((domain == "theatre" || domain == "museum") && (type == "lobby" || type == "reception")) return "foyer";
+  if (domain != "mall" && domain != "museum" && type == "shop_unit") return "sales_floor";
   return type;
 }
 
@@ -239,13 +391,18 @@ SceneGraph room_program(std::string_view domain, const std::map<std::string, int
   for (const auto& r : rooms) {
     const auto it = counts.find(std::string(r.type));
     const int n = it != counts.end() ? it->second : r.count;
+    std::string previous;
     for (int i = 0; i < n; ++i) {
       const std::string name = room_name(r.type, i, n);
       g.rooms.push_back({name, std::string(r.type), std::nullopt});
       first_of_type.emplace(std::string(r.type), name);
       const auto link = first_of_type.find(std::string(r.link));
-      g.adjacency.emplace_back(r.link.empty() || link == first_of_type.end() ? circulation : link->second,
-                               name);
+      if (r.en_suite && !previous.empty())
+        g.adjacency.emplace_back(previous, name);
+      else
+        g.adjacency.emplace_back(r.link.empty() || link == first_of_type.end() ? circulation : link->second,
+                                 name);
+      previous = name;
     }
   }
   const auto entrance = first_of_type.find(std::string(p.entrance));
@@ -301,6 +458,7 @@ Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::o
     }
     const std::string type(localise(d, match->type));
     i += match->words.size();
+    if (type.empty()) continue;  // a word that names no room in this kind of building
     if (negated || (match->count_only && !n)) continue;
     if (n) {
       if (*n > kMaxRoomsPerType)

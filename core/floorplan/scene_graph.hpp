@@ -43,7 +43,9 @@ Json to_json(const SceneGraph& graph);
 // not in the program are added, with an edge to the circulation room): residential — hallway,
 // living room, kitchen, bedrooms, bathroom, storage; office — reception, corridor, open office,
 // meeting rooms, kitchenette, toilets; hospital — lobby (reception and waiting area), corridor,
-// patient rooms, nurse station, treatment rooms, toilets; canteen, retail, warehouse, school, airport.
+// patient rooms, nurse station, treatment rooms, toilets; canteen, retail, warehouse, school, airport,
+// and the venues of the worlds issue (station, hotel, library, museum, theatre, arena, factory, mall,
+// supermarket, restaurant, university, gym, care home, community hall).
 SceneGraph room_program(std::string_view domain, const std::map<std::string, int>& counts = {});
 
 struct PromptSceneGraph {

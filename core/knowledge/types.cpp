@@ -9,8 +9,12 @@
 namespace socsim::knowledge {
 namespace {
 
-constexpr std::array<std::string_view, 8> kBuildingTypes = {
-    "residential", "office", "hospital", "canteen", "retail", "warehouse", "school", "airport"};
+// Order matters for ties in classification: the earlier type wins.
+constexpr std::array<std::string_view, 22> kBuildingTypes = {
+    "residential", "office",  "hospital",      "canteen",       "retail",      "warehouse",
+    "school",      "airport", "train_station", "hotel",         "library",     "museum",
+    "theatre",     "arena",   "factory",       "mall",          "supermarket", "restaurant",
+    "university",  "gym",     "care_home",     "community_hall"};
 // "ratio": a dimensionless fraction (e.g. of a plan's diagonal).
 constexpr std::array<std::string_view, 9> kSiUnits = {
     "m", "m²", "m³/person", "m²/person", "m/person", "persons/m²", "m/s", "persons", "ratio"};

@@ -233,6 +233,7 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
   } else {
     floorplan::OfflineOptions o;
     o.seed = request.seed;
+    o.requirements = fpr->requirements;
     plan = floorplan::generate_floor_plan(resolved->graph, *constraints, o);
   }
   if (!plan) return tl::unexpected(plan.error());

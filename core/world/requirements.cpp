@@ -117,10 +117,6 @@ std::string singular_last(std::string s) {
   return head + last;
 }
 
-bool has(const std::vector<std::string>& v, std::string_view x) {
-  return std::find(v.begin(), v.end(), x) != v.end();
-}
-
 bool one_of(std::string_view s, std::initializer_list<std::string_view> options) {
   return std::find(options.begin(), options.end(), s) != options.end();
 }
@@ -341,6 +337,50 @@ Json to_json(const WorldRequirements& r) {
   return out;
 }
 
+bool entity_is(Feature feature, std::string_view t, std::span<const std::string> affordances) {
+  auto has_aff = [&](std::string_view a) {
+    return std::find(affordances.begin(), affordances.end(), a) != affordances.end();
+  };
+  const bool pays = has_aff("pay");
+  const bool boards = has_aff("board");
+  switch (feature) {
+    case F::kCounter:
+      return t == "counter" && !pays && !boards;
+    case F::kCheckout:
+      return (t == "counter" && pays) || t == "checkout";
+    case F::kGate:
+      return t == "ticket_gate" || boards;
+    case F::kElevator:
+      return t == "elevator";
+    case F::kStair:
+      return t == "stairs";
+    case F::kEscalator:
+      return t == "escalator";
+    case F::kTable:
+      return one_of(t, {"table", "dining_table", "meeting_table", "reading_table"});
+    case F::kSeat:
+      return one_of(t, {"chair", "seat", "bench", "sofa", "armchair", "stool"});
+    case F::kDesk:
+      return one_of(t, {"desk", "teacher_desk"});
+    case F::kBed:
+      return t == "bed" || t == "hospital_bed";
+    case F::kShelf:
+      return t == "shelf" || t == "bookshelf";
+    case F::kRack:
+      return t == "rack";
+    case F::kScreen:
+      return t == "screen" || t == "cinema_screen";
+    case F::kStage:
+      return t == "stage";
+    case F::kBar:
+      return t == "bar_counter";
+    case F::kLocker:
+      return t == "locker";
+    default:
+      return false;
+  }
+}
+
 int count_feature(const World& world, Feature feature) {
   int n = 0;
   switch (feature) {
@@ -357,65 +397,7 @@ int count_feature(const World& world, Feature feature) {
     default:
       break;
   }
-  for (const auto& e : world.entities()) {
-    const std::string& t = e.type;
-    const bool pays = has(e.affordances, "pay");
-    const bool boards = has(e.affordances, "board");
-    bool counts = false;
-    switch (feature) {
-      case F::kCounter:
-        counts = t == "counter" && !pays && !boards;
-        break;
-      case F::kCheckout:
-        counts = (t == "counter" && pays) || t == "checkout";
-        break;
-      case F::kGate:
-        counts = t == "ticket_gate" || boards;
-        break;
-      case F::kElevator:
-        counts = t == "elevator";
-        break;
-      case F::kStair:
-        counts = t == "stairs";
-        break;
-      case F::kEscalator:
-        counts = t == "escalator";
-        break;
-      case F::kTable:
-        counts = one_of(t, {"table", "dining_table", "meeting_table"});
-        break;
-      case F::kSeat:
-        counts = one_of(t, {"chair", "seat", "bench", "sofa", "armchair", "stool"});
-        break;
-      case F::kDesk:
-        counts = one_of(t, {"desk", "teacher_desk"});
-        break;
-      case F::kBed:
-        counts = t == "bed";
-        break;
-      case F::kShelf:
-        counts = t == "shelf";
-        break;
-      case F::kRack:
-        counts = t == "rack";
-        break;
-      case F::kScreen:
-        counts = t == "screen";
-        break;
-      case F::kStage:
-        counts = t == "stage";
-        break;
-      case F::kBar:
-        counts = t == "bar_counter";
-        break;
-      case F::kLocker:
-        counts = t == "locker";
-        break;
-      default:
-        break;
-    }
-    n += counts;
-  }
+  for (const auto& e : world.entities()) n += entity_is(feature, e.type, e.affordances);
   return n;
 }
 

@@ -108,5 +108,8 @@ std::string snake_case(std::string_view words);
 
 // How many of a feature the world has (see Feature for what counts).
 int count_feature(const World& world, Feature feature);
+// Whether an entity of this type and these affordances is one of a feature (not for the
+// features that are doors or zones: exits, entrances, doors, platforms, toilets).
+bool entity_is(Feature feature, std::string_view type, std::span<const std::string> affordances);
 
 }  // namespace socsim::world

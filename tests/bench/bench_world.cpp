@@ -1,8 +1,10 @@
 // socsim-bench world: build + validate a 10-room plan (GEOS checks, derived walls, reachability
 // grid), a 256 x 256 geodesic field, a world.yaml read/write round trip, and offline floor-plan
-// generation of a 10-room hospital plan (layout, furnishing, validation, compliance); p50/p95 in ms.
+// generation of a 10-room hospital plan and of 60-room mall and arena plans (layout, furnishing,
+// validation, compliance, layout check); p50/p95 in ms.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -134,8 +136,49 @@ int run(const socsim::bench::Args& a) {
   return floor_plans(runs);
 }
 
-// Offline generation of a 10-room hospital plan (lobby, corridor, 3 patient rooms, nurse station,
-// 2 treatment rooms, 2 toilets), one seed per run, against the seeded knowledge store.
+// Offline generation of one plan per run (one seed each) against the seeded knowledge store:
+// layout, furnishing, validation, compliance, extra exits, the layout check. `label` names it.
+int floor_plan(socsim::knowledge::KnowledgeBase& kb, const std::string& label, const std::string& domain,
+               const SceneGraph& graph, int runs) {
+  const auto constraints = kb.constraints_for(domain).value();
+  std::vector<double> gen_ms;
+  std::vector<double> gen_cpu;
+  double attempts = 0;
+  std::size_t entities = 0, zones = 0;
+  for (int i = 0; i < runs; ++i) {
+    OfflineOptions o;
+    o.seed = static_cast<std::uint64_t>(i + 1);
+    const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = thread_cpu_ms();
+    auto plan = generate_floor_plan(graph, constraints, o);
+    gen_cpu.push_back(thread_cpu_ms() - c0);
+    gen_ms.push_back(ms_since(t0));
+    if (!plan || !plan->compliance.passed) {
+      std::cerr << label << " seed " << o.seed << ": "
+                << (plan ? "plan not compliant" : plan.error().message()) << "\n";
+      return 1;
+    }
+    attempts += plan->provenance["attempts"].get<double>();
+    entities += plan->world.entities().size();
+    zones = plan->world.zones().size();
+  }
+  socsim::bench::emit({{"bench", label},
+                       {"runs", runs},
+                       {"zones", zones},
+                       {"constraints", constraints.size()},
+                       {"mean_attempts", attempts / runs},
+                       {"mean_entities", static_cast<double>(entities) / runs},
+                       {"p50_ms", socsim::bench::percentile(gen_ms, 50)},
+                       {"p95_ms", socsim::bench::percentile(gen_ms, 95)},
+                       {"cpu_p50_ms", socsim::bench::percentile(gen_cpu, 50)},
+                       {"cpu_p95_ms", socsim::bench::percentile(gen_cpu, 95)}});
+  return 0;
+}
+
+// A 10-room hospital plan (lobby, corridor, 3 patient rooms, nurse station, 2 treatment rooms,
+// 2 toilets), a 60-room mall (concourse, 50 shops, food court, 2 offices, 6 toilets) and a
+// 60-room arena (concourse, arena floor, 20 concession stands, 10 locker rooms, 2 first-aid
+// rooms, 6 stores, 20 toilets).
 int floor_plans(int runs) {
   const auto db =
       std::filesystem::temp_directory_path() / ("socsim-bench-world-" + std::to_string(::getpid()) + ".db");
@@ -147,39 +190,20 @@ int floor_plans(int runs) {
       return 1;
     }
     socsim::knowledge::KnowledgeBase kb(**store);
-    const auto constraints = kb.constraints_for("hospital").value();
-    const SceneGraph graph = room_program("hospital", {{"patient_room", 3}});
-    std::vector<double> gen_ms;
-    std::vector<double> gen_cpu;
-    double attempts = 0;
-    std::size_t entities = 0;
-    for (int i = 0; i < runs; ++i) {
-      OfflineOptions o;
-      o.seed = static_cast<std::uint64_t>(i + 1);
-      const auto t0 = std::chrono::steady_clock::now();
-      const double c0 = thread_cpu_ms();
-      auto plan = generate_floor_plan(graph, constraints, o);
-      gen_cpu.push_back(thread_cpu_ms() - c0);
-      gen_ms.push_back(ms_since(t0));
-      if (!plan || !plan->compliance.passed) {
-        std::cerr << (plan ? "plan not compliant" : plan.error().message()) << "\n";
-        status = 1;
-        break;
-      }
-      attempts += plan->provenance["attempts"].get<double>();
-      entities += plan->world.entities().size();
-    }
+    status = floor_plan(kb, "floor_plan_offline_10_rooms", "hospital",
+                        room_program("hospital", {{"patient_room", 3}}), runs);
+    const int big_runs = std::max(1, runs / 5);
     if (status == 0)
-      socsim::bench::emit({{"bench", "floor_plan_offline_10_rooms"},
-                           {"runs", runs},
-                           {"zones", graph.rooms.size()},
-                           {"constraints", constraints.size()},
-                           {"mean_attempts", attempts / runs},
-                           {"mean_entities", static_cast<double>(entities) / runs},
-                           {"p50_ms", socsim::bench::percentile(gen_ms, 50)},
-                           {"p95_ms", socsim::bench::percentile(gen_ms, 95)},
-                           {"cpu_p50_ms", socsim::bench::percentile(gen_cpu, 50)},
-                           {"cpu_p95_ms", socsim::bench::percentile(gen_cpu, 95)}});
+      status = floor_plan(kb, "floor_plan_offline_60_room_mall", "mall",
+                          room_program("mall", {{"shop_unit", 50}, {"private_office", 2}, {"toilet", 6}}),
+                          big_runs);
+    if (status == 0)
+      status = floor_plan(
+          kb, "floor_plan_offline_60_room_arena", "arena",
+          room_program(
+              "arena",
+              {{"concession", 20}, {"locker_room", 10}, {"first_aid", 2}, {"storage", 6}, {"toilet", 20}}),
+          big_runs);
   }
   std::error_code ec;
   for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix, ec);
@@ -190,5 +214,5 @@ int floor_plans(int runs) {
 
 SOCSIM_BENCH("world",
              "world build+validate (10 rooms), 256x256 geodesic field, world.yaml round trip, offline "
-             "10-room floor plan",
+             "floor plans (10-room hospital, 60-room mall and arena)",
              run);

@@ -74,6 +74,38 @@ TEST(Worlds, OfflineGenerationIsStoredWithComplianceAndProvenance) {
   EXPECT_EQ(c.Get(("/api/v1/worlds/" + id2 + "/world.yaml").c_str())->body, yaml->body);
 }
 
+TEST(Worlds, RequirementsAreBuiltOrNamed) {
+  TestServer s;
+  auto c = s.client();
+  auto r = post(c, "/api/v1/worlds",
+                {{"prompt", "a canteen"},
+                 {"seed", 2},
+                 {"requirements",
+                  {{"features", {{{"feature", "exit"}, {"count", 3}}, {{"feature", "tables"}, {"count", 8}}}},
+                   {"objects", {{{"name", "music system"}}}},
+                   {"occupants", 90}}}});
+  ASSERT_EQ(r->status, 201) << r->body;
+  const std::string id = Json::parse(r->body)["id"];
+  const Json w = json_of(c.Get(("/api/v1/worlds/" + id).c_str()));
+  int exits = 0, tables = 0, music = 0;
+  for (const auto& d : w["world"]["doors"]) exits += d["connects"].size() == 1;
+  for (const auto& e : w["world"]["entities"]) {
+    tables += e["type"] == "table";
+    music += e["type"] == "music_system";
+  }
+  EXPECT_EQ(exits, 3);
+  EXPECT_EQ(tables, 8);
+  EXPECT_EQ(music, 1);
+  EXPECT_EQ(w["compliance"]["scenario_occupants"], 90);
+  EXPECT_EQ(w["provenance"]["requirements_met"][0]["built"], 3);
+
+  auto bad =
+      post(c, "/api/v1/worlds",
+           {{"prompt", "a flat"}, {"requirements", {{"features", {{{"feature", "moat"}, {"count", 1}}}}}}});
+  ASSERT_EQ(bad->status, 422);
+  EXPECT_THAT(bad->body, HasSubstr("/requirements/features/0/feature"));
+}
+
 TEST(Worlds, ExportsInEveryFormat) {
   TestServer s;
   auto c = s.client();

@@ -39,9 +39,23 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"an open-plan office with two meeting rooms", "office", "office"},
         Case{"colleagues chatting by the printer before the board meeting in the conference room", "office",
              "conference room"},
-        Case{"a supermarket checkout queue on Saturday", "retail", "supermarket"},
+        Case{"a supermarket checkout queue on Saturday", "supermarket", "supermarket"},
         Case{"shoppers browsing the shelves of a boutique", "retail", "boutique"},
-        Case{"people ordering at a coffee shop counter", "canteen", "coffee shop"},
+        Case{"people ordering at a coffee shop counter", "restaurant", "coffee shop"},
+        Case{"commuters rushing through the ticket barriers of a metro station", "train_station",
+             "metro station"},
+        Case{"guests checking in at the hotel reception", "hotel", "hotel"},
+        Case{"students reading in the library", "library", "library"},
+        Case{"visitors looking at paintings in the art gallery", "museum", "art gallery"},
+        Case{"the audience leaves the cinema after the film", "theatre", "cinema"},
+        Case{"fans leaving the stadium after the concert", "arena", "stadium"},
+        Case{"workers on the production line of a factory", "factory", "factory"},
+        Case{"a busy shopping mall on Saturday", "mall", "shopping mall"},
+        Case{"a waiter brings the menu in a restaurant", "restaurant", "restaurant"},
+        Case{"students leaving the lecture hall at the university", "university", "university"},
+        Case{"people working out in the gym", "gym", "gym"},
+        Case{"residents of a care home having lunch", "care_home", "care home"},
+        Case{"voters queue at the polling station", "community_hall", "polling station"},
         Case{"forklifts and pickers on the loading dock", "warehouse", "forklift"},
         Case{"pupils leaving the classroom for recess", "school", "classroom"},
         Case{"passengers waiting at the departure gate", "airport", "departure gate"},
@@ -74,7 +88,7 @@ TEST(KnowledgeClassifyBuildingType, PhrasesWinOverTheirWordsAndEvidenceKeepsText
   const BuildingTypeGuess g = classify_building_type("a coffee shop next to a hospital");
   ASSERT_EQ(g.evidence.size(), 2u);
   EXPECT_EQ(g.evidence[0].term, "coffee shop");
-  EXPECT_EQ(g.evidence[0].type, "canteen");
+  EXPECT_EQ(g.evidence[0].type, "restaurant");
   EXPECT_EQ(g.evidence[1].term, "hospital");
   EXPECT_EQ(g.scores.count("retail"), 0u);  // "shop" was not counted on its own
 }

@@ -89,6 +89,10 @@ TEST_F(KnowledgeSeedDataTest, EveryDomainOfTheIssueIsCovered) {
     EXPECT_GE(per_type[t], 3) << t;
   EXPECT_GE(per_type["school"], 1);
   EXPECT_GE(per_type["airport"], 1);
+  // The venues of the worlds issue: occupant load factors and travel distance at least, each.
+  for (const char* t : {"train_station", "hotel", "library", "museum", "theatre", "arena", "factory", "mall",
+                        "supermarket", "restaurant", "university", "gym", "care_home", "community_hall"})
+    EXPECT_GE(per_type[t], 2) << t;
 }
 
 TEST_F(KnowledgeSeedDataTest, ThePaperFiveReferencesCarryTheirValuesInSi) {
