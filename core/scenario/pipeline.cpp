@@ -11,6 +11,7 @@
 #include "core/floorplan/llm.hpp"
 #include "core/floorplan/request.hpp"
 #include "core/floorplan/rooms.hpp"
+#include "core/scenario/intent_check.hpp"
 #include "core/scenario/intent_world.hpp"
 #include "core/scenario/offline_tree.hpp"
 #include "core/scenario/program_check.hpp"
@@ -270,11 +271,22 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
   const world::WorldRequirements requirements = world_requirements(*intent);
   const bool passed = pass_requirements(*fpr, requirements);
   auto resolved = floorplan::resolve_scene_graph(*fpr);
+  Json programme_fallback = nullptr;
+  if (!resolved && resolved.error().code == ErrorCode::kValidation && !request.scene_graph && fpr->domain) {
+    // The floor-plan reader refused the prompt's rooms (it read "35 office workers" as 35
+    // offices, more than a plan holds): the building type's usual programme still gives a world.
+    programme_fallback =
+        Json{{"why", resolved.error().message()}, {"programme", "the usual rooms of a " + *fpr->domain}};
+    resolved = floorplan::ResolvedSceneGraph{floorplan::room_program(*fpr->domain),
+                                             Json{{"given", false}, {"type", *fpr->domain}}};
+  }
   if (!resolved) return tl::unexpected(resolved.error());
   // A plan laid out from the prompt grows to hold the people it counts. The building code check of
   // the offline generator may refuse a grown plan (exit width for its occupant load): then it
   // grows less, and at worst keeps its typical sizes (the program notes who did not fit).
-  const std::size_t people = people_named(*intent);
+  // (No more than the agents a scenario may hold: a crowd beyond them is scaled down anyway.)
+  const std::size_t people =
+      std::min(people_named(*intent), request.agents.value_or(ScenarioLimits{}.max_agents));
   double typical_area = 0.0;
   const double growth = request.scene_graph ? 1.0 : growth_for_people(resolved->graph, people, typical_area);
   Json sized = nullptr;
@@ -295,7 +307,11 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
     if (growth > 1.0) factors.insert(factors.end(), {std::sqrt(growth), 1.0});
     std::string refused;  // why the larger plan was not built
     for (const double f : factors) {
-      plan = floorplan::generate_floor_plan(grown(resolved->graph, f), *constraints, o);
+      // A grown plan the code check refuses is refused at every attempt (its exits do not grow
+      // with it): two attempts tell, and large plans are slow to build.
+      floorplan::OfflineOptions attempt = o;
+      if (f > 1.0) attempt.max_attempts = std::min(o.max_attempts, 2);
+      plan = floorplan::generate_floor_plan(grown(resolved->graph, f), *constraints, attempt);
       if (growth > 1.0)
         sized =
             Json{{"people", people},
@@ -314,6 +330,7 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
   plan->provenance["compliance_passed"] = plan->compliance.passed;
   if (!venue.is_null()) plan->provenance["venue"] = venue;
   if (!sized.is_null()) plan->provenance["sized_for_people"] = sized;
+  if (!programme_fallback.is_null()) plan->provenance["programme_fallback"] = programme_fallback;
   plan->provenance["intent_requirements"] =
       Json{{"requirements", world::to_json(requirements)}, {"passed_to_generator", passed}};
   return ScenarioWorld{std::move(plan->world), resolved->graph.domain, std::move(plan->provenance),
@@ -393,6 +410,11 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
   }
   if (s.cancel.cancelled()) return fail(ErrorCode::kCancelled, "the scenario was cancelled");
 
+  // What the prompt says: the card stores it, and the program is read against it.
+  auto understood = interpret_prompt(request.prompt);
+  if (!understood) return tl::unexpected(understood.error());
+  const ScenarioIntent& intent = *understood;
+
   report(0.1, "writing the scenario program (" + request.generator + ")");
   ProgramRequest pr;
   pr.prompt = request.prompt;
@@ -423,15 +445,24 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
   auto& c = out.card;
   c.title = request.title.empty() ? short_title(request.prompt) : request.title;
   c.description = describe_program(generated->program);
-  // People the prompt asked for that the program could not hold are said on the card.
+  // Every group the prompt did not name is listed with the reason it is there.
+  const Json added = generated->provenance.contains("added_groups")
+                         ? generated->provenance["added_groups"]
+                         : added_groups(generated->program, intent, generated->categories, world->domain);
+  for (const Json& g : added)
+    c.description += " Added: " + std::to_string(g.value("count", 0)) + " " + g.value("role", std::string()) +
+                     " (" + g.value("why", std::string()) + ").";
+  // People the prompt asked for that the program could not hold (the agents cap, the building) are
+  // said on the card.
   for (const auto& note : generated->provenance.value("notes", Json::array())) {
     if (!note.is_string()) continue;
     const std::string n = note.get<std::string>();
     if (n.find("fit") != std::string::npos || n.find("scaled down") != std::string::npos ||
-        n.find("left out") != std::string::npos)
+        n.find("left out") != std::string::npos || n.find("cut in proportion") != std::string::npos)
       c.description += " " + n + ".";
   }
   c.prompt = request.prompt;
+  c.intent = to_json(intent);
   c.seed = request.seed;
   c.generator.name = request.generator;
   if (request.generator == "llm") {

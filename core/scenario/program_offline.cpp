@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/scenario/intent_check.hpp"
 #include "core/scenario/offline_plan.hpp"
 #include "core/scenario/program_check.hpp"
 #include "core/scenario/scenario_intent.hpp"
@@ -615,12 +616,9 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   std::vector<Activity> activities = plan_activities(intent, world, place_log);
 
   Draft draft(probe, *catalogue, intent, request, limits);
-  // Counted groups ("twelve patients and one nurse") or "only"/"except" say who is there; a bare
-  // "visitors check in at the front desk" leaves the usual staff (a receptionist) to the planner.
-  const bool counted = std::any_of(named->groups.begin(), named->groups.end(),
-                                   [](const PeopleGroup& g) { return g.count.specified(); });
-  draft.named_only =
-      !named->groups.empty() && !named->background && (counted || named->exclusivity.exclusive);
+  // A prompt that names people says who is there ("visitors check in at the front desk": visitors,
+  // no receptionist nobody asked for); background people only when it asks ("busy", "others").
+  draft.named_only = names_who_is_there(*named);
   for (const PeopleGroup& g : named->groups) draft.role_basis[g.program_role] = g.normalized_role;
   if (room_note) draft.note(*room_note);
   if (draft.named_only &&
@@ -696,6 +694,7 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   provenance["categories"] = categories;
   provenance["intent"] = to_json(intent);
   provenance["scenario_intent"] = to_json(*named);
+  provenance["added_groups"] = added_groups(program, *named, categories, probe.domain());
   provenance["activities"] = activity_log;
   provenance["place_mentions"] = place_log;
   provenance["knowledge"] = catalogue->provenance();
