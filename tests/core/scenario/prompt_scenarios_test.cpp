@@ -4,7 +4,7 @@
 // extra, the total): the test fails when fewer than 95 % of the facts hold, when a prompt gives
 // no scenario, or when more than 5 % of the prompts hold people nobody asked for. The same
 // figures: `socsim-bench prompts --scenario` (98 % when this was written). It runs the whole set
-// (about 40 s in the Debug build: a floor plan per prompt), not a sample, so that no prompt is
+// (40-70 s in the Debug build on the shared machine: a floor plan per prompt), not a sample, so no prompt is
 // left unchecked.
 #include <gtest/gtest.h>
 #include <unistd.h>
