@@ -91,6 +91,13 @@ void read_content(JsonChecker& c, const Json& body, const CardLimits& limits, bo
     else
       (std::string_view(key) == "world" ? out.world : out.program) = v;
   }
+  if (body.contains("intent")) {
+    const Json& v = body["intent"];
+    if (!v.is_null() && !v.is_object())
+      c.add("/intent", "must be an object (schemas/intent.schema.json) or null");
+    else
+      out.intent = v;
+  }
   for (const char* key : {"metrics", "provenance"}) {
     if (const Json* o = c.object(body, "", key, false))
       (std::string_view(key) == "metrics" ? out.metrics : out.provenance) = *o;
@@ -118,9 +125,9 @@ void read_content(JsonChecker& c, const Json& body, const CardLimits& limits, bo
   }
 }
 
-constexpr std::array<std::string_view, 12> kContentKeys = {
-    "title",  "description", "tags",    "prompt",  "seed",           "generator",
-    "domain", "world",       "program", "metrics", "trajectory_log", "provenance"};
+constexpr std::array<std::string_view, 13> kContentKeys = {
+    "title", "description", "tags",    "prompt",         "seed",       "generator", "domain",
+    "world", "program",     "metrics", "trajectory_log", "provenance", "intent"};
 
 }  // namespace
 
@@ -151,18 +158,21 @@ Result<CardContent> merge_card_content(const CardContent& base, const Json& patc
 Json content_to_json(const CardContent& c) {
   Json g = {{"name", c.generator.name}};
   if (c.generator.model) g["model"] = *c.generator.model;
-  return Json{{"title", c.title},
-              {"description", c.description},
-              {"tags", c.tags},
-              {"prompt", c.prompt},
-              {"seed", c.seed},
-              {"generator", g},
-              {"domain", c.domain ? Json(*c.domain) : Json(nullptr)},
-              {"world", c.world},
-              {"program", c.program},
-              {"metrics", c.metrics},
-              {"trajectory_log", c.trajectory_log},
-              {"provenance", c.provenance}};
+  Json j{{"title", c.title},
+         {"description", c.description},
+         {"tags", c.tags},
+         {"prompt", c.prompt},
+         {"seed", c.seed},
+         {"generator", g},
+         {"domain", c.domain ? Json(*c.domain) : Json(nullptr)},
+         {"world", c.world},
+         {"program", c.program},
+         {"metrics", c.metrics},
+         {"trajectory_log", c.trajectory_log},
+         {"provenance", c.provenance}};
+  // Absent rather than null when there is none, so cards from before the field keep their hash.
+  if (!c.intent.is_null()) j["intent"] = c.intent;
+  return j;
 }
 
 std::string content_hash(const CardContent& content, std::int64_t version,
@@ -186,7 +196,7 @@ Json to_json(const Card& card) {
 
 Json summary_json(const Card& card) {
   Json j = to_json(card);
-  for (const char* k : {"world", "program", "metrics", "provenance", "trajectory_log"}) j.erase(k);
+  for (const char* k : {"world", "program", "metrics", "provenance", "trajectory_log", "intent"}) j.erase(k);
   return j;
 }
 
@@ -195,10 +205,10 @@ Result<Card> parse_card(const Json& json, const CardLimits& limits) {
     return fail(ErrorCode::kValidation, "a card must be a JSON object",
                 {{"", "must be an object", "", 0, 0}});
   JsonChecker c;
-  c.only_keys(
-      json, "",
-      {"title", "description", "tags", "prompt", "seed", "generator", "domain", "world", "program", "metrics",
-       "trajectory_log", "provenance", "id", "author", "version", "parent_id", "created_at", "content_hash"});
+  c.only_keys(json, "",
+              {"title", "description", "tags", "prompt", "seed", "generator", "domain", "world", "program",
+               "metrics", "trajectory_log", "provenance", "intent", "id", "author", "version", "parent_id",
+               "created_at", "content_hash"});
   Card card;
   read_content(c, json, limits, true, card.content);
   if (auto v = c.string(json, "", "id", true); v && !is_card_id(*v))

@@ -31,6 +31,9 @@ struct CardContent {
   Json metrics = Json::object();
   Json trajectory_log;  // {uri, format, frames, sha256} or null
   Json provenance = Json::object();
+  // What the prompt was understood to say (schemas/intent.schema.json) or null. Cards made before
+  // it existed have none; it is left out of their JSON and their content hash.
+  Json intent = nullptr;
 };
 
 struct Card {
@@ -59,7 +62,7 @@ Result<Card> parse_card(const Json& json, const CardLimits& limits);
 
 Json content_to_json(const CardContent& c);
 Json to_json(const Card& card);
-Json summary_json(const Card& card);  // without world, program, metrics, provenance
+Json summary_json(const Card& card);  // without world, program, metrics, provenance, intent
 
 // SHA-256 of the canonical JSON of the content plus lineage (version, parent_id). Server-assigned
 // identity (id, author, created_at) is not part of it, so a card keeps its hash across catalogues.

@@ -537,7 +537,11 @@ Status plan_reception(Draft& d, const Activity& a, Rng& rng) {
     });
     if (!tree) return tl::unexpected(tree.error());
     spawn_people(d, spot, around(p, zone, false), "visitor", *tree, -1, C::kReception);
-    return {};
+    // Those beyond the spotlight share arrive as a crowd and wait in the room.
+    Status status;
+    leftover_ambient(d, C::kReception, rest, around(p, zone, false), {zone},
+                     "arriving to check in at " + *poi, false, rng, status);
+    return status;
   }
   d.place_used(C::kReception, "queue lane", lane->name, why);
   const ExitPlace* exit = nearest_exit(lane->service);

@@ -10,6 +10,10 @@
 #include "core/crowd/scenario_runner.hpp"
 #include "core/floorplan/llm.hpp"
 #include "core/floorplan/request.hpp"
+#include "core/floorplan/rooms.hpp"
+#include "core/scenario/intent_check.hpp"
+#include "core/scenario/intent_world.hpp"
+#include "core/scenario/offline_tree.hpp"
 #include "core/scenario/program_check.hpp"
 #include "core/scenario/program_llm.hpp"
 #include "core/scenario/scenario_intent.hpp"
@@ -129,6 +133,39 @@ std::string describe_program(const Json& program) {
   return text + ".";
 }
 
+// Floor area a generated plan gives each person the prompt counts, over its rooms with a typical
+// size: the offline planner places at most 0.8 people per m² of a room's floor 0.35 m in from its
+// walls (about 70 % of a generated room's area), and an activity fills its own rooms first.
+constexpr double kAreaPerNamedPerson = 2.3;
+
+// How much the rooms of a prompt's programme must grow, all by one factor, to hold the people the
+// prompt counts ("2,000 fans", "600 shoppers"); 1 when their typical sizes hold them. Toilets and
+// corridors (sized by the generator) do not count.
+double growth_for_people(const floorplan::SceneGraph& graph, std::size_t people, double& typical) {
+  typical = 0.0;
+  for (const floorplan::SceneRoom& r : graph.rooms) {
+    const auto* type = floorplan::find_room_type(r.type);
+    if (floorplan::is_toilet_type(r.type) || (!r.area && (!type || type->area_hi <= 0))) continue;
+    typical += r.area ? *r.area : (type->area_lo + type->area_hi) / 2.0;
+  }
+  const double needed = static_cast<double>(people) * kAreaPerNamedPerson;
+  return typical > 0.0 && typical < needed ? needed / typical : 1.0;
+}
+
+// The programme with those rooms grown by `factor` (they keep their proportions, the generator
+// its layout rules).
+floorplan::SceneGraph grown(floorplan::SceneGraph graph, double factor) {
+  constexpr double kMaxRoomArea = 5000.0;  // schemas/scene_graph.schema.json
+  if (factor <= 1.0) return graph;
+  for (floorplan::SceneRoom& r : graph.rooms) {
+    const auto* type = floorplan::find_room_type(r.type);
+    if (floorplan::is_toilet_type(r.type) || (!r.area && (!type || type->area_hi <= 0))) continue;
+    const double a = r.area ? *r.area : (type->area_lo + type->area_hi) / 2.0;
+    r.area = std::min(kMaxRoomArea, std::round(a * factor));
+  }
+  return graph;
+}
+
 }  // namespace
 
 Result<ScenarioRequest> scenario_request_from_json(const Json& body, const ScenarioConfig& config) {
@@ -202,11 +239,11 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
   // The venue the prompt names ("train station", "library") decides the building type, by the
   // nearest type the floor-plan generator knows; a given domain or scene graph wins.
   Json venue = nullptr;
+  auto intent = interpret_prompt(request.prompt);
+  if (!intent) return tl::unexpected(intent.error());
   if (request.domain) {
     fp["domain"] = *request.domain;
   } else if (!request.scene_graph) {
-    auto intent = interpret_prompt(request.prompt);
-    if (!intent) return tl::unexpected(intent.error());
     if (intent->venue) {
       fp["domain"] = intent->venue->building_type;
       venue = Json{{"type", intent->venue->type},
@@ -218,8 +255,29 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
   if (request.model) fp["model"] = *request.model;
   auto fpr = floorplan::floor_plan_request_from_json(fp);
   if (!fpr) return tl::unexpected(fpr.error());
+  // What the prompt asks the world to hold (counted features, named rooms and objects, its people).
+  const world::WorldRequirements requirements = world_requirements(*intent);
+  fpr->requirements = requirements;  // the generator builds them (core/floorplan)
   auto resolved = floorplan::resolve_scene_graph(*fpr);
+  Json programme_fallback = nullptr;
+  if (!resolved && resolved.error().code == ErrorCode::kValidation && !request.scene_graph && fpr->domain) {
+    // The floor-plan reader refused the prompt's rooms (it read "35 office workers" as 35
+    // offices, more than a plan holds): the building type's usual programme still gives a world.
+    programme_fallback =
+        Json{{"why", resolved.error().message()}, {"programme", "the usual rooms of a " + *fpr->domain}};
+    resolved = floorplan::ResolvedSceneGraph{floorplan::room_program(*fpr->domain),
+                                             Json{{"given", false}, {"type", *fpr->domain}}};
+  }
   if (!resolved) return tl::unexpected(resolved.error());
+  // A plan laid out from the prompt grows to hold the people it counts. The building code check of
+  // the offline generator may refuse a grown plan (exit width for its occupant load): then it
+  // grows less, and at worst keeps its typical sizes (the program notes who did not fit).
+  // (No more than the agents a scenario may hold: a crowd beyond them is scaled down anyway.)
+  const std::size_t people =
+      std::min(people_named(*intent), request.agents.value_or(ScenarioLimits{}.max_agents));
+  double typical_area = 0.0;
+  const double growth = request.scene_graph ? 1.0 : growth_for_people(resolved->graph, people, typical_area);
+  Json sized = nullptr;
   auto constraints = knowledge.constraints_for(resolved->graph.domain);
   if (!constraints) return tl::unexpected(constraints.error());
   Result<floorplan::FloorPlan> plan = fail(ErrorCode::kInternal, "no floor plan");
@@ -234,13 +292,38 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
     floorplan::OfflineOptions o;
     o.seed = request.seed;
     o.requirements = fpr->requirements;
-    plan = floorplan::generate_floor_plan(resolved->graph, *constraints, o);
+    std::vector<double> factors{growth};
+    if (growth > 1.0) factors.insert(factors.end(), {std::sqrt(growth), 1.0});
+    std::string refused;  // why the larger plan was not built
+    for (const double f : factors) {
+      // A grown plan the code check refuses is refused at every attempt (its exits do not grow
+      // with it): two attempts tell, and large plans are slow to build.
+      floorplan::OfflineOptions attempt = o;
+      if (f > 1.0) attempt.max_attempts = std::min(o.max_attempts, 2);
+      plan = floorplan::generate_floor_plan(grown(resolved->graph, f), *constraints, attempt);
+      if (growth > 1.0)
+        sized =
+            Json{{"people", people},
+                 {"typical_area_m2", std::round(typical_area)},
+                 {"factor_wanted", std::round(growth * 100.0) / 100.0},
+                 {"factor", std::round(f * 100.0) / 100.0},
+                 {"why", "rooms grown to hold the " + std::to_string(people) + " people the prompt counts (" +
+                             format_number(kAreaPerNamedPerson) + " m² of room each)" +
+                             (refused.empty() ? "" : "; less than wanted: " + refused)}};
+      if (plan || plan.error().code != ErrorCode::kValidation) break;
+      refused = "the larger plan failed the generator's code check (" + plan.error().message() + ")";
+    }
   }
   if (!plan) return tl::unexpected(plan.error());
   plan->provenance["classification"] = resolved->classification;
   plan->provenance["compliance_passed"] = plan->compliance.passed;
   if (!venue.is_null()) plan->provenance["venue"] = venue;
-  return ScenarioWorld{std::move(plan->world), resolved->graph.domain, std::move(plan->provenance)};
+  if (!sized.is_null()) plan->provenance["sized_for_people"] = sized;
+  if (!programme_fallback.is_null()) plan->provenance["programme_fallback"] = programme_fallback;
+  plan->provenance["intent_requirements"] =
+      Json{{"requirements", world::to_json(requirements)}, {"passed_to_generator", true}};
+  return ScenarioWorld{std::move(plan->world), resolved->graph.domain, std::move(plan->provenance),
+                       requirements};
 }
 
 Result<SimulationOutput> simulate_program(const world::World& world, const Json& program_json,
@@ -316,6 +399,11 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
   }
   if (s.cancel.cancelled()) return fail(ErrorCode::kCancelled, "the scenario was cancelled");
 
+  // What the prompt says: the card stores it, and the program is read against it.
+  auto understood = interpret_prompt(request.prompt);
+  if (!understood) return tl::unexpected(understood.error());
+  const ScenarioIntent& intent = *understood;
+
   report(0.1, "writing the scenario program (" + request.generator + ")");
   ProgramRequest pr;
   pr.prompt = request.prompt;
@@ -346,15 +434,24 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
   auto& c = out.card;
   c.title = request.title.empty() ? short_title(request.prompt) : request.title;
   c.description = describe_program(generated->program);
-  // People the prompt asked for that the program could not hold are said on the card.
+  // Every group the prompt did not name is listed with the reason it is there.
+  const Json added = generated->provenance.contains("added_groups")
+                         ? generated->provenance["added_groups"]
+                         : added_groups(generated->program, intent, generated->categories, world->domain);
+  for (const Json& g : added)
+    c.description += " Added: " + std::to_string(g.value("count", 0)) + " " + g.value("role", std::string()) +
+                     " (" + g.value("why", std::string()) + ").";
+  // People the prompt asked for that the program could not hold (the agents cap, the building) are
+  // said on the card.
   for (const auto& note : generated->provenance.value("notes", Json::array())) {
     if (!note.is_string()) continue;
     const std::string n = note.get<std::string>();
     if (n.find("fit") != std::string::npos || n.find("scaled down") != std::string::npos ||
-        n.find("left out") != std::string::npos)
+        n.find("left out") != std::string::npos || n.find("cut in proportion") != std::string::npos)
       c.description += " " + n + ".";
   }
   c.prompt = request.prompt;
+  c.intent = to_json(intent);
   c.seed = request.seed;
   c.generator.name = request.generator;
   if (request.generator == "llm") {

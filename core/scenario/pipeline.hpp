@@ -14,6 +14,7 @@
 #include "core/llm/structured_generator.hpp"
 #include "core/scenario/program_offline.hpp"
 #include "core/scenario/trajectory_log.hpp"
+#include "core/world/requirements.hpp"
 #include "core/world/world.hpp"
 
 namespace socsim::scenario {
@@ -49,6 +50,8 @@ struct ScenarioWorld {
   world::World world;
   std::string domain;
   Json provenance = Json::object();  // how it was made (given, generated offline or by the LLM)
+  // What the prompt asked the world to hold (scenario::world_requirements); empty for given worlds.
+  world::WorldRequirements requirements = {};
 };
 
 // The world of a request that carries none: a floor plan from the scene graph or the prompt

@@ -1,5 +1,6 @@
 #include "core/scenario/program_llm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -8,6 +9,7 @@
 
 #include "core/common/json_schema.hpp"
 #include "core/geometry/planar.hpp"
+#include "core/scenario/intent_check.hpp"
 #include "core/scenario/lexicon.hpp"
 #include "core/scenario/program_check.hpp"
 
@@ -88,6 +90,19 @@ std::string answer_pointer(const std::string& p) {
     return base;
   }
   return "";
+}
+
+constexpr std::string_view kContradicts = "contradicts the prompt: ";
+
+// The intent's contradictions with pointers into the answer and the words that say so.
+std::vector<FieldError> answer_contradictions(const Json& program, const ScenarioIntent& intent,
+                                              std::size_t bound) {
+  std::vector<FieldError> out = intent_contradictions(program, intent, bound);
+  for (FieldError& f : out) {
+    f.pointer = answer_pointer(f.pointer);
+    f.message = std::string(kContradicts) + f.message;
+  }
+  return out;
 }
 
 }  // namespace
@@ -226,9 +241,18 @@ Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& ge
                  {"behavior_nodes", node_text},
                  {"limits", limits_text}};
   r.schema = &answer_schema();
+  // The prompt's explicit facts (who, how many; nobody else when it names who is there) are
+  // checked like the world's places: a contradiction is quoted back in the repair round.
+  auto intent = interpret_prompt(request.prompt);
+  if (!intent) return tl::unexpected(intent.error());
+  const std::size_t bound = std::min(limits.max_agents, request.agents.value_or(limits.max_agents));
+  std::vector<FieldError> contradictions;  // of the last answer that fitted the world
   r.check = [&](const Json& answer) -> Status {
     auto program = checked_program_from_answer(answer, world, request, limits);
     if (!program) return tl::unexpected(program.error());
+    contradictions = answer_contradictions(*program, *intent, bound);
+    if (!contradictions.empty())
+      return fail(ErrorCode::kValidation, "the scenario program contradicts the prompt", contradictions);
     return {};
   };
   r.model = options.model;
@@ -238,7 +262,14 @@ Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& ge
   r.repair_rounds = options.repair_rounds;
   r.cancel = options.cancel;
   auto g = generator.generate(r);
-  if (!g) return tl::unexpected(g.error());
+  if (!g) {
+    Error e = g.error();
+    if (e.code == ErrorCode::kValidation && !contradictions.empty() &&
+        std::any_of(e.errors.begin(), e.errors.end(),
+                    [&](const FieldError& f) { return f.message.find(kContradicts) != std::string::npos; }))
+      e.detail = "the LLM's scenario program still contradicts the prompt after its repair: " + e.detail;
+    return tl::unexpected(std::move(e));
+  }
   auto program = checked_program_from_answer(g->value, world, request, limits);
   if (!program) return tl::unexpected(program.error());
   GeneratedProgram out;
@@ -246,6 +277,7 @@ Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& ge
   out.provenance = {{"generator", "llm"},
                     {"llm", g->provenance()},
                     {"answer", g->value},
+                    {"intent_check", {{"contradictions", 0}, {"bound", bound}}},
                     {"knowledge", std::move(retrieved)},
                     {"offered_nodes", Json(std::vector<std::string>(seen.begin(), seen.end()))}};
   return out;

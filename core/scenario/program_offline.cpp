@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/scenario/intent_check.hpp"
 #include "core/scenario/offline_plan.hpp"
 #include "core/scenario/program_check.hpp"
 #include "core/scenario/scenario_intent.hpp"
@@ -116,6 +117,31 @@ void take_groups(Intent& intent, const ScenarioIntent& named) {
     m.offset = g.span.begin;
     intent.clauses[clause].roles.push_back(std::move(m));
   }
+}
+
+// When the world cannot hold the people the prompt counts, every counted group shrinks by the same
+// factor (each keeps at least one person), so that no group named is left out because an earlier
+// one took the room; the note says how many of whom.
+std::optional<std::string> share_the_room(Intent& intent, const WorldProbe& probe) {
+  std::size_t capacity = 0, asked = 0;
+  for (const world::Zone& z : probe.world().zones())
+    if (!probe.is_toilet(z.name)) capacity += probe.capacity(z.name);
+  for (const Clause& c : intent.clauses)
+    for (const RoleMention& m : c.roles) asked += m.count.value_or(0);
+  if (asked <= capacity || asked == 0) return std::nullopt;
+  const double factor = static_cast<double>(capacity) / static_cast<double>(asked);
+  std::string who;
+  for (Clause& c : intent.clauses)
+    for (RoleMention& m : c.roles) {
+      if (!m.count) continue;
+      const std::size_t kept = std::max<std::size_t>(
+          1, static_cast<std::size_t>(std::floor(static_cast<double>(*m.count) * factor)));
+      who += (who.empty() ? "" : ", ") + std::to_string(kept) + " of " + std::to_string(*m.count) + " " +
+             m.phrase;
+      m.count = kept;
+    }
+  return "the building holds about " + std::to_string(capacity) + " people and the prompt counts " +
+         std::to_string(asked) + ": every counted group was cut in proportion (" + who + ")";
 }
 
 }  // namespace
@@ -586,16 +612,15 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   auto catalogue = NodeCatalogue::load(knowledge);
   if (!catalogue) return tl::unexpected(catalogue.error());
   Json place_log = Json::array();
+  const std::optional<std::string> room_note = share_the_room(intent, probe);
   std::vector<Activity> activities = plan_activities(intent, world, place_log);
 
   Draft draft(probe, *catalogue, intent, request, limits);
-  // Counted groups ("twelve patients and one nurse") or "only"/"except" say who is there; a bare
-  // "visitors check in at the front desk" leaves the usual staff (a receptionist) to the planner.
-  const bool counted = std::any_of(named->groups.begin(), named->groups.end(),
-                                   [](const PeopleGroup& g) { return g.count.specified(); });
-  draft.named_only =
-      !named->groups.empty() && !named->background && (counted || named->exclusivity.exclusive);
+  // A prompt that names people says who is there ("visitors check in at the front desk": visitors,
+  // no receptionist nobody asked for); background people only when it asks ("busy", "others").
+  draft.named_only = names_who_is_there(*named);
   for (const PeopleGroup& g : named->groups) draft.role_basis[g.program_role] = g.normalized_role;
+  if (room_note) draft.note(*room_note);
   if (draft.named_only &&
       std::any_of(activities.begin(), activities.end(), [](const Activity& a) { return !a.roles.empty(); })) {
     // Activities nobody named takes part in would bring people of their own; an emergency among
@@ -669,6 +694,7 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   provenance["categories"] = categories;
   provenance["intent"] = to_json(intent);
   provenance["scenario_intent"] = to_json(*named);
+  provenance["added_groups"] = added_groups(program, *named, categories, probe.domain());
   provenance["activities"] = activity_log;
   provenance["place_mentions"] = place_log;
   provenance["knowledge"] = catalogue->provenance();

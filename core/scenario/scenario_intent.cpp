@@ -822,6 +822,17 @@ void Reader::classify(Chunk& c) {
     return;
   }
   std::string why;
+  // "30 residents, some with walkers": what part of a group has with it is a thing when the word
+  // can be one (a walking frame), not more people ("parents, some with children" stays people).
+  if (e.known && c.s >= 2 && t_[c.s - 1].is("with") && has_sense(e, "noun.artifact", 3) &&
+      (t_[c.s - 2].is("some") || t_[c.s - 2].is("many") || t_[c.s - 2].is("most") ||
+       t_[c.s - 2].is("several") || t_[c.s - 2].is("few") || t_[c.s - 2].is("half") ||
+       t_[c.s - 2].is("others"))) {
+    c.cls = Cls::kObject;
+    c.why = "WordNet: '" + e.lemma + "' can be a thing (noun.artifact), said of part of a group ('" +
+            t_[c.s - 2].text + " with')";
+    return;
+  }
   if (ce.known && has_sense(ce, "noun.person", 1)) {
     c.cls = Cls::kPerson;
     c.why = "WordNet: '" + ce.lemma + "' is a person (noun.person)";

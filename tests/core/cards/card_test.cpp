@@ -107,6 +107,31 @@ TEST(Card, ExportWithAnUnknownTopLevelFieldIsRefused) {
   EXPECT_EQ(pointers(back.error()), std::vector<std::string>{"/signature"});
 }
 
+TEST(Card, TheIntentIsStoredAndACardWithoutOneKeepsItsHash) {
+  const auto plain = parse_card_content(sample(), {}).value();
+  EXPECT_TRUE(plain.intent.is_null());
+  EXPECT_FALSE(content_to_json(plain).contains("intent"));  // cards from before the field hash as before
+  Json body = sample();
+  body["intent"] = Json{{"prompt", "patients queue at the reception desk"}, {"groups", Json::array()}};
+  const auto with = parse_card_content(body, {}).value();
+  EXPECT_EQ(with.intent, body["intent"]);
+  EXPECT_NE(content_hash(with, 1, std::nullopt), content_hash(plain, 1, std::nullopt));
+  Card card;
+  card.id = new_card_id();
+  card.content = with;
+  card.author = "alice";
+  card.created_at = utc_now_rfc3339();
+  card.content_hash = content_hash(card.content, card.version, card.parent_id);
+  auto back = parse_export_document(export_document(card), {});
+  ASSERT_TRUE(back) << back.error().message();
+  EXPECT_EQ(back->content.intent, body["intent"]);
+  EXPECT_FALSE(summary_json(*back).contains("intent"));
+  body["intent"] = "queue";
+  auto bad = parse_card_content(body, {});
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(pointers(bad.error()), std::vector<std::string>{"/intent"});
+}
+
 TEST(Card, IdsAreWellFormedAndDistinct) {
   const auto a = new_card_id(), b = new_card_id();
   EXPECT_TRUE(is_card_id(a));

@@ -256,9 +256,21 @@ TEST_F(Categories, PartyGuestsClusterInTheLivingRoom) {
       << clustered << " of " << samples;
 }
 
+TEST_F(Categories, ReceptionWithOnlyVisitorsNamedAddsNoReceptionist) {
+  const world::World& w = worlds_->plan("office");
+  auto g = generate_program_offline(
+      w, worlds_->kb(), ProgramRequest{"Visitors check in at the front desk", 3, std::nullopt, 60},
+      ScenarioLimits{});
+  ASSERT_TRUE(g) << g.error().message();
+  for (const auto& a : g->program["agents"]) EXPECT_EQ(a["role"], "visitor") << a.dump();
+  for (const auto& a : g->program["ambient_groups"]) EXPECT_EQ(a["role"], "visitor") << a.dump();
+  EXPECT_TRUE(g->provenance["added_groups"].empty()) << g->provenance["added_groups"].dump();
+}
+
 TEST_F(Categories, ReceptionVisitorsApproachWaitAndDepart) {
   const world::World& w = worlds_->plan("office");
-  Simulated r = run(w, "Visitors check in at the front desk", 60.0);
+  // The receptionist is named: a prompt that names who is there gets nobody else (issue 16).
+  Simulated r = run(w, "Visitors check in with the receptionist at the front desk", 60.0);
   ASSERT_TRUE(r.runner);
   EXPECT_EQ(r.generated.categories.front(), "reception");
   const auto counters = used(r, "counter");

@@ -79,6 +79,11 @@ TEST_F(Pipeline, AnOfflinePromptBecomesACardThatReplaysBitForBit) {
   EXPECT_GT(card.metrics["summary"]["agents"].get<int>(), 0);
   EXPECT_FALSE(card.provenance["categories"].empty());
   EXPECT_FALSE(card.title.empty());
+  // The card stores what the prompt was understood to say.
+  EXPECT_EQ(card.intent["prompt"], body["prompt"]);
+  ASSERT_EQ(card.intent["groups"].size(), 2u) << card.intent.dump();
+  EXPECT_EQ(card.intent["groups"][1]["role"], "nurse");
+  EXPECT_EQ(card.intent["venue"]["type"], "hospital");
 
   // The card alone (through its JSON form) reproduces the trajectories.
   auto back = cards::parse_card_content(cards::content_to_json(card), cards::CardLimits{});

@@ -10,6 +10,7 @@
 #include "core/floorplan/offline.hpp"
 #include "core/scenario/pipeline.hpp"
 #include "core/scenario/program_check.hpp"
+#include "core/scenario/scenario_intent.hpp"
 #include "tests/core/llm/scripted_server.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -156,6 +157,77 @@ TEST_F(ProgramLlm, AnEndpointThatIsDownGivesAnUpstreamErrorNamingIt) {
   ASSERT_FALSE(g);
   EXPECT_EQ(g.error().code, ErrorCode::kUpstream);
   EXPECT_THAT(g.error().detail, HasSubstr("127.0.0.1:" + std::to_string(port)));
+}
+
+// Issue 16 #7: the program is read against the prompt's explicit facts ("two nurses").
+TEST_F(ProgramLlm, AWrongCountIsQuotedAsAContradictionAndRepaired) {
+  Json wrong = good_answer();
+  wrong["spotlight_agents"][0]["parameters"]["count"] = 5;
+  server_.push_chat(ScriptedServer::chat(wrong.dump()));
+  server_.push_chat(ScriptedServer::chat(good_answer().dump()));
+  auto g = generate_program_llm(*generator_, *world_, *kb_, request_, limits_);
+  ASSERT_TRUE(g) << g.error().message();
+  ASSERT_EQ(server_.count(), 2);
+  const std::string repair = user_message(1);
+  EXPECT_THAT(repair, HasSubstr("/spotlight_agents/0"));
+  EXPECT_THAT(repair, HasSubstr("contradicts the prompt: the prompt says 'two nurses' (exactly 2)"));
+  EXPECT_THAT(repair, HasSubstr("the program has 5 nurse"));
+  EXPECT_EQ(g->program["agents"][0]["count"], 2);
+}
+
+TEST_F(ProgramLlm, AStubbornContradictionIsRefusedAfterOneRepairAndNothingIsCached) {
+  Json wrong = good_answer();
+  wrong["spotlight_agents"][0]["parameters"]["count"] = 5;
+  wrong["spotlight_agents"].push_back(wrong["spotlight_agents"][0]);
+  wrong["spotlight_agents"][1]["id"] = "doctor";
+  wrong["spotlight_agents"][1]["role"] = "doctor";
+  for (int i = 0; i < 2; ++i) server_.push_chat(ScriptedServer::chat(wrong.dump()));
+  LlmProgramOptions one_round;
+  one_round.repair_rounds = 1;
+  auto g = generate_program_llm(*generator_, *world_, *kb_, request_, limits_, one_round);
+  ASSERT_FALSE(g);
+  EXPECT_EQ(g.error().code, ErrorCode::kValidation);  // 422, as every answer that fails its checks
+  EXPECT_EQ(g.error().status(), 422);
+  EXPECT_EQ(server_.count(), 2);
+  EXPECT_THAT(g.error().detail, HasSubstr("still contradicts the prompt"));
+  std::string pointers;
+  for (const auto& e : g.error().errors) pointers += e.pointer + " ";
+  EXPECT_THAT(pointers, HasSubstr("/spotlight_agents/1"));  // the doctors nobody asked for
+  EXPECT_THAT(g.error().message(), HasSubstr("nobody asked for them"));
+  // Nothing of the refused generation was stored: the same request asks the endpoint again (a
+  // cached answer would be used without a call) and the good answer then passes.
+  server_.push_chat(ScriptedServer::chat(good_answer().dump()));
+  auto again = generate_program_llm(*generator_, *world_, *kb_, request_, limits_, one_round);
+  ASSERT_TRUE(again) << again.error().message();
+  EXPECT_EQ(server_.count(), 3);
+}
+
+TEST_F(ProgramLlm, AnLlmCardStoresTheIntentToo) {
+  server_.push_chat(ScriptedServer::chat(good_answer().dump()));
+  ScenarioConfig config;
+  auto request = scenario_request_from_json(
+      {{"prompt", request_.prompt}, {"seed", 4}, {"generator", "llm"}, {"duration_s", 2}}, config);
+  ASSERT_TRUE(request) << request.error().message();
+  ScenarioServices s{*kb_, generator_.get(), config, std::nullopt, {}, {}};
+  auto out = run_scenario(*request, ScenarioWorld{*world_, "hospital", Json::object()}, s);
+  ASSERT_TRUE(out) << out.error().message();
+  EXPECT_EQ(out->card.intent, to_json(interpret_prompt(request_.prompt).value()));
+  EXPECT_EQ(out->card.generator.name, "llm");
+}
+
+TEST_F(ProgramLlm, ARefusedProgramMakesNoCard) {
+  Json wrong = good_answer();
+  wrong["spotlight_agents"][0]["parameters"]["count"] = 7;
+  for (int i = 0; i < 3; ++i) server_.push_chat(ScriptedServer::chat(wrong.dump()));
+  ScenarioConfig config;
+  auto request = scenario_request_from_json(
+      {{"prompt", request_.prompt}, {"seed", 4}, {"generator", "llm"}, {"duration_s", 5}}, config);
+  ASSERT_TRUE(request) << request.error().message();
+  ScenarioServices s{*kb_, generator_.get(), config, std::nullopt, {}, {}};
+  auto out = run_scenario(*request, ScenarioWorld{*world_, "hospital", Json::object()}, s);
+  ASSERT_FALSE(out);  // no card content comes out, so the server stores nothing
+  EXPECT_EQ(out.error().status(), 422);
+  EXPECT_THAT(out.error().message(), HasSubstr("the program has 7 nurse"));
 }
 
 }  // namespace

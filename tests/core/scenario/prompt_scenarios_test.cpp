@@ -1,8 +1,11 @@
 // Every fixture prompt (tests/fixtures/prompts/everyday.jsonl) becomes an offline scenario program
-// as POST /api/v1/scenarios makes it — a floor plan from the prompt, then the program — holding
-// nobody the prompt did not ask for. How many of the people it names the program holds is measured
-// too (`socsim-bench prompts --scenario`); its floor here is lower than the intent's, because the
-// generated buildings do not yet grow with the crowd (300-2,000 people are cut to what rooms hold).
+// as POST /api/v1/scenarios makes it — a floor plan from the prompt, sized for the people it
+// counts, then the program — and the people in it are scored fact by fact (who, how many, nobody
+// extra, the total): the test fails when fewer than 95 % of the facts hold, when a prompt gives
+// no scenario, or when more than 5 % of the prompts hold people nobody asked for. The same
+// figures: `socsim-bench prompts --scenario` (98 % when this was written). It runs the whole set
+// (40-70 s in the Debug build on the shared machine: a floor plan per prompt), not a sample, so no prompt is
+// left unchecked.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -50,7 +53,7 @@ TEST(PromptScenarios, EveryPromptProducesAScenarioWithOnlyThePeopleAskedFor) {
   const auto [no_extra, checked] = tally.kinds["no_extra"];
   EXPECT_GE(static_cast<double>(no_extra) / checked, 0.95) << failures;
   const auto [held, all] = tally.all();
-  EXPECT_GE(static_cast<double>(held) / all, 0.90) << held << " of " << all << failures;
+  EXPECT_GE(static_cast<double>(held) / all, 0.95) << held << " of " << all << failures;
 }
 
 }  // namespace

@@ -127,6 +127,18 @@ TEST(ScenarioIntent, RelativeClauses) {
   expect_exact(j, "receptionist", 1);
 }
 
+TEST(ScenarioIntent, WhatPartOfAGroupHasWithItIsAThing) {
+  const auto i =
+      read("30 elderly residents, some with walkers, and 8 care workers move to the assembly point.");
+  ASSERT_EQ(i.groups.size(), 2u) << roles(i);
+  expect_exact(i, "resident", 30);
+  expect_exact(i, "care worker", 8);
+  // A person with a group stays a person ("a tour guide" after "some with" has no thing sense first).
+  const auto j = read("Twelve tourists, some with a tour guide, and three children walk through the museum.");
+  EXPECT_GE(j.groups.size(), 2u) << roles(j);
+  expect_exact(j, "tourist", 12);
+}
+
 TEST(ScenarioIntent, SeveralClausesWithDifferentPlaces) {
   const auto i = read("At the office, 3 people queue at the microwave while 4 others chat near the windows.");
   ASSERT_EQ(i.groups.size(), 2u) << roles(i);
