@@ -16,6 +16,7 @@
 #include "core/world/world_export.hpp"
 #include "core/world/world_yaml.hpp"
 #include "core/world/xml_reader.hpp"
+#include "tests/core/floorplan/knowledge_suite.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::floorplan {
@@ -29,18 +30,8 @@ OfflineOptions options(std::uint64_t seed) {
   return o;
 }
 
-class FloorplanOffline : public ::testing::Test {
+class FloorplanOffline : public KnowledgeSuite {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new socsim::testing::TempDir();
-    store_ = store::Store::open(dir_->file("kb.db")).value().release();
-    kb_ = new knowledge::KnowledgeBase(*store_);
-  }
-  static void TearDownTestSuite() {
-    delete kb_;
-    delete store_;
-    delete dir_;
-  }
   static std::vector<knowledge::MergedConstraint> constraints(const std::string& type) {
     auto c = kb_->constraints_for(type);
     EXPECT_TRUE(c.has_value());
@@ -52,14 +43,7 @@ class FloorplanOffline : public ::testing::Test {
     EXPECT_TRUE(plan.has_value()) << domain << " seed " << seed << ": " << plan.error().message();
     return std::move(plan.value());
   }
-
-  static socsim::testing::TempDir* dir_;
-  static store::Store* store_;
-  static knowledge::KnowledgeBase* kb_;
 };
-socsim::testing::TempDir* FloorplanOffline::dir_ = nullptr;
-store::Store* FloorplanOffline::store_ = nullptr;
-knowledge::KnowledgeBase* FloorplanOffline::kb_ = nullptr;
 
 // Every zone has a cell reachable from the entrance for an agent of radius 0.25 m.
 void expect_fully_reachable(const World& w) {

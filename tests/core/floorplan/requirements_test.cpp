@@ -13,6 +13,7 @@
 #include "core/geometry/planar.hpp"
 #include "core/world/layout_check.hpp"
 #include "core/world/world_document.hpp"
+#include "tests/core/floorplan/knowledge_suite.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::floorplan {
@@ -20,18 +21,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
-class Requirements : public ::testing::Test {
+class Requirements : public KnowledgeSuite {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new socsim::testing::TempDir();
-    store_ = store::Store::open(dir_->file("kb.db")).value().release();
-    kb_ = new knowledge::KnowledgeBase(*store_);
-  }
-  static void TearDownTestSuite() {
-    delete kb_;
-    delete store_;
-    delete dir_;
-  }
   static std::vector<knowledge::MergedConstraint> constraints(const std::string& type) {
     return kb_->constraints_for(type).value();
   }
@@ -56,13 +47,7 @@ class Requirements : public ::testing::Test {
           for (const auto& q : b.polygon.outer) d = std::max(d, geometry::distance(p, q));
     return d;
   }
-  static socsim::testing::TempDir* dir_;
-  static store::Store* store_;
-  static knowledge::KnowledgeBase* kb_;
 };
-socsim::testing::TempDir* Requirements::dir_ = nullptr;
-store::Store* Requirements::store_ = nullptr;
-knowledge::KnowledgeBase* Requirements::kb_ = nullptr;
 
 TEST_F(Requirements, ThreeExitsAreThreeOutsideDoorsFarApart) {
   for (const char* domain : {"office", "canteen", "retail", "school"}) {

@@ -16,23 +16,14 @@
 #include "core/floorplan/offline.hpp"
 #include "core/knowledge/types.hpp"
 #include "core/world/layout_check.hpp"
+#include "tests/core/floorplan/knowledge_suite.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::floorplan {
 namespace {
 
-class Venues : public ::testing::Test {
+class Venues : public KnowledgeSuite {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new socsim::testing::TempDir();
-    store_ = store::Store::open(dir_->file("kb.db")).value().release();
-    kb_ = new knowledge::KnowledgeBase(*store_);
-  }
-  static void TearDownTestSuite() {
-    delete kb_;
-    delete store_;
-    delete dir_;
-  }
   static const std::vector<knowledge::MergedConstraint>& constraints(const std::string& type) {
     static std::map<std::string, std::vector<knowledge::MergedConstraint>> cache;
     auto it = cache.find(type);
@@ -43,13 +34,7 @@ class Venues : public ::testing::Test {
     }
     return it->second;
   }
-  static socsim::testing::TempDir* dir_;
-  static store::Store* store_;
-  static knowledge::KnowledgeBase* kb_;
 };
-socsim::testing::TempDir* Venues::dir_ = nullptr;
-store::Store* Venues::store_ = nullptr;
-knowledge::KnowledgeBase* Venues::kb_ = nullptr;
 
 int entities_of(const World& w, std::string_view type) {
   int n = 0;
