@@ -18,6 +18,7 @@
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/store/store.hpp"
 #include "core/world/world_yaml.hpp"
+#include "tests/support/knowledge_suite.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::crowd {
@@ -167,25 +168,9 @@ TEST(Doorway, SlowAgentsPassDoorsInThickWalls) {
 
 // The generated hospital plans of the scenario generator: from the middle of every patient room
 // to the lobby, alone, at every speed.
-class DoorwayHospital : public ::testing::Test {
+class DoorwayHospital : public socsim::testing::KnowledgeSuite {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new socsim::testing::TempDir();
-    store_ = store::Store::open(dir_->file("kb.db")).value().release();
-    kb_ = new knowledge::KnowledgeBase(*store_);
-  }
-  static void TearDownTestSuite() {
-    delete kb_;
-    delete store_;
-    delete dir_;
-  }
-  static socsim::testing::TempDir* dir_;
-  static store::Store* store_;
-  static knowledge::KnowledgeBase* kb_;
 };
-socsim::testing::TempDir* DoorwayHospital::dir_ = nullptr;
-store::Store* DoorwayHospital::store_ = nullptr;
-knowledge::KnowledgeBase* DoorwayHospital::kb_ = nullptr;
 
 Vec2 centroid(const geometry::Polygon& poly) {
   std::size_t count = poly.outer.size();

@@ -16,7 +16,7 @@
 #include "core/world/world_export.hpp"
 #include "core/world/world_yaml.hpp"
 #include "core/world/xml_reader.hpp"
-#include "tests/core/floorplan/knowledge_suite.hpp"
+#include "tests/support/knowledge_suite.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::floorplan {
@@ -30,7 +30,7 @@ OfflineOptions options(std::uint64_t seed) {
   return o;
 }
 
-class FloorplanOffline : public KnowledgeSuite {
+class FloorplanOffline : public socsim::testing::KnowledgeSuite {
  protected:
   static std::vector<knowledge::MergedConstraint> constraints(const std::string& type) {
     auto c = kb_->constraints_for(type);

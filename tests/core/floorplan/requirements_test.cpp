@@ -13,7 +13,7 @@
 #include "core/geometry/planar.hpp"
 #include "core/world/layout_check.hpp"
 #include "core/world/world_document.hpp"
-#include "tests/core/floorplan/knowledge_suite.hpp"
+#include "tests/support/knowledge_suite.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::floorplan {
@@ -21,7 +21,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-class Requirements : public KnowledgeSuite {
+class Requirements : public socsim::testing::KnowledgeSuite {
  protected:
   static std::vector<knowledge::MergedConstraint> constraints(const std::string& type) {
     return kb_->constraints_for(type).value();

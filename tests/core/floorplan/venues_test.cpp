@@ -16,13 +16,13 @@
 #include "core/floorplan/offline.hpp"
 #include "core/knowledge/types.hpp"
 #include "core/world/layout_check.hpp"
-#include "tests/core/floorplan/knowledge_suite.hpp"
+#include "tests/support/knowledge_suite.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::floorplan {
 namespace {
 
-class Venues : public KnowledgeSuite {
+class Venues : public socsim::testing::KnowledgeSuite {
  protected:
   static const std::vector<knowledge::MergedConstraint>& constraints(const std::string& type) {
     static std::map<std::string, std::vector<knowledge::MergedConstraint>> cache;

@@ -1,13 +1,13 @@
 #pragma once
 // A test suite over one knowledge store with every migration applied (building codes and room
-// types the floor-plan generators read), opened once per suite.
+// types the floor-plan generators read), opened once per suite. Derive a suite from it.
 #include <gtest/gtest.h>
 
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/store/store.hpp"
 #include "tests/support/temp_dir.hpp"
 
-namespace socsim::floorplan {
+namespace socsim::testing {
 
 class KnowledgeSuite : public ::testing::Test {
  protected:
@@ -29,4 +29,4 @@ class KnowledgeSuite : public ::testing::Test {
   static inline knowledge::KnowledgeBase* kb_ = nullptr;
 };
 
-}  // namespace socsim::floorplan
+}  // namespace socsim::testing
