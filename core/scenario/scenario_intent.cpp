@@ -208,6 +208,20 @@ const std::set<std::string, std::less<>> kFunctionWords = {
     "off",
 };
 
+// Verbs after which "for <people>" names people awaited or sought, not present ("waiting for a
+// doctor"); matched with their -s, -ed, -ing forms.
+constexpr std::array<std::string_view, 9> kAwaitingVerbs = {"wait", "look", "search", "ask",  "call",
+                                                            "hunt", "queu", "queue",  "long"};
+const std::set<std::string, std::less<>> kAwaitedDeterminers = {
+    "a", "an", "the", "their", "his", "her", "its", "our", "my", "your", "some", "any", "new", "next", "other"};
+// Words between a counted group and the people that say who they are ("five friends, all
+// teenagers", "forty people, mostly tourists", "30 visitors: parents, some with children").
+const std::set<std::string, std::less<>> kAppositionMarkers = {
+    "all",   "mostly", "most",  "many",   "some",    "including", "among", "them", "of",    "whom",
+    "mainly", "largely", "chiefly", "half", "several", "both",     "nearly", "almost", "are", "were"};
+// Between the further people of an apposition ("parents, some with children").
+const std::set<std::string, std::less<>> kAppositionLinks = {",", "and", "or", "with", "their", "some", "many"};
+
 bool is_function(const TextToken& t) {
   return t.kind != TextToken::Kind::kWord || kFunctionWords.count(t.text) != 0 ||
          cardinal_at(std::vector<TextToken>{t}, 0).has_value();
@@ -283,6 +297,8 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueWords = {
     {"shopping centre", "mall"},
     {"shopping center", "mall"},
     {"shopping mall", "mall"},
+    {"market hall", "mall"},
+    {"market", "mall"},
     {"distribution centre", "warehouse"},
     {"distribution center", "warehouse"},
     {"fulfilment centre", "warehouse"},
@@ -534,7 +550,14 @@ struct Chunk {
   std::string why;
   std::optional<std::string> venue_type;  // when a venue
   bool maybe_person = false;              // a person in a rarer sense, or a word WordNet lacks
+  bool named = false;                     // one person by name and title ("Dr Okafor")
 };
+
+// Titles before a name, and the role of the person they name.
+const std::map<std::string, std::string, std::less<>> kTitles = {
+    {"dr", "doctor"},   {"doctor", "doctor"},       {"professor", "professor"}, {"prof", "professor"},
+    {"mr", "person"},   {"mrs", "person"},          {"ms", "person"},           {"miss", "person"},
+    {"nurse", "nurse"}, {"officer", "police officer"}, {"captain", "captain"},  {"coach", "coach"}};
 
 class Reader {
  public:
@@ -562,6 +585,11 @@ class Reader {
   const NounEntry& noun(const std::string& w) const { return wn_.noun(strip_accents(w)); }
   bool noun_known(const std::string& w) const { return noun(w).known; }
   bool content(std::size_t i) const;
+  // The word starts with a capital letter as written.
+  [[nodiscard]] bool capitalised(std::size_t i) const {
+    const unsigned char first = static_cast<unsigned char>(out_.prompt[t_[i].span.begin]);
+    return first >= 'A' && first <= 'Z';
+  }
   bool significant(const std::string& word) const;
   void find_quantities();
   void find_chunks();
@@ -649,6 +677,21 @@ void Reader::find_chunks() {
       continue;
     }
     std::size_t e = i + 1;
+    // A title and the capitalised words after it: one named person ("Mrs Patel waits").
+    if (kTitles.count(t_[i].text)) {
+      while (e < t_.size() && t_[e].kind == TextToken::Kind::kWord && t_[e].sentence == t_[i].sentence &&
+             capitalised(e))
+        ++e;
+      if (e > i + 1) {
+        Chunk c;
+        c.s = i;
+        c.e = e;
+        classify(c);
+        chunks_.push_back(std::move(c));
+        i = e;
+        continue;
+      }
+    }
     while (e < t_.size() && !used_[e] && content(e) && t_[e].sentence == t_[i].sentence) {
       const TextToken& prev = t_[e - 1];
       if (prev.possessive) break;
@@ -666,6 +709,10 @@ void Reader::find_chunks() {
           !has_sense(ne, "noun.person", 1) && wn_.is_verb(next.substr(0, next.size() - 1)))
         break;
       if (!ne.known && wn_.is_verb(next)) break;
+      // "baristas work", "stallholders set up": a plural WordNet lacks, then a verb.
+      if (!pe.known && prev.text.size() > 3 && prev.text.ends_with("s") && !prev.text.ends_with("ss") &&
+          wn_.is_verb(next) && !significant(next))
+        break;
       ++e;
     }
     Chunk c;
@@ -690,6 +737,14 @@ bool Reader::person_word(const std::string& w, const Chunk& c, std::string& why)
   // Not in WordNet: agent nouns ("carer", "concertgoer").
   std::string s = w;
   if (s.ends_with("s") && !s.ends_with("ss")) s.pop_back();
+  // Compounds ending in a person ("stallholder" = stall + holder, "shopworker", "ticketholder").
+  for (std::size_t cut = 3; cut + 4 <= s.size(); ++cut) {
+    const NounEntry& head = noun(s.substr(cut));
+    if (head.known && has_sense(head, "noun.person", 2) && noun_known(s.substr(0, cut))) {
+      why = "'" + s + "': a " + s.substr(cut) + " (WordNet: a person) of " + s.substr(0, cut);
+      return true;
+    }
+  }
   if (s.ends_with("goer")) {
     why = "'" + s + "': one who goes to something";
     return true;
@@ -735,6 +790,18 @@ std::optional<std::string> Reader::venue_at(std::size_t i, std::size_t& length) 
 }
 
 void Reader::classify(Chunk& c) {
+  // "Dr Okafor", "Mrs Patel", "Professor Lee": a title and capitalised words name one person.
+  if (auto title = kTitles.find(t_[c.s].text); title != kTitles.end() && c.e - c.s >= 2) {
+    bool name = true;
+    for (std::size_t k = c.s + 1; k < c.e && name; ++k) name = capitalised(k);
+    if (name) {
+      c.cls = Cls::kPerson;
+      c.named = true;
+      c.head = c.name = title->second;
+      c.why = "'" + join_text(t_, c.s, c.e) + "': one person named with the title '" + t_[c.s].text + "'";
+      return;
+    }
+  }
   const std::size_t last = c.e - 1;
   const std::string& word = t_[last].text;
   const NounEntry& e = noun(word);
@@ -1058,6 +1125,47 @@ void Reader::read_people() {
   auto role_of = [&](const Chunk& c) {
     return c.cls == Cls::kGenericPerson ? std::string("person") : c.name;
   };
+  // "waiting for a doctor", "looking for their parents", "queuing for two cashiers": the people
+  // awaited or sought are not there (yet); they are said, not added.
+  auto awaited = [&](std::size_t s) {
+    std::size_t k = s;
+    while (k > 0 && (used_[k - 1] || kAwaitedDeterminers.count(t_[k - 1].text))) --k;
+    if (k < 2 || !t_[k - 1].is("for") || t_[k - 2].kind != TextToken::Kind::kWord) return false;
+    const std::string& v = t_[k - 2].text;
+    for (const std::string_view stem : kAwaitingVerbs) {
+      if (!v.starts_with(stem)) continue;
+      const std::string_view rest = std::string_view(v).substr(stem.size());
+      if (rest.empty() || rest == "s" || rest == "es" || rest == "ed" || rest == "ing" || rest == "eing" ||
+          rest == "d")
+        return true;
+    }
+    return false;
+  };
+  // Who the last group is, for appositions: "five friends, all teenagers", "30 visitors: parents,
+  // some with children", "forty people, mostly tourists" describe the people already counted.
+  std::optional<std::size_t> last_group;  // index in out_.groups
+  std::size_t last_group_end = 0;         // token after its words
+  bool in_apposition = false;
+  auto apposition = [&](const Chunk& c) {
+    if (!last_group || c.s < last_group_end) return false;
+    const PeopleGroup& g = out_.groups[*last_group];
+    if (!g.count.specified() || g.count.kind == CountKind::kRange) return false;
+    bool separator = false, marker = false;
+    for (std::size_t k = last_group_end; k < c.s; ++k) {
+      const TextToken& x = t_[k];
+      if (k == last_group_end && (x.text == ":" || x.text == "(" || x.text == "-" || x.text == "—" ||
+                                  x.text == "–"))
+        separator = marker = true;
+      else if (k == last_group_end && x.text == ",")
+        separator = true;
+      else if (kAppositionMarkers.count(x.text) || used_[k])
+        marker = marker || kAppositionMarkers.count(x.text) != 0;
+      else if (!(in_apposition && kAppositionLinks.count(x.text)))
+        return false;
+    }
+    if (in_apposition) return true;
+    return separator && (marker || g.role == "person");
+  };
 
   for (std::size_t ci = 0; ci < chunks_.size(); ++ci) {
     if (consumed.count(ci)) continue;
@@ -1107,6 +1215,9 @@ void Reader::read_people() {
         g.together = together;
         g.span.begin = std::min(g.span.begin, span_of(t_, c.s, c.e).begin);
         out_.groups.push_back(std::move(g));
+        last_group = out_.groups.size() - 1;
+        last_group_end = p.e;
+        in_apposition = false;
       } else if (inner && !negated(c.s)) {
         Chunk self = c;
         self.cls = Cls::kPerson;
@@ -1116,6 +1227,9 @@ void Reader::read_people() {
         g.together = together;
         g.span = span_of(t_, c.s, of + 1 + inner->length);
         out_.groups.push_back(std::move(g));
+        last_group = out_.groups.size() - 1;
+        last_group_end = of + 1 + inner->length;
+        in_apposition = false;
       }
       continue;
     }
@@ -1130,7 +1244,25 @@ void Reader::read_people() {
       out_.exclusivity.spans.push_back(span_of(t_, c.s - 1, c.e));
       continue;
     }
+    // "farmers market", "fishermen's wharf": people naming the venue, not people there.
+    if (c.plural && !quantity_before(c.s) && c.e < t_.size()) {
+      std::size_t n = 0;
+      if (auto v = venue_at(c.e, n); v && !v->empty()) continue;
+    }
+    if (awaited(c.s)) {
+      out_.warnings.push_back(IntentWarning{
+          "'" + join_text(t_, c.s, c.e) + "' is waited for or sought, not there: not added", span_of(t_, c.s, c.e)});
+      continue;
+    }
     auto q = quantity_before(c.s);
+    if ((!q || !q->count.specified() || q->count.kind == CountKind::kRange) && !c.named &&
+        !determiner_count(c.s, c.plural) && apposition(c)) {
+      PeopleGroup& g = out_.groups[*last_group];
+      g.why += "; '" + join_text(t_, c.s, c.e) + "' says who they are";
+      in_apposition = true;
+      last_group_end = c.e;
+      continue;
+    }
     const bool other = std::any_of(t_.begin() + static_cast<std::ptrdiff_t>(c.s),
                                    t_.begin() + static_cast<std::ptrdiff_t>(c.e),
                                    [](const TextToken& x) { return x.is("other"); });
@@ -1143,6 +1275,10 @@ void Reader::read_people() {
     Count count;
     if (q) {
       count = q->count;
+    } else if (c.named) {
+      count = Count::exact(1);
+      count.phrase = join_text(t_, c.s, c.e);
+      count.span = span_of(t_, c.s, c.e);
     } else if (auto d = determiner_count(c.s, c.plural)) {
       count = *d;
     }
@@ -1171,6 +1307,27 @@ void Reader::read_people() {
     PeopleGroup g = group_from(c, count, why);
     g.together = q && (q->count.phrase.find("group of") != std::string::npos);
     out_.groups.push_back(std::move(g));
+    last_group = out_.groups.size() - 1;
+    last_group_end = c.e;
+    in_apposition = false;
+  }
+  // "eight customers wait in line and three more sit by the window": more of the people named
+  // just before ("ten more people" with its noun was read above).
+  for (const auto& [after, q] : quantity_ending_) {
+    if (after >= t_.size() || !t_[after].is("more") || !q.count.specified()) continue;
+    const bool noun_follows = std::any_of(chunks_.begin(), chunks_.end(),
+                                          [&](const Chunk& c) {
+                                            return (c.s == after + 1 || c.s == after) && c.cls != Cls::kNone &&
+                                                   c.cls != Cls::kObject;
+                                          });
+    if (noun_follows) continue;
+    const std::size_t at = t_[after - q.length].span.begin;
+    PeopleGroup* nearest = nullptr;
+    for (PeopleGroup& g : out_.groups)
+      if (g.span.end <= at && (nearest == nullptr || g.span.end > nearest->span.end)) nearest = &g;
+    if (nearest == nullptr || !nearest->count.specified()) continue;
+    nearest->count.plus(q.count);
+    nearest->why += "; '" + q.count.phrase + " more'";
   }
 }
 
@@ -1465,9 +1622,32 @@ ScenarioIntent Reader::run() {
   attach_places_and_activities();
   read_exclusivity_and_density();
   read_categories();
-  // Warnings: counted things that are no person, place or object.
+  // Warnings: words no dictionary knows (not a name), and counted things that are no person,
+  // place or object.
   for (const Chunk& c : chunks_) {
-    if ((c.cls != Cls::kNone && c.cls != Cls::kObject) || !quantity_before(c.s)) continue;
+    if (c.cls == Cls::kNone) {
+      std::string unknown;
+      for (std::size_t k = c.s; k < c.e; ++k) {
+        if (t_[k].kind != TextToken::Kind::kWord || !lemma_[k].empty() || wn_.is_verb(plain_[k]) ||
+            wn_.is_adjective(plain_[k]) || wn_.is_adverb(plain_[k]))
+          continue;
+        // A capitalised word inside a sentence is a name ("Platform Nine", "Dr Okafor").
+        const bool sentence_start = k == 0 || t_[k - 1].sentence != t_[k].sentence;
+        if (!sentence_start && capitalised(k)) continue;
+        unknown += (unknown.empty() ? "" : " ") + t_[k].text;
+      }
+      if (!unknown.empty()) {
+        out_.warnings.push_back(IntentWarning{"'" + unknown + "' is not a person, place or object I know: ignored",
+                                              span_of(t_, c.s, c.e)});
+        continue;
+      }
+    }
+    const auto q = quantity_before(c.s);
+    if ((c.cls != Cls::kNone && c.cls != Cls::kObject) || !q) continue;
+    // "a family of four waits": the number belongs to the collective, not to the next word.
+    if (auto it = quantity_ending_.find(c.s); it != quantity_ending_.end() && c.s > it->second.length &&
+                                              t_[c.s - it->second.length - 1].is("of"))
+      continue;
     const std::string name = c.name.empty() ? c.head : c.name;
     if (c.cls == Cls::kObject) {
       const bool used = std::any_of(out_.world.objects.begin(), out_.world.objects.end(),

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "core/common/json_schema.hpp"
@@ -204,6 +205,78 @@ TEST(ScenarioIntent, RobotsBackgroundAndWarnings) {
   for (const IntentWarning& w : z.warnings)
     warned = warned || w.message.find("zeppelins") != std::string::npos;
   EXPECT_TRUE(warned);
+}
+
+bool warns(const ScenarioIntent& i, const std::string& words) {
+  return std::any_of(i.warnings.begin(), i.warnings.end(),
+                     [&](const IntentWarning& w) { return w.message.find(words) != std::string::npos; });
+}
+
+TEST(ScenarioIntent, WordsNoDictionaryKnowsAreWarnedAboutButNamesAreNot) {
+  const auto i = read("Twenty passengers wait on the platform of the station while the zorgs dance.");
+  EXPECT_EQ(i.total().value, 20) << roles(i);
+  EXPECT_TRUE(warns(i, "'zorgs' is not a person, place or object I know")) << to_json(i).dump();
+  // A capitalised word inside a sentence is a name, not an unknown word.
+  EXPECT_FALSE(warns(read("Twenty passengers wait at Okafor Street station."), "okafor"));
+  // "a family of four waits": the number belongs to the family, not to "waits".
+  const auto f = read("A family of four waits for a taxi outside the hotel.");
+  EXPECT_EQ(f.total().value, 4) << roles(f);
+  EXPECT_TRUE(f.warnings.size() == 0 || !warns(f, "waits")) << to_json(f).dump();
+}
+
+TEST(ScenarioIntent, PeopleWaitedForAreNotThere) {
+  const auto i = read("A clinic where three patients are waiting for a doctor.");
+  ASSERT_EQ(i.groups.size(), 1u) << roles(i);
+  EXPECT_EQ(i.groups[0].role, "patient");
+  EXPECT_EQ(i.total().value, 3);
+  EXPECT_TRUE(warns(i, "'doctor' is waited for"));
+  EXPECT_EQ(read("Two nurses are looking for their patients in the ward.").total().value, 2);
+  // Caring for or talking to people keeps them.
+  EXPECT_EQ(read("Two nurses care for 6 patients in the ward.").total().value, 8);
+}
+
+TEST(ScenarioIntent, AppositionsSayWhoTheCountedPeopleAre) {
+  const auto i = read("Five friends, all teenagers, hang out at the mall.");
+  EXPECT_EQ(i.groups.size(), 1u) << roles(i);
+  EXPECT_EQ(i.total().value, 5);
+  const auto j = read("A museum with 30 visitors: parents, some with children.");
+  EXPECT_EQ(j.total().value, 30) << roles(j);
+  const auto k = read("Forty people, mostly tourists, queue at the museum entrance. Two guards watch them.");
+  EXPECT_EQ(k.total().value, 42) << roles(k);
+  // A list is not an apposition: each role is its own group.
+  const auto l = read("Twelve patients, two nurses and a doctor in a hospital ward.");
+  EXPECT_EQ(l.total().value, 15) << roles(l);
+  const auto m = read("Five friends and some teenagers hang out at the mall.");
+  EXPECT_EQ(m.groups.size(), 2u) << roles(m);
+}
+
+TEST(ScenarioIntent, ATitleAndANameAreOnePerson) {
+  const auto i = read("Dr Okafor and three nurses do a ward round in the hospital.");
+  ASSERT_NE(group(i, "doctor"), nullptr) << roles(i);
+  EXPECT_EQ(group(i, "doctor")->count.value, 1);
+  EXPECT_EQ(i.total().value, 4);
+  const auto j = read("Mrs Patel waits at the bus stop with her two children.");
+  EXPECT_EQ(j.total().value, 3) << roles(j);
+  const auto k = read("Professor Lee lectures 80 students in the auditorium of a university.");
+  EXPECT_EQ(group(k, "professor")->count.value, 1) << roles(k);
+  EXPECT_EQ(k.total().value, 81);
+}
+
+TEST(ScenarioIntent, MoreOfThePeopleJustNamedAndWordsWordNetLacks) {
+  const auto i = read(
+      "Two baristas work behind the counter of a small cafe while eight customers wait in line and three "
+      "more sit by the window.");
+  ASSERT_NE(group(i, "barista"), nullptr) << roles(i);
+  EXPECT_EQ(group(i, "barista")->count.value, 2);
+  EXPECT_EQ(group(i, "customer")->count.value, 11);
+  // A compound ending in a person word; people naming the venue are not there.
+  const auto m = read("At the farmers market a handful of stallholders set up while early shoppers drift in.");
+  ASSERT_TRUE(m.venue.has_value());
+  EXPECT_EQ(m.venue->type, "mall");
+  EXPECT_EQ(group(m, "farmer"), nullptr) << roles(m);
+  EXPECT_NE(group(m, "stallholder"), nullptr) << roles(m);
+  const auto h = read("A hotel lobby with a receptionist, a concierge and a family of five checking in.");
+  EXPECT_EQ(h.total().value, 7) << roles(h);
 }
 
 TEST(ScenarioIntent, ZeroMoreAndOddCounts) {
