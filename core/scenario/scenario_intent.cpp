@@ -210,17 +210,19 @@ const std::set<std::string, std::less<>> kFunctionWords = {
 
 // Verbs after which "for <people>" names people awaited or sought, not present ("waiting for a
 // doctor"); matched with their -s, -ed, -ing forms.
-constexpr std::array<std::string_view, 9> kAwaitingVerbs = {"wait", "look", "search", "ask",  "call",
+constexpr std::array<std::string_view, 9> kAwaitingVerbs = {"wait", "look", "search", "ask", "call",
                                                             "hunt", "queu", "queue",  "long"};
-const std::set<std::string, std::less<>> kAwaitedDeterminers = {
-    "a", "an", "the", "their", "his", "her", "its", "our", "my", "your", "some", "any", "new", "next", "other"};
+const std::set<std::string, std::less<>> kAwaitedDeterminers = {"a",    "an",  "the", "their", "his",
+                                                                "her",  "its", "our", "my",    "your",
+                                                                "some", "any", "new", "next",  "other"};
 // Words between a counted group and the people that say who they are ("five friends, all
 // teenagers", "forty people, mostly tourists", "30 visitors: parents, some with children").
 const std::set<std::string, std::less<>> kAppositionMarkers = {
-    "all",   "mostly", "most",  "many",   "some",    "including", "among", "them", "of",    "whom",
-    "mainly", "largely", "chiefly", "half", "several", "both",     "nearly", "almost", "are", "were"};
+    "all",    "mostly",  "most",    "many", "some",    "including", "among",  "them",   "of",  "whom",
+    "mainly", "largely", "chiefly", "half", "several", "both",      "nearly", "almost", "are", "were"};
 // Between the further people of an apposition ("parents, some with children").
-const std::set<std::string, std::less<>> kAppositionLinks = {",", "and", "or", "with", "their", "some", "many"};
+const std::set<std::string, std::less<>> kAppositionLinks = {",",     "and",  "or",  "with",
+                                                             "their", "some", "many"};
 
 bool is_function(const TextToken& t) {
   return t.kind != TextToken::Kind::kWord || kFunctionWords.count(t.text) != 0 ||
@@ -555,9 +557,12 @@ struct Chunk {
 
 // Titles before a name, and the role of the person they name.
 const std::map<std::string, std::string, std::less<>> kTitles = {
-    {"dr", "doctor"},   {"doctor", "doctor"},       {"professor", "professor"}, {"prof", "professor"},
-    {"mr", "person"},   {"mrs", "person"},          {"ms", "person"},           {"miss", "person"},
-    {"nurse", "nurse"}, {"officer", "police officer"}, {"captain", "captain"},  {"coach", "coach"}};
+    {"dr", "doctor"},           {"doctor", "doctor"},
+    {"professor", "professor"}, {"prof", "professor"},
+    {"mr", "person"},           {"mrs", "person"},
+    {"ms", "person"},           {"miss", "person"},
+    {"nurse", "nurse"},         {"officer", "police officer"},
+    {"captain", "captain"},     {"coach", "coach"}};
 
 class Reader {
  public:
@@ -1153,8 +1158,8 @@ void Reader::read_people() {
     bool separator = false, marker = false;
     for (std::size_t k = last_group_end; k < c.s; ++k) {
       const TextToken& x = t_[k];
-      if (k == last_group_end && (x.text == ":" || x.text == "(" || x.text == "-" || x.text == "—" ||
-                                  x.text == "–"))
+      if (k == last_group_end &&
+          (x.text == ":" || x.text == "(" || x.text == "-" || x.text == "—" || x.text == "–"))
         separator = marker = true;
       else if (k == last_group_end && x.text == ",")
         separator = true;
@@ -1250,8 +1255,9 @@ void Reader::read_people() {
       if (auto v = venue_at(c.e, n); v && !v->empty()) continue;
     }
     if (awaited(c.s)) {
-      out_.warnings.push_back(IntentWarning{
-          "'" + join_text(t_, c.s, c.e) + "' is waited for or sought, not there: not added", span_of(t_, c.s, c.e)});
+      out_.warnings.push_back(
+          IntentWarning{"'" + join_text(t_, c.s, c.e) + "' is waited for or sought, not there: not added",
+                        span_of(t_, c.s, c.e)});
       continue;
     }
     auto q = quantity_before(c.s);
@@ -1315,11 +1321,9 @@ void Reader::read_people() {
   // just before ("ten more people" with its noun was read above).
   for (const auto& [after, q] : quantity_ending_) {
     if (after >= t_.size() || !t_[after].is("more") || !q.count.specified()) continue;
-    const bool noun_follows = std::any_of(chunks_.begin(), chunks_.end(),
-                                          [&](const Chunk& c) {
-                                            return (c.s == after + 1 || c.s == after) && c.cls != Cls::kNone &&
-                                                   c.cls != Cls::kObject;
-                                          });
+    const bool noun_follows = std::any_of(chunks_.begin(), chunks_.end(), [&](const Chunk& c) {
+      return (c.s == after + 1 || c.s == after) && c.cls != Cls::kNone && c.cls != Cls::kObject;
+    });
     if (noun_follows) continue;
     const std::size_t at = t_[after - q.length].span.begin;
     PeopleGroup* nearest = nullptr;
@@ -1637,16 +1641,16 @@ ScenarioIntent Reader::run() {
         unknown += (unknown.empty() ? "" : " ") + t_[k].text;
       }
       if (!unknown.empty()) {
-        out_.warnings.push_back(IntentWarning{"'" + unknown + "' is not a person, place or object I know: ignored",
-                                              span_of(t_, c.s, c.e)});
+        out_.warnings.push_back(IntentWarning{
+            "'" + unknown + "' is not a person, place or object I know: ignored", span_of(t_, c.s, c.e)});
         continue;
       }
     }
     const auto q = quantity_before(c.s);
     if ((c.cls != Cls::kNone && c.cls != Cls::kObject) || !q) continue;
     // "a family of four waits": the number belongs to the collective, not to the next word.
-    if (auto it = quantity_ending_.find(c.s); it != quantity_ending_.end() && c.s > it->second.length &&
-                                              t_[c.s - it->second.length - 1].is("of"))
+    if (auto it = quantity_ending_.find(c.s);
+        it != quantity_ending_.end() && c.s > it->second.length && t_[c.s - it->second.length - 1].is("of"))
       continue;
     const std::string name = c.name.empty() ? c.head : c.name;
     if (c.cls == Cls::kObject) {

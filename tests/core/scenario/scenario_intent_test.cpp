@@ -270,7 +270,8 @@ TEST(ScenarioIntent, MoreOfThePeopleJustNamedAndWordsWordNetLacks) {
   EXPECT_EQ(group(i, "barista")->count.value, 2);
   EXPECT_EQ(group(i, "customer")->count.value, 11);
   // A compound ending in a person word; people naming the venue are not there.
-  const auto m = read("At the farmers market a handful of stallholders set up while early shoppers drift in.");
+  const auto m =
+      read("At the farmers market a handful of stallholders set up while early shoppers drift in.");
   ASSERT_TRUE(m.venue.has_value());
   EXPECT_EQ(m.venue->type, "mall");
   EXPECT_EQ(group(m, "farmer"), nullptr) << roles(m);
