@@ -974,11 +974,29 @@ void Reader::resolve_maybe_persons() {
                            (t_[c.s - 1].is("a") || t_[c.s - 1].is("an") || t_[c.s - 1].is("the")) &&
                            c.e < t_.size() && t_[c.e].text.ends_with("s") &&
                            wn_.is_verb(t_[c.e].text.substr(0, t_[c.e].text.size() - 1));
+      // "a cleaner vacuuming the floor", "a cleaner who vacuums", "fans stream out": the subject of a
+      // verb; "nobody except a cleaner": whom an exception names.
+      bool acting = false, excepted = false;
+      if (c.e < t_.size() && t_[c.e].kind == TextToken::Kind::kWord) {
+        const std::string& next = t_[c.e].text;
+        acting = next == "who" || (next.ends_with("ing") && wn_.is_verb(next)) ||
+                 (c.plural && !next.ends_with("s") && wn_.is_verb(next) && !significant(next));
+      }
+      {
+        std::size_t k = c.s;
+        while (k > 0 &&
+               (t_[k - 1].is("a") || t_[k - 1].is("an") || t_[k - 1].is("the") || t_[k - 1].is("one") ||
+                t_[k - 1].is("for") || t_[k - 1].is("single") || used_[k - 1]))
+          --k;
+        excepted =
+            k > 0 && (t_[k - 1].is("except") || t_[k - 1].is("but") || t_[k - 1].is("apart") ||
+                      t_[k - 1].is("besides") || (t_[k - 1].is("than") && k > 1 && t_[k - 2].is("other")));
+      }
       // A word WordNet lacks, counted and named in a prompt about people ("one barista behind the counter").
       const bool among_people = std::any_of(chunks_.begin(), chunks_.end(), [](const Chunk& o) {
         return o.cls == Cls::kPerson || o.cls == Cls::kGenericPerson || o.cls == Cls::kCollective;
       });
-      if ((e.known && (counted || coordinated || subject)) ||
+      if ((e.known && (counted || coordinated || subject || acting || excepted)) ||
           (!e.known && (coordinated || subject || (counted && among_people)))) {
         c.cls = Cls::kPerson;
         c.why = e.known ? "WordNet: '" + e.lemma + "' can be a person (noun.person), and is " +
@@ -1035,6 +1053,40 @@ std::string Reader::normalise_role(const std::string& role, const std::string& h
   return "adult";
 }
 
+// Places and things that belong to one kind of venue, for prompts that name no venue ("passengers
+// board a train at platform 2").
+const std::vector<std::pair<std::string_view, std::string_view>> kVenueOfPart = {
+    {"platform", "train_station"},
+    {"train", "train_station"},
+    {"carriage", "train_station"},
+    {"ward", "hospital"},
+    {"operating theatre", "hospital"},
+    {"classroom", "school"},
+    {"playground", "school"},
+    {"checkout", "supermarket"},
+    {"aisle", "supermarket"},
+    {"trolley", "supermarket"},
+    {"gallery", "museum"},
+    {"exhibit", "museum"},
+    {"boarding gate", "airport"},
+    {"runway", "airport"},
+    {"baggage claim", "airport"},
+    {"lecture hall", "university"},
+    {"treadmill", "gym"},
+    {"changing room", "gym"},
+    {"reading room", "library"},
+    {"bookshelf", "library"},
+    {"assembly line", "factory"},
+    {"conveyor belt", "factory"},
+    {"loading dock", "warehouse"},
+    {"forklift", "warehouse"},
+    {"reception desk", "hotel"},
+    {"guest room", "hotel"},
+    {"stage", "theatre"},
+    {"auditorium", "theatre"},
+    {"menu", "restaurant"},
+    {"kitchen", "restaurant"}};
+
 void Reader::find_venue() {
   for (std::size_t i = 0; i < t_.size(); ++i) {
     if (t_[i].kind != TextToken::Kind::kWord) continue;
@@ -1090,6 +1142,21 @@ void Reader::find_venue() {
             out_.venue = venue;
             return;
           }
+    }
+  }
+  // No venue word: the places and things named say where ("at platform 2" → a station).
+  for (const Chunk& c : chunks_) {
+    for (const auto& [part, type] : kVenueOfPart) {
+      const bool two = part.find(' ') != std::string_view::npos;
+      if (c.head != part && c.name != part && !(two && c.name.ends_with(part))) continue;
+      VenueIntent venue;
+      venue.type = std::string(type);
+      venue.building_type = std::string(nearest_building_type(type));
+      venue.words = join_text(t_, c.s, c.e);
+      venue.span = span_of(t_, c.s, c.e);
+      venue.why = "no venue word; '" + std::string(part) + "' belongs to a " + std::string(type);
+      out_.venue = venue;
+      return;
     }
   }
 }

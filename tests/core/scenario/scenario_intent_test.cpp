@@ -280,6 +280,35 @@ TEST(ScenarioIntent, MoreOfThePeopleJustNamedAndWordsWordNetLacks) {
   EXPECT_EQ(h.total().value, 7) << roles(h);
 }
 
+TEST(ScenarioIntent, RarerPersonSensesThatActOrAreExceptedArePeople) {
+  // "cleaner" and "fan" are things first in WordNet; acting or excepted, they are people.
+  for (const char* prompt : {"Nobody is in the office except a cleaner vacuuming the carpet.",
+                             "The office is empty except for a cleaner who vacuums the carpet.",
+                             "Nobody is in the office except a cleaner."}) {
+    const auto i = read(prompt);
+    ASSERT_EQ(i.groups.size(), 1u) << prompt << ": " << roles(i);
+    EXPECT_EQ(i.groups[0].role, "cleaner");
+    EXPECT_EQ(i.total().value, 1);
+    EXPECT_TRUE(i.exclusivity.exclusive);
+  }
+  const auto f =
+      read("Fans stream out of a football stadium after the match, roughly 5000 of them, through 8 gates.");
+  ASSERT_NE(group(f, "fan"), nullptr) << roles(f);
+  EXPECT_EQ(group(f, "fan")->count.value, 5000);
+  // Things stay things.
+  EXPECT_EQ(read("An office with desks, fans and a coffee machine where 10 employees work.").total().value,
+            10);
+}
+
+TEST(ScenarioIntent, APromptWithoutAVenueWordGetsTheVenueItsPlacesBelongTo) {
+  const auto i = read("Passengers board a train at platform 2; a conductor checks tickets.");
+  ASSERT_TRUE(i.venue.has_value());
+  EXPECT_EQ(i.venue->type, "train_station");
+  EXPECT_EQ(i.venue->why.rfind("no venue word", 0), 0u) << i.venue->why;
+  EXPECT_EQ(read("Kids run around the playground while two teachers watch.").venue->type, "school");
+  EXPECT_FALSE(read("Two people talk.").venue.has_value());
+}
+
 TEST(ScenarioIntent, ZeroMoreAndOddCounts) {
   const auto i = read("0 people in the office.");
   EXPECT_TRUE(i.groups.empty());
