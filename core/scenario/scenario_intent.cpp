@@ -299,6 +299,10 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueWords = {
     {"shopping centre", "mall"},
     {"shopping center", "mall"},
     {"shopping mall", "mall"},
+    {"bank branch", "office"},
+    {"post office", "office"},
+    {"town hall", "community_hall"},
+    {"church", "community_hall"},
     {"market hall", "mall"},
     {"market", "mall"},
     {"distribution centre", "warehouse"},
@@ -401,6 +405,11 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueHypernyms
     {"nursing home", "care_home"},
     {"dwelling", "residential"},
     {"housing", "residential"},
+    // Buildings the generator has no type of its own for: the nearest by use (an assembly hall for
+    // worship, desks and counters for public offices).
+    {"place of worship", "community_hall"},
+    {"government building", "office"},
+    {"depository financial institution", "office"},
 };
 
 // --- Places, features, people --------------------------------------------------------------------
@@ -988,6 +997,11 @@ void Reader::resolve_maybe_persons() {
                (t_[k - 1].is("a") || t_[k - 1].is("an") || t_[k - 1].is("the") || t_[k - 1].is("one") ||
                 t_[k - 1].is("for") || t_[k - 1].is("single") || used_[k - 1]))
           --k;
+        // "a robot weaves through commuters", "among fans": moving between them, they are people.
+        if (c.plural && k > 0 &&
+            (t_[k - 1].is("through") || t_[k - 1].is("among") || t_[k - 1].is("amid") ||
+             t_[k - 1].is("amidst") || t_[k - 1].is("between") || t_[k - 1].is("past")))
+          acting = true;
         excepted =
             k > 0 && (t_[k - 1].is("except") || t_[k - 1].is("but") || t_[k - 1].is("apart") ||
                       t_[k - 1].is("besides") || (t_[k - 1].is("than") && k > 1 && t_[k - 2].is("other")));
@@ -1085,7 +1099,9 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueOfPart = 
     {"stage", "theatre"},
     {"auditorium", "theatre"},
     {"menu", "restaurant"},
-    {"kitchen", "restaurant"}};
+    {"living room", "residential"},
+    {"bedroom", "residential"},
+    {"kitchen", "residential"}};
 
 void Reader::find_venue() {
   for (std::size_t i = 0; i < t_.size(); ++i) {
@@ -1705,6 +1721,8 @@ ScenarioIntent Reader::run() {
         // A capitalised word inside a sentence is a name ("Platform Nine", "Dr Okafor").
         const bool sentence_start = k == 0 || t_[k - 1].sentence != t_[k].sentence;
         if (!sentence_start && capitalised(k)) continue;
+        if (std::any_of(t_[k].text.begin(), t_[k].text.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
+          continue;  // "8am", "b12": times and codes
         unknown += (unknown.empty() ? "" : " ") + t_[k].text;
       }
       if (!unknown.empty()) {

@@ -307,6 +307,23 @@ TEST(ScenarioIntent, APromptWithoutAVenueWordGetsTheVenueItsPlacesBelongTo) {
   EXPECT_EQ(i.venue->why.rfind("no venue word", 0), 0u) << i.venue->why;
   EXPECT_EQ(read("Kids run around the playground while two teachers watch.").venue->type, "school");
   EXPECT_FALSE(read("Two people talk.").venue.has_value());
+  EXPECT_EQ(read("A robot vacuum cleans the living room while a family of three watches TV.").venue->type,
+            "residential");
+  // Buildings without a type of their own go to the nearest by use (WordNet hypernyms).
+  EXPECT_EQ(
+      read("Pilgrims gather in front of the cathedral; about 70 of them listen to a priest.").venue->type,
+      "community_hall");
+  const auto b = read("Generate a scene: bank branch, 3 tellers, 15 customers queuing, 1 security guard.");
+  EXPECT_EQ(b.venue->type, "office");
+  EXPECT_EQ(b.total().value, 19) << roles(b);
+}
+
+TEST(ScenarioIntent, PeopleMovedThroughArePeopleAndTimesAreNoUnknownWords) {
+  const auto i =
+      read("Simulate a crowded subway platform at 8am with a delivery robot navigating through commuters.");
+  EXPECT_NE(group(i, "commuter"), nullptr) << roles(i);
+  EXPECT_EQ(i.robots.size(), 1u);
+  EXPECT_FALSE(warns(i, "8am"));
 }
 
 TEST(ScenarioIntent, ZeroMoreAndOddCounts) {
