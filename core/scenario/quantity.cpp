@@ -81,8 +81,11 @@ struct Vague {
   double lo, hi;
 };
 // Longest first where one is a prefix of another.
-constexpr std::array<Vague, 22> kVague = {{
+constexpr std::array<Vague, 25> kVague = {{
     {"a large crowd of", 80, 200},
+    {"a quartet of", 4, 4},
+    {"a trio of", 3, 3},
+    {"a pair of", 2, 2},
     {"a big crowd of", 80, 200},
     {"a small group of", 2, 5},
     {"a large group of", 10, 30},
@@ -470,7 +473,8 @@ std::optional<QuantityMatch> quantity_at(const std::vector<TextToken>& t, std::s
           if (auto r = number_then_range(num->first, i + n, num->second)) return r;
           return done(Count::exact(num->first), n + num->second);
         }
-      return done(Count::range(v.lo, v.hi), n);
+      // "a pair of", "a trio of": exactly that many.
+      return done(v.lo == v.hi ? Count::exact(v.lo) : Count::range(v.lo, v.hi), n);
     }
   }
   if (t[i].is("some")) return done(Count::range(3, 8), 1);

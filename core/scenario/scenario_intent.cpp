@@ -268,14 +268,14 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueWords = {
     {"polling place", "community_hall"},
     {"nurses station", ""},
     {"nurse station", ""},
-    {"police station", ""},
+    {"police station", "office"},
     {"fire station", ""},
     {"gas station", ""},
     {"petrol station", ""},
     {"charging station", ""},
     {"ticket office", ""},
     {"box office", ""},
-    {"post office", ""},
+    {"post office", "office"},
     {"care home", "care_home"},
     {"nursing home", "care_home"},
     {"retirement home", "care_home"},
@@ -300,7 +300,8 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueWords = {
     {"shopping center", "mall"},
     {"shopping mall", "mall"},
     {"bank branch", "office"},
-    {"post office", "office"},
+    {"aquarium", "museum"},
+    {"zoo", "museum"},
     {"town hall", "community_hall"},
     {"church", "community_hall"},
     {"market hall", "mall"},
@@ -536,6 +537,12 @@ std::string strip_accents(std::string w) {
   return out;
 }
 
+// The written form of a noun WordNet lemmatised to another word is a plural: "-s", and the
+// irregular people words ("children", "women", "firemen").
+bool plural_form(std::string_view w) {
+  return w.ends_with("s") || w.ends_with("men") || w.ends_with("children") || w.ends_with("folk");
+}
+
 bool has_sense(const NounEntry& e, std::string_view lexfile, std::size_t within) {
   for (std::size_t k = 0; k < e.senses.size() && k < within; ++k)
     if (e.senses[k].lexfile == lexfile) return true;
@@ -613,6 +620,8 @@ class Reader {
   bool person_word(const std::string& word, const Chunk& c, std::string& why) const;
   std::string normalise_role(const std::string& role, const std::string& head, std::string& why) const;
   void find_venue();
+  // Token i belongs to a chunk that names people (the venue word before it describes them).
+  [[nodiscard]] bool modifies_people(std::size_t i) const;
   void read_people();
   void apply_products();
   void attach_places_and_activities();
@@ -710,7 +719,7 @@ void Reader::find_chunks() {
       const TextToken& prev = t_[e - 1];
       if (prev.possessive) break;
       const NounEntry& pe = noun(prev.text);
-      const bool prev_plural = pe.known && pe.lemma != prev.text && prev.text.ends_with("s");
+      const bool prev_plural = pe.known && pe.lemma != prev.text && plural_form(prev.text);
       if (prev_plural && kPluralModifiers.count(prev.text) == 0 && prev.text != "people") break;
       if (prev.text == "people" || kGenericPeople.count(prev.text)) break;
       // "nurse calls", "guide wait", "robot drives": a noun that can be a verb after a
@@ -820,7 +829,7 @@ void Reader::classify(Chunk& c) {
   const std::string& word = t_[last].text;
   const NounEntry& e = noun(word);
   c.head = e.known ? e.lemma : strip_accents(word);
-  c.plural = e.known && e.lemma != word && word.ends_with("s");
+  c.plural = e.known && e.lemma != word && plural_form(word);
   if (!e.known && c.head.size() > 3 && c.head.ends_with("s") && !c.head.ends_with("ss")) {
     c.head.pop_back();  // a plural WordNet lacks ("carers", "baristas")
     c.plural = true;
@@ -1103,6 +1112,12 @@ const std::vector<std::pair<std::string_view, std::string_view>> kVenueOfPart = 
     {"bedroom", "residential"},
     {"kitchen", "residential"}};
 
+bool Reader::modifies_people(std::size_t i) const {
+  for (const Chunk& c : chunks_)
+    if (c.s <= i && i < c.e) return c.cls == Cls::kPerson || c.cls == Cls::kGenericPerson;
+  return false;
+}
+
 void Reader::find_venue() {
   for (std::size_t i = 0; i < t_.size(); ++i) {
     if (t_[i].kind != TextToken::Kind::kWord) continue;
@@ -1115,6 +1130,18 @@ void Reader::find_venue() {
       }
       // "office" after a possessive or as a room of another venue ("the head teacher's office").
       if (*v == "office" && i > 0 && t_[i - 1].possessive) continue;
+      // "school children visit the aquarium", "hospital staff at the station": a venue word before
+      // people describes them; a later venue word names the place.
+      if (modifies_people(i + n)) {
+        std::size_t later = i + n, n3 = 0;
+        while (later < t_.size() &&
+               !(venue_at(later, n3) && !venue_at(later, n3)->empty() && !modifies_people(later + n3)))
+          ++later;
+        if (later < t_.size()) {
+          i = later - 1;
+          continue;
+        }
+      }
       if (*v == "residential" && t_[i].is("home") && i > 0 && !t_[i - 1].is("at") && !t_[i - 1].is("the")) {
         // "care home" is in the table; a bare "home" needs "at home" or "the home".
         if (!(i + 1 < t_.size() && t_[i + 1].kind == TextToken::Kind::kPunct)) continue;

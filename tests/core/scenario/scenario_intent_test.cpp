@@ -318,6 +318,21 @@ TEST(ScenarioIntent, APromptWithoutAVenueWordGetsTheVenueItsPlacesBelongTo) {
   EXPECT_EQ(b.total().value, 19) << roles(b);
 }
 
+TEST(ScenarioIntent, IrregularPluralsPairsAndVenueWordsThatDescribePeople) {
+  const auto c = read("Children play in the yard.");
+  ASSERT_NE(group(c, "child"), nullptr) << roles(c);
+  EXPECT_FALSE(group(c, "child")->count.specified());
+  EXPECT_EQ(read("Two firemen and a child wait.").total().value, 3);
+  const auto p = read("A pair of police officers walk through the mall.");
+  EXPECT_EQ(group(p, "police officer")->count.kind, CountKind::kExact);
+  EXPECT_EQ(p.total().value, 2);
+  const auto a = read("Three groups of eight school children visit the aquarium with their teachers.");
+  EXPECT_EQ(a.venue->type, "museum") << a.venue->why;
+  EXPECT_EQ(group(a, "child")->count.value, 24);
+  EXPECT_EQ(read("Hospital staff wait at the train station.").venue->type, "train_station");
+  EXPECT_EQ(read("Women and men queue at the post office.").venue->type, "office");
+}
+
 TEST(ScenarioIntent, PeopleMovedThroughArePeopleAndTimesAreNoUnknownWords) {
   const auto i =
       read("Simulate a crowded subway platform at 8am with a delivery robot navigating through commuters.");
