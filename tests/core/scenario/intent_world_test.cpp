@@ -52,7 +52,7 @@ TEST(IntentWorld, RangesAreLowerBoundsAndAFeatureOnlyNamedIsAtLeastOne) {
 }
 
 TEST(IntentWorld, EveryFixturePromptGivesRequirementsTheWorldReaderAccepts) {
-  for (const char* file : {"everyday.jsonl", "unseen.jsonl"})
+  for (const char* file : {"everyday.jsonl", "unseen.jsonl", "probes.jsonl"})
     for (const auto& p :
          facts::load(std::string(SOCSIM_SOURCE_DIR) + "/tests/fixtures/prompts/" + std::string(file))) {
       const auto r = requirements_of(p.prompt);

@@ -114,7 +114,7 @@ TEST(PromptCheck, EveryFixturePromptPasses) {
   std::size_t checked = 0;
   double lowest = 1.0;
   std::string lowest_prompt;
-  for (const std::string file : {"everyday", "unseen"}) {
+  for (const std::string file : {"everyday", "unseen", "probes"}) {
     std::ifstream in(std::string(SOCSIM_SOURCE_DIR) + "/tests/fixtures/prompts/" + file + ".jsonl");
     ASSERT_TRUE(in) << file;
     for (std::string line; std::getline(in, line);) {

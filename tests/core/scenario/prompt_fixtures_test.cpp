@@ -9,7 +9,7 @@ namespace socsim::scenario {
 namespace {
 
 TEST(PromptFixtures, AtLeastNinetyFivePercentOfFactsHold) {
-  for (const std::string file : {"everyday", "unseen"}) {
+  for (const std::string file : {"everyday", "unseen", "probes"}) {
     const auto prompts =
         facts::load(std::string(SOCSIM_SOURCE_DIR) + "/tests/fixtures/prompts/" + file + ".jsonl");
     ASSERT_FALSE(prompts.empty()) << file;

@@ -449,7 +449,7 @@ TEST(ScenarioIntent, EveryFixtureMatchesTheSchema) {
   ASSERT_TRUE(in.good());
   auto schema = JsonSchema::compile(Json::parse(in));
   ASSERT_TRUE(schema.has_value()) << schema.error().message();
-  for (const std::string file : {"everyday", "unseen"}) {
+  for (const std::string file : {"everyday", "unseen", "probes"}) {
     for (const auto& p :
          facts::load(std::string(SOCSIM_SOURCE_DIR) + "/tests/fixtures/prompts/" + file + ".jsonl")) {
       const Json j = to_json(read(p.prompt));
