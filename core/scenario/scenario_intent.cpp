@@ -1429,7 +1429,9 @@ void Reader::read_people() {
   }
   // "eight customers wait in line and three more sit by the window": more of the people named
   // just before ("ten more people" with its noun was read above).
-  for (const auto& [after, q] : quantity_ending_) {
+  for (const auto& ending : quantity_ending_) {
+    const std::size_t after = ending.first;  // (not a structured binding: lambdas capture it below)
+    const QuantityMatch& q = ending.second;
     if (after >= t_.size() || !t_[after].is("more") || !q.count.specified()) continue;
     const bool noun_follows = std::any_of(chunks_.begin(), chunks_.end(), [&](const Chunk& c) {
       return (c.s == after + 1 || c.s == after) && c.cls != Cls::kNone && c.cls != Cls::kObject;
