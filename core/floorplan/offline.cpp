@@ -633,6 +633,71 @@ class Layout {
            (exits.size() == 1 ? std::string("the main entrance") : std::string("the nearest exit"));
   }
 
+  // Widens every exit (door to the outside) towards `each` cm on its outside wall: where it is
+  // when the wall takes the width there, else moved along the wall to the widest free stretch
+  // (15 cm from the wall's ends, 30 cm from the openings of doors near the wall's line). Returns
+  // the exits' total width in cm; no randomness.
+  int widen_exits(int each) {
+    std::vector<Rect> rects;
+    for (const auto& r : rooms_) rects.push_back(r.rect);
+    int total = 0;
+    for (auto& d : doors_) {
+      if (d.connects.size() != 1) continue;
+      const auto room = index_.find(d.connects.front());
+      const int c = d.vertical_wall ? d.x : d.y;
+      int& at = d.vertical_wall ? d.y : d.x;
+      std::optional<Wall> on;
+      if (room != index_.end())
+        for (const Wall& wall : outside_walls(rects, room->second))
+          if (wall.vertical == d.vertical_wall && wall.c == c && at >= wall.lo && at <= wall.hi) on = wall;
+      if (!on || d.width >= each) {
+        total += d.width;
+        continue;
+      }
+      // Free stretches of the wall: its length less the openings of doors on or near its line.
+      std::vector<std::pair<int, int>> free{{on->lo + 15, on->hi - 15}};
+      for (const auto& o : doors_) {
+        if (&o == &d) continue;
+        const int oc = d.vertical_wall ? o.x : o.y, oat = d.vertical_wall ? o.y : o.x;
+        const int reach = o.vertical_wall == d.vertical_wall ? o.width / 2 : 0;
+        if (std::abs(oc - c) > 100) continue;
+        const int margin = reach + 30 + (o.vertical_wall == d.vertical_wall ? 0 : 50);
+        const int lo = oat - margin, hi = oat + margin;
+        std::vector<std::pair<int, int>> next;
+        for (auto [a, b] : free) {
+          if (hi <= a || lo >= b) {
+            next.emplace_back(a, b);
+            continue;
+          }
+          if (lo > a) next.emplace_back(a, lo);
+          if (hi < b) next.emplace_back(hi, b);
+        }
+        free = std::move(next);
+      }
+      std::optional<std::pair<int, int>> best;
+      for (auto [a, b] : free) {
+        const bool here = at >= a && at <= b;
+        const int room_here = here ? 2 * std::min(at - a, b - at) : 0;
+        if (here && room_here >= each) {
+          best = {at, each};
+          break;
+        }
+        const int w = std::min(each, b - a) / 5 * 5;
+        if (!best || w > best->second) {
+          // Centred in the stretch, or as near the old place as the width allows.
+          const int centre = std::clamp(at, a + (w + 1) / 2, b - (w + 1) / 2);
+          best = {centre, w};
+        }
+      }
+      if (best && best->second > d.width) {
+        at = best->first;
+        d.width = best->second;
+      }
+      total += d.width;
+    }
+    return total;
+  }
+
   [[nodiscard]] const SceneGraph& graph() const { return graph_; }
   [[nodiscard]] const std::vector<std::string>& notes() const { return notes_; }
   [[nodiscard]] const PlanRequirement& plan() const { return plan_; }
@@ -725,10 +790,96 @@ int code_exits(const ComplianceReport& report) {
   return 1;
 }
 
-const ComplianceCheck* exit_check(const ComplianceReport& report) {
+const ComplianceCheck* find_check(const ComplianceReport& report, std::string_view name) {
   for (const auto& c : report.checks)
-    if (c.name == "exit_count") return &c;
+    if (c.name == name) return &c;
   return nullptr;
+}
+
+// The widest exit the generator builds: a bank of three door leaves of the largest leaf the
+// IBC allows (1010.1.1: 48 in, 1.22 m). The egress width of a large occupant load is given by
+// widening the exits up to this before any exit beyond the asked and required count is added.
+constexpr int kMaxExitWidthCm = 365;
+
+std::string metres_text(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", metres);
+  return text;
+}
+
+// Why the plan has the exits it has (asked for, required by the code's exit count, added for
+// the egress width or the travel distance, widened), for its provenance.
+struct ExitReasons {
+  int added_for_count = 0;
+  int added_for_width = 0;
+  int added_for_travel = 0;
+  bool widened = false;
+};
+
+Json exit_provenance(const World& world, const ComplianceReport& report, const WorldRequirements& wants,
+                     int asked, const ExitReasons& why) {
+  const ComplianceCheck* count = find_check(report, "exit_count");
+  const ComplianceCheck* width = find_check(report, "egress_width_per_occupant");
+  const int built = count_feature(world, Feature::kExit);
+  double total = 0.0, widest = 0.0;
+  Json widths = Json::array();
+  for (const auto& d : world.doors())
+    if (!d.other) {
+      total += d.width;
+      widest = std::max(widest, d.width);
+      widths.push_back({{"door", d.name}, {"width_m", std::round(d.width * 100.0) / 100.0}});
+    }
+  const int required = count ? static_cast<int>(std::lround(count->required)) : 1;
+  const std::string load =
+      std::to_string(static_cast<long>(std::lround(report.occupant_load))) + " occupants";
+  std::string text;
+  std::string decided_by = "request";
+  if (asked > 0)
+    text = std::to_string(asked) + " exit" + (asked == 1 ? "" : "s") + " asked for";
+  else
+    text = "no exit count asked for";
+  if (count) {
+    text += "; " + std::to_string(required) + " required by " + count->ref_id + " (" + count->section +
+            ") for " + load;
+    if (required > asked) decided_by = count->ref_id;
+  }
+  if (width && width->value) {
+    text += "; " + metres_text(width->required) + " m of exit width required by " + width->ref_id + " (" +
+            width->section + ")";
+    if (why.widened) text += ", given by exits up to " + metres_text(widest) + " m wide";
+    if (why.widened && decided_by == "request") decided_by = width->ref_id + " (width only)";
+  }
+  if (why.added_for_width > 0) {
+    text += "; " + std::to_string(why.added_for_width) + " exit" + (why.added_for_width == 1 ? "" : "s") +
+            " added beyond that for the exit width (no exit is wider than " +
+            metres_text(kMaxExitWidthCm / 100.0) + " m)";
+    if (width) decided_by = width->ref_id;
+  }
+  if (why.added_for_travel > 0) {
+    text += "; " + std::to_string(why.added_for_travel) + " exit" + (why.added_for_travel == 1 ? "" : "s") +
+            " added for the travel distance";
+    for (const auto& c : report.checks)
+      if (c.name.rfind("exit_access_travel_distance", 0) == 0) decided_by = c.ref_id;
+  }
+  text += "; " + std::to_string(built) + " built";
+  const FeatureCount* exit = wants.find(Feature::kExit);
+  if (exit == nullptr) exit = wants.find(Feature::kEntrance);
+  return {{"asked", asked},
+          {"asked_exactly", exit != nullptr && !exit->at_least},
+          {"required", required},
+          {"required_by", count ? Json(count->ref_id + " (" + count->section + ")") : Json(nullptr)},
+          {"occupant_load", report.occupant_load},
+          {"width_required_m", width ? Json(std::round(width->required * 1000.0) / 1000.0) : Json(nullptr)},
+          {"width_required_by", width ? Json(width->ref_id + " (" + width->section + ")") : Json(nullptr)},
+          {"width_built_m", std::round(total * 100.0) / 100.0},
+          {"added_for_count", why.added_for_count},
+          {"added_for_width", why.added_for_width},
+          {"added_for_travel", why.added_for_travel},
+          {"widened", why.widened},
+          {"built", built},
+          {"widths", std::move(widths)},
+          {"decided_by", decided_by},
+          {"text", text}};
 }
 
 // The exits (doors to the outside) a request asks for, at least: the most of its exits,
@@ -821,26 +972,49 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     ComplianceReport report = check_compliance(*world, domain, constraints, occupants);
     // Exits: as many as the request asks for and the code requires (occupant load, travel
     // distance), each added as far from the others as the outside walls allow.
+    // An exit count the request gives is a minimum: the code's exit count (IBC Table 1006.3.2)
+    // may raise it; the egress width of the occupant load (IBC 1005.3.2) widens the exits first
+    // (up to kMaxExitWidthCm each) and adds exits only when the widest exits cannot carry it.
     std::vector<std::string> exit_notes;
+    ExitReasons why;
     bool exits_ok = true;
     for (int round = 0; round < 12 && world; ++round) {
       const int target = std::max({code_exits(report), asked_exits(wants), 1});
-      bool egress_short = false;
+      const ComplianceCheck* egress = nullptr;
       std::string far_room;
       for (const auto& c : report.checks) {
         if (c.status != CheckStatus::kFail) continue;
-        if (c.name == "egress_width_per_occupant") egress_short = true;
+        if (c.name == "egress_width_per_occupant") egress = &c;
         if (c.name.rfind("exit_access_travel_distance", 0) == 0) far_room = c.element;
       }
       const int have = count_feature(*world, Feature::kExit);
-      if (have >= target && !egress_short && far_room.empty()) break;
+      if (have >= target && egress == nullptr && far_room.empty()) break;
+      if (have >= target && far_room.empty()) {
+        // The count is right, the width short: wider exits, when their walls take them.
+        const int each = std::min(kMaxExitWidthCm, cm_up(egress->required / have + 0.005));
+        const int before = static_cast<int>(std::lround(egress->value.value_or(0.0) * 100.0));
+        if (layout.widen_exits(each) > before) {
+          why.widened = true;
+          world = build();
+          if (world) report = check_compliance(*world, domain, constraints, occupants);
+          continue;
+        }
+      }
       // The exits the count lacks are added together (one build and report for all of them).
+      const bool for_width = have >= target && far_room.empty();
       for (int k = 0; k < std::max(1, target - have) && exits_ok; ++k) {
-        auto note = k == 0 ? layout.add_exit(egress_short, far_room) : layout.add_exit();
-        if (note)
-          exit_notes.push_back(*note);
-        else
+        auto note = k == 0 ? layout.add_exit(egress != nullptr, far_room) : layout.add_exit();
+        if (!note) {
           exits_ok = false;
+          break;
+        }
+        exit_notes.push_back(*note);
+        if (have + k < target)
+          ++why.added_for_count;
+        else if (for_width)
+          ++why.added_for_width;
+        else
+          ++why.added_for_travel;
       }
       if (!exits_ok) break;
       world = build();
@@ -897,7 +1071,11 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     }
     // Everything the request counts or names is there (furniture that did not fit: larger rooms).
     std::vector<std::string> lacking = outcome.missing;
-    for (auto& u : unmet(*world, wants, code_exits(report))) lacking.push_back(std::move(u));
+    // Exits beyond the asked count are the code's (count, width, travel distance), not a miss.
+    const int exits_by_code = why.added_for_width + why.added_for_travel > 0
+                                  ? count_feature(*world, Feature::kExit)
+                                  : code_exits(report);
+    for (auto& u : unmet(*world, wants, exits_by_code)) lacking.push_back(std::move(u));
     if (!lacking.empty()) {
       std::string what;
       for (const auto& l : lacking) what += (what.empty() ? "" : "; ") + l;
@@ -909,16 +1087,18 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     FloorPlan plan{std::move(*world), std::move(report), layout.graph(), Json::object()};
     Json notes = layout.notes();
     for (const auto& n : exit_notes) notes.push_back(n);
-    const ComplianceCheck* exits = exit_check(plan.compliance);
     const int asked = asked_exits(wants);
-    if (exits && asked > 0 && exits->required > asked)
-      notes.push_back(std::to_string(asked) + " exit" + (asked == 1 ? "" : "s") +
-                      " asked for; the building code (" + exits->ref_id + ") asks for " +
-                      std::to_string(static_cast<int>(exits->required)));
+    Json exits = exit_provenance(plan.world, plan.compliance, wants, asked, why);
+    if (asked > 0 || why.widened || why.added_for_width + why.added_for_travel > 0)
+      notes.push_back(exits["text"]);
     for (const auto& n : outcome.notes) notes.push_back(n);
-    plan.provenance = {{"generator", "offline"},    {"seed", options.seed},
-                       {"domain", domain},          {"attempts", attempt + 1},
-                       {"notes", std::move(notes)}, {"knowledge", knowledge_provenance(constraints)}};
+    plan.provenance = {{"generator", "offline"},
+                       {"seed", options.seed},
+                       {"domain", domain},
+                       {"attempts", attempt + 1},
+                       {"notes", std::move(notes)},
+                       {"exits", std::move(exits)},
+                       {"knowledge", knowledge_provenance(constraints)}};
     if (!wants.empty()) {
       Json met = Json::array();
       for (const auto& f : wants.features)
