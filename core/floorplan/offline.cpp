@@ -148,7 +148,45 @@ std::string material_of(std::string_view domain, std::string_view type) {
 }
 
 std::string circulation_for(std::string_view domain) {
+  if (domain == "residential") return "hallway";  // small homes' programs have none (home_open_plan)
   return room_program(domain).rooms.front().type;
+}
+
+// Layout families (docs/worlds.md): how the rooms stand around the room everyone walks through.
+enum class Family {
+  kCorridorWithRooms,  // a corridor with bands of rooms along it and end rooms
+  kHallWithRooms,      // a hall (concourse, sales floor …) with bands of rooms around it
+  kOpenHall,      // one large hall divided into zones (check-outs, aisles, waiting …), rooms on one side
+  kHomeOpenPlan,  // a home without a hallway: every room opens onto the living room (ProcTHOR-style)
+};
+
+std::string_view family_name(Family f) {
+  switch (f) {
+    case Family::kCorridorWithRooms:
+      return "corridor_with_rooms";
+    case Family::kHallWithRooms:
+      return "hall_with_rooms";
+    case Family::kOpenHall:
+      return "open_hall_zones";
+    case Family::kHomeOpenPlan:
+      return "home_open_plan";
+  }
+  return "";
+}
+
+// The zones an open hall of this type is divided into, with their share of its length; empty for
+// halls that are not laid out as open halls (furnish_areas furnishes each zone by its type).
+struct AreaShare {
+  const char* type;
+  double share;
+};
+std::vector<AreaShare> open_hall_areas(std::string_view hall, std::string_view domain) {
+  if (hall == "sales_floor") return {{"checkout_zone", 0.35}, {"shelf_aisles", 0.65}};
+  if (hall == "warehouse_floor") return {{"staging_area", 0.3}, {"rack_aisles", 0.7}};
+  if (hall == "dining_hall") return {{"cafe", 0.35}, {"dining_area", 0.65}};
+  if (hall == "concourse" && domain == "train_station") return {{"waiting_room", 0.5}, {"concourse", 0.5}};
+  if (hall == "concourse") return {{"waiting_room", 0.4}, {"concourse", 0.3}, {"cafe", 0.3}};
+  return {};
 }
 
 class Layout {
@@ -160,6 +198,13 @@ class Layout {
     // Circulation: the first corridor or hall of the graph, else one the domain needs.
     for (std::size_t i = 0; i < graph_.rooms.size(); ++i)
       if (!circ_ && is_circulation_type(graph_.rooms[i].type)) circ_ = i;
+    // A home without a hallway keeps none: its rooms open onto the living room (ProcTHOR-style).
+    if (!circ_ && graph_.domain == "residential")
+      for (std::size_t i = 0; i < graph_.rooms.size(); ++i)
+        if (!circ_ && canonical_room_type(graph_.rooms[i].type) == "living_room") {
+          circ_ = i;
+          home_open_plan_ = true;
+        }
     if (!circ_) {
       const std::string type = circulation_for(graph_.domain);
       std::string name = type;
@@ -312,6 +357,9 @@ class Layout {
           t == "open_office" || t == "loading_bay" || t == "ticket_hall" || t == "food_court")
         try_cap(i, 0.45);
     }
+    // A home without a hallway: any room may close an end of the living room.
+    if (home_open_plan_)
+      for (std::size_t i = 0; i < n; ++i) try_cap(i, 0.3);
     bool needs_two_bands = false;
     std::vector<std::vector<std::size_t>> pieces_of(caps.size());
     for (std::size_t k = 0; k < caps.size(); ++k) {
@@ -329,8 +377,11 @@ class Layout {
       }
     }
     std::size_t band_rooms = n - 1 - caps.size();
+    // An open hall keeps its rooms on one side (its other sides are outside walls and zones).
     const bool single =
-        !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
+        family_ == Family::kOpenHall
+            ? !needs_two_bands && band_rooms <= 8u
+            : !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
     grouped_band_ = grouped ? static_cast<int>(rng.below(2)) : 0;
     std::vector<std::size_t> left[2], middle[2], right[2];
     const bool first_cap_left = rng.chance(0.5);
@@ -417,7 +468,9 @@ class Layout {
       const RoomType* rt = find_room_type(c.type);
       const double area =
           graph_.rooms[*circ_].area ? *graph_.rooms[*circ_].area : rng.uniform(rt->area_lo, rt->area_hi);
-      c.area = area * scale;
+      // An open hall holds its zones (a third more floor); a living room hub keeps its own size.
+      const double drawn = area * scale * (family_ == Family::kOpenHall ? 1.3 : 1.0);
+      c.area = home_open_plan_ ? std::max(c.area, drawn) : drawn;
       L = std::max({length[0], length[1], cm_up(std::sqrt(c.area * rng.uniform(0.9, 1.7)))});
       W = cm_up(std::max({c.area / m(L), 4.0, m(c.min_dim)}));
     }
@@ -452,6 +505,23 @@ class Layout {
     }
     c.rect = {0, 0, L, W};
     c.placed = true;
+    // An open hall's zones: strips across it along its longer side, in an order the seed draws.
+    areas_.clear();
+    if (family_ == Family::kOpenHall) {
+      auto shares = open_hall_areas(canonical_room_type(c.type), graph_.domain);
+      if (rng.chance(0.5)) std::reverse(shares.begin(), shares.end());
+      // Along the longer side, or across a hall that is near square.
+      const bool along_x = (L >= W) != (std::max(L, W) * 10 < std::min(L, W) * 16 && rng.chance(0.5));
+      const int length_cm = along_x ? L : W, across = along_x ? W : L;
+      int at = 0;
+      for (std::size_t k = 0; k < shares.size(); ++k) {
+        const int w = k + 1 == shares.size() ? length_cm - at : cm_up(m(length_cm) * shares[k].share);
+        areas_.emplace_back(shares[k].type, along_x ? Rect{at, 0, at + w, W} : Rect{0, at, L, at + w});
+        at += w;
+        if (w < 300 || across < 300) areas_.clear();
+        if (areas_.empty()) break;
+      }
+    }
     for (int b = 0; b < 2; ++b)
       for (auto r : band[b]) {
         rooms_[r].rect = b == 0 ? Rect{x_of[r], W, x_of[r] + width[r], W + depth[b]}
@@ -506,35 +576,13 @@ class Layout {
 
   // The laid-out plan as WorldBuilder input (metres, first quadrant).
   void emit(WorldBuilder& builder, std::vector<Zone>& zones, std::vector<DoorSpec>& doors) const {
-    auto tf = [&](int x, int y) {
-      for (int k = 0; k < rotate_; ++k) {
-        const int t = x;
-        x = -y;
-        y = t;
-      }
-      if (mirror_) x = -x;
-      return std::pair{x, y};
-    };
-    int min_x = INT32_MAX, min_y = INT32_MAX;
-    for (const auto& r : rooms_)
-      for (auto [x, y] : {tf(r.rect.x0, r.rect.y0), tf(r.rect.x1, r.rect.y1)}) {
-        min_x = std::min(min_x, x);
-        min_y = std::min(min_y, y);
-      }
+    const auto [min_x, min_y] = origin();
     auto point = [&](int x, int y) {
-      auto [tx, ty] = tf(x, y);
+      auto [tx, ty] = turned(x, y);
       return Point{m(tx - min_x), m(ty - min_y)};
     };
     for (const auto& r : rooms_) {
-      std::vector<Point> ring{point(r.rect.x0, r.rect.y0), point(r.rect.x1, r.rect.y0),
-                              point(r.rect.x1, r.rect.y1), point(r.rect.x0, r.rect.y1)};
-      if (geometry::signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
-      // Start at the lower-left corner: stable text whatever the orientation.
-      const auto first = std::min_element(ring.begin(), ring.end(), [](const Point& a, const Point& b) {
-        return a.y < b.y || (a.y == b.y && a.x < b.x);
-      });
-      std::rotate(ring.begin(), first, ring.end());
-      Zone z{r.name, r.type, material_of(graph_.domain, r.type), Polygon{ring, {}}};
+      Zone z{r.name, r.type, material_of(graph_.domain, r.type), Polygon{ring_of(r.rect), {}}};
       zones.push_back(z);
       builder.add_zone(std::move(z));
     }
@@ -631,6 +679,116 @@ class Layout {
     std::snprintf(metres, sizeof metres, "%.1f", best->distance / 100.0);
     return "added '" + name + "' from '" + rooms_[best->room].name + "', " + metres + " m from " +
            (exits.size() == 1 ? std::string("the main entrance") : std::string("the nearest exit"));
+  }
+
+  // Layout coordinates (cm) turned and mirrored as the attempt drew, then moved into the first quadrant.
+  [[nodiscard]] std::pair<int, int> turned(int x, int y) const {
+    for (int k = 0; k < rotate_; ++k) {
+      const int t = x;
+      x = -y;
+      y = t;
+    }
+    if (mirror_) x = -x;
+    return {x, y};
+  }
+  [[nodiscard]] std::pair<int, int> origin() const {
+    int min_x = INT32_MAX, min_y = INT32_MAX;
+    for (const auto& r : rooms_)
+      for (auto [x, y] : {turned(r.rect.x0, r.rect.y0), turned(r.rect.x1, r.rect.y1)}) {
+        min_x = std::min(min_x, x);
+        min_y = std::min(min_y, y);
+      }
+    return {min_x, min_y};
+  }
+  [[nodiscard]] Point point_of(int x, int y) const {
+    const auto [min_x, min_y] = origin();
+    const auto [tx, ty] = turned(x, y);
+    return {m(tx - min_x), m(ty - min_y)};
+  }
+  // A rectangle's outline in world coordinates, counter-clockwise from its lower-left corner
+  // (stable text whatever the orientation).
+  [[nodiscard]] std::vector<Point> ring_of(const Rect& r) const {
+    std::vector<Point> ring{point_of(r.x0, r.y0), point_of(r.x1, r.y0), point_of(r.x1, r.y1),
+                            point_of(r.x0, r.y1)};
+    if (geometry::signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+    const auto first = std::min_element(ring.begin(), ring.end(), [](const Point& a, const Point& b) {
+      return a.y < b.y || (a.y == b.y && a.x < b.x);
+    });
+    std::rotate(ring.begin(), first, ring.end());
+    return ring;
+  }
+
+  // The layout family, chosen from the building type (the hub's type), the room count and the seed
+  // (a stream of its own, so that plans of the other families keep their bytes).
+  void choose_family(std::uint64_t seed) {
+    const std::string hub = canonical_room_type(graph_.rooms[*circ_].type);
+    if (home_open_plan_) {
+      family_ = Family::kHomeOpenPlan;
+    } else if (is_corridor_type(hub)) {
+      family_ = Family::kCorridorWithRooms;
+    } else {
+      Rng pick(seed, fnv1a64("layout_family"));
+      const bool open = !open_hall_areas(hub, graph_.domain).empty() && graph_.rooms.size() <= 24;
+      family_ = open && pick.chance(0.5) ? Family::kOpenHall : Family::kHallWithRooms;
+    }
+  }
+  [[nodiscard]] Family family() const { return family_; }
+  [[nodiscard]] const std::string& hub_name() const { return graph_.rooms[*circ_].name; }
+
+  // The zones of an open hall as WorldBuilder would see rooms (for furnish_areas), with the hall's
+  // doors on their edges and an opening between neighbours; nothing for the other families.
+  void emit_areas(std::span<const DoorSpec> doors, std::vector<Zone>& areas,
+                  std::vector<DoorSpec>& area_doors) const {
+    if (areas_.empty()) return;
+    const std::string& hub = graph_.rooms[*circ_].name;
+    std::vector<Polygon> outlines;
+    for (const auto& [type, r] : areas_) {
+      Polygon poly{ring_of(r), {}};
+      outlines.push_back(poly);
+      areas.push_back({hub + "_" + type, type, "", std::move(poly)});
+    }
+    // Each door of the hall to the zones its opening reaches, as the part of it on their edge
+    // (kept 0.35 m from the edge's ends, so that a person steps in from it inside the zone).
+    for (const auto& d : doors) {
+      if (std::find(d.connects.begin(), d.connects.end(), hub) == d.connects.end()) continue;
+      const Point c = d.pose.position();
+      for (std::size_t k = 0; k < areas.size(); ++k) {
+        for (const auto& e : geometry::edges(outlines[k].outer)) {
+          const double len = geometry::length(e);
+          if (len < 1.0 || geometry::distance(e, c) > d.width / 2 + 0.011) continue;
+          const Point u{(e.b.x - e.a.x) / len, (e.b.y - e.a.y) / len};
+          const double off = (c.x - e.a.x) * u.y - (c.y - e.a.y) * u.x;
+          if (std::abs(off) > 0.011) continue;
+          const double t = (c.x - e.a.x) * u.x + (c.y - e.a.y) * u.y;
+          const double lo = std::max(t - d.width / 2, 0.35), hi = std::min(t + d.width / 2, len - 0.35);
+          if (hi - lo < 0.3) continue;
+          DoorSpec copy = d;
+          const double mid = (lo + hi) / 2;
+          copy.pose.x = e.a.x + u.x * mid;
+          copy.pose.y = e.a.y + u.y * mid;
+          copy.width = hi - lo;
+          for (auto& name : copy.connects)
+            if (name == hub) name = areas[k].name;
+          area_doors.push_back(std::move(copy));
+          break;
+        }
+      }
+    }
+    // Openings between neighbouring zones (no wall there; the placer keeps them free).
+    for (std::size_t k = 0; k + 1 < areas_.size(); ++k) {
+      const Rect& a = areas_[k].second;
+      const auto wall = shared_wall(a, areas_[k + 1].second);
+      if (!wall) continue;
+      const int mid = (wall->lo + wall->hi) / 2;
+      const Point p = wall->vertical ? point_of(wall->c, mid) : point_of(mid, wall->c);
+      bool along_x = wall->vertical;
+      if (rotate_ % 2 == 1) along_x = !along_x;
+      const double width = std::min(4.0, m(wall->hi - wall->lo) * 0.6);
+      area_doors.push_back({hub + "_opening_" + std::to_string(k + 1),
+                            {p.x, p.y, along_x ? 0.0 : std::numbers::pi / 2},
+                            width,
+                            {areas[k].name, areas[k + 1].name}});
+    }
   }
 
   // Widens every exit (door to the outside) towards `each` cm on its outside wall: where it is
@@ -744,7 +902,10 @@ class Layout {
   std::map<std::size_t, std::vector<std::size_t>> second_piece_;
   std::map<std::size_t, bool> cap_left_;
   int door_w_ = 90, public_w_ = 100, entrance_w_ = 100;
-  int grouped_band_ = 0;  // the band stout halls and platforms go to
+  int grouped_band_ = 0;         // the band stout halls and platforms go to
+  bool home_open_plan_ = false;  // the living room is the hub (no hallway in the graph)
+  Family family_ = Family::kCorridorWithRooms;
+  std::vector<std::pair<std::string, Rect>> areas_;  // open hall: its zones (type, rectangle)
   int rotate_ = 0;
   bool mirror_ = false;
 };
@@ -928,6 +1089,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
                 {{"/rooms", "needs at least one room", "", 0, 0}});
   Layout layout(graph, constraints);
   if (auto s = layout.prepare(); !s) return tl::unexpected(s.error());
+  layout.choose_family(options.seed);
   const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
   const WorldRequirements& wants = options.requirements;
   const std::optional<double> occupants =
@@ -956,7 +1118,20 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       std::vector<DoorSpec> doors;
       layout.emit(builder, zones, doors);
       Rng furnishing = furnishing_rng;
-      Furnishing f = furnish(zones, doors, rules, furnishing);
+      // An open hall is furnished zone by zone (each an ROI of kind "area" named after it).
+      std::vector<Zone> areas;
+      std::vector<DoorSpec> area_doors;
+      layout.emit_areas(doors, areas, area_doors);
+      std::vector<std::string> open_halls;
+      if (!areas.empty()) open_halls.push_back(layout.hub_name());
+      Furnishing f = furnish(zones, doors, rules, furnishing, open_halls);
+      if (!areas.empty()) {
+        Rng by_area = furnishing_rng.fork("areas");
+        Furnishing a = furnish_areas(areas, area_doors, rules, by_area);
+        for (const auto& z : areas) f.rois.push_back({z.name, "area", z.polygon});
+        for (auto& r : a.rois) f.rois.push_back(std::move(r));
+        for (auto& e : a.entities) f.entities.push_back(std::move(e));
+      }
       outcome = furnish_requirements(zones, doors, wants, rules, f);
       for (auto& r : f.rois) builder.add_roi(std::move(r));
       for (auto& e : f.entities)
@@ -1092,13 +1267,11 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     if (asked > 0 || why.widened || why.added_for_width + why.added_for_travel > 0)
       notes.push_back(exits["text"]);
     for (const auto& n : outcome.notes) notes.push_back(n);
-    plan.provenance = {{"generator", "offline"},
-                       {"seed", options.seed},
-                       {"domain", domain},
-                       {"attempts", attempt + 1},
-                       {"notes", std::move(notes)},
-                       {"exits", std::move(exits)},
-                       {"knowledge", knowledge_provenance(constraints)}};
+    plan.provenance = {
+        {"generator", "offline"},    {"layout_family", std::string(family_name(layout.family()))},
+        {"seed", options.seed},      {"domain", domain},
+        {"attempts", attempt + 1},   {"notes", std::move(notes)},
+        {"exits", std::move(exits)}, {"knowledge", knowledge_provenance(constraints)}};
     if (!wants.empty()) {
       Json met = Json::array();
       for (const auto& f : wants.features)
