@@ -1110,7 +1110,12 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     const Rng furnishing_rng = rng.fork("furnish");
     std::set<std::string> dropped;  // furniture the layout check found in the way, left out
     FeatureOutcome outcome;
-    auto build = [&]() {
+    // Worlds built again for more exits or with furniture left out are validated without the
+    // reachability grid (the costliest part of a build); the plan returned is validated in full.
+    bool validated = true;
+    WorldBuilder last;  // the last world's input, validated in full at the end when it was not
+    auto build = [&](bool reachability) {
+      validated = reachability;
       WorldBuilder builder;
       builder.set_name(domain + "_plan_" + std::to_string(options.seed));
       builder.set_floor({floor_material(domain)});
@@ -1136,9 +1141,14 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       for (auto& r : f.rois) builder.add_roi(std::move(r));
       for (auto& e : f.entities)
         if (!dropped.count(e.name)) builder.add_entity(std::move(e));
-      return builder.build(options.build);
+      BuildOptions build_options = options.build;
+      build_options.check_reachability = build_options.check_reachability && reachability;
+      if (!reachability) last = builder;
+      return builder.build(build_options);
     };
-    auto world = build();
+    // A large plan is almost always built again (more exits for its occupant load): its first
+    // world is validated in full only if it turns out to be the last.
+    auto world = build(layout.graph().rooms.size() <= 20);
     if (!world) {
       tried.push_back("the world did not validate: " + world.error().message());
       last_error = world.error();
@@ -1170,7 +1180,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
         const int before = static_cast<int>(std::lround(egress->value.value_or(0.0) * 100.0));
         if (layout.widen_exits(each) > before) {
           why.widened = true;
-          world = build();
+          world = build(false);
           if (world) report = check_compliance(*world, domain, constraints, occupants);
           continue;
         }
@@ -1192,7 +1202,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
           ++why.added_for_travel;
       }
       if (!exits_ok) break;
-      world = build();
+      world = build(false);
       if (world) report = check_compliance(*world, domain, constraints, occupants);
     }
     if (!world) {
@@ -1221,7 +1231,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
           }
         }
         if (zones_ok) {
-          world = build();
+          world = build(false);
           if (world) check = check_layout(*world);
         }
         if (!zones_ok || !world || !check.ok()) {
@@ -1258,6 +1268,14 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       last_unmet = std::move(lacking);
       scale *= 1.15;
       continue;
+    }
+    if (!validated) {
+      world = last.build(options.build);
+      if (!world) {
+        tried.push_back("the world did not validate: " + world.error().message());
+        last_error = world.error();
+        continue;
+      }
     }
     FloorPlan plan{std::move(*world), std::move(report), layout.graph(), Json::object()};
     Json notes = layout.notes();
