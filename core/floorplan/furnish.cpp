@@ -444,6 +444,53 @@ void furnish_room(Placer& p, const std::string& type, const FurnishingRules& rul
   }
 }
 
+// One zone of an open hall (offline.cpp, family open_hall_zones) by its area type; area types
+// that are also room types are furnished as those rooms are.
+void furnish_area(Placer& p, const std::string& type, const FurnishingRules& rules, Rng& rng, double area) {
+  const double L = p.len(), D = p.depth();
+  if (type == "checkout_zone") {
+    // A row of check-outs by the entrance side, each with its queue lane into the hall.
+    // A row of check-outs with their queue lanes into the hall, from the main door's side, else
+    // from another side of the zone (a narrow zone along the entrance wall).
+    auto row = [&](Placer& q) {
+      const double len = q.len(), depth = q.depth();
+      const double lane = std::clamp(depth * 0.45, 1.5, 3.5);
+      const int n = std::clamp(static_cast<int>((len - 1.0) / 2.8), 1, 6);
+      int placed = 0;
+      for (int k = 0; k < n; ++k)
+        placed += q.counter_with_queue("counter", numbered("checkout", k + 1), (k + 0.5) * len / n, 1.8, lane,
+                                       true, rules.queue_lane_width, {"pay", "queue_target"})
+                      ? 1
+                      : 0;
+      return placed;
+    };
+    int placed = row(p);
+    for (int turn = 1; turn < 4 && placed == 0; ++turn) {
+      Placer q = p.turned((p.side() + turn) % 4);
+      placed = row(q);
+    }
+  } else if (type == "shelf_aisles" || type == "rack_aisles") {
+    const bool shop = type == "shelf_aisles";
+    const double shelf = shop ? 0.6 : 1.1, walk = rules.walkway_width;
+    int row = 0;
+    for (double v = 1.4; v + shelf + walk <= D - 0.3 && row < 12; v += shelf + walk) {
+      ++row;
+      p.roi("walkway", numbered("aisle", row), 0.6, v + shelf, L - 0.6, v + shelf + walk, true);
+      p.grid(shop ? "shelf" : "rack", numbered(shop ? "shelf" : "rack", row), 1.0, v, L - 1.0, v + shelf, 2.0,
+             shelf, 20, 0, {shop ? "browse" : "store", "pick"});
+    }
+  } else if (type == "dining_area") {
+    if (auto a = p.roi("seating_area", "seating", 0.8, 1.6, L - 0.8, D - 0.6))
+      p.grid("table", "table", a->u0, a->v0, a->u1, a->v1, 2.0, 2.2, 40, 0, {"eat", "sit"});
+  } else if (type == "staging_area") {
+    p.roi("work_area", "staging", 0.8, 0.8, L - 0.8, std::min(D - 0.8, 4.0));
+    p.grid("pallet", "pallet", 0.8, std::min(D - 2.0, 4.4), L - 0.8, D - 0.6, 1.6, 1.4, 6, 0,
+           {"pick", "store"});
+  } else {
+    furnish_room(p, type, rules, rng, area);
+  }
+}
+
 }  // namespace
 
 FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> constraints,
@@ -459,7 +506,7 @@ FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> co
 }
 
 Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
-                   Rng& rng) {
+                   Rng& rng, std::span<const std::string> unfurnished) {
   Furnishing out;
   const bool named_entrance = std::any_of(doors.begin(), doors.end(), [](const DoorSpec& d) {
     return d.name == "main_entrance" && d.connects.size() == 1;
@@ -511,10 +558,28 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
             {entrance ? z.name + "_entrance" : z.name + "_" + d.name, entrance ? "entrance" : "exit", poly});
     }
     if (!find_room_type(type) || is_corridor_type(type)) continue;
+    if (std::find(unfurnished.begin(), unfurnished.end(), z.name) != unfurnished.end()) continue;
     auto placer = placer_for(z, zones, doors, out);
     if (!placer) continue;
     const std::size_t first_entity = out.entities.size(), first_roi = out.rois.size();
     furnish_room(*placer, type, rules, rng, geometry::area(z.polygon));
+    placer->poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
+  }
+  return out;
+}
+
+}  // namespace socsim::floorplan
+
+namespace socsim::floorplan {
+
+Furnishing furnish_areas(std::span<const Zone> areas, std::span<const DoorSpec> doors,
+                         const FurnishingRules& rules, Rng& rng) {
+  Furnishing out;
+  for (const auto& z : areas) {
+    auto placer = placer_for(z, areas, doors, out);
+    if (!placer) continue;
+    const std::size_t first_entity = out.entities.size(), first_roi = out.rois.size();
+    furnish_area(*placer, z.type, rules, rng, geometry::area(z.polygon));
     placer->poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
   }
   return out;

@@ -4,6 +4,7 @@
 // counter in a dining hall, desks in offices, beds in patient rooms, a sofa in a living room,
 // water dispensers and coffee machines where they fit, corridor and entrance ROIs.
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/common/rng.hpp"
@@ -33,7 +34,17 @@ struct Furnishing {
 // Furnishes every zone of a known type inside the largest axis-aligned rectangle of its polygon,
 // facing the room's main door and keeping the doors clear. Zones and doors are those handed to
 // WorldBuilder; the names made are "<zone>_<item>[_NN]". Deterministic for a given rng state.
+// Zones named in `unfurnished` get only their entrance ROIs (an open hall furnished by its areas).
 Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
-                   Rng& rng);
+                   Rng& rng, std::span<const std::string> unfurnished = {});
+
+// Furnishes the zones of an open hall: rectangles inside one room with no walls between them,
+// each typed by what happens there — checkout_zone (a row of check-outs with queue lanes),
+// shelf_aisles and rack_aisles (rows with walkways), dining_area (tables), staging_area (a work
+// area and pallets), or a room type furnished as that room (waiting_room, cafe, concourse …).
+// `doors` are the hall's doors on each area's edges and the openings between areas, each naming
+// the areas it joins; names made are "<area>_<item>[_NN]".
+Furnishing furnish_areas(std::span<const Zone> areas, std::span<const DoorSpec> doors,
+                         const FurnishingRules& rules, Rng& rng);
 
 }  // namespace socsim::floorplan

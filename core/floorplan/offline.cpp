@@ -148,7 +148,45 @@ std::string material_of(std::string_view domain, std::string_view type) {
 }
 
 std::string circulation_for(std::string_view domain) {
+  if (domain == "residential") return "hallway";  // small homes' programs have none (home_open_plan)
   return room_program(domain).rooms.front().type;
+}
+
+// Layout families (docs/worlds.md): how the rooms stand around the room everyone walks through.
+enum class Family {
+  kCorridorWithRooms,  // a corridor with bands of rooms along it and end rooms
+  kHallWithRooms,      // a hall (concourse, sales floor …) with bands of rooms around it
+  kOpenHall,      // one large hall divided into zones (check-outs, aisles, waiting …), rooms on one side
+  kHomeOpenPlan,  // a home without a hallway: every room opens onto the living room (ProcTHOR-style)
+};
+
+std::string_view family_name(Family f) {
+  switch (f) {
+    case Family::kCorridorWithRooms:
+      return "corridor_with_rooms";
+    case Family::kHallWithRooms:
+      return "hall_with_rooms";
+    case Family::kOpenHall:
+      return "open_hall_zones";
+    case Family::kHomeOpenPlan:
+      return "home_open_plan";
+  }
+  return "";
+}
+
+// The zones an open hall of this type is divided into, with their share of its length; empty for
+// halls that are not laid out as open halls (furnish_areas furnishes each zone by its type).
+struct AreaShare {
+  const char* type;
+  double share;
+};
+std::vector<AreaShare> open_hall_areas(std::string_view hall, std::string_view domain) {
+  if (hall == "sales_floor") return {{"checkout_zone", 0.35}, {"shelf_aisles", 0.65}};
+  if (hall == "warehouse_floor") return {{"staging_area", 0.3}, {"rack_aisles", 0.7}};
+  if (hall == "dining_hall") return {{"cafe", 0.35}, {"dining_area", 0.65}};
+  if (hall == "concourse" && domain == "train_station") return {{"waiting_room", 0.5}, {"concourse", 0.5}};
+  if (hall == "concourse") return {{"waiting_room", 0.4}, {"concourse", 0.3}, {"cafe", 0.3}};
+  return {};
 }
 
 class Layout {
@@ -160,6 +198,13 @@ class Layout {
     // Circulation: the first corridor or hall of the graph, else one the domain needs.
     for (std::size_t i = 0; i < graph_.rooms.size(); ++i)
       if (!circ_ && is_circulation_type(graph_.rooms[i].type)) circ_ = i;
+    // A home without a hallway keeps none: its rooms open onto the living room (ProcTHOR-style).
+    if (!circ_ && graph_.domain == "residential")
+      for (std::size_t i = 0; i < graph_.rooms.size(); ++i)
+        if (!circ_ && canonical_room_type(graph_.rooms[i].type) == "living_room") {
+          circ_ = i;
+          home_open_plan_ = true;
+        }
     if (!circ_) {
       const std::string type = circulation_for(graph_.domain);
       std::string name = type;
@@ -312,6 +357,9 @@ class Layout {
           t == "open_office" || t == "loading_bay" || t == "ticket_hall" || t == "food_court")
         try_cap(i, 0.45);
     }
+    // A home without a hallway: any room may close an end of the living room.
+    if (home_open_plan_)
+      for (std::size_t i = 0; i < n; ++i) try_cap(i, 0.3);
     bool needs_two_bands = false;
     std::vector<std::vector<std::size_t>> pieces_of(caps.size());
     for (std::size_t k = 0; k < caps.size(); ++k) {
@@ -329,8 +377,11 @@ class Layout {
       }
     }
     std::size_t band_rooms = n - 1 - caps.size();
+    // An open hall keeps its rooms on one side (its other sides are outside walls and zones).
     const bool single =
-        !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
+        family_ == Family::kOpenHall
+            ? !needs_two_bands && band_rooms <= 8u
+            : !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
     grouped_band_ = grouped ? static_cast<int>(rng.below(2)) : 0;
     std::vector<std::size_t> left[2], middle[2], right[2];
     const bool first_cap_left = rng.chance(0.5);
@@ -417,7 +468,9 @@ class Layout {
       const RoomType* rt = find_room_type(c.type);
       const double area =
           graph_.rooms[*circ_].area ? *graph_.rooms[*circ_].area : rng.uniform(rt->area_lo, rt->area_hi);
-      c.area = area * scale;
+      // An open hall holds its zones (a third more floor); a living room hub keeps its own size.
+      const double drawn = area * scale * (family_ == Family::kOpenHall ? 1.3 : 1.0);
+      c.area = home_open_plan_ ? std::max(c.area, drawn) : drawn;
       L = std::max({length[0], length[1], cm_up(std::sqrt(c.area * rng.uniform(0.9, 1.7)))});
       W = cm_up(std::max({c.area / m(L), 4.0, m(c.min_dim)}));
     }
@@ -452,6 +505,23 @@ class Layout {
     }
     c.rect = {0, 0, L, W};
     c.placed = true;
+    // An open hall's zones: strips across it along its longer side, in an order the seed draws.
+    areas_.clear();
+    if (family_ == Family::kOpenHall) {
+      auto shares = open_hall_areas(canonical_room_type(c.type), graph_.domain);
+      if (rng.chance(0.5)) std::reverse(shares.begin(), shares.end());
+      // Along the longer side, or across a hall that is near square.
+      const bool along_x = (L >= W) != (std::max(L, W) * 10 < std::min(L, W) * 16 && rng.chance(0.5));
+      const int length_cm = along_x ? L : W, across = along_x ? W : L;
+      int at = 0;
+      for (std::size_t k = 0; k < shares.size(); ++k) {
+        const int w = k + 1 == shares.size() ? length_cm - at : cm_up(m(length_cm) * shares[k].share);
+        areas_.emplace_back(shares[k].type, along_x ? Rect{at, 0, at + w, W} : Rect{0, at, L, at + w});
+        at += w;
+        if (w < 300 || across < 300) areas_.clear();
+        if (areas_.empty()) break;
+      }
+    }
     for (int b = 0; b < 2; ++b)
       for (auto r : band[b]) {
         rooms_[r].rect = b == 0 ? Rect{x_of[r], W, x_of[r] + width[r], W + depth[b]}
@@ -506,35 +576,13 @@ class Layout {
 
   // The laid-out plan as WorldBuilder input (metres, first quadrant).
   void emit(WorldBuilder& builder, std::vector<Zone>& zones, std::vector<DoorSpec>& doors) const {
-    auto tf = [&](int x, int y) {
-      for (int k = 0; k < rotate_; ++k) {
-        const int t = x;
-        x = -y;
-        y = t;
-      }
-      if (mirror_) x = -x;
-      return std::pair{x, y};
-    };
-    int min_x = INT32_MAX, min_y = INT32_MAX;
-    for (const auto& r : rooms_)
-      for (auto [x, y] : {tf(r.rect.x0, r.rect.y0), tf(r.rect.x1, r.rect.y1)}) {
-        min_x = std::min(min_x, x);
-        min_y = std::min(min_y, y);
-      }
+    const auto [min_x, min_y] = origin();
     auto point = [&](int x, int y) {
-      auto [tx, ty] = tf(x, y);
+      auto [tx, ty] = turned(x, y);
       return Point{m(tx - min_x), m(ty - min_y)};
     };
     for (const auto& r : rooms_) {
-      std::vector<Point> ring{point(r.rect.x0, r.rect.y0), point(r.rect.x1, r.rect.y0),
-                              point(r.rect.x1, r.rect.y1), point(r.rect.x0, r.rect.y1)};
-      if (geometry::signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
-      // Start at the lower-left corner: stable text whatever the orientation.
-      const auto first = std::min_element(ring.begin(), ring.end(), [](const Point& a, const Point& b) {
-        return a.y < b.y || (a.y == b.y && a.x < b.x);
-      });
-      std::rotate(ring.begin(), first, ring.end());
-      Zone z{r.name, r.type, material_of(graph_.domain, r.type), Polygon{ring, {}}};
+      Zone z{r.name, r.type, material_of(graph_.domain, r.type), Polygon{ring_of(r.rect), {}}};
       zones.push_back(z);
       builder.add_zone(std::move(z));
     }
@@ -633,6 +681,181 @@ class Layout {
            (exits.size() == 1 ? std::string("the main entrance") : std::string("the nearest exit"));
   }
 
+  // Layout coordinates (cm) turned and mirrored as the attempt drew, then moved into the first quadrant.
+  [[nodiscard]] std::pair<int, int> turned(int x, int y) const {
+    for (int k = 0; k < rotate_; ++k) {
+      const int t = x;
+      x = -y;
+      y = t;
+    }
+    if (mirror_) x = -x;
+    return {x, y};
+  }
+  [[nodiscard]] std::pair<int, int> origin() const {
+    int min_x = INT32_MAX, min_y = INT32_MAX;
+    for (const auto& r : rooms_)
+      for (auto [x, y] : {turned(r.rect.x0, r.rect.y0), turned(r.rect.x1, r.rect.y1)}) {
+        min_x = std::min(min_x, x);
+        min_y = std::min(min_y, y);
+      }
+    return {min_x, min_y};
+  }
+  [[nodiscard]] Point point_of(int x, int y) const {
+    const auto [min_x, min_y] = origin();
+    const auto [tx, ty] = turned(x, y);
+    return {m(tx - min_x), m(ty - min_y)};
+  }
+  // A rectangle's outline in world coordinates, counter-clockwise from its lower-left corner
+  // (stable text whatever the orientation).
+  [[nodiscard]] std::vector<Point> ring_of(const Rect& r) const {
+    std::vector<Point> ring{point_of(r.x0, r.y0), point_of(r.x1, r.y0), point_of(r.x1, r.y1),
+                            point_of(r.x0, r.y1)};
+    if (geometry::signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+    const auto first = std::min_element(ring.begin(), ring.end(), [](const Point& a, const Point& b) {
+      return a.y < b.y || (a.y == b.y && a.x < b.x);
+    });
+    std::rotate(ring.begin(), first, ring.end());
+    return ring;
+  }
+
+  // The layout family, chosen from the building type (the hub's type), the room count and the seed
+  // (a stream of its own, so that plans of the other families keep their bytes).
+  void choose_family(std::uint64_t seed) {
+    const std::string hub = canonical_room_type(graph_.rooms[*circ_].type);
+    if (home_open_plan_) {
+      family_ = Family::kHomeOpenPlan;
+    } else if (is_corridor_type(hub)) {
+      family_ = Family::kCorridorWithRooms;
+    } else {
+      Rng pick(seed, fnv1a64("layout_family"));
+      const bool open = !open_hall_areas(hub, graph_.domain).empty() && graph_.rooms.size() <= 24;
+      family_ = open && pick.chance(0.5) ? Family::kOpenHall : Family::kHallWithRooms;
+    }
+  }
+  [[nodiscard]] Family family() const { return family_; }
+  [[nodiscard]] const std::string& hub_name() const { return graph_.rooms[*circ_].name; }
+
+  // The zones of an open hall as WorldBuilder would see rooms (for furnish_areas), with the hall's
+  // doors on their edges and an opening between neighbours; nothing for the other families.
+  void emit_areas(std::span<const DoorSpec> doors, std::vector<Zone>& areas,
+                  std::vector<DoorSpec>& area_doors) const {
+    if (areas_.empty()) return;
+    const std::string& hub = graph_.rooms[*circ_].name;
+    std::vector<Polygon> outlines;
+    for (const auto& [type, r] : areas_) {
+      Polygon poly{ring_of(r), {}};
+      outlines.push_back(poly);
+      areas.push_back({hub + "_" + type, type, "", std::move(poly)});
+    }
+    // Each door of the hall to the zones its opening reaches, as the part of it on their edge
+    // (kept 0.35 m from the edge's ends, so that a person steps in from it inside the zone).
+    for (const auto& d : doors) {
+      if (std::find(d.connects.begin(), d.connects.end(), hub) == d.connects.end()) continue;
+      const Point c = d.pose.position();
+      for (std::size_t k = 0; k < areas.size(); ++k) {
+        for (const auto& e : geometry::edges(outlines[k].outer)) {
+          const double len = geometry::length(e);
+          if (len < 1.0 || geometry::distance(e, c) > d.width / 2 + 0.011) continue;
+          const Point u{(e.b.x - e.a.x) / len, (e.b.y - e.a.y) / len};
+          const double off = (c.x - e.a.x) * u.y - (c.y - e.a.y) * u.x;
+          if (std::abs(off) > 0.011) continue;
+          const double t = (c.x - e.a.x) * u.x + (c.y - e.a.y) * u.y;
+          const double lo = std::max(t - d.width / 2, 0.35), hi = std::min(t + d.width / 2, len - 0.35);
+          if (hi - lo < 0.3) continue;
+          DoorSpec copy = d;
+          const double mid = (lo + hi) / 2;
+          copy.pose.x = e.a.x + u.x * mid;
+          copy.pose.y = e.a.y + u.y * mid;
+          copy.width = hi - lo;
+          for (auto& name : copy.connects)
+            if (name == hub) name = areas[k].name;
+          area_doors.push_back(std::move(copy));
+          break;
+        }
+      }
+    }
+    // Openings between neighbouring zones (no wall there; the placer keeps them free).
+    for (std::size_t k = 0; k + 1 < areas_.size(); ++k) {
+      const Rect& a = areas_[k].second;
+      const auto wall = shared_wall(a, areas_[k + 1].second);
+      if (!wall) continue;
+      const int mid = (wall->lo + wall->hi) / 2;
+      const Point p = wall->vertical ? point_of(wall->c, mid) : point_of(mid, wall->c);
+      bool along_x = wall->vertical;
+      if (rotate_ % 2 == 1) along_x = !along_x;
+      const double width = std::min(4.0, m(wall->hi - wall->lo) * 0.6);
+      area_doors.push_back({hub + "_opening_" + std::to_string(k + 1),
+                            {p.x, p.y, along_x ? 0.0 : std::numbers::pi / 2},
+                            width,
+                            {areas[k].name, areas[k + 1].name}});
+    }
+  }
+
+  // Widens every exit (door to the outside) towards `each` cm on its outside wall: where it is
+  // when the wall takes the width there, else moved along the wall to the widest free stretch
+  // (15 cm from the wall's ends, 30 cm from the openings of doors near the wall's line). Returns
+  // the exits' total width in cm; no randomness.
+  int widen_exits(int each) {
+    std::vector<Rect> rects;
+    for (const auto& r : rooms_) rects.push_back(r.rect);
+    int total = 0;
+    for (auto& d : doors_) {
+      if (d.connects.size() != 1) continue;
+      const auto room = index_.find(d.connects.front());
+      const int c = d.vertical_wall ? d.x : d.y;
+      int& at = d.vertical_wall ? d.y : d.x;
+      std::optional<Wall> on;
+      if (room != index_.end())
+        for (const Wall& wall : outside_walls(rects, room->second))
+          if (wall.vertical == d.vertical_wall && wall.c == c && at >= wall.lo && at <= wall.hi) on = wall;
+      if (!on || d.width >= each) {
+        total += d.width;
+        continue;
+      }
+      // Free stretches of the wall: its length less the openings of doors on or near its line.
+      std::vector<std::pair<int, int>> free{{on->lo + 15, on->hi - 15}};
+      for (const auto& o : doors_) {
+        if (&o == &d) continue;
+        const int oc = d.vertical_wall ? o.x : o.y, oat = d.vertical_wall ? o.y : o.x;
+        const int reach = o.vertical_wall == d.vertical_wall ? o.width / 2 : 0;
+        if (std::abs(oc - c) > 100) continue;
+        const int margin = reach + 30 + (o.vertical_wall == d.vertical_wall ? 0 : 50);
+        const int lo = oat - margin, hi = oat + margin;
+        std::vector<std::pair<int, int>> next;
+        for (auto [a, b] : free) {
+          if (hi <= a || lo >= b) {
+            next.emplace_back(a, b);
+            continue;
+          }
+          if (lo > a) next.emplace_back(a, lo);
+          if (hi < b) next.emplace_back(hi, b);
+        }
+        free = std::move(next);
+      }
+      std::optional<std::pair<int, int>> best;
+      for (auto [a, b] : free) {
+        const bool here = at >= a && at <= b;
+        const int room_here = here ? 2 * std::min(at - a, b - at) : 0;
+        if (here && room_here >= each) {
+          best = {at, each};
+          break;
+        }
+        const int w = std::min(each, b - a) / 5 * 5;
+        if (!best || w > best->second) {
+          // Centred in the stretch, or as near the old place as the width allows.
+          const int centre = std::clamp(at, a + (w + 1) / 2, b - (w + 1) / 2);
+          best = {centre, w};
+        }
+      }
+      if (best && best->second > d.width) {
+        at = best->first;
+        d.width = best->second;
+      }
+      total += d.width;
+    }
+    return total;
+  }
+
   [[nodiscard]] const SceneGraph& graph() const { return graph_; }
   [[nodiscard]] const std::vector<std::string>& notes() const { return notes_; }
   [[nodiscard]] const PlanRequirement& plan() const { return plan_; }
@@ -679,7 +902,10 @@ class Layout {
   std::map<std::size_t, std::vector<std::size_t>> second_piece_;
   std::map<std::size_t, bool> cap_left_;
   int door_w_ = 90, public_w_ = 100, entrance_w_ = 100;
-  int grouped_band_ = 0;  // the band stout halls and platforms go to
+  int grouped_band_ = 0;         // the band stout halls and platforms go to
+  bool home_open_plan_ = false;  // the living room is the hub (no hallway in the graph)
+  Family family_ = Family::kCorridorWithRooms;
+  std::vector<std::pair<std::string, Rect>> areas_;  // open hall: its zones (type, rectangle)
   int rotate_ = 0;
   bool mirror_ = false;
 };
@@ -725,10 +951,96 @@ int code_exits(const ComplianceReport& report) {
   return 1;
 }
 
-const ComplianceCheck* exit_check(const ComplianceReport& report) {
+const ComplianceCheck* find_check(const ComplianceReport& report, std::string_view name) {
   for (const auto& c : report.checks)
-    if (c.name == "exit_count") return &c;
+    if (c.name == name) return &c;
   return nullptr;
+}
+
+// The widest exit the generator builds: a bank of three door leaves of the largest leaf the
+// IBC allows (1010.1.1: 48 in, 1.22 m). The egress width of a large occupant load is given by
+// widening the exits up to this before any exit beyond the asked and required count is added.
+constexpr int kMaxExitWidthCm = 365;
+
+std::string metres_text(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", metres);
+  return text;
+}
+
+// Why the plan has the exits it has (asked for, required by the code's exit count, added for
+// the egress width or the travel distance, widened), for its provenance.
+struct ExitReasons {
+  int added_for_count = 0;
+  int added_for_width = 0;
+  int added_for_travel = 0;
+  bool widened = false;
+};
+
+Json exit_provenance(const World& world, const ComplianceReport& report, const WorldRequirements& wants,
+                     int asked, const ExitReasons& why) {
+  const ComplianceCheck* count = find_check(report, "exit_count");
+  const ComplianceCheck* width = find_check(report, "egress_width_per_occupant");
+  const int built = count_feature(world, Feature::kExit);
+  double total = 0.0, widest = 0.0;
+  Json widths = Json::array();
+  for (const auto& d : world.doors())
+    if (!d.other) {
+      total += d.width;
+      widest = std::max(widest, d.width);
+      widths.push_back({{"door", d.name}, {"width_m", std::round(d.width * 100.0) / 100.0}});
+    }
+  const int required = count ? static_cast<int>(std::lround(count->required)) : 1;
+  const std::string load =
+      std::to_string(static_cast<long>(std::lround(report.occupant_load))) + " occupants";
+  std::string text;
+  std::string decided_by = "request";
+  if (asked > 0)
+    text = std::to_string(asked) + " exit" + (asked == 1 ? "" : "s") + " asked for";
+  else
+    text = "no exit count asked for";
+  if (count) {
+    text += "; " + std::to_string(required) + " required by " + count->ref_id + " (" + count->section +
+            ") for " + load;
+    if (required > asked) decided_by = count->ref_id;
+  }
+  if (width && width->value) {
+    text += "; " + metres_text(width->required) + " m of exit width required by " + width->ref_id + " (" +
+            width->section + ")";
+    if (why.widened) text += ", given by exits up to " + metres_text(widest) + " m wide";
+    if (why.widened && decided_by == "request") decided_by = width->ref_id + " (width only)";
+  }
+  if (why.added_for_width > 0) {
+    text += "; " + std::to_string(why.added_for_width) + " exit" + (why.added_for_width == 1 ? "" : "s") +
+            " added beyond that for the exit width (no exit is wider than " +
+            metres_text(kMaxExitWidthCm / 100.0) + " m)";
+    if (width) decided_by = width->ref_id;
+  }
+  if (why.added_for_travel > 0) {
+    text += "; " + std::to_string(why.added_for_travel) + " exit" + (why.added_for_travel == 1 ? "" : "s") +
+            " added for the travel distance";
+    for (const auto& c : report.checks)
+      if (c.name.rfind("exit_access_travel_distance", 0) == 0) decided_by = c.ref_id;
+  }
+  text += "; " + std::to_string(built) + " built";
+  const FeatureCount* exit = wants.find(Feature::kExit);
+  if (exit == nullptr) exit = wants.find(Feature::kEntrance);
+  return {{"asked", asked},
+          {"asked_exactly", exit != nullptr && !exit->at_least},
+          {"required", required},
+          {"required_by", count ? Json(count->ref_id + " (" + count->section + ")") : Json(nullptr)},
+          {"occupant_load", report.occupant_load},
+          {"width_required_m", width ? Json(std::round(width->required * 1000.0) / 1000.0) : Json(nullptr)},
+          {"width_required_by", width ? Json(width->ref_id + " (" + width->section + ")") : Json(nullptr)},
+          {"width_built_m", std::round(total * 100.0) / 100.0},
+          {"added_for_count", why.added_for_count},
+          {"added_for_width", why.added_for_width},
+          {"added_for_travel", why.added_for_travel},
+          {"widened", why.widened},
+          {"built", built},
+          {"widths", std::move(widths)},
+          {"decided_by", decided_by},
+          {"text", text}};
 }
 
 // The exits (doors to the outside) a request asks for, at least: the most of its exits,
@@ -777,6 +1089,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
                 {{"/rooms", "needs at least one room", "", 0, 0}});
   Layout layout(graph, constraints);
   if (auto s = layout.prepare(); !s) return tl::unexpected(s.error());
+  layout.choose_family(options.seed);
   const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
   const WorldRequirements& wants = options.requirements;
   const std::optional<double> occupants =
@@ -797,7 +1110,12 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     const Rng furnishing_rng = rng.fork("furnish");
     std::set<std::string> dropped;  // furniture the layout check found in the way, left out
     FeatureOutcome outcome;
-    auto build = [&]() {
+    // Worlds built again for more exits or with furniture left out are validated without the
+    // reachability grid (the costliest part of a build); the plan returned is validated in full.
+    bool validated = true;
+    WorldBuilder last;  // the last world's input, validated in full at the end when it was not
+    auto build = [&](bool reachability) {
+      validated = reachability;
       WorldBuilder builder;
       builder.set_name(domain + "_plan_" + std::to_string(options.seed));
       builder.set_floor({floor_material(domain)});
@@ -805,14 +1123,32 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       std::vector<DoorSpec> doors;
       layout.emit(builder, zones, doors);
       Rng furnishing = furnishing_rng;
-      Furnishing f = furnish(zones, doors, rules, furnishing);
+      // An open hall is furnished zone by zone (each an ROI of kind "area" named after it).
+      std::vector<Zone> areas;
+      std::vector<DoorSpec> area_doors;
+      layout.emit_areas(doors, areas, area_doors);
+      std::vector<std::string> open_halls;
+      if (!areas.empty()) open_halls.push_back(layout.hub_name());
+      Furnishing f = furnish(zones, doors, rules, furnishing, open_halls);
+      if (!areas.empty()) {
+        Rng by_area = furnishing_rng.fork("areas");
+        Furnishing a = furnish_areas(areas, area_doors, rules, by_area);
+        for (const auto& z : areas) f.rois.push_back({z.name, "area", z.polygon});
+        for (auto& r : a.rois) f.rois.push_back(std::move(r));
+        for (auto& e : a.entities) f.entities.push_back(std::move(e));
+      }
       outcome = furnish_requirements(zones, doors, wants, rules, f);
       for (auto& r : f.rois) builder.add_roi(std::move(r));
       for (auto& e : f.entities)
         if (!dropped.count(e.name)) builder.add_entity(std::move(e));
-      return builder.build(options.build);
+      BuildOptions build_options = options.build;
+      build_options.check_reachability = build_options.check_reachability && reachability;
+      if (!reachability) last = builder;
+      return builder.build(build_options);
     };
-    auto world = build();
+    // A large plan is almost always built again (more exits for its occupant load): its first
+    // world is validated in full only if it turns out to be the last.
+    auto world = build(layout.graph().rooms.size() <= 20);
     if (!world) {
       tried.push_back("the world did not validate: " + world.error().message());
       last_error = world.error();
@@ -821,29 +1157,52 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     ComplianceReport report = check_compliance(*world, domain, constraints, occupants);
     // Exits: as many as the request asks for and the code requires (occupant load, travel
     // distance), each added as far from the others as the outside walls allow.
+    // An exit count the request gives is a minimum: the code's exit count (IBC Table 1006.3.2)
+    // may raise it; the egress width of the occupant load (IBC 1005.3.2) widens the exits first
+    // (up to kMaxExitWidthCm each) and adds exits only when the widest exits cannot carry it.
     std::vector<std::string> exit_notes;
+    ExitReasons why;
     bool exits_ok = true;
     for (int round = 0; round < 12 && world; ++round) {
       const int target = std::max({code_exits(report), asked_exits(wants), 1});
-      bool egress_short = false;
+      const ComplianceCheck* egress = nullptr;
       std::string far_room;
       for (const auto& c : report.checks) {
         if (c.status != CheckStatus::kFail) continue;
-        if (c.name == "egress_width_per_occupant") egress_short = true;
+        if (c.name == "egress_width_per_occupant") egress = &c;
         if (c.name.rfind("exit_access_travel_distance", 0) == 0) far_room = c.element;
       }
       const int have = count_feature(*world, Feature::kExit);
-      if (have >= target && !egress_short && far_room.empty()) break;
+      if (have >= target && egress == nullptr && far_room.empty()) break;
+      if (have >= target && far_room.empty()) {
+        // The count is right, the width short: wider exits, when their walls take them.
+        const int each = std::min(kMaxExitWidthCm, cm_up(egress->required / have + 0.005));
+        const int before = static_cast<int>(std::lround(egress->value.value_or(0.0) * 100.0));
+        if (layout.widen_exits(each) > before) {
+          why.widened = true;
+          world = build(false);
+          if (world) report = check_compliance(*world, domain, constraints, occupants);
+          continue;
+        }
+      }
       // The exits the count lacks are added together (one build and report for all of them).
+      const bool for_width = have >= target && far_room.empty();
       for (int k = 0; k < std::max(1, target - have) && exits_ok; ++k) {
-        auto note = k == 0 ? layout.add_exit(egress_short, far_room) : layout.add_exit();
-        if (note)
-          exit_notes.push_back(*note);
-        else
+        auto note = k == 0 ? layout.add_exit(egress != nullptr, far_room) : layout.add_exit();
+        if (!note) {
           exits_ok = false;
+          break;
+        }
+        exit_notes.push_back(*note);
+        if (have + k < target)
+          ++why.added_for_count;
+        else if (for_width)
+          ++why.added_for_width;
+        else
+          ++why.added_for_travel;
       }
       if (!exits_ok) break;
-      world = build();
+      world = build(false);
       if (world) report = check_compliance(*world, domain, constraints, occupants);
     }
     if (!world) {
@@ -872,7 +1231,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
           }
         }
         if (zones_ok) {
-          world = build();
+          world = build(false);
           if (world) check = check_layout(*world);
         }
         if (!zones_ok || !world || !check.ok()) {
@@ -897,7 +1256,11 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     }
     // Everything the request counts or names is there (furniture that did not fit: larger rooms).
     std::vector<std::string> lacking = outcome.missing;
-    for (auto& u : unmet(*world, wants, code_exits(report))) lacking.push_back(std::move(u));
+    // Exits beyond the asked count are the code's (count, width, travel distance), not a miss.
+    const int exits_by_code = why.added_for_width + why.added_for_travel > 0
+                                  ? count_feature(*world, Feature::kExit)
+                                  : code_exits(report);
+    for (auto& u : unmet(*world, wants, exits_by_code)) lacking.push_back(std::move(u));
     if (!lacking.empty()) {
       std::string what;
       for (const auto& l : lacking) what += (what.empty() ? "" : "; ") + l;
@@ -906,19 +1269,27 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       scale *= 1.15;
       continue;
     }
+    if (!validated) {
+      world = last.build(options.build);
+      if (!world) {
+        tried.push_back("the world did not validate: " + world.error().message());
+        last_error = world.error();
+        continue;
+      }
+    }
     FloorPlan plan{std::move(*world), std::move(report), layout.graph(), Json::object()};
     Json notes = layout.notes();
     for (const auto& n : exit_notes) notes.push_back(n);
-    const ComplianceCheck* exits = exit_check(plan.compliance);
     const int asked = asked_exits(wants);
-    if (exits && asked > 0 && exits->required > asked)
-      notes.push_back(std::to_string(asked) + " exit" + (asked == 1 ? "" : "s") +
-                      " asked for; the building code (" + exits->ref_id + ") asks for " +
-                      std::to_string(static_cast<int>(exits->required)));
+    Json exits = exit_provenance(plan.world, plan.compliance, wants, asked, why);
+    if (asked > 0 || why.widened || why.added_for_width + why.added_for_travel > 0)
+      notes.push_back(exits["text"]);
     for (const auto& n : outcome.notes) notes.push_back(n);
-    plan.provenance = {{"generator", "offline"},    {"seed", options.seed},
-                       {"domain", domain},          {"attempts", attempt + 1},
-                       {"notes", std::move(notes)}, {"knowledge", knowledge_provenance(constraints)}};
+    plan.provenance = {
+        {"generator", "offline"},    {"layout_family", std::string(family_name(layout.family()))},
+        {"seed", options.seed},      {"domain", domain},
+        {"attempts", attempt + 1},   {"notes", std::move(notes)},
+        {"exits", std::move(exits)}, {"knowledge", knowledge_provenance(constraints)}};
     if (!wants.empty()) {
       Json met = Json::array();
       for (const auto& f : wants.features)

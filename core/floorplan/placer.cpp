@@ -103,6 +103,29 @@ Box footprint_box(const std::string& type, const Pose2& pose) {
   return geometry::bounds(footprint_polygon(type, pose).outer);
 }
 
+namespace {
+
+// No footprint reaches farther than this from its entity's pose (half the largest diagonal of
+// the footprint table, or of the default footprint).
+double footprint_reach() {
+  static const double reach = [] {
+    double r = std::hypot(Footprint{}.width, Footprint{}.depth) / 2;
+    for (const auto& f : entity_footprints()) r = std::max(r, std::hypot(f.size.width, f.size.depth) / 2);
+    return r + 0.01;
+  }();
+  return reach;
+}
+
+// Whether the entity's footprint may reach `b` (grown by `margin`): a cheap test on its pose
+// that spares the footprint lookup for the furniture of other rooms.
+bool may_reach(const EntitySpec& e, const Box& b, double margin) {
+  const double r = footprint_reach() + margin;
+  return e.pose.x >= b.min.x - r && e.pose.x <= b.max.x + r && e.pose.y >= b.min.y - r &&
+         e.pose.y <= b.max.y + r;
+}
+
+}  // namespace
+
 Placer::Placer(const Zone& zone, const Frame& frame, std::vector<DoorAt> doors, Furnishing& out)
     : zone_(zone), f_(frame), doors_(std::move(doors)), out_(out) {
   for (const auto& d : doors_) {
@@ -130,6 +153,7 @@ bool Placer::box_free(const Box& b, std::optional<std::size_t> skip, Areas areas
   for (std::size_t k = 0; k < out_.entities.size(); ++k) {
     if (skip && *skip == k) continue;
     const EntitySpec& e = out_.entities[k];
+    if (!may_reach(e, b, kItemGap)) continue;
     const Box eb = footprint_box(e.type, e.pose);
     if (mine(eb) && overlaps(b, eb, kItemGap)) return false;
   }
@@ -203,6 +227,7 @@ bool Placer::walkable(std::size_t from, std::vector<std::size_t>* drop) const {
   std::vector<std::size_t> index_of;
   for (std::size_t k = 0; k < out_.entities.size(); ++k) {
     const EntitySpec& e = out_.entities[k];
+    if (!may_reach(e, f_.box, 0.0)) continue;
     const Box eb = footprint_box(e.type, e.pose);
     if (!mine(eb)) continue;
     boxes.push_back(eb);
@@ -284,7 +309,9 @@ bool Placer::walkable(std::size_t from, std::vector<std::size_t>* drop) const {
 
 void Placer::keep_walkable(std::size_t from) {
   std::vector<std::size_t> drop;
-  if (!walkable(from, &drop) && drop.empty()) {
+  const bool ok = walkable(from, &drop);
+  if (ok && drop.empty()) return;  // everything reachable: walkable() would say so again
+  if (!ok && drop.empty()) {
     while (out_.entities.size() > from && !walkable()) out_.entities.pop_back();
     return;
   }
@@ -297,7 +324,9 @@ bool Placer::lane_clear(double u0, double v0, double u1, double v1, std::size_t 
                         std::size_t first_roi) const {
   const Box lane = geometry::bounds(f_.rect(u0, v0, u1, v1).outer);
   for (std::size_t k = 0; k < out_.entities.size(); ++k) {
-    if (k == keep || !mine(footprint_box(out_.entities[k].type, out_.entities[k].pose))) continue;
+    if (k == keep || !may_reach(out_.entities[k], f_.box, 0.0) ||
+        !mine(footprint_box(out_.entities[k].type, out_.entities[k].pose)))
+      continue;
     const EntitySpec& e = out_.entities[k];
     const bool serves =
         e.type == "counter" || e.type == "desk" || e.type == "reception" ||

@@ -407,6 +407,23 @@ SceneGraph room_program(std::string_view domain, const std::map<std::string, int
   }
   const auto entrance = first_of_type.find(std::string(p.entrance));
   g.entrance = entrance != first_of_type.end() ? entrance->second : circulation;
+  // A small home (up to two bedrooms, eight rooms) has no hallway: its rooms open onto the living
+  // room, as in ProcTHOR's houses (the offline generator's home_open_plan family).
+  const auto living = first_of_type.find("living_room");
+  const int bedrooms = static_cast<int>(
+      std::count_if(g.rooms.begin(), g.rooms.end(), [](const SceneRoom& r) { return r.type == "bedroom"; }));
+  if (g.domain == "residential" && living != first_of_type.end() && bedrooms <= 2 && g.rooms.size() <= 9) {
+    const std::string hub = living->second;
+    g.rooms.erase(g.rooms.begin());  // the hallway
+    std::vector<std::pair<std::string, std::string>> edges;
+    for (auto [a, b] : g.adjacency) {
+      if (a == circulation) a = hub;
+      if (b == circulation) b = hub;
+      if (a != b) edges.emplace_back(a, b);
+    }
+    g.adjacency = std::move(edges);
+    g.entrance = hub;
+  }
   return g;
 }
 

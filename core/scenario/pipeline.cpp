@@ -257,9 +257,9 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
   if (!fpr) return tl::unexpected(fpr.error());
   // What the prompt asks the world to hold (counted features, named rooms and objects, its people).
   const world::WorldRequirements requirements = world_requirements(*intent);
-  // Recorded, not yet handed to the generator: with them, crowds of thousands asked for a few
-  // exits were refused (the egress width of their occupant load adds exits the request's exact
-  // count forbids). Issue 17 reconciles the two before `fpr->requirements = requirements`.
+  // The generator builds them (core/floorplan): a counted exit is a minimum the building code may
+  // raise for the occupant load (docs/worlds.md, "Exits asked for and exits required").
+  fpr->requirements = requirements;
   auto resolved = floorplan::resolve_scene_graph(*fpr);
   Json programme_fallback = nullptr;
   if (!resolved && resolved.error().code == ErrorCode::kValidation && !request.scene_graph && fpr->domain) {
@@ -323,7 +323,7 @@ Result<ScenarioWorld> world_for_request(const ScenarioRequest& request,
   if (!sized.is_null()) plan->provenance["sized_for_people"] = sized;
   if (!programme_fallback.is_null()) plan->provenance["programme_fallback"] = programme_fallback;
   plan->provenance["intent_requirements"] =
-      Json{{"requirements", world::to_json(requirements)}, {"passed_to_generator", false}};
+      Json{{"requirements", world::to_json(requirements)}, {"passed_to_generator", true}};
   return ScenarioWorld{std::move(plan->world), resolved->graph.domain, std::move(plan->provenance),
                        requirements};
 }

@@ -168,6 +168,69 @@ TEST_F(Requirements, TheScenarioPeopleDecideTheEgress) {
   EXPECT_GE(count_feature(p->world, Feature::kExit), 2);
 }
 
+// Issue 17: an exit count a prompt gives is a minimum. 2,000 fans and "2 exits": the code's exit
+// count (IBC Table 1006.3.2: 4 above 1,000 occupants) raises it, and the plan says which entry did.
+TEST_F(Requirements, AnExitCountIsAMinimumTheCodeRaisesAndSaysWhy) {
+  auto p = plan("arena", wants(R"({"features": [{"feature": "exit", "count": 2}], "occupants": 2000})"), 1);
+  ASSERT_TRUE(p) << p.error().message();
+  EXPECT_TRUE(p->compliance.passed);
+  EXPECT_GE(count_feature(p->world, Feature::kExit), 4);
+  const Json& exits = p->provenance.at("exits");
+  EXPECT_EQ(exits["asked"], 2);
+  EXPECT_EQ(exits["required"], 4);
+  EXPECT_THAT(exits["required_by"].get<std::string>(), HasSubstr("1006.3.2"));
+  EXPECT_THAT(exits["decided_by"].get<std::string>(), HasSubstr("ibc2018"));
+  EXPECT_THAT(exits["text"].get<std::string>(), HasSubstr("2 exits asked for; 4 required by"));
+  EXPECT_THAT(exits["text"].get<std::string>(), HasSubstr("for 2000 occupants"));
+}
+
+// "4 exits" for 2,000 fans: the code asks for 4 too, and for 10.16 m of exit width (IBC 1005.3.2,
+// 5.08 mm per occupant). The four exits are widened to carry it (a safety engineer keeps the
+// exits asked for and sizes them), not multiplied; no exit is wider than three 1.22 m leaves.
+TEST_F(Requirements, AskedExitsAreWidenedToCarryTheOccupantLoad) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    auto p =
+        plan("arena", wants(R"({"features": [{"feature": "exit", "count": 4}], "occupants": 2000})"), seed);
+    ASSERT_TRUE(p) << p.error().message();
+    EXPECT_TRUE(p->compliance.passed);
+    EXPECT_EQ(count_feature(p->world, Feature::kExit), 4) << seed;
+    double total = 0.0;
+    for (const auto& d : p->world.doors())
+      if (!d.other) {
+        total += d.width;
+        EXPECT_LE(d.width, 3.65 + 1e-9) << d.name;
+      }
+    EXPECT_GE(total, 2000 * 0.00508 - 1e-9) << seed;
+    const Json& exits = p->provenance.at("exits");
+    EXPECT_EQ(exits["widened"], true);
+    EXPECT_EQ(exits["added_for_width"], 0);
+    EXPECT_THAT(exits["width_required_by"].get<std::string>(), HasSubstr("1005.3.2"));
+    EXPECT_THAT(exits["text"].get<std::string>(), HasSubstr("4 exits asked for; 4 required by"));
+    EXPECT_TRUE(check_layout(p->world).ok()) << check_layout(p->world).summary();
+  }
+}
+
+// More people than four of the widest exits carry (3,500 × 5.08 mm = 17.8 m against 4 × 3.65 m):
+// exits are added for the width, and an exact count of 4 is not a reason to refuse the plan.
+TEST_F(Requirements, ExitsAreAddedWhenTheWidestCannotCarryTheLoad) {
+  auto p = plan("arena", wants(R"({"features": [{"feature": "exit", "count": 4}], "occupants": 3500})"), 1);
+  ASSERT_TRUE(p) << p.error().message();
+  EXPECT_TRUE(p->compliance.passed);
+  const Json& exits = p->provenance.at("exits");
+  EXPECT_GT(count_feature(p->world, Feature::kExit), 4);
+  EXPECT_GT(exits["added_for_width"].get<int>(), 0);
+  EXPECT_THAT(exits["decided_by"].get<std::string>(), HasSubstr("ibc2018_1005"));
+}
+
+// An exit count the code does not need to raise is built exactly, with no widening.
+TEST_F(Requirements, AnExitCountTheCodeAcceptsIsBuiltExactly) {
+  auto p = plan("office", wants(R"({"features": [{"feature": "exit", "count": 2}]})"), 4);
+  ASSERT_TRUE(p) << p.error().message();
+  EXPECT_EQ(count_feature(p->world, Feature::kExit), 2);
+  EXPECT_EQ(p->provenance.at("exits")["decided_by"], "request");
+  EXPECT_EQ(p->provenance.at("exits")["widened"], false);
+}
+
 TEST_F(Requirements, WhatCannotBeBuiltIsNamed) {
   // A home takes no 200 check-outs; the error says what did not fit.
   auto p = plan("residential", wants(R"({"features": [{"feature": "checkout", "count": 30}]})"), 0);

@@ -63,12 +63,20 @@ TEST(SceneGraph, EveryProblemIsNamedWithItsPointer) {
 }
 
 TEST(SceneGraph, ProgrammesPerBuildingType) {
+  // A small home has no hallway: every room opens onto the living room (ProcTHOR-style).
   const SceneGraph home = room_program("residential");
-  EXPECT_EQ(home.entrance, "hallway");
+  EXPECT_EQ(home.entrance, "living_room");
   EXPECT_EQ(count_type(home, "bedroom"), 2);
   EXPECT_EQ(count_type(home, "living_room"), 1);
-  // The kitchen opens onto the living room, everything else onto the hallway.
+  EXPECT_EQ(count_type(home, "hallway"), 0);
   EXPECT_THAT(home.adjacency,
+              ::testing::Contains(std::pair<std::string, std::string>{"living_room", "kitchen"}));
+  for (const auto& [a, b] : home.adjacency) EXPECT_EQ(a, "living_room") << b;
+  // A larger one keeps its hallway; the kitchen opens onto the living room, the rest onto the hallway.
+  const SceneGraph house = room_program("residential", {{"bedroom", 3}});
+  EXPECT_EQ(house.entrance, "hallway");
+  EXPECT_EQ(count_type(house, "hallway"), 1);
+  EXPECT_THAT(house.adjacency,
               ::testing::Contains(std::pair<std::string, std::string>{"living_room", "kitchen"}));
   const SceneGraph office = room_program("office", {{"meeting_room", 4}});
   EXPECT_EQ(count_type(office, "meeting_room"), 4);

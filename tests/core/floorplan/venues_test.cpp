@@ -14,6 +14,7 @@
 
 #include "core/floorplan/features.hpp"
 #include "core/floorplan/offline.hpp"
+#include "core/geometry/planar.hpp"
 #include "core/knowledge/types.hpp"
 #include "core/world/layout_check.hpp"
 #include "tests/support/knowledge_suite.hpp"
@@ -199,6 +200,16 @@ std::string arrangement(const World& w) {
         pairs.push_back(std::min(zs[a].type, zs[b].type) + "|" + std::max(zs[a].type, zs[b].type));
   for (const auto& d : w.doors())
     if (!d.other) pairs.push_back("exit:" + w.zone(d.zone).type);
+  // The zones of an open hall (ROIs of kind "area"): which rooms and which exits each touches.
+  for (auto id : w.rois_of_kind("area")) {
+    const Roi& r = w.roi(id);
+    const Zone as_zone{r.name, r.name, "", r.polygon};
+    for (const auto& z : zs)
+      if (geometry::area(z.polygon) > 0 && shared(as_zone, z) > 0.3) pairs.push_back(r.name + "|" + z.type);
+    for (const auto& d : w.doors())
+      if (!d.other && geometry::contains(r.polygon, d.pose.position(), 0.05))
+        pairs.push_back("exit:" + r.name);
+  }
   std::sort(pairs.begin(), pairs.end());
   std::string out;
   for (const auto& p : pairs) out += p + ";";
@@ -207,7 +218,8 @@ std::string arrangement(const World& w) {
 
 TEST_F(Venues, TwentySeedsOfOnePromptGiveAtLeastFifteenArrangements) {
   for (const char* prompt : {"a hospital ward with six patient rooms, a waiting room and two treatment rooms",
-                             "guests checking in at a small hotel", "visitors in a museum"}) {
+                             "guests checking in at a small hotel", "visitors in a museum",
+                             "passengers in the station concourse", "a family at home in their small flat"}) {
     auto g = scene_graph_from_prompt(prompt);
     ASSERT_TRUE(g) << prompt;
     std::set<std::string> seen;
@@ -235,6 +247,67 @@ TEST_F(Venues, TheArrangementSignatureSeesOrderNotSize) {
   EXPECT_EQ(arrangement(a->world), arrangement(b->world));
   EXPECT_THAT(arrangement(a->world), ::testing::HasSubstr("foyer|gallery"));
   EXPECT_THAT(arrangement(a->world), ::testing::HasSubstr("gallery|gallery"));  // rooms en suite
+}
+
+// Every layout family is built, and each plan of it is as clean as the others: valid, compliant,
+// every zone and thing reachable, doors on shared walls, the scene graph's rooms and adjacencies
+// kept exactly (a door for every edge, between the two rooms it names), the family recorded.
+TEST_F(Venues, EveryLayoutFamilyIsBuiltCleanAndKeepsTheSceneGraph) {
+  std::map<std::string, int> families;
+  for (std::string_view type : {"supermarket", "retail", "canteen", "warehouse", "train_station", "airport",
+                                "residential", "hospital", "museum", "theatre", "mall"}) {
+    const SceneGraph g = room_program(type);
+    const WorldRequirements wants = typical_request(type);
+    for (std::uint64_t seed = 0; seed < 8; ++seed) {
+      OfflineOptions o;
+      o.seed = seed;
+      o.requirements = wants;
+      auto plan = generate_floor_plan(g, constraints(std::string(type)), o);
+      ASSERT_TRUE(plan) << type << " seed " << seed << ": " << plan.error().message();
+      const std::string family = plan->provenance.at("layout_family");
+      ++families[family];
+      EXPECT_TRUE(plan->compliance.passed) << type << " " << seed;
+      const LayoutCheck check = check_layout(plan->world);
+      EXPECT_TRUE(check.ok()) << type << " seed " << seed << " (" << family << "):\n" << check.summary();
+      EXPECT_EQ(plan->scene_graph.rooms, g.rooms) << type << " " << family;
+      EXPECT_EQ(plan->scene_graph.adjacency, g.adjacency) << type << " " << family;
+      for (const auto& [a, b] : g.adjacency) {
+        const auto za = plan->world.find_zone(a), zb = plan->world.find_zone(b);
+        ASSERT_TRUE(za && zb) << a << " " << b;
+        EXPECT_TRUE(std::any_of(plan->world.doors().begin(), plan->world.doors().end(),
+                                [&](const Door& d) {
+                                  return d.other && ((d.zone == *za && *d.other == *zb) ||
+                                                     (d.zone == *zb && *d.other == *za));
+                                }))
+            << type << " seed " << seed << ": no door between " << a << " and " << b;
+      }
+      for (const auto& f : wants.features) {
+        if (f.feature == Feature::kExit) continue;  // the code may raise an exit count
+        const int built = count_feature(plan->world, f.feature);
+        EXPECT_TRUE(f.at_least ? built >= f.count : built == f.count)
+            << type << " seed " << seed << ": " << to_string(f.feature);
+      }
+      if (family == "open_hall_zones") {
+        // Its zones are ROIs of kind "area" inside the hall, each with its own things.
+        const auto areas = plan->world.rois_of_kind("area");
+        EXPECT_GE(areas.size(), 2u) << type << " " << seed;
+        for (auto id : areas) {
+          const Roi& r = plan->world.roi(id);
+          const int things = static_cast<int>(
+              std::count_if(plan->world.entities().begin(), plan->world.entities().end(),
+                            [&](const Entity& e) { return e.name.rfind(r.name + "_", 0) == 0; }));
+          EXPECT_GE(things, 1) << type << " seed " << seed << ": nothing in " << r.name;
+        }
+      }
+      if (family == "home_open_plan") {
+        // No hallway: every room but the living room has its door onto the living room.
+        EXPECT_EQ(zones_of(plan->world, "hallway"), 0);
+        EXPECT_EQ(zones_of(plan->world, "corridor"), 0);
+      }
+    }
+  }
+  for (const char* f : {"corridor_with_rooms", "hall_with_rooms", "open_hall_zones", "home_open_plan"})
+    EXPECT_GE(families[f], 4) << f;
 }
 
 }  // namespace
