@@ -70,7 +70,9 @@ std::string export_pedsim(const World& world) {
   }
   o << "  <!--Waypoints-->\n";
   for (const auto& r : world.rois()) {
-    if (r.kind == "queue_lane") continue;
+    // Queue lanes are queues and seating or waiting areas attractions (one element per id, as
+    // pedsim_ros and the importer want).
+    if (r.kind == "queue_lane" || r.kind == "seating_area" || r.kind == "waiting_zone") continue;
     const Point c = P(geometry::centroid(r.polygon.outer));
     const double radius = std::sqrt(geometry::area(r.polygon) / std::numbers::pi);
     o << "  <waypoint id=\"" << xml_escape(r.name) << "\" x=\"" << micro(c.x) << "\" y=\"" << micro(c.y)

@@ -36,11 +36,11 @@ struct RosMap {
 };
 RosMap export_ros_map(const World& world, const RosMapOptions& options = {});
 
-// pedsim_ros scenario: <obstacle> per wall, <waypoint> per ROI (centroid, radius of the
-// equal-area circle) and per entity (r = 1), <queue> per queue_lane ROI (head at the end
-// nearest an entity within a lane length, else nearest the polygon's first vertex;
-// direction along the lane), <attraction> per seating_area or
-// waiting_zone ROI (bounding box, strength 1). No agents: those belong to the scenario.
+// pedsim_ros scenario: <obstacle> per wall, <waypoint> per ROI that is not a queue or an
+// attraction (centroid, radius of the equal-area circle) and per entity (r = 1), <queue> per queue_lane ROI
+// (head at the end nearest an entity within a lane length, else nearest the polygon's first vertex; direction
+// along the lane), <attraction> per seating_area or waiting_zone ROI (bounding box, strength 1). No agents:
+// those belong to the scenario.
 std::string export_pedsim(const World& world);
 
 }  // namespace socsim::world

@@ -5,6 +5,7 @@
 // plans over all types are clean; 20 seeds of one prompt give at least 15 different
 // arrangements (which rooms share a wall: invariant under rotation, mirroring and resizing).
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <set>
@@ -17,6 +18,9 @@
 #include "core/geometry/planar.hpp"
 #include "core/knowledge/types.hpp"
 #include "core/world/layout_check.hpp"
+#include "core/world/pedsim_import.hpp"
+#include "core/world/world_export.hpp"
+#include "core/world/xml_reader.hpp"
 #include "tests/support/knowledge_suite.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -308,6 +312,64 @@ TEST_F(Venues, EveryLayoutFamilyIsBuiltCleanAndKeepsTheSceneGraph) {
   }
   for (const char* f : {"corridor_with_rooms", "hall_with_rooms", "open_hall_zones", "home_open_plan"})
     EXPECT_GE(families[f], 4) << f;
+}
+
+// Every simulator and map format is produced for a plan of every family and reads back: SVG and
+// SDF are well-formed XML with their root, the ROS map is a P5 image of the size its header says
+// with metadata naming it, and the pedsim scenario re-imports with one obstacle per wall.
+TEST_F(Venues, EveryLayoutFamilyExportsToEveryFormat) {
+  std::map<std::string, int> exported;
+  for (std::string_view type : {"supermarket", "train_station", "residential", "hospital", "museum"}) {
+    const SceneGraph g = room_program(type);
+    for (std::uint64_t seed = 0; seed < 4; ++seed) {
+      OfflineOptions o;
+      o.seed = seed;
+      o.requirements = typical_request(type);
+      auto plan = generate_floor_plan(g, constraints(std::string(type)), o);
+      ASSERT_TRUE(plan) << type << " seed " << seed << ": " << plan.error().message();
+      const std::string family = plan->provenance.at("layout_family");
+      if (exported[family] >= 2) continue;
+      ++exported[family];
+      const std::string where = std::string(type) + " seed " + std::to_string(seed) + " (" + family + ")";
+      auto svg = world::parse_xml(world::export_svg(plan->world));
+      ASSERT_TRUE(svg) << where << ": " << svg.error().message();
+      EXPECT_EQ(svg->name, "svg") << where;
+      auto sdf = world::parse_xml(world::export_sdf(plan->world));
+      ASSERT_TRUE(sdf) << where << ": " << sdf.error().message();
+      EXPECT_EQ(sdf->name, "sdf") << where;
+      const world::RosMap map = world::export_ros_map(plan->world);
+      // P5 header: magic, width, height, maxval, with '#' comment lines between; one byte a pixel.
+      std::vector<long> fields;
+      std::size_t at = 0;
+      while (fields.size() < 4 && at < map.pgm.size()) {
+        if (map.pgm[at] == '#') {
+          at = map.pgm.find('\n', at);
+        } else if (std::isspace(static_cast<unsigned char>(map.pgm[at])) != 0) {
+          ++at;
+        } else {
+          std::size_t end = at;
+          while (end < map.pgm.size() && std::isspace(static_cast<unsigned char>(map.pgm[end])) == 0) ++end;
+          const std::string token = map.pgm.substr(at, end - at);
+          fields.push_back(fields.empty() ? (token == "P5" ? 5 : -1) : std::stol(token));
+          at = end;
+        }
+      }
+      ASSERT_EQ(fields.size(), 4u) << where;
+      EXPECT_EQ(fields[0], 5) << where;
+      EXPECT_EQ(fields[3], 255) << where;
+      EXPECT_GT(fields[1] * fields[2], 0) << where;
+      EXPECT_EQ(map.pgm.size(), at + 1 + static_cast<std::size_t>(fields[1] * fields[2])) << where;
+      EXPECT_NE(map.yaml.find("image: map.pgm"), std::string::npos) << where;
+      const std::string pedsim = world::export_pedsim(plan->world);
+      auto back = world::import_pedsim(pedsim);
+      ASSERT_TRUE(back) << where << ": " << back.error().message();
+      auto xml = world::parse_xml(pedsim);
+      ASSERT_TRUE(xml);
+      EXPECT_EQ(xml->children_named("obstacle").size(), plan->world.walls().size()) << where;
+    }
+  }
+  for (const char* f : {"corridor_with_rooms", "open_hall_zones", "home_open_plan"})
+    EXPECT_GE(exported[f], 1) << f << " not exported";
 }
 
 }  // namespace
