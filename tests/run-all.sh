@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is needed, builds, and runs every test: a Debug build (preset ci: the dev build
-# with line tables only), then the same suite under AddressSanitizer + UndefinedBehaviorSanitizer;
+# with line tables only) runs every test except those labelled heavy (the slow generator and
+# property sweeps: socsim_test HEAVY in tests/CMakeLists.txt), then the whole suite, heavy tests
+# included, runs under AddressSanitizer + UndefinedBehaviorSanitizer (preset asan, -O1: 2-3x
+# faster than Debug there), so every test runs in one phase or both;
 # with SOCSIM_FUZZ_SECONDS set, then every libFuzzer target for that long (tests/fuzz/run.sh).
 # Used by README and by .ci/run. Each phase prints its wall time (docs/PERFORMANCE.md, CI time).
 set -euo pipefail
