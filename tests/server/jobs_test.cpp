@@ -89,13 +89,15 @@ TEST(Jobs, OneClientCannotTakeEveryJobSlot) {
   cfg.api_keys = parse_api_keys("alice:alice-secret-0123456789,bob:bob-secret-0123456789").value();
   cfg.max_jobs_per_client = 2;
   cfg.job_workers = 1;
-  TestServer s(cfg);
-  auto& jobs = *s.services().jobs;
+  // Declared before the server: its job worker may still be running the last job (which reads
+  // release) when the test returns, until the server's destructor stops it.
   std::atomic<bool> release{false};
   const auto blocking = [&](const JobContext& ctx) -> Result<Json> {
     while (!release && !ctx.cancelled()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     return Json::object();
   };
+  TestServer s(cfg);
+  auto& jobs = *s.services().jobs;
   std::vector<std::string> held;
   for (int i = 0; i < 2; ++i) held.push_back(jobs.submit("hold", Json::object(), "alice", blocking).value());
   auto third = jobs.submit("hold", Json::object(), "alice", blocking);
