@@ -105,6 +105,14 @@ test('an example fills the box and is read; a prompt in another language is refu
   assert.deepEqual(await marks(page, 'count'), ['20']);
   assert.deepEqual(await marks(page, 'group'), [' customers']);
 
+  // A word no dictionary knows is marked and said in the warnings; the rest is still read.
+  await page.fill('#prompt', 'Twenty passengers wait on the platform while the zorgs dance');
+  await page.waitForSelector('#understood-warnings li');
+  assert.match(await page.textContent('#understood-warnings'), /'zorgs' is not a person, place or object I know: ignored/);
+  assert.deepEqual(await marks(page, 'warning'), ['zorgs']);
+  assert.equal(await page.getAttribute('#understood-groups li', 'data-count'), '20');
+  await page.screenshot({ path: join(artifacts, 'intent-warning.png'), fullPage: true });
+
   const jobs = await jobCount();
   await page.fill('#prompt', 'Zwanzig Patienten warten im Wartezimmer auf den Arzt');
   await page.waitForSelector('#understood[data-state=problem]');
