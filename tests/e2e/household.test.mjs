@@ -2,29 +2,17 @@
 // through the API), the floor plan and the residents' timeline appear, moving the time slider
 // moves an object that the API says changed receptacle, and the statistics are plotted.
 // A screenshot lands in tests/e2e/artifacts/household.png.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer } from './server.mjs';
-import { artifacts, browserSkip as skip, launchBrowser } from './browser.mjs';
-let server, browser;
-
-before(async () => {
-  if (skip) return;
-  server = await startServer();
-  browser = await launchBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.stop();
-});
+import { artifacts, browserSkip as skip, browserSuite } from './browser.mjs';
+const suite = browserSuite();
 
 test('generate a household, see its timeline, move the slider and see an object move', { skip }, async () => {
-  const page = await browser.newPage({ viewport: { width: 1400, height: 1100 } });
+  const page = await suite.browser.newPage({ viewport: { width: 1400, height: 1100 } });
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(`${server.base}/household.html`);
+  await page.goto(`${suite.server.base}/household.html`);
   await page.fill('#rooms', '6');
   await page.fill('#residents-n', '2');
   await page.fill('#days', '2');
@@ -34,17 +22,17 @@ test('generate a household, see its timeline, move the slider and see an object 
 
   const id = await page.evaluate(() => window.household.id);
   assert.match(id, /^hh_[0-9a-f]{20}$/);
-  const h = await (await fetch(`${server.base}/api/v1/households/${id}`)).json();
+  const h = await (await fetch(`${suite.server.base}/api/v1/households/${id}`)).json();
   assert.equal(await page.locator('#households li').count(), 1);
   assert.equal(await page.locator('#residents li').count(), h.residents.length);
   assert.equal(await page.getAttribute('#timeline', 'data-rows'), String(h.residents.length));
 
   // An object the API places on another receptacle later on.
   const t1 = Number(await page.inputValue('#time'));
-  const before = await (await fetch(`${server.base}/api/v1/households/${id}/objects?t=${t1}`)).json();
+  const before = await (await fetch(`${suite.server.base}/api/v1/households/${id}/objects?t=${t1}`)).json();
   let t2 = null, moved = null;
   for (let t = t1 + 3600; t <= h.end && !moved; t += 3600) {
-    const later = await (await fetch(`${server.base}/api/v1/households/${id}/objects?t=${t}`)).json();
+    const later = await (await fetch(`${suite.server.base}/api/v1/households/${id}/objects?t=${t}`)).json();
     const o = later.objects.find((x, i) => x.receptacle !== before.objects[i].receptacle);
     if (o) { t2 = t; moved = o.id; }
   }
@@ -73,8 +61,8 @@ test('generate a household, see its timeline, move the slider and see an object 
   assert.deepEqual(errors, []);
 
   // Opening by URL shows the same household.
-  const again = await browser.newPage({ viewport: { width: 1200, height: 900 } });
-  await again.goto(`${server.base}/household.html?id=${id}`);
+  const again = await suite.browser.newPage({ viewport: { width: 1200, height: 900 } });
+  await again.goto(`${suite.server.base}/household.html?id=${id}`);
   await again.waitForSelector('#plan[data-ready="1"]', { timeout: 30000 });
   assert.equal(await again.evaluate(() => window.household.household.residents.length), h.residents.length);
 });

@@ -3,37 +3,25 @@
 // words, the group with its exact count, the venue, "nobody else"), generate, and count the people
 // on the canvas: exactly the number asked for. A prompt in another language is refused in the
 // panel and by Generate, and no job is queued. Screenshots land in tests/e2e/artifacts/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer } from './server.mjs';
-import { artifacts, browserSkip as skip, launchBrowser } from './browser.mjs';
+import { artifacts, browserSkip as skip, browserSuite } from './browser.mjs';
 
-let server, browser;
-
-before(async () => {
-  if (skip) return;
-  server = await startServer();
-  browser = await launchBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.stop();
-});
+const suite = browserSuite();
 
 const PROMPT = 'A library that is empty except for 3 librarians shelving books';
 
-const jobCount = async () => (await (await fetch(`${server.base}/api/v1/jobs?page_size=100`)).json()).items.length;
+const jobCount = async () => (await (await fetch(`${suite.server.base}/api/v1/jobs?page_size=100`)).json()).items.length;
 const marks = (page, kind) => page.$$eval(`#understood-prompt mark[data-kind="${kind}"]`, (ms) => ms.map((m) => m.textContent));
 
 test('what was understood, then exactly the people asked for on the canvas', { skip }, async () => {
-  const page = await browser.newPage({ viewport: { width: 1400, height: 1000 } });
+  const page = await suite.browser.newPage({ viewport: { width: 1400, height: 1000 } });
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
   let interprets = 0;
   page.on('request', (r) => { if (r.url().endsWith('/api/v1/scenarios/interpret')) interprets++; });
-  await page.goto(server.base + '/');
+  await page.goto(suite.server.base + '/');
   assert.equal(await page.textContent('header nav a[aria-current=page]'), 'Text to scenario');
   assert.equal(await page.locator('#examples button[data-prompt]').count(), 6);
   // Every page of the navigation is served (the catalogue moved to catalogue.html).
@@ -89,8 +77,8 @@ test('what was understood, then exactly the people asked for on the canvas', { s
 });
 
 test('an example fills the box and is read; a prompt in another language is refused', { skip }, async () => {
-  const page = await browser.newPage({ viewport: { width: 1400, height: 1000 } });
-  await page.goto(server.base + '/');
+  const page = await suite.browser.newPage({ viewport: { width: 1400, height: 1000 } });
+  await page.goto(suite.server.base + '/');
   await page.click('#examples button:has-text("ticket-gate bottleneck")');
   assert.match(await page.inputValue('#prompt'), /^Between 20 and 30 commuters/);
   await page.waitForSelector('#understood-groups li[data-role="commuter"]');

@@ -2,23 +2,11 @@
 // job's progress, see the card's world and its people move (the canvas changes between two
 // looks), pause stops them; open a scenario card from the catalogue and watch it there.
 // A screenshot per test lands in tests/e2e/artifacts/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer } from './server.mjs';
-import { artifacts, browserSkip as skip, launchBrowser } from './browser.mjs';
-let server, browser;
-
-before(async () => {
-  if (skip) return;
-  server = await startServer();
-  browser = await launchBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.stop();
-});
+import { artifacts, browserSkip as skip, browserSuite } from './browser.mjs';
+const suite = browserSuite();
 
 // A fingerprint of the stage's pixels.
 const stagePixels = (page) => page.evaluate(() => {
@@ -45,11 +33,11 @@ async function waitForPeople(page) {
 }
 
 test('a prompt becomes a scenario whose people move', { skip }, async () => {
-  const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
+  const page = await suite.browser.newPage({ viewport: { width: 1400, height: 900 } });
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
-  await page.goto(server.base + '/scenario.html');  // the old address: now the start page
-  await page.waitForURL(server.base + '/');
+  await page.goto(suite.server.base + '/scenario.html');  // the old address: now the start page
+  await page.waitForURL(suite.server.base + '/');
   await page.fill('#prompt', 'About twenty patients queue at the reception desk while two nurses chat near the corridor');
   await page.fill('#seed', '3');
   await page.fill('#duration', '30');
@@ -74,18 +62,18 @@ test('a prompt becomes a scenario whose people move', { skip }, async () => {
 
 test('a scenario card opens from the catalogue and plays', { skip }, async () => {
   // A second scenario made through the API, then found in the catalogue like any card.
-  const job = await server.post('/api/v1/scenarios', { prompt: 'Fire alarm: everyone evacuates the office', seed: 2, duration_s: 20 });
+  const job = await suite.server.post('/api/v1/scenarios', { prompt: 'Fire alarm: everyone evacuates the office', seed: 2, duration_s: 20 });
   assert.equal(job.status, 202);
   let done;
   for (let i = 0; i < 600; i++) {
-    done = await (await fetch(`${server.base}/api/v1/jobs/${job.body.id}`)).json();
+    done = await (await fetch(`${suite.server.base}/api/v1/jobs/${job.body.id}`)).json();
     if (done.status === 'succeeded' || done.status === 'failed') break;
     await new Promise((r) => setTimeout(r, 200));
   }
   assert.equal(done.status, 'succeeded', JSON.stringify(done.error));
 
-  const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
-  await page.goto(server.base + '/catalogue.html');
+  const page = await suite.browser.newPage({ viewport: { width: 1400, height: 900 } });
+  await page.goto(suite.server.base + '/catalogue.html');
   await page.fill('#q', 'evacuates');
   await page.click('#search button');
   await page.waitForFunction(() => document.querySelectorAll('#cards li').length === 1);

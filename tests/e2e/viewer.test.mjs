@@ -6,7 +6,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { startServer } from './server.mjs';
-import { artifacts, browserSkip as skip, launchBrowser } from './browser.mjs';
+import { artifacts, browserSkip as skip, inkedFraction, launchBrowser } from './browser.mjs';
 
 let server, browser;
 
@@ -81,13 +81,7 @@ test('a card with a world shows its floor plan', { skip }, async () => {
   const page = await browser.newPage();
   await page.goto(`${server.base}/#card=${created.body.id}`);
   await page.waitForSelector('#detail canvas.world');
-  const inked = await page.evaluate(() => {
-    const c = document.querySelector('#detail canvas.world');
-    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-    let n = 0;
-    for (let i = 3; i < d.length; i += 4) if (d[i] > 0) n++;
-    return n / (c.width * c.height);
-  });
+  const inked = await inkedFraction(page, '#detail canvas.world');
   assert.ok(inked > 0.3, `the floor plan covers only ${(inked * 100).toFixed(1)} % of the canvas`);
   await page.screenshot({ path: join(artifacts, 'card-world.png'), fullPage: true });
   await page.close();
