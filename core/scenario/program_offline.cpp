@@ -303,6 +303,13 @@ Status Draft::add_ambient(Category category, Ambient group) {
         more.push_back(z.name);
     std::stable_sort(more.begin(), more.end(),
                      [&](const std::string& a, const std::string& b) { return room_left(a) > room_left(b); });
+    // Last, the place they are going to (the party's hall, the café's seats): some are there
+    // already. Not for people leaving the building, who would leave at once.
+    if (!group.exit_at_goal)
+      for (const std::string& z : group.goal)
+        if (!probe.is_toilet(z) && room_left(z) > 0 &&
+            std::find(group.start.begin(), group.start.end(), z) == group.start.end())
+          more.push_back(z);
     std::size_t added = 0;
     for (const std::string& z : more) {
       if (cap >= group.size) break;

@@ -56,5 +56,34 @@ TEST(PromptScenarios, EveryPromptProducesAScenarioWithOnlyThePeopleAskedFor) {
   EXPECT_GE(static_cast<double>(held) / all, 0.95) << held << " of " << all << failures;
 }
 
+// A counted crowd whose activity starts in small rooms (the front of a hall) starts partly where it
+// is going — the hall of the gathering — rather than being cut to what the small rooms hold (70
+// pilgrims became 51).
+TEST(PromptScenarios, ACountedCrowdStartsWhereItIsGoingWhenTheStartRoomsAreFull) {
+  const auto db =
+      std::filesystem::temp_directory_path() / ("socsim-prompt-crowd-" + std::to_string(::getpid()) + ".db");
+  auto store = store::Store::open(db.string());
+  ASSERT_TRUE(store.has_value()) << store.error().message();
+  knowledge::KnowledgeBase kb(**store);
+  ScenarioConfig config;
+  const std::string prompt =
+      "Pilgrims gather in front of the cathedral; about 70 of them listen to a priest.";
+  auto request = scenario_request_from_json({{"prompt", prompt}, {"seed", 1}}, config);
+  ASSERT_TRUE(request.has_value());
+  auto world = world_for_request(*request, kb, nullptr, std::nullopt, {});
+  ASSERT_TRUE(world.has_value()) << world.error().message();
+  ProgramRequest pr;
+  pr.prompt = prompt;
+  pr.seed = 1;
+  auto program = generate_program_offline(world->world, kb, pr, config.limits);
+  ASSERT_TRUE(program.has_value()) << program.error().message();
+  const auto people = facts::program_people(program->program);
+  ASSERT_TRUE(people.count("pilgrim"));
+  EXPECT_GE(people.at("pilgrim"), 63);  // about 70: within 10 %
+  EXPECT_LE(people.at("pilgrim"), 77);
+  (*store)->close();
+  std::filesystem::remove(db);
+}
+
 }  // namespace
 }  // namespace socsim::scenario
