@@ -701,21 +701,12 @@ void Reader::find_chunks() {
     }
     std::size_t e = i + 1;
     // A title and the capitalised words after it: one named person ("Mrs Patel waits").
-    if (kTitles.count(t_[i].text)) {
+    if (kTitles.count(t_[i].text))
       while (e < t_.size() && t_[e].kind == TextToken::Kind::kWord && t_[e].sentence == t_[i].sentence &&
              capitalised(e))
         ++e;
-      if (e > i + 1) {
-        Chunk c;
-        c.s = i;
-        c.e = e;
-        classify(c);
-        chunks_.push_back(std::move(c));
-        i = e;
-        continue;
-      }
-    }
-    while (e < t_.size() && !used_[e] && content(e) && t_[e].sentence == t_[i].sentence) {
+    const bool titled = e > i + 1;
+    while (!titled && e < t_.size() && !used_[e] && content(e) && t_[e].sentence == t_[i].sentence) {
       const TextToken& prev = t_[e - 1];
       if (prev.possessive) break;
       const NounEntry& pe = noun(prev.text);
