@@ -53,7 +53,7 @@ struct ApiServer::Impl {
       Error e(ErrorCode::kRateLimited,
               "more than " + std::to_string(ctx.config.rate_limit_rps) +
                   " requests per second from this client; retry after " + std::to_string(wait) + " s",
-              {{"", "rate limit", "", 0, 0}});
+              {{"", "rate limit"}});
       e.retry_after_s = wait;
       return e;
     }

@@ -41,7 +41,7 @@ Json field_errors_json(const std::vector<FieldError>& errors) {
 
 Result<Json> json_body(const std::string& body) {
   if (body.empty())
-    return fail(ErrorCode::kBadRequest, "the request needs a JSON body", {{"", "empty body", "", 0, 0}});
+    return fail(ErrorCode::kBadRequest, "the request needs a JSON body", {{"", "empty body"}});
   return parse_json_untrusted(body);
 }
 

@@ -92,7 +92,7 @@ Status llm_available(const RouteContext& ctx) {
   return fail(
       ErrorCode::kValidation,
       "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
-      {FieldError{"/generator", "must be offline on this server", {}, 0, 0}});
+      {FieldError{"/generator", "must be offline on this server"}});
 }
 
 hh::LlmSettings llm_settings(RouteContext& ctx, llm::StructuredGenerator& gen, const JobContext& job,
@@ -234,20 +234,13 @@ void household_routes(Router& http, RouteContext& ctx) {
           if (std::none_of(personas->begin(), personas->end(), [&](const hh::Persona& p) {
                 return hh::persona_id(p) == request->resident_ids[i];
               }))
-            problems.errors.push_back({"/residents/" + std::to_string(i),
-                                       "no persona '" + request->resident_ids[i] + "'",
-                                       {},
-                                       0,
-                                       0});
+            problems.errors.push_back(
+                {"/residents/" + std::to_string(i), "no persona '" + request->resident_ids[i] + "'"});
         const int bedrooms =
             std::min<int>(4, static_cast<int>(house->rooms_of(hh::RoomType::kBedroom).size()));
         if (request->resident_count > bedrooms)
-          problems.errors.push_back(
-              {"/residents",
-               "this house has room for " + std::to_string(bedrooms) + " residents (one bedroom each)",
-               {},
-               0,
-               0});
+          problems.errors.push_back({"/residents", "this house has room for " + std::to_string(bedrooms) +
+                                                       " residents (one bedroom each)"});
         if (!problems.errors.empty()) return reply_problem(res, problems, req.path);
 
         const hh::HouseholdRequest r = *request;

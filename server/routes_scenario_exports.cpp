@@ -33,19 +33,11 @@ Result<Scenario> card_scenario(const cards::Card& card) {
   const cards::CardContent& c = card.content;
   if (!c.world.is_object() || !c.program.is_object())
     return fail(ErrorCode::kValidation, "card " + card.id + " has no world and program to export",
-                {FieldError{c.world.is_object() ? "/program" : "/world", "missing", {}, 0, 0}});
+                {FieldError{c.world.is_object() ? "/program" : "/world", "missing"}});
   auto w = world::world_from_document(c.world);
-  if (!w) {
-    Error e = w.error();
-    for (FieldError& f : e.errors) f.pointer = "/world" + f.pointer;
-    return tl::unexpected(e);
-  }
+  if (!w) return tl::unexpected(Error(w.error()).under("/world"));
   auto p = crowd::program_from_json(c.program);
-  if (!p) {
-    Error e = p.error();
-    for (FieldError& f : e.errors) f.pointer = "/program" + f.pointer;
-    return tl::unexpected(e);
-  }
+  if (!p) return tl::unexpected(Error(p.error()).under("/program"));
   return Scenario{std::move(*w), std::move(*p)};
 }
 
@@ -77,7 +69,7 @@ void export_routes(Router& http, RouteContext& ctx) {
       if (!log.is_object() || !log.contains("sha256") || !log["sha256"].is_string())
         return reply_problem(res,
                              Error(ErrorCode::kNotFound, "card " + id + " has no trajectory log",
-                                   {FieldError{"/trajectory_log", "missing", {}, 0, 0}}),
+                                   {FieldError{"/trajectory_log", "missing"}}),
                              req.path);
       auto loaded = scenario::load_trajectory_log(ctx.store, log["sha256"].get<std::string>());
       if (!loaded) return reply_problem(res, loaded.error(), req.path);

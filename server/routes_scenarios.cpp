@@ -30,13 +30,6 @@ scenario::ScenarioConfig scenario_config(const ServerConfig& config) {
   return c;
 }
 
-// Errors of a nested document get the request field's pointer in front.
-Error nested(Error e, const std::string& prefix) {
-  for (auto& f : e.errors) f.pointer = prefix + f.pointer;
-  if (e.errors.empty()) e.errors.push_back({prefix, e.detail, "", 0, 0});
-  return e;
-}
-
 // The world the request names (inline or by id); nullopt when it is to be laid out.
 Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
                                                            const scenario::ScenarioRequest& r) {
@@ -46,7 +39,7 @@ Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
                                         : world::world_from_document(*r.world).map([](world::World built) {
                                             return world::WorldReading{std::move(built), {}};
                                           });
-    if (!w) return tl::unexpected(nested(w.error(), "/world"));
+    if (!w) return tl::unexpected(Error(w.error()).within("/world"));
     std::vector<std::string> names;
     for (const auto& z : w->world.zones()) names.push_back(z.name + " " + z.type);
     std::string domain = r.domain ? *r.domain : knowledge::classify_building_type(names).type;
@@ -61,7 +54,7 @@ Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
       Error e = stored.error();
       if (e.code == ErrorCode::kNotFound) {
         e.code = ErrorCode::kValidation;
-        e.errors = {{"/world_id", "no world with this id", "", 0, 0}};
+        e.errors = {{"/world_id", "no world with this id"}};
       }
       return tl::unexpected(e);
     }
@@ -92,7 +85,7 @@ void scenario_routes(Router& http, RouteContext& ctx) {
                                Error(ErrorCode::kValidation,
                                      "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the "
                                      "offline generator is available",
-                                     {{"/generator", "must be offline on this server", "", 0, 0}}),
+                                     {{"/generator", "must be offline on this server"}}),
                                req.path);
         auto world = given_world(ctx, *request);
         if (!world) return reply_problem(res, world.error(), req.path);
@@ -134,7 +127,7 @@ void scenario_routes(Router& http, RouteContext& ctx) {
                    if (!body->is_object())
                      return reply_problem(res,
                                           Error(ErrorCode::kValidation, "the request must be a JSON object",
-                                                {{"", "expected an object", "", 0, 0}}),
+                                                {{"", "expected an object"}}),
                                           req.path);
                    c.only_keys(*body, "", {"prompt"});
                    // Emptiness and length are the prompt check's, with its messages.
@@ -164,35 +157,34 @@ void scenario_routes(Router& http, RouteContext& ctx) {
     res.set_content(*blob, "application/vnd.socsim.trajectory+zlib");
   });
 
-  post_with_body(
-      http, kReplayPath, ctx.config.max_body_bytes,
-      [&ctx](const Request& req, Response& res, const std::string&) {
-        const std::string card_id = req.matches[1];
-        auto card = ctx.catalogue.get(card_id);
-        if (!card) return reply_problem(res, card.error(), req.path);
-        if (!card->content.trajectory_log.is_object())
-          return reply_problem(
-              res,
-              Error(ErrorCode::kValidation, "the card has no trajectory log to replay",
-                    {{"/trajectory_log", "only scenario cards (POST /api/v1/scenarios) replay", "", 0, 0}}),
-              req.path);
-        auto id = ctx.jobs.submit(
-            "scenario.replay", Json{{"card_id", card_id}}, ctx.author(req),
-            [content = card->content, card_id](const JobContext& job) -> Result<Json> {
-              auto out = scenario::replay_card(
-                  content, [&job](double f, const std::string& m) { job.progress(f, m); },
-                  job.cancel_token());
-              if (!out) return tl::unexpected(out.error());
-              const std::string expected = content.trajectory_log.value("sha256", "");
-              return Json{{"card_id", card_id},
-                          {"expected_sha256", expected},
-                          {"sha256", out->log.sha256()},
-                          {"identical", out->log.sha256() == expected},
-                          {"frames", out->log.frame_count()}};
-            },
-            ctx.client(req));
-        ctx.reply_job_accepted(res, id, req.path);
-      });
+  post_with_body(http, kReplayPath, ctx.config.max_body_bytes,
+                 [&ctx](const Request& req, Response& res, const std::string&) {
+                   const std::string card_id = req.matches[1];
+                   auto card = ctx.catalogue.get(card_id);
+                   if (!card) return reply_problem(res, card.error(), req.path);
+                   if (!card->content.trajectory_log.is_object())
+                     return reply_problem(
+                         res,
+                         Error(ErrorCode::kValidation, "the card has no trajectory log to replay",
+                               {{"/trajectory_log", "only scenario cards (POST /api/v1/scenarios) replay"}}),
+                         req.path);
+                   auto id = ctx.jobs.submit(
+                       "scenario.replay", Json{{"card_id", card_id}}, ctx.author(req),
+                       [content = card->content, card_id](const JobContext& job) -> Result<Json> {
+                         auto out = scenario::replay_card(
+                             content, [&job](double f, const std::string& m) { job.progress(f, m); },
+                             job.cancel_token());
+                         if (!out) return tl::unexpected(out.error());
+                         const std::string expected = content.trajectory_log.value("sha256", "");
+                         return Json{{"card_id", card_id},
+                                     {"expected_sha256", expected},
+                                     {"sha256", out->log.sha256()},
+                                     {"identical", out->log.sha256() == expected},
+                                     {"frames", out->log.frame_count()}};
+                       },
+                       ctx.client(req));
+                   ctx.reply_job_accepted(res, id, req.path);
+                 });
 }
 
 }  // namespace

@@ -15,14 +15,9 @@ namespace {
 
 constexpr const char* kSimulationPath = R"(/api/v1/simulations/([^/]+))";
 
-Error under_pointer(Error e, const std::string& prefix) {
-  for (FieldError& f : e.errors) f.pointer = prefix + f.pointer;
-  return e;
-}
-
 Error field_error(ErrorCode code, const std::string& detail, const std::string& pointer,
                   const std::string& message) {
-  return Error(code, detail, {FieldError{pointer, message, {}, 0, 0}});
+  return Error(code, detail, {FieldError{pointer, message}});
 }
 
 Json with_urls(RouteContext& ctx, const Request& req, Json status) {
@@ -60,7 +55,7 @@ Result<std::shared_ptr<const world::World>> session_world(RouteContext& ctx, con
   if (!body.contains("world")) return std::shared_ptr<const world::World>();
   const Json& doc = body["world"];
   auto w = doc.is_string() ? world::world_from_yaml(doc.get<std::string>()) : world::world_from_document(doc);
-  if (!w) return tl::unexpected(under_pointer(w.error(), "/world"));
+  if (!w) return tl::unexpected(Error(w.error()).under("/world"));
   return std::make_shared<const world::World>(std::move(*w));
 }
 
@@ -70,10 +65,7 @@ Status no_tree_files(const crowd::Program& p) {
   auto check = [&](const std::optional<crowd::ProgramTree>& t) {
     if (t && !t->file.empty())
       errors.push_back({"/program" + t->pointer + "/file",
-                        "the server reads no files; give the behaviour tree inline as 'xml'",
-                        {},
-                        0,
-                        0});
+                        "the server reads no files; give the behaviour tree inline as 'xml'"});
   };
   for (const auto& [name, tree] : p.behavior_trees) check(tree);
   for (const auto& a : p.agents) check(a.behavior);
@@ -89,7 +81,7 @@ Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, cons
         field_error(ErrorCode::kValidation, "the body is an object", "", "must be an object"));
   std::vector<FieldError> errors;
   auto add = [&](const std::string& pointer, const std::string& message) {
-    errors.push_back({pointer, message, {}, 0, 0});
+    errors.push_back({pointer, message});
   };
   for (const auto& [key, v] : body.items())
     if (key != "program" && key != "world" && key != "world_id" && key != "seed" && key != "speed" &&
@@ -155,7 +147,7 @@ Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, cons
   auto world = session_world(ctx, body);
   if (!world) return tl::unexpected(world.error());
   auto program = crowd::program_from_json(body["program"]);
-  if (!program) return tl::unexpected(under_pointer(program.error(), "/program"));
+  if (!program) return tl::unexpected(Error(program.error()).under("/program"));
   if (auto s = no_tree_files(*program); !s) return tl::unexpected(s.error());
   ProgramSessionRequest r;
   r.world = std::move(*world);

@@ -164,7 +164,7 @@ Status llm_available(const RouteContext& ctx) {
   return fail(
       ErrorCode::kValidation,
       "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
-      {FieldError{"/generator", "must be offline on this server", {}, 0, 0}});
+      {FieldError{"/generator", "must be offline on this server"}});
 }
 
 // Building type for checking a posted world: ?domain=, else classified from zone names and types.

@@ -255,18 +255,13 @@ std::size_t program_agent_count(const crowd::Program& p) {
   return n;
 }
 
-Error under_pointer(Error e, const std::string& prefix) {
-  for (FieldError& f : e.errors) f.pointer = prefix + f.pointer;
-  return e;
-}
-
 }  // namespace
 
 Status check_speed(double speed, const SimulationLimits& limits, const std::string& pointer) {
   if (std::isfinite(speed) && speed >= limits.min_speed && speed <= limits.max_speed) return {};
   std::ostringstream range;
   range << "must be a speed factor between " << limits.min_speed << " and " << limits.max_speed;
-  return fail(ErrorCode::kValidation, "speed out of range", {FieldError{pointer, range.str(), {}, 0, 0}});
+  return fail(ErrorCode::kValidation, "speed out of range", {FieldError{pointer, range.str()}});
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -441,16 +436,16 @@ void SimulationSession::detach(std::uint64_t viewer) {
 Result<Json> SimulationSession::control(const Json& command) {
   if (!command.is_object())
     return fail(ErrorCode::kValidation, "a control command is an object {action, value?}",
-                {FieldError{"", "must be an object", {}, 0, 0}});
+                {FieldError{"", "must be an object"}});
   std::vector<FieldError> errors;
   for (const auto& [key, v] : command.items())
     if (key != "action" && key != "value")
-      errors.push_back({"/" + json_pointer_token(key), "unknown field (expected action, value)", {}, 0, 0});
+      errors.push_back({"/" + json_pointer_token(key), "unknown field (expected action, value)"});
   static const std::vector<std::string> kActions = {"pause", "resume", "speed", "seek", "stop"};
   std::string action;
   if (!command.contains("action") || !command["action"].is_string() ||
       std::find(kActions.begin(), kActions.end(), command["action"].get<std::string>()) == kActions.end())
-    errors.push_back({"/action", "must be one of pause, resume, speed, seek, stop", {}, 0, 0});
+    errors.push_back({"/action", "must be one of pause, resume, speed, seek, stop"});
   else
     action = command["action"].get<std::string>();
   std::optional<double> value;
@@ -458,14 +453,11 @@ Result<Json> SimulationSession::control(const Json& command) {
     if (command["value"].is_number())
       value = command["value"].get<double>();
     else
-      errors.push_back({"/value", "must be a number", {}, 0, 0});
+      errors.push_back({"/value", "must be a number"});
   }
   if ((action == "speed" || action == "seek") && !value && errors.empty())
-    errors.push_back({"/value",
-                      action == "speed" ? "the new speed factor is needed" : "the time to seek to is needed",
-                      {},
-                      0,
-                      0});
+    errors.push_back(
+        {"/value", action == "speed" ? "the new speed factor is needed" : "the time to seek to is needed"});
   if (!errors.empty()) return fail(ErrorCode::kValidation, "bad control command", std::move(errors));
 
   std::unique_lock<std::mutex> lock(mutex_);
@@ -485,14 +477,12 @@ Result<Json> SimulationSession::control(const Json& command) {
     if (!source_->seekable())
       return fail(
           ErrorCode::kValidation, "seek works only in recorded (card) sessions",
-          {FieldError{
-              "/action", "this session runs a program live; only a card's recording can seek", {}, 0, 0}});
+          {FieldError{"/action", "this session runs a program live; only a card's recording can seek"}});
     const double end = info_.duration_s + start_time_;
     if (!std::isfinite(*value) || *value < start_time_ || *value > end) {
       std::ostringstream why;
       why << "must be a time between " << start_time_ << " and " << end << " s";
-      return fail(ErrorCode::kValidation, "seek time out of range",
-                  {FieldError{"/value", why.str(), {}, 0, 0}});
+      return fail(ErrorCode::kValidation, "seek time out of range", {FieldError{"/value", why.str()}});
     }
     seek_to_ = *value;
   } else if (action == "stop") {
@@ -720,28 +710,21 @@ Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_program(Pro
   if (auto s = check_speed(request.speed, limits_, "/speed"); !s) return tl::unexpected(s.error());
   const double duration = request.duration_s.value_or(limits_.max_duration_s);
   if (!std::isfinite(duration) || duration <= 0 || duration > limits_.max_duration_s)
-    return fail(
-        ErrorCode::kValidation, "duration out of range",
-        {FieldError{"/duration_s",
-                    "must be more than 0 and at most " + std::to_string(limits_.max_duration_s) + " s",
-                    {},
-                    0,
-                    0}});
+    return fail(ErrorCode::kValidation, "duration out of range",
+                {FieldError{"/duration_s", "must be more than 0 and at most " +
+                                               std::to_string(limits_.max_duration_s) + " s"}});
   const std::size_t agents = program_agent_count(request.program);
   if (agents > limits_.max_agents)
-    return fail(ErrorCode::kValidation, "too many agents for a live simulation",
-                {FieldError{"/program",
-                            "has " + std::to_string(agents) + " agents; this server simulates at most " +
-                                std::to_string(limits_.max_agents) + " live (--max-sim-agents)",
-                            {},
-                            0,
-                            0}});
+    return fail(
+        ErrorCode::kValidation, "too many agents for a live simulation",
+        {FieldError{"/program", "has " + std::to_string(agents) + " agents; this server simulates at most " +
+                                    std::to_string(limits_.max_agents) + " live (--max-sim-agents)"}});
   crowd::RunnerOptions options;
   options.seed = request.seed;
   options.threads = 1;
   options.record_metrics = false;
   auto runner = crowd::ScenarioRunner::create(request.world.get(), request.program, options);
-  if (!runner) return tl::unexpected(under_pointer(runner.error(), "/program"));
+  if (!runner) return tl::unexpected(Error(runner.error()).under("/program"));
   SessionInfo info;
   info.kind = "program";
   info.author = request.author;
@@ -757,19 +740,15 @@ Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_recording(
   if (auto s = check_speed(request.speed, limits_, "/speed"); !s) return tl::unexpected(s.error());
   if (request.log.frame_count() == 0)
     return fail(ErrorCode::kValidation, "the card's trajectory log has no frames",
-                {FieldError{"/card_id", "its recording is empty", {}, 0, 0}});
+                {FieldError{"/card_id", "its recording is empty"}});
   if (request.log.agent_count() > limits_.max_agents)
     return fail(ErrorCode::kValidation, "too many agents for a live simulation",
-                {FieldError{"/card_id",
-                            "the recording has " + std::to_string(request.log.agent_count()) +
-                                " agents; this server streams at most " + std::to_string(limits_.max_agents) +
-                                " (--max-sim-agents)",
-                            {},
-                            0,
-                            0}});
+                {FieldError{"/card_id", "the recording has " + std::to_string(request.log.agent_count()) +
+                                            " agents; this server streams at most " +
+                                            std::to_string(limits_.max_agents) + " (--max-sim-agents)"}});
   if (request.log.roles().size() > 255)
     return fail(ErrorCode::kValidation, "the recording names more roles than the wire format carries",
-                {FieldError{"/card_id", "more than 255 roles", {}, 0, 0}});
+                {FieldError{"/card_id", "more than 255 roles"}});
   SessionInfo info;
   info.kind = "card";
   info.author = request.author;

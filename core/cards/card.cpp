@@ -133,8 +133,7 @@ constexpr std::array<std::string_view, 13> kContentKeys = {
 
 Result<CardContent> parse_card_content(const Json& body, const CardLimits& limits) {
   if (!body.is_object())
-    return fail(ErrorCode::kValidation, "the card must be a JSON object",
-                {{"", "must be an object", "", 0, 0}});
+    return fail(ErrorCode::kValidation, "the card must be a JSON object", {{"", "must be an object"}});
   JsonChecker c;
   c.only_keys(body, "", kContentKeys);
   CardContent out;
@@ -145,8 +144,7 @@ Result<CardContent> parse_card_content(const Json& body, const CardLimits& limit
 
 Result<CardContent> merge_card_content(const CardContent& base, const Json& patch, const CardLimits& limits) {
   if (!patch.is_object())
-    return fail(ErrorCode::kValidation, "the new version must be a JSON object",
-                {{"", "must be an object", "", 0, 0}});
+    return fail(ErrorCode::kValidation, "the new version must be a JSON object", {{"", "must be an object"}});
   JsonChecker c;
   c.only_keys(patch, "", kContentKeys);
   CardContent out = base;
@@ -202,8 +200,7 @@ Json summary_json(const Card& card) {
 
 Result<Card> parse_card(const Json& json, const CardLimits& limits) {
   if (!json.is_object())
-    return fail(ErrorCode::kValidation, "a card must be a JSON object",
-                {{"", "must be an object", "", 0, 0}});
+    return fail(ErrorCode::kValidation, "a card must be a JSON object", {{"", "must be an object"}});
   JsonChecker c;
   c.only_keys(json, "",
               {"title", "description", "tags", "prompt", "seed", "generator", "domain", "world", "program",
@@ -229,7 +226,7 @@ Result<Card> parse_card(const Json& json, const CardLimits& limits) {
   card.content_hash = content_hash(card.content, card.version, card.parent_id);
   if (*hash != card.content_hash) {
     return fail(ErrorCode::kValidation, "content hash mismatch: the card was changed after it was exported",
-                {{"/content_hash", "expected " + card.content_hash, "", 0, 0}});
+                {{"/content_hash", "expected " + card.content_hash}});
   }
   return card;
 }
@@ -252,19 +249,18 @@ Result<Card> parse_export_document(std::string_view text, const CardLimits& limi
   if (!doc->is_object() || !doc->contains("socsim_card_export") || !doc->contains("card"))
     return fail(ErrorCode::kValidation,
                 "not a socsim card export (expected {\"socsim_card_export\": 1, \"card\": {...}})",
-                {{"", "missing socsim_card_export or card", "", 0, 0}});
+                {{"", "missing socsim_card_export or card"}});
   for (const auto& [key, value] : doc->items())
     if (key != "socsim_card_export" && key != "card")
       return fail(ErrorCode::kValidation, "unknown field in a card export",
-                  {{"/" + json_pointer_token(key), "unknown field (expected socsim_card_export and card)", "",
-                    0, 0}});
+                  {{"/" + json_pointer_token(key), "unknown field (expected socsim_card_export and card)"}});
   if ((*doc)["socsim_card_export"] != kExportFormat)
     return fail(ErrorCode::kValidation, "unsupported export format",
-                {{"/socsim_card_export", "this build reads format 1", "", 0, 0}});
+                {{"/socsim_card_export", "this build reads format 1"}});
   auto card = parse_card((*doc)["card"], limits);
   if (!card) {
     Error e = card.error();
-    for (auto& fe : e.errors) fe.pointer = "/card" + fe.pointer;
+    e.under("/card");
     return tl::unexpected(e);
   }
   return card;

@@ -234,7 +234,7 @@ Result<ImportOutcome> CardCatalogue::import_card(const Card& card) {
       if ((*existing)->content_hash == card.content_hash) return ImportOutcome{std::move(**existing), false};
       return fail(ErrorCode::kConflict,
                   "a different card with id '" + card.id + "' is already in the catalogue",
-                  {{"/card/id", "already used by a card with another content hash", "", 0, 0}});
+                  {{"/card/id", "already used by a card with another content hash"}});
     }
     if (auto s = insert_card(db, card); !s) return tl::unexpected(s.error());
     return ImportOutcome{card, true};

@@ -49,6 +49,25 @@ struct FieldError {
   std::string parameter;  // query parameter name, when the error is about one
   int line = 0;           // 1-based, when known (JSON or YAML text)
   int column = 0;
+
+  FieldError() = default;
+  // The usual case: a pointer into the body and what is wrong there.
+  FieldError(std::string pointer_, std::string message_)
+      : pointer(std::move(pointer_)), message(std::move(message_)) {}
+  FieldError(std::string pointer_, std::string message_, std::string parameter_, int line_, int column_)
+      : pointer(std::move(pointer_)),
+        message(std::move(message_)),
+        parameter(std::move(parameter_)),
+        line(line_),
+        column(column_) {}
+  // About a query parameter.
+  static FieldError query(std::string name, std::string message_) {
+    return FieldError{{}, std::move(message_), std::move(name), 0, 0};
+  }
+  // At a line and column of a document (JSON or YAML text).
+  static FieldError at(std::string pointer_, std::string message_, int line_, int column_) {
+    return FieldError{std::move(pointer_), std::move(message_), {}, line_, column_};
+  }
 };
 
 struct Error {
@@ -60,6 +79,27 @@ struct Error {
   Error() = default;
   Error(ErrorCode c, std::string d, std::vector<FieldError> e = {})
       : code(c), detail(std::move(d)), errors(std::move(e)) {}
+
+  // The same error one level down: every field pointer gets `prefix` in front ("/world" + "/zones/0").
+  Error& under(std::string_view prefix) & {
+    for (FieldError& f : errors) f.pointer.insert(0, prefix);
+    return *this;
+  }
+  Error under(std::string_view prefix) && {
+    under(prefix);
+    return std::move(*this);
+  }
+  // As under(), and an error without fields gets one at `prefix` saying its detail (a nested
+  // document that failed as a whole).
+  Error& within(std::string_view prefix) & {
+    under(prefix);
+    if (errors.empty()) errors.emplace_back(std::string(prefix), detail);
+    return *this;
+  }
+  Error within(std::string_view prefix) && {
+    within(prefix);
+    return std::move(*this);
+  }
 
   [[nodiscard]] int status() const { return error_info(code).http_status; }
   // RFC 9457 problem document.

@@ -15,7 +15,7 @@ class JsonChecker {
  public:
   // Records a problem at `pointer`.
   void add(std::string pointer, std::string message) {
-    errors_.push_back(FieldError{std::move(pointer), std::move(message), {}, 0, 0});
+    errors_.push_back(FieldError{std::move(pointer), std::move(message)});
   }
   [[nodiscard]] bool ok() const { return errors_.empty(); }
   [[nodiscard]] const std::vector<FieldError>& errors() const { return errors_; }

@@ -111,11 +111,11 @@ Result<Json> parse_json_untrusted(std::string_view text, int max_depth) {
     Json j = Json::parse(text.begin(), text.end(), cb, /*allow_exceptions=*/true, /*ignore_comments=*/false);
     if (too_deep) {
       return fail(ErrorCode::kBadRequest, "JSON nesting deeper than " + std::to_string(max_depth) + " levels",
-                  {FieldError{"", "nesting too deep", "", 0, 0}});
+                  {FieldError{"", "nesting too deep"}});
     }
     if (duplicate) {
       return fail(ErrorCode::kBadRequest, "the JSON names a key twice in one object, at " + *duplicate,
-                  {FieldError{*duplicate, "duplicate key", "", 0, 0}});
+                  {FieldError{*duplicate, "duplicate key"}});
     }
     return j;
   } catch (const Json::parse_error& e) {

@@ -182,9 +182,7 @@ class SchemaCompiler {
   std::vector<FieldError> errors;
 
  private:
-  void add(const std::string& ptr, std::string msg) {
-    errors.push_back(FieldError{ptr, std::move(msg), {}, 0, 0});
-  }
+  void add(const std::string& ptr, std::string msg) { errors.push_back(FieldError{ptr, std::move(msg)}); }
 
   void type(const Json& v, const std::string& ptr) {
     if (v.is_string()) {
@@ -225,7 +223,7 @@ class SchemaValidation {
  private:
   void add(const std::string& ptr, std::string msg) {
     if (errors.size() < max_errors_)
-      errors.push_back(FieldError{ptr, std::move(msg), {}, 0, 0});
+      errors.push_back(FieldError{ptr, std::move(msg)});
     else
       ++dropped;
   }
@@ -468,7 +466,7 @@ std::vector<FieldError> JsonSchema::validate(const Json& instance, std::size_t m
   SchemaValidation v(*this, std::max<std::size_t>(1, max_errors));
   v.run(*document_, instance, "", 0);
   if (v.dropped > 0)
-    v.errors.push_back(FieldError{"", "… and " + std::to_string(v.dropped) + " more problems", {}, 0, 0});
+    v.errors.push_back(FieldError{"", "… and " + std::to_string(v.dropped) + " more problems"});
   return std::move(v.errors);
 }
 

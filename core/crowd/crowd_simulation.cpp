@@ -53,7 +53,7 @@ bool finite_in_range(double v, double limit) {
 }
 
 FieldError field(std::string pointer, std::string message) {
-  return FieldError{std::move(pointer), std::move(message), {}, 0, 0};
+  return FieldError{std::move(pointer), std::move(message)};
 }
 
 double wrap_angle(double a) {

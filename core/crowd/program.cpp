@@ -180,7 +180,7 @@ Result<Program> program_from_json(const Json& j) {
   Reader r;
   JsonChecker& c = r.c;
   if (!j.is_object())
-    return fail(ErrorCode::kValidation, "invalid program", {FieldError{"", "must be an object", {}, 0, 0}});
+    return fail(ErrorCode::kValidation, "invalid program", {FieldError{"", "must be an object"}});
   c.only_keys(j, "",
               {"$schema", "version", "name", "dt", "decision_period", "roles", "behavior_trees", "agents",
                "groups", "ambient_groups", "robot", "body_stiffness"});

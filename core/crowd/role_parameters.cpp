@@ -201,7 +201,7 @@ Status RoleTable::put(RoleParameters r) {
 Status RoleTable::apply_json(const Json& roles, const std::string& pointer) {
   if (!roles.is_object())
     return fail(ErrorCode::kValidation, "invalid roles",
-                {FieldError{pointer, std::string("must be an object, not ") + roles.type_name(), {}, 0, 0}});
+                {FieldError{pointer, std::string("must be an object, not ") + roles.type_name()}});
   std::vector<FieldError> errors;
   RoleTable next = *this;
   for (const auto& [name, body] : roles.items()) {
@@ -215,7 +215,7 @@ Status RoleTable::apply_json(const Json& roles, const std::string& pointer) {
       continue;
     }
     if (parsed->name != name) {
-      errors.push_back(FieldError{p + "/name", "must equal the key '" + name + "'", {}, 0, 0});
+      errors.push_back(FieldError{p + "/name", "must equal the key '" + name + "'"});
       continue;
     }
     (void)next.put(std::move(*parsed));

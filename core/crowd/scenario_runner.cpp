@@ -34,8 +34,7 @@ std::string ambient_tree(const std::string& field, double tolerance) {
 
 // Prefixes every field error of `e` with the program pointer (keeps XML lines and columns).
 Error at_pointer(Error e, const std::string& pointer) {
-  for (FieldError& f : e.errors) f.pointer = pointer + f.pointer;
-  if (e.errors.empty()) e.errors.push_back(FieldError{pointer, e.detail, {}, 0, 0});
+  e.within(pointer);
   e.detail = pointer + ": " + e.detail;
   return e;
 }
@@ -46,7 +45,7 @@ class Builder {
       : world_(world), program_(program), options_(options), spawn_rng_(options.seed ^ fnv1a64("spawn")) {}
 
   void error(const std::string& pointer, const std::string& message) {
-    errors_.push_back(FieldError{pointer, message, {}, 0, 0});
+    errors_.push_back(FieldError{pointer, message});
   }
   void error(const Error& e, const std::string& pointer) {
     for (const FieldError& f : at_pointer(e, pointer).errors) errors_.push_back(f);

@@ -15,7 +15,7 @@ namespace socsim::crowd {
 namespace {
 
 FieldError field(std::string pointer, std::string message) {
-  return FieldError{std::move(pointer), std::move(message), {}, 0, 0};
+  return FieldError{std::move(pointer), std::move(message)};
 }
 
 constexpr int kMaxCells = 4096;  // per axis

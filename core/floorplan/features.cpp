@@ -348,8 +348,7 @@ Status apply_room_requirements(SceneGraph& g, const WorldRequirements& r, bool g
       errors.push_back({"/requirements/rooms/" + std::to_string(i),
                         "the scene graph has " + std::to_string(have) + " room" + (have == 1 ? "" : "s") +
                             " of type '" + type + "' for '" + room.name + "' (" + std::to_string(room.count) +
-                            " asked for); add them to the scene graph",
-                        "", 0, 0});
+                            " asked for); add them to the scene graph"});
       continue;
     }
     add(type, find_room_type(type) ? type : snake_case(room.name), room.count - have);
@@ -367,8 +366,7 @@ Status apply_room_requirements(SceneGraph& g, const WorldRequirements& r, bool g
       errors.push_back({"/requirements/features/" + std::to_string(i),
                         "the scene graph has " + std::to_string(have) + " rooms of type '" + type + "' but " +
                             std::to_string(fc.count) + " " + std::string(info(fc.feature).plural) +
-                            " are asked for",
-                        "", 0, 0});
+                            " are asked for"});
       continue;
     }
     if (have < fc.count) {
@@ -392,10 +390,9 @@ Status apply_room_requirements(SceneGraph& g, const WorldRequirements& r, bool g
     }
   }
   if (g.rooms.size() > kMaxSceneRooms)
-    errors.push_back({"/requirements",
-                      "the requirements bring the plan to " + std::to_string(g.rooms.size()) +
-                          " rooms; at most " + std::to_string(kMaxSceneRooms),
-                      "", 0, 0});
+    errors.push_back({"/requirements", "the requirements bring the plan to " +
+                                           std::to_string(g.rooms.size()) + " rooms; at most " +
+                                           std::to_string(kMaxSceneRooms)});
   if (!errors.empty())
     return fail(ErrorCode::kValidation, "the scene graph does not hold what the requirements ask for",
                 std::move(errors));

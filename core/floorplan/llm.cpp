@@ -82,21 +82,16 @@ Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& g
   // The scene graph: every room present, every edge a door, a way in.
   for (std::size_t i = 0; i < graph.rooms.size(); ++i)
     if (!room_index.count(graph.rooms[i].name))
-      errors.push_back(
-          {"/rooms",
-           "room '" + graph.rooms[i].name + "' (" + graph.rooms[i].type + ") of the scene graph is missing",
-           "", 0, 0});
+      errors.push_back({"/rooms", "room '" + graph.rooms[i].name + "' (" + graph.rooms[i].type +
+                                      ") of the scene graph is missing"});
   for (const auto& [a, b] : graph.adjacency)
     if (room_index.count(a) && room_index.count(b) && !connected.count(std::minmax(a, b)))
-      errors.push_back({"/doors",
-                        "no door connects '" + a + "' and '" + b +
-                            "': the scene graph says they are adjacent; give them a shared wall with a door",
-                        "", 0, 0});
+      errors.push_back(
+          {"/doors", "no door connects '" + a + "' and '" + b +
+                         "': the scene graph says they are adjacent; give them a shared wall with a door"});
   if (!entrance)
-    errors.push_back({"/doors",
-                      "no entrance: add a door with one room (the entrance room '" + graph.entrance +
-                          "') on an outer wall",
-                      "", 0, 0});
+    errors.push_back({"/doors", "no entrance: add a door with one room (the entrance room '" +
+                                    graph.entrance + "') on an outer wall"});
 
   // Geometry first (so that problems point at rooms and doors), then the furnished world.
   WorldBuilder bare;
@@ -105,8 +100,7 @@ Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& g
   for (const auto& d : doors) bare.add_door(d);
   auto checked = bare.build(build);
   if (!checked) {
-    for (const auto& e : checked.error().errors)
-      errors.push_back({answer_pointer(e.pointer), e.message, "", 0, 0});
+    for (const auto& e : checked.error().errors) errors.push_back({answer_pointer(e.pointer), e.message});
   }
   if (!errors.empty())
     return fail(ErrorCode::kValidation, "the floor plan is not a valid world", std::move(errors));
@@ -129,12 +123,11 @@ Result<FloorPlan> floor_plan_from_answer(const Json& answer, const SceneGraph& g
     for (std::size_t i = 0; i < doors.size() && where.empty(); ++i)
       if (doors[i].name == c->element) where = "/doors/" + std::to_string(i) + "/width";
     const std::string bound = c->type == "max" ? "at most " : "at least ";
-    errors.push_back(
-        {where,
-         c->name + " (" + c->ref_id + (c->section.empty() ? "" : ", " + c->section) + "): " + c->element +
-             " has " + (c->value ? compact_number(*c->value) : std::string("none")) + " " + c->unit +
-             ", must be " + bound + compact_number(c->required) + " " + c->unit + " — " + c->detail,
-         "", 0, 0});
+    errors.push_back({where, c->name + " (" + c->ref_id + (c->section.empty() ? "" : ", " + c->section) +
+                                 "): " + c->element + " has " +
+                                 (c->value ? compact_number(*c->value) : std::string("none")) + " " +
+                                 c->unit + ", must be " + bound + compact_number(c->required) + " " +
+                                 c->unit + " — " + c->detail});
   }
   if (!errors.empty())
     return fail(ErrorCode::kValidation, "the floor plan breaks building-code constraints", std::move(errors));

@@ -236,24 +236,20 @@ class Layout {
       const std::string ptr = "/adjacency/" + std::to_string(e);
       for (std::size_t r : {a, b})
         if (neighbours_[r].size() == 2) {
-          errors.push_back({ptr,
-                            "room '" + graph_.rooms[r].name + "' must already share walls with '" +
-                                graph_.rooms[neighbours_[r][0]].name + "' and '" +
-                                graph_.rooms[neighbours_[r][1]].name +
-                                "'; the offline layout puts at most two rooms beside a room on the " +
-                                graph_.rooms[*circ_].type + " — connect the others through '" +
-                                graph_.rooms[*circ_].name + "'",
-                            "", 0, 0});
+          errors.push_back({ptr, "room '" + graph_.rooms[r].name + "' must already share walls with '" +
+                                     graph_.rooms[neighbours_[r][0]].name + "' and '" +
+                                     graph_.rooms[neighbours_[r][1]].name +
+                                     "'; the offline layout puts at most two rooms beside a room on the " +
+                                     graph_.rooms[*circ_].type + " — connect the others through '" +
+                                     graph_.rooms[*circ_].name + "'"});
         }
       if (!errors.empty()) break;
       if (root(a) == root(b)) {
         errors.push_back(
-            {ptr,
-             "rooms '" + graph_.rooms[a].name + "' and '" + graph_.rooms[b].name +
-                 "' would close a ring of rooms, which the offline layout cannot place; connect one "
-                 "of them through '" +
-                 graph_.rooms[*circ_].name + "'",
-             "", 0, 0});
+            {ptr, "rooms '" + graph_.rooms[a].name + "' and '" + graph_.rooms[b].name +
+                      "' would close a ring of rooms, which the offline layout cannot place; connect one "
+                      "of them through '" +
+                      graph_.rooms[*circ_].name + "'"});
         break;
       }
       parent[root(a)] = root(b);
@@ -1086,7 +1082,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
                                       const OfflineOptions& options) {
   if (graph.rooms.empty())
     return fail(ErrorCode::kValidation, "the scene graph has no rooms",
-                {{"/rooms", "needs at least one room", "", 0, 0}});
+                {{"/rooms", "needs at least one room"}});
   Layout layout(graph, constraints);
   if (auto s = layout.prepare(); !s) return tl::unexpected(s.error());
   layout.choose_family(options.seed);
@@ -1305,12 +1301,10 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
   std::vector<FieldError> errors;
   if (last_report)
     for (const auto* c : last_report->failures())
-      errors.push_back({"",
-                        c->name + " (" + c->ref_id + "): " + c->element + " has " +
-                            (c->value ? std::to_string(*c->value) : std::string("nothing")) + " " + c->unit +
-                            ", required " + std::to_string(c->required),
-                        "", 0, 0});
-  for (const auto& u : last_unmet) errors.push_back({"/requirements", u, "", 0, 0});
+      errors.push_back({"", c->name + " (" + c->ref_id + "): " + c->element + " has " +
+                                (c->value ? std::to_string(*c->value) : std::string("nothing")) + " " +
+                                c->unit + ", required " + std::to_string(c->required)});
+  for (const auto& u : last_unmet) errors.push_back({"/requirements", u});
   if (last_error)
     for (const auto& e : last_error->errors) errors.push_back(e);
   std::string detail = "no compliant plan after " + std::to_string(attempts) + " attempts";

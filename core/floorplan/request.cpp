@@ -57,9 +57,8 @@ Result<ResolvedSceneGraph> resolve_scene_graph(const FloorPlanRequest& request) 
     if (!g) return tl::unexpected(g.error());
     const bool had_domain = request.scene_graph->contains("domain");
     if (request.domain && had_domain && g->domain != *request.domain)
-      return fail(
-          ErrorCode::kValidation, "the domain and the scene graph's domain disagree",
-          {{"/domain", "is " + *request.domain + " but /scene_graph/domain is " + g->domain, "", 0, 0}});
+      return fail(ErrorCode::kValidation, "the domain and the scene graph's domain disagree",
+                  {{"/domain", "is " + *request.domain + " but /scene_graph/domain is " + g->domain}});
     if (request.domain) g->domain = *request.domain;
     out.classification = had_domain || request.domain
                              ? Json{{"given", true}, {"type", g->domain}}
@@ -71,7 +70,7 @@ Result<ResolvedSceneGraph> resolve_scene_graph(const FloorPlanRequest& request) 
   }
   if (!request.prompt)
     return fail(ErrorCode::kValidation, "the world request has neither scene_graph nor prompt",
-                {{"", "give scene_graph or prompt", "", 0, 0}});
+                {{"", "give scene_graph or prompt"}});
   auto p = scene_graph_from_prompt(*request.prompt, request.domain);
   if (!p) return tl::unexpected(p.error());
   out.graph = std::move(p->graph);

@@ -429,17 +429,15 @@ SceneGraph room_program(std::string_view domain, const std::map<std::string, int
 
 Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::optional<std::string> domain) {
   if (prompt.find_first_not_of(" \t\r\n") == std::string_view::npos)
-    return fail(ErrorCode::kValidation, "describe the building",
-                {{"/prompt", "must not be empty", "", 0, 0}});
+    return fail(ErrorCode::kValidation, "describe the building", {{"/prompt", "must not be empty"}});
   if (prompt.size() > 4000)
-    return fail(ErrorCode::kValidation, "prompt too long", {{"/prompt", "at most 4000 bytes", "", 0, 0}});
+    return fail(ErrorCode::kValidation, "prompt too long", {{"/prompt", "at most 4000 bytes"}});
   PromptSceneGraph out;
   out.classification = knowledge::classify_building_type(prompt);
   if (domain && !knowledge::is_building_type(*domain)) {
     std::string all;
     for (auto t : knowledge::building_types()) all += (all.empty() ? "" : ", ") + std::string(t);
-    return fail(ErrorCode::kValidation, "unknown domain '" + *domain + "'",
-                {{"/domain", "one of " + all, "", 0, 0}});
+    return fail(ErrorCode::kValidation, "unknown domain '" + *domain + "'", {{"/domain", "one of " + all}});
   }
   const std::string d = domain ? *domain : out.classification.type;
 
@@ -480,10 +478,8 @@ Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::o
     if (n) {
       if (*n > kMaxRoomsPerType)
         return fail(ErrorCode::kValidation, "too many rooms of one type",
-                    {{"/prompt",
-                      "asks for " + std::to_string(*n) + " rooms of type " + type + "; at most " +
-                          std::to_string(kMaxRoomsPerType),
-                      "", 0, 0}});
+                    {{"/prompt", "asks for " + std::to_string(*n) + " rooms of type " + type + "; at most " +
+                                     std::to_string(kMaxRoomsPerType)}});
       if (counted.insert(type).second) counts[type] = *n;
     } else if (!counts.count(type)) {
       counts[type] = -1;  // mentioned without a number: present at least once
@@ -509,10 +505,8 @@ Result<PromptSceneGraph> scene_graph_from_prompt(std::string_view prompt, std::o
   out.graph = room_program(d, counts);
   if (out.graph.rooms.size() > kMaxSceneRooms)
     return fail(ErrorCode::kValidation, "too many rooms",
-                {{"/prompt",
-                  "describes " + std::to_string(out.graph.rooms.size()) + " rooms; at most " +
-                      std::to_string(kMaxSceneRooms),
-                  "", 0, 0}});
+                {{"/prompt", "describes " + std::to_string(out.graph.rooms.size()) + " rooms; at most " +
+                                 std::to_string(kMaxSceneRooms)}});
   return out;
 }
 
@@ -532,10 +526,8 @@ Result<SceneGraph> scene_graph_from_json(const Json& j, const std::string& point
     if (rooms[i].contains("area")) r.area = rooms[i].at("area").get<double>();
     const std::string ptr = pointer + "/rooms/" + std::to_string(i);
     if (auto [it, fresh] = index.emplace(r.name, i); !fresh)
-      errors.push_back({ptr + "/name",
-                        "duplicate room name '" + r.name + "' (already " + pointer + "/rooms/" +
-                            std::to_string(it->second) + ")",
-                        "", 0, 0});
+      errors.push_back({ptr + "/name", "duplicate room name '" + r.name + "' (already " + pointer +
+                                           "/rooms/" + std::to_string(it->second) + ")"});
     g.rooms.push_back(std::move(r));
   }
   std::vector<std::vector<std::size_t>> neighbours(g.rooms.size());
@@ -550,17 +542,17 @@ Result<SceneGraph> scene_graph_from_json(const Json& j, const std::string& point
       for (int k = 0; k < 2; ++k) {
         const std::string& n = k == 0 ? a : b;
         if (!index.count(n)) {
-          errors.push_back({ptr + "/" + std::to_string(k), "no room is named '" + n + "'", "", 0, 0});
+          errors.push_back({ptr + "/" + std::to_string(k), "no room is named '" + n + "'"});
           ok = false;
         }
       }
       if (!ok) continue;
       if (a == b) {
-        errors.push_back({ptr, "an edge must join two different rooms (both are '" + a + "')", "", 0, 0});
+        errors.push_back({ptr, "an edge must join two different rooms (both are '" + a + "')"});
         continue;
       }
       if (!seen.insert(std::minmax(a, b)).second) {
-        errors.push_back({ptr, "duplicate edge between '" + a + "' and '" + b + "'", "", 0, 0});
+        errors.push_back({ptr, "duplicate edge between '" + a + "' and '" + b + "'"});
         continue;
       }
       g.adjacency.emplace_back(a, b);
@@ -571,7 +563,7 @@ Result<SceneGraph> scene_graph_from_json(const Json& j, const std::string& point
   if (j.contains("entrance")) {
     g.entrance = j.at("entrance").get<std::string>();
     if (!index.count(g.entrance))
-      errors.push_back({pointer + "/entrance", "no room is named '" + g.entrance + "'", "", 0, 0});
+      errors.push_back({pointer + "/entrance", "no room is named '" + g.entrance + "'"});
   }
   if (errors.empty() && g.rooms.size() > 1) {
     std::vector<bool> reached(g.rooms.size(), false);
@@ -590,8 +582,7 @@ Result<SceneGraph> scene_graph_from_json(const Json& j, const std::string& point
       if (!reached[i])
         errors.push_back({pointer + "/rooms/" + std::to_string(i),
                           "room '" + g.rooms[i].name + "' is not connected to '" + g.rooms[0].name +
-                              "' by any chain of adjacency edges, so it could not be reached",
-                          "", 0, 0});
+                              "' by any chain of adjacency edges, so it could not be reached"});
   }
   if (!errors.empty())
     return fail(ErrorCode::kValidation, "the scene graph is inconsistent", std::move(errors));

@@ -212,10 +212,10 @@ bool House::connected() const {
 Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& k) {
   if (req.rooms < 1 || req.rooms > 10)
     return fail(ErrorCode::kValidation, "a house has 1 to 10 rooms",
-                {FieldError{"/rooms", "must be between 1 and 10", {}, 0, 0}});
+                {FieldError{"/rooms", "must be between 1 and 10"}});
   if (req.bedrooms && (*req.bedrooms < 1 || *req.bedrooms > req.rooms - (req.rooms >= 2 ? 1 : 0)))
     return fail(ErrorCode::kValidation, "bedrooms do not fit the rooms",
-                {FieldError{"/bedrooms", "must be between 1 and rooms − 1 (the kitchen)", {}, 0, 0}});
+                {FieldError{"/bedrooms", "must be between 1 and rooms − 1 (the kitchen)"}});
   Rng rng(req.seed, fnv1a64("house"));
   const auto types = room_program(req.rooms, req.bedrooms, rng);
   const std::size_t n = types.size();

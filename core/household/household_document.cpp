@@ -100,7 +100,7 @@ Result<House> household_house(const HouseholdRequest& r, const HouseholdKnowledg
     auto h = import_procthor(*r.house, knowledge, "house");
     if (!h) {
       auto e = h.error();
-      for (auto& f : e.errors) f.pointer = "/house" + f.pointer;
+      e.under("/house");
       return tl::unexpected(e);
     }
     return h;
@@ -122,7 +122,7 @@ Result<HouseholdDocument> generate_household(const HouseholdRequest& request,
   const int most = std::min(4, bedrooms);
   if (most < 1)
     return fail(ErrorCode::kValidation, "the house has no bedroom",
-                {FieldError{request.house ? "/house" : "/rooms", "needs at least one bedroom", {}, 0, 0}});
+                {FieldError{request.house ? "/house" : "/rooms", "needs at least one bedroom"}});
 
   Rng rng(request.seed, fnv1a64("household"));
   std::vector<Persona> chosen;
@@ -130,10 +130,7 @@ Result<HouseholdDocument> generate_household(const HouseholdRequest& request,
     if (static_cast<int>(request.resident_ids.size()) > most)
       return fail(ErrorCode::kValidation, "more residents than bedrooms",
                   {FieldError{"/residents",
-                              "this house has room for " + std::to_string(most) + " (one bedroom each)",
-                              {},
-                              0,
-                              0}});
+                              "this house has room for " + std::to_string(most) + " (one bedroom each)"}});
     JsonChecker check;
     for (std::size_t i = 0; i < request.resident_ids.size(); ++i) {
       auto it = std::find_if(personas.begin(), personas.end(),
@@ -147,11 +144,8 @@ Result<HouseholdDocument> generate_household(const HouseholdRequest& request,
   } else {
     if (request.resident_count > most)
       return fail(ErrorCode::kValidation, "more residents than bedrooms",
-                  {FieldError{"/residents",
-                              "this house has room for 1 to " + std::to_string(most) + " (one bedroom each)",
-                              {},
-                              0,
-                              0}});
+                  {FieldError{"/residents", "this house has room for 1 to " + std::to_string(most) +
+                                                " (one bedroom each)"}});
     const int n =
         request.resident_count > 0 ? request.resident_count : static_cast<int>(rng.between(1, most));
     std::vector<const Persona*> pool;
@@ -218,26 +212,26 @@ Result<HouseholdDocument> household_document_from_json(const Json& json,
                                                        const HouseholdKnowledge& knowledge) {
   if (!json.is_object() || json.value("format", "") != "socsim.household/1")
     return fail(ErrorCode::kValidation, "not a household document",
-                {FieldError{"/format", "must be socsim.household/1", {}, 0, 0}});
+                {FieldError{"/format", "must be socsim.household/1"}});
   HouseholdDocument doc;
   doc.id = json.value("id", "");
   if (doc.id.rfind("hh_", 0) != 0)
     return fail(ErrorCode::kValidation, "invalid household document",
-                {FieldError{"/id", "must start with hh_", {}, 0, 0}});
+                {FieldError{"/id", "must start with hh_"}});
   auto request = household_request_from_json(json.value("request", Json::object()));
   if (!request) {
     auto e = request.error();
-    for (auto& f : e.errors) f.pointer = "/request" + f.pointer;
+    e.under("/request");
     return tl::unexpected(e);
   }
   doc.request = std::move(*request);
   if (!json.contains("scene_seed") || !json["scene_seed"].is_number_unsigned())
     return fail(ErrorCode::kValidation, "invalid household document",
-                {FieldError{"/scene_seed", "must be a non-negative integer", {}, 0, 0}});
+                {FieldError{"/scene_seed", "must be a non-negative integer"}});
   doc.scene_seed = json["scene_seed"].get<std::uint64_t>();
   if (!json.contains("residents") || !json["residents"].is_array() || json["residents"].empty())
     return fail(ErrorCode::kValidation, "invalid household document",
-                {FieldError{"/residents", "must list the residents' profiles", {}, 0, 0}});
+                {FieldError{"/residents", "must list the residents' profiles"}});
   for (std::size_t i = 0; i < json["residents"].size(); ++i) {
     auto p = resident_profile_from_json(json["residents"][i], knowledge, "/residents/" + std::to_string(i));
     if (!p) return tl::unexpected(p.error());

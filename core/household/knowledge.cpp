@@ -319,7 +319,7 @@ Status store_persona(store::Store& store, const Persona& persona) {
     if (!row) return tl::unexpected(row.error());
     if (*row)
       return fail(ErrorCode::kConflict, "a persona with id '" + id + "' already exists",
-                  {FieldError{"/name", "another persona has this name", {}, 0, 0}});
+                  {FieldError{"/name", "another persona has this name"}});
     auto ins = db.prepare("INSERT INTO household_personas(id, builtin, body) VALUES (?, 0, ?)");
     if (!ins) return tl::unexpected(ins.error());
     ins->bind(1, id).bind(2, body);

@@ -110,7 +110,7 @@ Result<std::vector<Persona>> generate_personas_llm(const PersonaRequest& request
                                                    const LlmSettings& settings) {
   if (request.count < 1 || request.count > 200)
     return fail(ErrorCode::kValidation, "count must be between 1 and 200",
-                {FieldError{"/count", "must be between 1 and 200", {}, 0, 0}});
+                {FieldError{"/count", "must be between 1 and 200"}});
   const auto& c = request.constraints;
   std::string guidance;
   if (c.min_age || c.max_age)
@@ -277,7 +277,7 @@ std::string coarse_memory(const DynamicScene& scene, int resident, Seconds t, Se
 Result<Hint> LlmHintGenerator::hint(const HintQuery& q) {
   if (!q.scene || q.resident < 0 || q.resident >= static_cast<int>(q.scene->residents().size()))
     return fail(ErrorCode::kValidation, "no such resident",
-                {FieldError{"/resident", "must name a resident of the scene", {}, 0, 0}});
+                {FieldError{"/resident", "must name a resident of the scene"}});
   const DynamicScene& scene = *q.scene;
   const House& h = scene.house();
   std::string type = q.object;

@@ -975,12 +975,12 @@ Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& req
                                                        std::span<const Persona> existing) {
   if (request.count < 1 || request.count > 200)
     return fail(ErrorCode::kValidation, "count must be between 1 and 200",
-                {FieldError{"/count", "must be between 1 and 200", {}, 0, 0}});
+                {FieldError{"/count", "must be between 1 and 200"}});
   const PersonaConstraints& c = request.constraints;
   const int lo = c.min_age.value_or(0), hi = c.max_age.value_or(120);
   if (lo > hi)
     return fail(ErrorCode::kValidation, "empty age range",
-                {FieldError{"/constraints/max_age", "must be at least min_age", {}, 0, 0}});
+                {FieldError{"/constraints/max_age", "must be at least min_age"}});
 
   // Roles that fit the age range, and the occupations that fit role and constraints.
   std::vector<HouseholdRole> roles;
@@ -1030,10 +1030,7 @@ Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& req
     for (const auto& k : known_occupations()) known += (known.empty() ? "" : ", ") + k;
     return fail(ErrorCode::kValidation, "no persona fits these constraints",
                 {FieldError{c.occupation ? "/constraints/occupation" : "/constraints",
-                            "no occupation fits the age range and household role (known: " + known + ")",
-                            {},
-                            0,
-                            0}});
+                            "no occupation fits the age range and household role (known: " + known + ")"}});
   }
 
   Rng rng(request.seed, fnv1a64("personas"));
@@ -1117,12 +1114,10 @@ Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& req
     out.push_back(std::move(p));
   }
   if (static_cast<int>(out.size()) < request.count)
-    return fail(
-        ErrorCode::kValidation,
-        "only " + std::to_string(out.size()) +
-            " distinct personas fit these constraints; ask for fewer or widen them",
-        {FieldError{
-            "/count", "at most " + std::to_string(out.size()) + " with these constraints", {}, 0, 0}});
+    return fail(ErrorCode::kValidation,
+                "only " + std::to_string(out.size()) +
+                    " distinct personas fit these constraints; ask for fewer or widen them",
+                {FieldError{"/count", "at most " + std::to_string(out.size()) + " with these constraints"}});
   return out;
 }
 

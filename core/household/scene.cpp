@@ -133,7 +133,7 @@ Result<Hint> OfflineHintGenerator::hint(const HintQuery& q) {
   if (!q.scene) return fail(ErrorCode::kValidation, "a hint needs a scene");
   if (q.resident < 0 || q.resident >= static_cast<int>(q.scene->residents().size()))
     return fail(ErrorCode::kValidation, "no such resident",
-                {FieldError{"/resident", "must name a resident of the scene", {}, 0, 0}});
+                {FieldError{"/resident", "must name a resident of the scene"}});
   return q.scene->hint(q.resident, q.object, q.time, q.lookback);
 }
 
@@ -151,10 +151,7 @@ Result<DynamicScene> configure_scene(std::shared_ptr<const House> house,
   if (request.residents < 0 || request.residents > most)
     return fail(ErrorCode::kValidation, "this house has room for 1 to " + std::to_string(most) + " residents",
                 {FieldError{"/residents",
-                            "must be between 1 and " + std::to_string(most) + " (one bedroom each), or 0",
-                            {},
-                            0,
-                            0}});
+                            "must be between 1 and " + std::to_string(most) + " (one bedroom each), or 0"}});
   const int n = request.residents > 0 ? request.residents : static_cast<int>(rng.between(1, most));
 
   DynamicScene s;
@@ -341,7 +338,7 @@ Result<ResidentProfile> resident_profile_from_json(const Json& json, const House
   if (!json.is_object() || !json.contains("persona") || !json.contains("schedule") ||
       !json.contains("activity_db"))
     return fail(ErrorCode::kValidation, "invalid resident profile",
-                {FieldError{pointer, "must have persona, schedule and activity_db", {}, 0, 0}});
+                {FieldError{pointer, "must have persona, schedule and activity_db"}});
   auto persona = persona_from_json(json["persona"], pointer + "/persona");
   if (!persona) return tl::unexpected(persona.error());
   auto schedule = schedule_from_json(json["schedule"], knowledge, pointer + "/schedule");
@@ -349,7 +346,7 @@ Result<ResidentProfile> resident_profile_from_json(const Json& json, const House
   auto db = activity_db_from_json(json["activity_db"], knowledge);
   if (!db) {
     auto e = db.error();
-    for (auto& f : e.errors) f.pointer = pointer + "/activity_db" + f.pointer;
+    e.under(pointer + "/activity_db");
     return tl::unexpected(e);
   }
   return ResidentProfile{std::move(*persona), std::move(*schedule), std::move(*db)};

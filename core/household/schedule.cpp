@@ -66,7 +66,7 @@ Result<Schedule> generate_schedule(const Persona& persona, const ScheduleRequest
                                    ActivityVocabulary& vocabulary) {
   if (request.days < 1 || request.days > 366)
     return fail(ErrorCode::kValidation, "days must be between 1 and 366",
-                {FieldError{"/days", "must be between 1 and 366", {}, 0, 0}});
+                {FieldError{"/days", "must be between 1 and 366"}});
   Schedule s;
   s.persona_id = persona_id(persona);
   s.first_day = request.first_day;
@@ -87,16 +87,13 @@ Result<Schedule> generate_schedule(const Persona& persona, const ScheduleRequest
         return fail(
             ErrorCode::kValidation, "the schedule of day " + std::to_string(d) + " is not contiguous",
             {FieldError{"/entries/" + std::to_string(i),
-                        "starts at " + format_minutes(e.start) + ", expected " + format_minutes(cursor),
-                        {},
-                        0,
-                        0}});
+                        "starts at " + format_minutes(e.start) + ", expected " + format_minutes(cursor)}});
       cursor = e.end;
     }
     if (cursor != 1440)
       return fail(ErrorCode::kValidation,
                   "the schedule of day " + std::to_string(d) + " does not reach 24:00",
-                  {FieldError{"/entries", "ends at " + format_minutes(cursor), {}, 0, 0}});
+                  {FieldError{"/entries", "ends at " + format_minutes(cursor)}});
     for (auto e : *entries) {
       e.start += d * 1440;
       e.end += d * 1440;
@@ -270,7 +267,7 @@ Result<DayPlan> day_plan_from_json(const Json& json, const std::string& pointer)
   if (!check.ok()) return tl::unexpected(check.error("invalid day plan"));
   if (auto v = validate_day_plan(plan); !v) {
     auto e = v.error();
-    for (auto& f : e.errors) f.pointer = pointer + f.pointer;
+    e.under(pointer);
     return tl::unexpected(e);
   }
   return plan;

@@ -436,10 +436,9 @@ Status KnowledgeBase::upsert(const BehaviorNode& node) {
       auto row = others->step();
       if (!row) return tl::unexpected(row.error());
       if (*row) {
-        return fail(ErrorCode::kConflict,
-                    "tag '" + tag + "' already names behaviour node '" + others->text(0) + "'",
-                    {{tag == checked->name ? "/name" : "/aliases",
-                      "clashes with node '" + others->text(0) + "'", "", 0, 0}});
+        return fail(
+            ErrorCode::kConflict, "tag '" + tag + "' already names behaviour node '" + others->text(0) + "'",
+            {{tag == checked->name ? "/name" : "/aliases", "clashes with node '" + others->text(0) + "'"}});
       }
     }
     auto st = db.prepare(

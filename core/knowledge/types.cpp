@@ -179,7 +179,7 @@ Json to_json(const BehaviorNode& n) {
 Result<BuildingCode> building_code_from_json(const Json& j, const std::string& pointer) {
   if (!j.is_object())
     return fail(ErrorCode::kValidation, "a building code must be a JSON object",
-                {{pointer, "must be an object", "", 0, 0}});
+                {{pointer, "must be an object"}});
   JsonChecker ck;
   ck.only_keys(j, pointer,
                {"ref_id", "building_type", "jurisdiction", "title", "description", "keywords", "sources",
@@ -272,7 +272,7 @@ Result<BuildingCode> building_code_from_json(const Json& j, const std::string& p
 Result<BehaviorNode> behavior_node_from_json(const Json& j, const std::string& pointer) {
   if (!j.is_object())
     return fail(ErrorCode::kValidation, "a behaviour node must be a JSON object",
-                {{pointer, "must be an object", "", 0, 0}});
+                {{pointer, "must be an object"}});
   JsonChecker ck;
   ck.only_keys(j, pointer,
                {"name", "kind", "origin", "category", "description", "when_to_use", "example", "keywords",

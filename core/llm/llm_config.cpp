@@ -73,13 +73,12 @@ Result<std::string> resolve(const LlmConfig& cfg, const std::optional<std::strin
     if (fallback.empty())
       return fail(ErrorCode::kValidation,
                   "no LLM model configured (set SOCSIM_LLM_MODEL or name one in the request)",
-                  {FieldError{"/model", "is required: no default model is configured", {}, 0, 0}});
+                  {FieldError{"/model", "is required: no default model is configured"}});
     return fallback;
   }
   if (!plausible_model_name(*requested))
-    return fail(
-        ErrorCode::kValidation, "model name is not valid",
-        {FieldError{"/model", "must be 1-200 characters of letters, digits and . _ - : / @ +", {}, 0, 0}});
+    return fail(ErrorCode::kValidation, "model name is not valid",
+                {FieldError{"/model", "must be 1-200 characters of letters, digits and . _ - : / @ +"}});
   // Without an allow-list only the configured model may be named: a client must not be able to
   // spend the operator's quota on a larger (dearer) model the endpoint happens to serve.
   const std::vector<std::string> allowed = cfg.allowed_models.empty() && !fallback.empty()
@@ -90,7 +89,7 @@ Result<std::string> resolve(const LlmConfig& cfg, const std::optional<std::strin
     for (const auto& m : allowed) list += (list.empty() ? "" : ", ") + m;
     if (list.empty()) list = "(none: no model is configured)";
     return fail(ErrorCode::kValidation, "model \"" + *requested + "\" is not allowed on this server",
-                {FieldError{"/model", "must be one of: " + list, {}, 0, 0}});
+                {FieldError{"/model", "must be one of: " + list}});
   }
   return *requested;
 }

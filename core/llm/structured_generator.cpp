@@ -54,7 +54,7 @@ Checked check_answer(const std::string& content, const std::string& finish_reaso
   auto parsed = extract_json_answer(content);
   if (!parsed) {
     out.problems = parsed.error().errors;
-    if (out.problems.empty()) out.problems.push_back(FieldError{"", parsed.error().detail, {}, 0, 0});
+    if (out.problems.empty()) out.problems.push_back(FieldError{"", parsed.error().detail});
   } else {
     out.value = std::move(*parsed);
     out.problems = schema.validate(out.value, 30);
@@ -67,13 +67,13 @@ Checked check_answer(const std::string& content, const std::string& finish_reaso
       }
       if (!s) {
         out.problems = s.error().errors;
-        if (out.problems.empty()) out.problems.push_back(FieldError{"", s.error().detail, {}, 0, 0});
+        if (out.problems.empty()) out.problems.push_back(FieldError{"", s.error().detail});
       }
     }
   }
   if (finish_reason == "length")
     out.problems.push_back(
-        FieldError{"", "the answer was cut off at the token limit; answer more compactly", {}, 0, 0});
+        FieldError{"", "the answer was cut off at the token limit; answer more compactly"});
   return out;
 }
 
@@ -82,8 +82,7 @@ Checked check_answer(const std::string& content, const std::string& finish_reaso
 Result<Json> extract_json_answer(std::string_view text) {
   const std::string_view t = trim(text);
   if (t.empty())
-    return fail(ErrorCode::kValidation, "the answer is empty",
-                {FieldError{"", "the answer is empty", {}, 0, 0}});
+    return fail(ErrorCode::kValidation, "the answer is empty", {FieldError{"", "the answer is empty"}});
   if (const auto fence = t.find("```"); fence != std::string_view::npos) {
     std::size_t start = t.find('\n', fence);
     start = start == std::string_view::npos ? t.size() : start + 1;

@@ -132,7 +132,7 @@ Result<BenchmarkRequest> benchmark_request_from_json(const Json& json) {
   JsonChecker check;
   if (!json.is_object())
     return fail(ErrorCode::kValidation, "the request must be a JSON object",
-                {FieldError{"", "must be an object", {}, 0, 0}});
+                {FieldError{"", "must be an object"}});
   check.only_keys(json, "",
                   {"split", "scenes", "seed", "tasks_per_scene", "max_steps", "training_houses", "alpha"});
   BenchmarkRequest r;
@@ -352,7 +352,7 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
                                       const ResidentPool& pool, std::shared_ptr<const PlacementCounts> counts,
                                       const RunHooks& hooks) {
   if (request.scenes < 1)
-    return fail(ErrorCode::kValidation, "no scenes", {FieldError{"/scenes", "must be at least 1", {}, 0, 0}});
+    return fail(ErrorCode::kValidation, "no scenes", {FieldError{"/scenes", "must be at least 1"}});
   if (!counts) return fail(ErrorCode::kValidation, "the scene prior needs training counts");
   for (std::uint64_t s : counts->seeds)
     if (!is_training_seed(s))

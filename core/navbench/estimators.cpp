@@ -85,7 +85,7 @@ Result<PlacementCounts> count_training_placements(const household::HouseholdKnow
                                                   std::uint64_t training_seed, int threads) {
   if (houses < 1 || houses > 100000)
     return fail(ErrorCode::kValidation, "training houses out of range",
-                {FieldError{"/training_houses", "must be between 1 and 100000", {}, 0, 0}});
+                {FieldError{"/training_houses", "must be between 1 and 100000"}});
   // Houses are counted per index and merged in index order, so counts do not depend on threads.
   std::vector<std::optional<House>> built(static_cast<std::size_t>(houses));
   std::atomic<int> next{0};

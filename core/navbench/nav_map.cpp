@@ -188,7 +188,7 @@ StepField NavMap::steps_from(int pose) const {
 Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
   if (house.rooms.empty())
     return fail(ErrorCode::kValidation, "a navigation map needs a house with rooms",
-                {FieldError{"/rooms", "is empty", {}, 0, 0}});
+                {FieldError{"/rooms", "is empty"}});
   if (!(config.cell > 0.01) || !(config.view_distance > 0) ||
       !(config.field_of_view_deg > 0 && config.field_of_view_deg <= 360))
     return fail(ErrorCode::kValidation, "bad navigation map configuration");
@@ -198,11 +198,11 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
       x0 = std::min(x0, p.x), z0 = std::min(z0, p.z), x1 = std::max(x1, p.x), z1 = std::max(z1, p.z);
   if (!(x1 > x0) || !(z1 > z0))
     return fail(ErrorCode::kValidation, "the house's rooms have no area",
-                {FieldError{"/rooms", "floor polygons are empty", {}, 0, 0}});
+                {FieldError{"/rooms", "floor polygons are empty"}});
   const double w = std::ceil((x1 - x0) / config.cell), d = std::ceil((z1 - z0) / config.cell);
   if (w * d > static_cast<double>(kMaxCells))
     return fail(ErrorCode::kValidation, "the house is too large for the navigation grid",
-                {FieldError{"/rooms", "spans more than 4 million grid cells", {}, 0, 0}});
+                {FieldError{"/rooms", "spans more than 4 million grid cells"}});
 
   NavMap m;
   m.config_ = config;

@@ -208,26 +208,23 @@ std::vector<FieldError> intent_contradictions(const Json& program, const Scenari
         if (ptr.empty()) ptr = where[k];
       }
     if (n == 0) {
-      out.push_back(FieldError{
-          "", "the prompt names " + said(intent, g) + " but the program has nobody of that role", "", 0, 0});
+      out.push_back(
+          FieldError{"", "the prompt names " + said(intent, g) + " but the program has nobody of that role"});
       continue;
     }
     if (!check_counts) continue;
     if (auto want = count_problem(count, n))
-      out.push_back(FieldError{ptr,
-                               "the prompt says " + said(intent, g) + " (" + *want + "), the program has " +
-                                   std::to_string(n) + " " + g.program_role,
-                               "", 0, 0});
+      out.push_back(FieldError{ptr, "the prompt says " + said(intent, g) + " (" + *want +
+                                        "), the program has " + std::to_string(n) + " " + g.program_role});
   }
   if (names_who_is_there(intent)) {
     std::string named;
     for (const std::string& role : role_order) named += (named.empty() ? "" : ", ") + role;
     for (std::size_t e = 0; e < es.size(); ++e)
       if (!owner[e] && es[e].count > 0)
-        out.push_back(FieldError{es[e].pointer,
-                                 std::to_string(es[e].count) + " " + es[e].role +
-                                     ": nobody asked for them; the prompt names who is there (" + named + ")",
-                                 "", 0, 0});
+        out.push_back(FieldError{
+            es[e].pointer, std::to_string(es[e].count) + " " + es[e].role +
+                               ": nobody asked for them; the prompt names who is there (" + named + ")"});
   }
   return out;
 }

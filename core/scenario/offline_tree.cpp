@@ -127,7 +127,7 @@ Result<std::string> TreeXml::finish() const {
     problems.push_back("tree '" + id_ + "': element <" + stack_.back() + "> is not closed");
   if (!problems.empty()) {
     std::vector<FieldError> errors;
-    for (const std::string& p : problems) errors.push_back(FieldError{"", p, {}, 0, 0});
+    for (const std::string& p : problems) errors.push_back(FieldError{"", p});
     return fail(ErrorCode::kValidation, problems.front(), std::move(errors));
   }
   const std::string id = world::xml_escape(id_);

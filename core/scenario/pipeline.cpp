@@ -171,8 +171,7 @@ floorplan::SceneGraph grown(floorplan::SceneGraph graph, double factor) {
 Result<ScenarioRequest> scenario_request_from_json(const Json& body, const ScenarioConfig& config) {
   JsonChecker c;
   if (!body.is_object())
-    return fail(ErrorCode::kValidation, "the request must be a JSON object",
-                {{"", "expected an object", "", 0, 0}});
+    return fail(ErrorCode::kValidation, "the request must be a JSON object", {{"", "expected an object"}});
   c.only_keys(body, "",
               {"prompt", "world", "world_id", "scene_graph", "domain", "seed", "generator", "model",
                "duration_s", "agents", "title", "tags"});
@@ -391,7 +390,7 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
   if (request.generator == "llm" && !s.llm)
     return fail(ErrorCode::kValidation,
                 "no LLM endpoint is configured, so only the offline generator is available",
-                {{"/generator", "must be offline on this server", "", 0, 0}});
+                {{"/generator", "must be offline on this server"}});
   if (!world) {
     report(0.02,
            "laying out a floor plan from the " + std::string(request.scene_graph ? "scene graph" : "prompt"));
@@ -500,7 +499,7 @@ Result<SimulationOutput> replay_card(const cards::CardContent& card, const Progr
                                      const llm::CancelToken& cancel) {
   if (!card.world.is_object() || !card.program.is_object() || !card.trajectory_log.is_object())
     return fail(ErrorCode::kValidation, "the card has no world, program or trajectory log to replay",
-                {{"/trajectory_log", "a scenario card made by POST /api/v1/scenarios is needed", "", 0, 0}});
+                {{"/trajectory_log", "a scenario card made by POST /api/v1/scenarios is needed"}});
   auto world = world::world_from_document(card.world);
   if (!world) return tl::unexpected(world.error());
   const double duration = card.trajectory_log.value("duration_s", 0.0);
@@ -508,7 +507,7 @@ Result<SimulationOutput> replay_card(const cards::CardContent& card, const Progr
   const double interval = rate > 0 ? 1.0 / rate : 0.0;
   if (!(duration > 0) || !(interval > 0))
     return fail(ErrorCode::kValidation, "the card's trajectory log names no duration",
-                {{"/trajectory_log/duration_s", "must be a positive number", "", 0, 0}});
+                {{"/trajectory_log/duration_s", "must be a positive number"}});
   return simulate_program(*world, card.program, card.seed, duration, interval, progress, cancel);
 }
 

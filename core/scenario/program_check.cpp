@@ -32,7 +32,7 @@ class Checker {
   Checker(const world::World& world, const ScenarioLimits& limits) : world_(world), limits_(limits) {}
 
   void add(std::string pointer, std::string message) {
-    errors_.push_back(FieldError{std::move(pointer), std::move(message), {}, 0, 0});
+    errors_.push_back(FieldError{std::move(pointer), std::move(message)});
   }
   void add(const Error& e, const std::string& prefix) {
     if (e.errors.empty()) {

@@ -186,15 +186,14 @@ Result<Json> checked_program_from_answer(const Json& answer, const world::World&
   const Json agents = answer.value("spotlight_agents", Json::array());
   for (std::size_t i = 0; i < agents.size(); ++i)
     if (!ids.insert(agents[i].value("id", "")).second)
-      errors.push_back(
-          {"/spotlight_agents/" + std::to_string(i) + "/id", "id is used by another agent", "", 0, 0});
+      errors.push_back({"/spotlight_agents/" + std::to_string(i) + "/id", "id is used by another agent"});
   Json program = program_from_answer(answer, request);
   if (auto s = check_program(program, world, limits); !s) {
     for (auto e : s.error().errors) {
       e.pointer = answer_pointer(e.pointer);
       errors.push_back(std::move(e));
     }
-    if (errors.empty()) errors.push_back({"", s.error().detail, "", 0, 0});
+    if (errors.empty()) errors.push_back({"", s.error().detail});
   }
   if (!errors.empty())
     return fail(ErrorCode::kValidation, "the scenario program does not fit the world", std::move(errors));

@@ -594,20 +594,14 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   std::vector<FieldError> errors;
   const std::string prompt = trimmed(request.prompt);
   if (prompt.empty())
-    return fail(ErrorCode::kBadRequest, "the prompt is empty",
-                {FieldError{"/prompt", "must not be empty", {}, 0, 0}});
+    return fail(ErrorCode::kBadRequest, "the prompt is empty", {FieldError{"/prompt", "must not be empty"}});
   if (!(request.duration_s > 0.0) || request.duration_s > limits.max_duration_s)
-    errors.push_back(
-        FieldError{"/duration_s",
-                   "must be more than 0 and at most " + format_number(limits.max_duration_s) + " s",
-                   {},
-                   0,
-                   0});
+    errors.push_back(FieldError{
+        "/duration_s", "must be more than 0 and at most " + format_number(limits.max_duration_s) + " s"});
   if (request.agents && (*request.agents == 0 || *request.agents > limits.max_agents))
-    errors.push_back(
-        FieldError{"/agents", "must be between 1 and " + std::to_string(limits.max_agents), {}, 0, 0});
+    errors.push_back(FieldError{"/agents", "must be between 1 and " + std::to_string(limits.max_agents)});
   if (world.zones().empty())
-    errors.push_back(FieldError{"/world", "the world has no zones to place people in", {}, 0, 0});
+    errors.push_back(FieldError{"/world", "the world has no zones to place people in"});
   if (!errors.empty())
     return fail(ErrorCode::kValidation, errors.front().pointer + ": " + errors.front().message, errors);
 

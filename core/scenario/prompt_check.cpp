@@ -134,7 +134,7 @@ double LanguageReading::english_share() const {
 
 Status check_prompt_form(std::string_view prompt, const PromptRules& rules) {
   auto refuse = [](const std::string& detail, const std::string& message) {
-    return fail(ErrorCode::kValidation, detail, {{"/prompt", message, "", 0, 0}});
+    return fail(ErrorCode::kValidation, detail, {{"/prompt", message}});
   };
   if (prompt.empty())
     return refuse("the prompt is empty", "must not be empty: describe who is where doing what");
@@ -224,20 +224,18 @@ Status check_prompt_language(std::string_view prompt, const KnownWord& known, co
   const std::size_t letters = r.latin_letters + r.other_letters;
   if (letters > 0 &&
       static_cast<double>(r.other_letters) > rules.max_other_script_share * static_cast<double>(letters)) {
-    return fail(ErrorCode::kValidation, "the prompt is not in English",
-                {{"/prompt",
-                  "socsim reads English prompts; this one is written in " + r.other_script + " script (" +
-                      std::to_string(r.other_letters) + " of its " + std::to_string(letters) +
-                      " letters). Please describe the scenario in English.",
-                  "", 0, 0}});
+    return fail(
+        ErrorCode::kValidation, "the prompt is not in English",
+        {{"/prompt", "socsim reads English prompts; this one is written in " + r.other_script + " script (" +
+                         std::to_string(r.other_letters) + " of its " + std::to_string(letters) +
+                         " letters). Please describe the scenario in English."}});
   }
   if (r.words >= rules.min_words_for_language && r.english_share() < rules.min_english_share) {
     return fail(ErrorCode::kValidation, "the prompt is not in English",
-                {{"/prompt",
-                  "socsim reads English prompts; only " + std::to_string(r.english_words) + " of its " +
-                      std::to_string(r.words) + " words are English words it knows (not: " +
-                      r.unknown_examples + "). Please describe the scenario in English.",
-                  "", 0, 0}});
+                {{"/prompt", "socsim reads English prompts; only " + std::to_string(r.english_words) +
+                                 " of its " + std::to_string(r.words) +
+                                 " words are English words it knows (not: " + r.unknown_examples +
+                                 "). Please describe the scenario in English."}});
   }
   return {};
 }
@@ -259,8 +257,7 @@ Status check_prompt_content(const ScenarioIntent& intent) {
                 "found no people (\"three nurses\", \"visitors\"), no place (\"a library\", \"the waiting "
                 "room\", \"two exits\") and no activity (\"queue\", \"evacuate\", \"chat\") to build a "
                 "scenario from" +
-                    ignored,
-                "", 0, 0}});
+                    ignored}});
 }
 
 Status check_prompt(std::string_view prompt, const ScenarioIntent& intent, const KnownWord& known,

@@ -57,7 +57,7 @@ class Reader {
 
 Error corrupt(std::string detail, std::size_t at) {
   return Error(ErrorCode::kValidation, "trajectory log is not socsim-traj-v1: " + detail,
-               {FieldError{"", detail + " at byte " + std::to_string(at), "", 0, 0}});
+               {FieldError{"", detail + " at byte " + std::to_string(at)}});
 }
 
 float narrow(double v) {

@@ -135,7 +135,7 @@ class ZoneBoundaries {
 class Validator {
  public:
   void add(std::string pointer, std::string message) {
-    errors_.push_back(FieldError{std::move(pointer), std::move(message), {}, 0, 0});
+    errors_.push_back(FieldError{std::move(pointer), std::move(message)});
   }
   [[nodiscard]] bool ok() const { return errors_.empty(); }
   [[nodiscard]] tl::unexpected<Error> failure() const {
@@ -305,13 +305,9 @@ std::optional<std::size_t> infer_zone_region(const Geos& geos, std::vector<Zone>
   if (enclosed.size() == 1) {
     zones[z].polygon = enclosed[0];
     if (warnings) {
-      warnings->push_back(FieldError{ptr,
-                                     who + ": it takes the region its walls enclose, " +
-                                         box_text(geometry::bounds(enclosed)) + " (" +
-                                         num(geometry::area(enclosed[0])) + " m²)",
-                                     {},
-                                     0,
-                                     0});
+      warnings->push_back(FieldError{ptr, who + ": it takes the region its walls enclose, " +
+                                              box_text(geometry::bounds(enclosed)) + " (" +
+                                              num(geometry::area(enclosed[0])) + " m²)"});
     }
     return z;
   }
@@ -347,13 +343,10 @@ std::optional<std::size_t> infer_zone_region(const Geos& geos, std::vector<Zone>
   }
   zones[z].polygon = region[0];
   if (warnings) {
-    warnings->push_back(FieldError{ptr,
-                                   who + " and its walls enclose no region: it takes the rectangle " +
-                                       box_text(box) + " (" + num(geometry::area(region[0])) +
-                                       " m²) spanned by the walls, doors, segmentation areas and entities",
-                                   {},
-                                   0,
-                                   0});
+    warnings->push_back(
+        FieldError{ptr, who + " and its walls enclose no region: it takes the rectangle " + box_text(box) +
+                            " (" + num(geometry::area(region[0])) +
+                            " m²) spanned by the walls, doors, segmentation areas and entities"});
   }
   return z;
 }
@@ -454,10 +447,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
     return fail(
         ErrorCode::kValidation, "world build options out of range",
         {FieldError{"",
-                    "agent_radius, tolerances, grid_resolution and default_wall_height must be positive",
-                    {},
-                    0,
-                    0}});
+                    "agent_radius, tolerances, grid_resolution and default_wall_height must be positive"}});
   }
   Geos geos;
   std::map<std::string, std::string> names;
@@ -776,13 +766,10 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
         }
       }
       if (count > 0) {
-        notes.push_back(FieldError{"/walls",
-                                   "the walls written leave zone '" + zones[*inferred].name + "' open: " +
-                                       std::to_string(count) + " wall" + (count == 1 ? "" : "s") + " (" +
-                                       num(added) + " m) added along its boundary, doors left open",
-                                   {},
-                                   0,
-                                   0});
+        notes.push_back(FieldError{"/walls", "the walls written leave zone '" + zones[*inferred].name +
+                                                 "' open: " + std::to_string(count) + " wall" +
+                                                 (count == 1 ? "" : "s") + " (" + num(added) +
+                                                 " m) added along its boundary, doors left open"});
       }
     }
 

@@ -163,10 +163,8 @@ TEST_F(StructuredGeneratorTest, SemanticRuleFailuresAreQuotedAndRepaired) {
     for (std::size_t i = 0; i < traits.size(); ++i)
       for (std::size_t j = i + 1; j < traits.size(); ++j)
         if (traits[i] == traits[j])
-          return fail(
-              ErrorCode::kValidation, "repeated trait",
-              {FieldError{
-                  "/personality/" + std::to_string(j), "repeats trait " + traits[j].dump(), {}, 0, 0}});
+          return fail(ErrorCode::kValidation, "repeated trait",
+                      {FieldError{"/personality/" + std::to_string(j), "repeats trait " + traits[j].dump()}});
     return {};
   };
   StructuredGenerator gen(*client_, store_.get());
