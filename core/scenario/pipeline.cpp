@@ -14,7 +14,6 @@
 #include "core/scenario/intent_check.hpp"
 #include "core/scenario/intent_world.hpp"
 #include "core/scenario/offline_tree.hpp"
-#include "core/scenario/program_check.hpp"
 #include "core/scenario/program_llm.hpp"
 #include "core/scenario/scenario_intent.hpp"
 #include "core/world/world_document.hpp"
@@ -332,13 +331,19 @@ Result<SimulationOutput> simulate_program(const world::World& world, const Json&
                                           const ProgressFn& progress, const llm::CancelToken& cancel) {
   auto program = crowd::program_from_json(program_json);
   if (!program) return tl::unexpected(program.error());
+  return simulate_program(world, *program, seed, duration_s, frame_interval, progress, cancel);
+}
+
+Result<SimulationOutput> simulate_program(const world::World& world, const crowd::Program& program,
+                                          std::uint64_t seed, double duration_s, double frame_interval,
+                                          const ProgressFn& progress, const llm::CancelToken& cancel) {
   crowd::RunnerOptions options;
   options.seed = seed;
   options.threads = 1;
-  auto runner = crowd::ScenarioRunner::create(&world, *program, options);
+  auto runner = crowd::ScenarioRunner::create(&world, program, options);
   if (!runner) return tl::unexpected(runner.error());
   auto& r = **runner;
-  const double dt = program->dt;
+  const double dt = program.dt;
   const auto every = static_cast<std::uint64_t>(std::max(1.0, std::round(frame_interval / dt)));
   const auto total = static_cast<std::uint64_t>(std::ceil(duration_s / dt - 1e-9));
   TrajectoryRecorder recorder(static_cast<double>(every) * dt);
@@ -366,7 +371,7 @@ Result<SimulationOutput> simulate_program(const world::World& world, const Json&
   out.metrics = metrics_json(r.metrics());
   out.runtime_errors = r.errors();
   out.velocity_fields = Json::array();
-  for (const auto& g : program->ambient_groups) {
+  for (const auto& g : program.ambient_groups) {
     const auto* entry = r.environment().velocity_field(g.name);
     if (!entry) continue;
     const auto& f = entry->field;
@@ -422,12 +427,11 @@ Result<ScenarioOutcome> run_scenario(const ScenarioRequest& request, std::option
     generated = generate_program_offline(world->world, s.knowledge, pr, s.config.limits);
   }
   if (!generated) return tl::unexpected(generated.error());
-  if (auto ok = check_program(generated->program, world->world, s.config.limits); !ok)
-    return tl::unexpected(ok.error());
+  // Both generators return their program checked against this world (check_program) and parsed.
 
   report(0.2, "simulating " + std::to_string(static_cast<int>(request.duration_s)) + " s");
   auto sim = simulate_program(
-      world->world, generated->program, request.seed, request.duration_s, s.config.frame_interval,
+      world->world, generated->checked, request.seed, request.duration_s, s.config.frame_interval,
       [&](double f, const std::string& m) { report(0.2 + 0.75 * f, m); }, s.cancel);
   if (!sim) return tl::unexpected(sim.error());
 

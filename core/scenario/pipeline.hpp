@@ -71,6 +71,11 @@ struct SimulationOutput {
 
 // Runs a checked program for duration_s (one thread: the card's promise is per build, not per
 // machine's core count) and logs a frame every `frame_interval`. kCancelled when cancelled.
+Result<SimulationOutput> simulate_program(const world::World& world, const crowd::Program& program,
+                                          std::uint64_t seed, double duration_s, double frame_interval,
+                                          const ProgressFn& progress = {},
+                                          const llm::CancelToken& cancel = {});
+// The same for a program as JSON (a stored card's), parsed here.
 Result<SimulationOutput> simulate_program(const world::World& world, const Json& program, std::uint64_t seed,
                                           double duration_s, double frame_interval,
                                           const ProgressFn& progress = {},

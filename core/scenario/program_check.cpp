@@ -189,6 +189,13 @@ class Checker {
 }  // namespace
 
 Status check_program(const Json& program, const world::World& world, const ScenarioLimits& limits) {
+  auto checked = checked_program(program, world, limits);
+  if (!checked) return tl::unexpected(checked.error());
+  return {};
+}
+
+Result<crowd::Program> checked_program(const Json& program, const world::World& world,
+                                       const ScenarioLimits& limits) {
   auto parsed = crowd::program_from_json(program);
   if (!parsed) return tl::unexpected(parsed.error());
   const crowd::Program& p = *parsed;
@@ -218,7 +225,7 @@ Status check_program(const Json& program, const world::World& world, const Scena
   options.record_metrics = false;
   auto runner = crowd::ScenarioRunner::create(&world, p, options);
   if (!runner) return tl::unexpected(runner.error());
-  return {};
+  return parsed;
 }
 
 }  // namespace socsim::scenario

@@ -13,5 +13,9 @@ namespace socsim::scenario {
 
 // kValidation with one FieldError per problem; ok when ScenarioRunner::create accepts the program.
 Status check_program(const Json& program, const world::World& world, const ScenarioLimits& limits);
+// The same check, returning the program it parsed: generators hand this on, so that a request
+// parses its program once and simulation runs exactly what was checked.
+Result<crowd::Program> checked_program(const Json& program, const world::World& world,
+                                       const ScenarioLimits& limits);
 
 }  // namespace socsim::scenario

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "core/common/json_schema.hpp"
 #include "core/geometry/planar.hpp"
@@ -178,8 +180,15 @@ Json program_from_answer(const Json& answer, const ProgramRequest& request) {
               {"ambient_groups", std::move(groups)}};
 }
 
-Result<Json> checked_program_from_answer(const Json& answer, const world::World& world,
-                                         const ProgramRequest& request, const ScenarioLimits& limits) {
+namespace {
+
+struct CheckedAnswer {
+  Json program;
+  crowd::Program checked;
+};
+
+Result<CheckedAnswer> check_answer(const Json& answer, const world::World& world,
+                                   const ProgramRequest& request, const ScenarioLimits& limits) {
   // Unique ids, so that errors and trajectories name agents unambiguously.
   std::vector<FieldError> errors;
   std::set<std::string> ids;
@@ -188,16 +197,26 @@ Result<Json> checked_program_from_answer(const Json& answer, const world::World&
     if (!ids.insert(agents[i].value("id", "")).second)
       errors.push_back({"/spotlight_agents/" + std::to_string(i) + "/id", "id is used by another agent"});
   Json program = program_from_answer(answer, request);
-  if (auto s = check_program(program, world, limits); !s) {
-    for (auto e : s.error().errors) {
+  auto checked = checked_program(program, world, limits);
+  if (!checked) {
+    for (auto e : checked.error().errors) {
       e.pointer = answer_pointer(e.pointer);
       errors.push_back(std::move(e));
     }
-    if (errors.empty()) errors.push_back({"", s.error().detail});
+    if (errors.empty()) errors.push_back({"", checked.error().detail});
   }
   if (!errors.empty())
     return fail(ErrorCode::kValidation, "the scenario program does not fit the world", std::move(errors));
-  return program;
+  return CheckedAnswer{std::move(program), std::move(*checked)};
+}
+
+}  // namespace
+
+Result<Json> checked_program_from_answer(const Json& answer, const world::World& world,
+                                         const ProgramRequest& request, const ScenarioLimits& limits) {
+  auto checked = check_answer(answer, world, request, limits);
+  if (!checked) return tl::unexpected(checked.error());
+  return std::move(checked->program);
 }
 
 Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& generator,
@@ -245,13 +264,15 @@ Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& ge
   auto intent = interpret_prompt(request.prompt);
   if (!intent) return tl::unexpected(intent.error());
   const std::size_t bound = std::min(limits.max_agents, request.agents.value_or(limits.max_agents));
-  std::vector<FieldError> contradictions;  // of the last answer that fitted the world
+  std::vector<FieldError> contradictions;                  // of the last answer that fitted the world
+  std::optional<std::pair<Json, CheckedAnswer>> accepted;  // the last answer that passed, checked
   r.check = [&](const Json& answer) -> Status {
-    auto program = checked_program_from_answer(answer, world, request, limits);
+    auto program = check_answer(answer, world, request, limits);
     if (!program) return tl::unexpected(program.error());
-    contradictions = answer_contradictions(*program, *intent, bound);
+    contradictions = answer_contradictions(program->program, *intent, bound);
     if (!contradictions.empty())
       return fail(ErrorCode::kValidation, "the scenario program contradicts the prompt", contradictions);
+    accepted.emplace(answer, std::move(*program));
     return {};
   };
   r.model = options.model;
@@ -269,10 +290,15 @@ Result<GeneratedProgram> generate_program_llm(const llm::StructuredGenerator& ge
       e.detail = "the LLM's scenario program still contradicts the prompt after its repair: " + e.detail;
     return tl::unexpected(std::move(e));
   }
-  auto program = checked_program_from_answer(g->value, world, request, limits);
-  if (!program) return tl::unexpected(program.error());
+  // The answer the generator returns is the one its check accepted last (checked again only if not).
+  if (!accepted || accepted->first != g->value) {
+    auto program = check_answer(g->value, world, request, limits);
+    if (!program) return tl::unexpected(program.error());
+    accepted.emplace(g->value, std::move(*program));
+  }
   GeneratedProgram out;
-  out.program = std::move(*program);
+  out.program = std::move(accepted->second.program);
+  out.checked = std::move(accepted->second.checked);
   out.provenance = {{"generator", "llm"},
                     {"llm", g->provenance()},
                     {"answer", g->value},

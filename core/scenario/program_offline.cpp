@@ -672,8 +672,9 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   draft.fit(bound);
 
   Json program = draft.program(prompt.substr(0, 256));
-  if (auto ok = check_program(program, world, limits); !ok) {
-    Error e = ok.error();
+  auto checked = checked_program(program, world, limits);
+  if (!checked) {
+    Error e = checked.error();
     e.code = ErrorCode::kInternal;
     e.detail = "the offline generator wrote a program the world rejects: " + e.detail;
     return tl::unexpected(std::move(e));
@@ -706,7 +707,8 @@ Result<GeneratedProgram> generate_program_offline(const world::World& world,
   timing_log["duration_s"] = request.duration_s;
   provenance["timing"] = timing_log;
   provenance["agent_bound"] = bound;
-  return GeneratedProgram{std::move(program), std::move(provenance), std::move(categories)};
+  return GeneratedProgram{std::move(program), std::move(*checked), std::move(provenance),
+                          std::move(categories)};
 }
 
 }  // namespace socsim::scenario

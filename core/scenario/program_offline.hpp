@@ -11,6 +11,7 @@
 
 #include "core/common/error.hpp"
 #include "core/common/json_io.hpp"
+#include "core/crowd/program.hpp"
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/world/world.hpp"
 
@@ -31,6 +32,7 @@ struct ProgramRequest {
 
 struct GeneratedProgram {
   Json program;                         // schemas/program.schema.json, trees inline
+  crowd::Program checked;               // `program` parsed and passed by check_program(): what runs
   Json provenance;                      // categories, lexicon matches, places, knowledge hits, fallbacks …
   std::vector<std::string> categories;  // Table II category names, most weighted first
 };

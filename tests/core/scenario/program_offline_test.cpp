@@ -34,9 +34,12 @@ class ProgramOffline : public ::testing::Test {
     r.agents = agents;
     auto g = generate_program_offline(w, worlds_->kb(), r, ScenarioLimits{});
     EXPECT_TRUE(g.has_value()) << prompt << " in " << w.name() << ": " << (g ? "" : g.error().message());
-    if (!g)
-      return GeneratedProgram{
-          Json::object({{"agents", Json::array()}, {"ambient_groups", Json::array()}}), Json::object(), {}};
+    if (!g) {
+      GeneratedProgram empty;
+      empty.program = Json::object({{"agents", Json::array()}, {"ambient_groups", Json::array()}});
+      empty.provenance = Json::object();
+      return empty;
+    }
     if (std::getenv("SOCSIM_DUMP_PROGRAMS") != nullptr)
       std::cerr << "=== " << prompt << " / " << w.name() << "\n"
                 << g->program.dump(1) << "\n"
