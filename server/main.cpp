@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 
 int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);

@@ -9,6 +9,7 @@
 #include "core/cards/catalogue.hpp"
 #include "server/auth.hpp"
 #include "server/http_util.hpp"
+#include "server/pagination.hpp"
 #include "server/registry.hpp"
 #include "server/services.hpp"
 
@@ -42,6 +43,8 @@ struct RouteContext {
   // or the problem that kept it from being queued (429 over the client's quota, 503 queue full).
   void reply_job_accepted(Response& res, const Result<std::string>& job_id,
                           const std::string& instance) const;
+  // ?page_size= and ?cursor= of a list request, with this server's default and maximum page size.
+  [[nodiscard]] Result<PageParams> page(const Request& req) const;
 };
 
 // Embedded copies of schemas/ (openapi.yaml and the JSON Schemas), keyed by file name.

@@ -57,8 +57,7 @@ void card_routes(Router& http, RouteContext& ctx) {
 
   http.Get("/api/v1/cards", [&ctx](const Request& req, Response& res) {
     cards::CardQuery q;
-    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
-                           ctx.config.max_page_size);
+    auto page = ctx.page(req);
     if (!page) return reply_problem(res, page.error(), req.path);
     q.page_size = page->page_size;
     q.text = query(req, "q");

@@ -112,8 +112,7 @@ void household_routes(Router& http, RouteContext& ctx) {
 
   // ---- personas ----
   http.Get("/api/v1/personas", [&ctx](const Request& req, Response& res) {
-    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
-                           ctx.config.max_page_size);
+    auto page = ctx.page(req);
     if (!page) return reply_problem(res, page.error(), req.path);
     const std::size_t size = page->page_size;
     auto all = all_personas(ctx.store);
@@ -288,8 +287,7 @@ void household_routes(Router& http, RouteContext& ctx) {
       });
 
   http.Get("/api/v1/households", [&ctx](const Request& req, Response& res) {
-    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
-                           ctx.config.max_page_size);
+    auto page = ctx.page(req);
     if (!page) return reply_problem(res, page.error(), req.path);
     const std::size_t size = page->page_size;
     auto rows = hh::list_households(ctx.store, size + 1, page->cursor);
@@ -362,8 +360,7 @@ void household_routes(Router& http, RouteContext& ctx) {
     auto resident =
         query_int(req, "resident", -1, -1, static_cast<std::int64_t>(h->scene.residents().size()) - 1);
     if (!resident) return reply_problem(res, resident.error(), req.path);
-    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
-                           ctx.config.max_page_size);
+    auto page = ctx.page(req);
     if (!page) return reply_problem(res, page.error(), req.path);
     const std::size_t size = page->page_size;
     std::size_t first = 0;  // the cursor is the index of the next event

@@ -11,8 +11,7 @@ constexpr const char* kJobPath = R"(/api/v1/jobs/([^/]+))";
 
 void job_routes(Router& http, RouteContext& ctx) {
   http.Get("/api/v1/jobs", [&ctx](const Request& req, Response& res) {
-    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
-                           ctx.config.max_page_size);
+    auto page = ctx.page(req);
     if (!page) return reply_problem(res, page.error(), req.path);
     auto status = query(req, "status");
     if (status && *status != "queued" && *status != "running" && *status != "succeeded" &&

@@ -2,8 +2,9 @@
 // POST /api/v1/scenarios/interpret (what a prompt says, at once), GET /api/v1/trajectories/{sha256}
 // (a card's trajectory log), POST /api/v1/cards/{id}/replay. A prompt that cannot become a scenario
 // (scenario::check_prompt) is refused on both before anything is queued or stored.
+#include "core/cards/world_store.hpp"
 #include "core/common/json_check.hpp"
-#include "core/knowledge/building_type.hpp"
+#include "core/floorplan/compliance.hpp"
 #include "core/scenario/pipeline.hpp"
 #include "core/scenario/prompt_check.hpp"
 #include "core/scenario/scenario_intent.hpp"
@@ -14,7 +15,6 @@
 #include "server/http_util.hpp"
 #include "server/prompt_gate.hpp"
 #include "server/routes.hpp"
-#include "server/stored_worlds.hpp"
 
 namespace socsim::server {
 namespace {
@@ -40,16 +40,14 @@ Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
                                             return world::WorldReading{std::move(built), {}};
                                           });
     if (!w) return tl::unexpected(Error(w.error()).within("/world"));
-    std::vector<std::string> names;
-    for (const auto& z : w->world.zones()) names.push_back(z.name + " " + z.type);
-    std::string domain = r.domain ? *r.domain : knowledge::classify_building_type(names).type;
+    std::string domain = r.domain ? *r.domain : floorplan::building_type_of(w->world);
     Json source{{"source", "request"}};
     // What reading the world assumed (a zone's region inferred …) stays with the card.
     if (!w->warnings.empty()) source["warnings"] = field_errors_json(w->warnings);
     return scenario::ScenarioWorld{std::move(w->world), domain, std::move(source)};
   }
   if (r.world_id) {
-    auto stored = stored_world_text(ctx.store, *r.world_id);
+    auto stored = cards::WorldStore(ctx.store).get(*r.world_id);
     if (!stored) {
       Error e = stored.error();
       if (e.code == ErrorCode::kNotFound) {

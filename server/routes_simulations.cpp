@@ -182,8 +182,7 @@ void simulation_routes(Router& http, RouteContext& ctx) {
                  });
 
   http.Get("/api/v1/simulations", [&ctx](const Request& req, Response& res) {
-    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
-                           ctx.config.max_page_size);
+    auto page = ctx.page(req);
     if (!page) return reply_problem(res, page.error(), req.path);
     std::size_t first = 0;  // sessions are few and short-lived: the cursor is an offset
     if (page->cursor) {

@@ -38,6 +38,11 @@ Status RouteContext::check_model(const std::optional<std::string>& model) const 
   return {};
 }
 
+Result<PageParams> RouteContext::page(const Request& req) const {
+  return parse_page(query(req, "page_size"), query(req, "cursor"), config.default_page_size,
+                    config.max_page_size);
+}
+
 void RouteContext::reply_job_accepted(Response& res, const Result<std::string>& job_id,
                                       const std::string& instance) const {
   if (!job_id) return reply_problem(res, job_id.error(), instance);

@@ -1,8 +1,7 @@
 // /api/v1/worlds: floor plans from a scene graph or a prompt (offline at once, LLM as a job),
 // stored as world.yaml with their compliance report and knowledge provenance; exports to SDF,
 // pedsim_ros, ROS map and SVG; validation of a posted world.yaml.
-#include "core/common/ids.hpp"
-#include "core/common/sha256.hpp"
+#include "core/cards/world_store.hpp"
 #include "core/floorplan/llm.hpp"
 #include "core/floorplan/request.hpp"
 #include "core/knowledge/building_type.hpp"
@@ -12,12 +11,9 @@
 #include "server/http_util.hpp"
 #include "server/pagination.hpp"
 #include "server/routes.hpp"
-#include "server/stored_worlds.hpp"
 
 namespace socsim::server {
 namespace {
-
-using store::Database;
 
 constexpr const char* kWorldPath = R"(/api/v1/worlds/(wld_[0-9a-z]{20}|[^/]+))";
 constexpr std::string_view kCursorPrefix = "w1.";
@@ -39,34 +35,7 @@ std::string base64(std::string_view bytes) {
   return out;
 }
 
-struct StoredWorld {
-  std::string id, name, domain, generator, author, created_at, world_yaml, content_hash;
-  std::int64_t seed = 0;
-  Json request, scene_graph, compliance, provenance;
-};
-
-constexpr const char* kColumns =
-    "id, name, domain, generator, seed, author, request, scene_graph, world_yaml, compliance, provenance, "
-    "content_hash, "
-    "created_at";
-
-StoredWorld row(store::Statement& st) {
-  StoredWorld w;
-  w.id = st.text(0);
-  w.name = st.text(1);
-  w.domain = st.text(2);
-  w.generator = st.text(3);
-  w.seed = st.int64(4);
-  w.author = st.text(5);
-  w.request = Json::parse(st.text(6));
-  w.scene_graph = Json::parse(st.text(7));
-  w.world_yaml = st.text(8);
-  w.compliance = Json::parse(st.text(9));
-  w.provenance = Json::parse(st.text(10));
-  w.content_hash = st.text(11);
-  w.created_at = st.text(12);
-  return w;
-}
+using cards::StoredWorld;
 
 Json summary(const StoredWorld& w) {
   return Json{
@@ -84,11 +53,10 @@ Json summary(const StoredWorld& w) {
         {"export", "/api/v1/worlds/" + w.id + "/export?format={sdf|pedsim|map|map-pgm|map-yaml|svg}"}}}};
 }
 
-// Stores a generated plan; returns its id.
+// Stores a generated plan.
 Result<StoredWorld> store_world(store::Store& db, const floorplan::FloorPlan& plan, const Json& request,
                                 const std::string& author, const std::string& generator, std::uint64_t seed) {
   StoredWorld w;
-  w.id = random_id("wld_");
   w.name = plan.world.name();
   w.domain = plan.scene_graph.domain;
   w.generator = generator;
@@ -99,39 +67,11 @@ Result<StoredWorld> store_world(store::Store& db, const floorplan::FloorPlan& pl
   w.world_yaml = world::world_to_yaml(plan.world);
   w.compliance = floorplan::to_json(plan.compliance);
   w.provenance = plan.provenance;
-  w.content_hash = sha256_hex(w.world_yaml);
-  w.created_at = utc_now_rfc3339();
-  auto s = db.write([&](Database& d) -> Status {
-    auto st =
-        d.prepare(std::string("INSERT INTO worlds (") + kColumns + ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?)");
-    if (!st) return tl::unexpected(st.error());
-    st->bind(1, w.id)
-        .bind(2, w.name)
-        .bind(3, w.domain)
-        .bind(4, w.generator)
-        .bind(5, w.seed)
-        .bind(6, w.author);
-    st->bind(7, canonical_json(w.request)).bind(8, canonical_json(w.scene_graph)).bind(9, w.world_yaml);
-    st->bind(10, canonical_json(w.compliance))
-        .bind(11, canonical_json(w.provenance))
-        .bind(12, w.content_hash);
-    st->bind(13, w.created_at);
-    return st->run();
-  });
-  if (!s) return tl::unexpected(s.error());
-  return w;
+  return cards::WorldStore(db).add(std::move(w));
 }
 
 Result<StoredWorld> load_world(store::Store& db, const std::string& id) {
-  return db.read([&](Database& d) -> Result<StoredWorld> {
-    auto st = d.prepare(std::string("SELECT ") + kColumns + " FROM worlds WHERE id = ?");
-    if (!st) return tl::unexpected(st.error());
-    st->bind(1, id);
-    auto r = st->step();
-    if (!r) return tl::unexpected(r.error());
-    if (!*r) return fail(ErrorCode::kNotFound, "no world with id '" + id + "'");
-    return row(*st);
-  });
+  return cards::WorldStore(db).get(id);
 }
 
 // The stored text always built before it was stored; a failure here is a broken invariant.
@@ -172,12 +112,10 @@ Result<std::string> domain_for(const Request& req, const world::World& w) {
   if (auto d = query(req, "domain")) {
     if (!knowledge::is_building_type(*d))
       return fail(ErrorCode::kValidation, "unknown building type",
-                  {{"", "not a building type: '" + *d + "'", "domain", 0, 0}});
+                  {FieldError::query("domain", "not a building type: '" + *d + "'")});
     return *d;
   }
-  std::vector<std::string> names;
-  for (const auto& z : w.zones()) names.push_back(z.name + " " + z.type);
-  return knowledge::classify_building_type(names).type;
+  return floorplan::building_type_of(w);
 }
 
 void world_routes(Router& http, RouteContext& ctx) {
@@ -241,46 +179,21 @@ void world_routes(Router& http, RouteContext& ctx) {
       });
 
   http.Get("/api/v1/worlds", [&ctx](const Request& req, Response& res) {
-    auto page = parse_page(query(req, "page_size"), query(req, "cursor"), ctx.config.default_page_size,
-                           ctx.config.max_page_size);
+    auto page = ctx.page(req);
     if (!page) return reply_problem(res, page.error(), req.path);
-    const auto size = static_cast<std::int64_t>(page->page_size);
     std::optional<std::int64_t> before;
     if (page->cursor) {
       auto seq = parse_sequence_cursor(*page->cursor, kCursorPrefix);
       if (!seq) return reply_problem(res, seq.error(), req.path);
       before = *seq;
     }
-    const auto domain = query(req, "domain");
-    std::string sql = std::string("SELECT ") + kColumns + ", seq FROM worlds WHERE 1";
-    if (before) sql += " AND seq < :before";
-    if (domain) sql += " AND domain = :domain";
-    sql += " ORDER BY seq DESC LIMIT :limit";
-    auto listed = ctx.store.read([&](Database& d) -> Result<Json> {
-      auto st = d.prepare(sql);
-      if (!st) return tl::unexpected(st.error());
-      int i = 1;
-      if (before) st->bind(i++, *before);
-      if (domain) st->bind(i++, *domain);
-      st->bind(i, size + 1);
-      Json items = Json::array();
-      Json next = nullptr;
-      std::int64_t last = 0;
-      for (;;) {
-        auto r = st->step();
-        if (!r) return tl::unexpected(r.error());
-        if (!*r) break;
-        if (static_cast<std::int64_t>(items.size()) == size) {
-          next = std::string(kCursorPrefix) + std::to_string(last);
-          break;
-        }
-        last = st->int64(13);
-        items.push_back(summary(row(*st)));
-      }
-      return Json{{"items", std::move(items)}, {"next_cursor", next}};
-    });
+    auto listed = cards::WorldStore(ctx.store).list(page->page_size, before, query(req, "domain"));
     if (!listed) return reply_problem(res, listed.error(), req.path);
-    reply_json(res, 200, *listed);
+    Json items = Json::array();
+    for (const StoredWorld& w : listed->items) items.push_back(summary(w));
+    Json next = nullptr;
+    if (listed->next_before) next = std::string(kCursorPrefix) + std::to_string(*listed->next_before);
+    reply_json(res, 200, {{"items", std::move(items)}, {"next_cursor", std::move(next)}});
   });
 
   http.Get(kWorldPath, [&ctx](const Request& req, Response& res) {
@@ -304,10 +217,11 @@ void world_routes(Router& http, RouteContext& ctx) {
     const auto format = query(req, "format");
     static const std::vector<std::string> kFormats = {"sdf", "pedsim", "map", "map-pgm", "map-yaml", "svg"};
     if (!format || std::find(kFormats.begin(), kFormats.end(), *format) == kFormats.end())
-      return reply_problem(res,
-                           Error(ErrorCode::kValidation, "choose an export format",
-                                 {{"", "one of sdf, pedsim, map, map-pgm, map-yaml, svg", "format", 0, 0}}),
-                           req.path);
+      return reply_problem(
+          res,
+          Error(ErrorCode::kValidation, "choose an export format",
+                {FieldError::query("format", "one of sdf, pedsim, map, map-pgm, map-yaml, svg")}),
+          req.path);
     auto w = load_world(ctx.store, req.matches[1].str());
     if (!w) return reply_problem(res, w.error(), req.path);
     auto world = world_of(*w);
@@ -372,12 +286,6 @@ void world_routes(Router& http, RouteContext& ctx) {
 }
 
 }  // namespace
-
-Result<StoredWorldText> stored_world_text(store::Store& store, const std::string& id) {
-  auto w = load_world(store, id);
-  if (!w) return tl::unexpected(w.error());
-  return StoredWorldText{w->id, w->domain, w->world_yaml};
-}
 
 SOCSIM_ROUTES("worlds", world_routes);
 

@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "server/api_server.hpp"
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 #include "server/registry.hpp"
 #include "server/routes.hpp"
 #include "server/ws_server.hpp"

@@ -12,6 +12,7 @@
 #include "core/geometry/geos.hpp"
 #include "core/geometry/hull.hpp"
 #include "core/geometry/planar.hpp"
+#include "core/knowledge/building_type.hpp"
 #include "core/world/export_format.hpp"
 #include "core/world/geodesic.hpp"
 
@@ -764,6 +765,13 @@ std::vector<const ComplianceCheck*> ComplianceReport::failures() const {
   for (const auto& c : checks)
     if (c.status == CheckStatus::kFail) out.push_back(&c);
   return out;
+}
+
+std::string building_type_of(const World& world) {
+  std::vector<std::string> names;
+  names.reserve(world.zones().size());
+  for (const auto& z : world.zones()) names.push_back(z.name + " " + z.type);
+  return knowledge::classify_building_type(names).type;
 }
 
 ComplianceReport check_compliance(const World& world, std::string_view building_type,

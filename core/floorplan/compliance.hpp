@@ -72,6 +72,10 @@ struct ComplianceReport {
 // Checks the world against every constraint (one check per constraint, in the given order).
 // `occupants`: the people the scenario puts in the building; egress width and the number of
 // exits are checked for them when they outnumber the occupant load of the floor areas.
+// The building type a world is, classified from its zones' names and types (for worlds that do
+// not say: posted world.yaml files, stored worlds without a domain).
+std::string building_type_of(const World& world);
+
 ComplianceReport check_compliance(const World& world, std::string_view building_type,
                                   std::span<const knowledge::MergedConstraint> constraints,
                                   std::optional<double> occupants = std::nullopt);

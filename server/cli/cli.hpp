@@ -24,5 +24,9 @@ CliArgs parse_cli(const std::vector<std::string>& args);
 std::string cli_db_path(const CliArgs& a);
 // Prints the error and returns the exit code (2 for the caller's mistakes, 1 for ours).
 int cli_report(const Error& e);
+// A file's bytes ("-": standard input); kNotFound "cannot read 'PATH'" when it cannot be read.
+Result<std::string> cli_read_file(const std::string& path);
+// Writes the bytes, creating missing parent folders; kInternal "cannot write 'PATH'" on failure.
+Status cli_write_file(const std::string& path, const std::string& bytes);
 
 }  // namespace socsim::server

@@ -4,7 +4,7 @@
 #include "core/knowledge/building_type.hpp"
 #include "core/knowledge/knowledge_base.hpp"
 #include "core/store/store.hpp"
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 #include "server/registry.hpp"
 
 namespace socsim::server {

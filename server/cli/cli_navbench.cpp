@@ -1,11 +1,10 @@
 // `socsim navbench`: the object-goal navigation benchmark (paper 000 §VI) from the shell; prints
 // the table in the shape of Table I and writes it as JSON with --out.
-#include <fstream>
 #include <iostream>
 
 #include "core/navbench/benchmark.hpp"
 #include "core/store/store.hpp"
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 #include "server/registry.hpp"
 
 namespace socsim::server {
@@ -74,12 +73,8 @@ int navbench_command(const std::vector<std::string>& args) {
   if (!result) return cli_report(result.error());
   std::cout << navbench::format_table(*result);
   if (auto out = a.opt("--out")) {
-    std::ofstream f(*out, std::ios::binary);
-    f << navbench::to_json(*result, a.flag("--episodes")).dump(2) << "\n";
-    if (!f) {
-      std::cerr << "socsim: cannot write " << *out << "\n";
-      return 1;
-    }
+    if (auto s = cli_write_file(*out, navbench::to_json(*result, a.flag("--episodes")).dump(2) + "\n"); !s)
+      return cli_report(s.error());
   }
   return 0;
 }

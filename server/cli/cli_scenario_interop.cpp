@@ -2,16 +2,14 @@
 // world.yaml + scenario program, and a world + program out as HuNavSim or pedsim_ros input.
 #include <charconv>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "core/crowd/program.hpp"
 #include "core/interop/export_hunav.hpp"
 #include "core/interop/export_pedsim_scenario.hpp"
 #include "core/interop/pedsim_program.hpp"
 #include "core/world/world_yaml.hpp"
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 #include "server/registry.hpp"
 
 namespace socsim::server {
@@ -24,22 +22,10 @@ constexpr const char* kExportUsage =
     "  scenario export --world W.yaml --program P.json --format hunav|pedsim --out DIR [--seed S]\n"
     "                        HuNavSim agents YAML + one BT per agent, or a pedsim_ros scenario XML\n";
 
-std::optional<std::string> read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 bool write_file(const std::filesystem::path& path, const std::string& text) {
-  std::error_code ec;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) std::cerr << "socsim: cannot write " << path.string() << "\n";
-  return static_cast<bool>(out);
+  auto s = cli_write_file(path.string(), text);
+  if (!s) cli_report(s.error());
+  return s.has_value();
 }
 
 // One line per problem, "FILE:LINE: pointer: message", as compilers print them.
@@ -62,8 +48,8 @@ int import_pedsim_command(const std::vector<std::string>& args) {
     return 2;
   }
   const std::string& file = a.words[0];
-  const auto text = read_file(file);
-  if (!text) return cli_report(Error(ErrorCode::kNotFound, "cannot read " + file));
+  const auto text = cli_read_file(file);
+  if (!text) return cli_report(text.error());
   world::PedsimImportOptions options;
   options.name = std::filesystem::path(file).stem().string();
   auto imported = interop::import_pedsim_scenario(*text, options);
@@ -101,12 +87,12 @@ int export_command(const std::vector<std::string>& args) {
       return 2;
     }
   }
-  const auto world_text = read_file(*world_path);
-  if (!world_text) return cli_report(Error(ErrorCode::kNotFound, "cannot read " + *world_path));
+  const auto world_text = cli_read_file(*world_path);
+  if (!world_text) return cli_report(world_text.error());
   auto w = world::world_from_yaml(*world_text);
   if (!w) return report(*world_path, w.error());
-  const auto program_text = read_file(*program_path);
-  if (!program_text) return cli_report(Error(ErrorCode::kNotFound, "cannot read " + *program_path));
+  const auto program_text = cli_read_file(*program_path);
+  if (!program_text) return cli_report(program_text.error());
   auto program = crowd::program_from_text(*program_text);
   if (!program) return report(*program_path, program.error());
 

@@ -4,11 +4,10 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "core/crowd/scenario_runner.hpp"
 #include "core/world/world_yaml.hpp"
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 #include "server/registry.hpp"
 
 namespace socsim::server {
@@ -17,17 +16,6 @@ namespace {
 constexpr const char* kUsage =
     "  simulate --world W.yaml --program P.json --seconds T --seed S --out traj.csv [--metrics m.json]\n"
     "           [--threads 1] [--every 1]   run a scenario program headless (frames every N steps)\n";
-
-std::optional<std::string> read_file(const std::string& path, std::string* error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    *error = "cannot read " + path;
-    return std::nullopt;
-  }
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Shortest text that reads back as the same double (the CSV is as deterministic as the run).
 void put(std::string& out, double v) {
@@ -66,13 +54,12 @@ int simulate_command(const std::vector<std::string>& args) {
     return 2;
   }
 
-  std::string io_error;
-  const auto world_text = read_file(*world_path, &io_error);
-  if (!world_text) return cli_report(Error(ErrorCode::kNotFound, io_error));
+  const auto world_text = cli_read_file(*world_path);
+  if (!world_text) return cli_report(world_text.error());
   auto world = world::world_from_yaml(*world_text);
   if (!world) return cli_report(world.error());
-  const auto program_text = read_file(*program_path, &io_error);
-  if (!program_text) return cli_report(Error(ErrorCode::kNotFound, io_error));
+  const auto program_text = cli_read_file(*program_path);
+  if (!program_text) return cli_report(program_text.error());
   auto program = crowd::program_from_text(*program_text);
   if (!program) return cli_report(program.error());
 

@@ -2,7 +2,6 @@
 // and dynamic household scenes from the shell. A SCENE is a household document written with -o,
 // or the id of a stored household.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -11,7 +10,7 @@
 #include "core/household/persona_generator.hpp"
 #include "core/household/procthor.hpp"
 #include "core/llm/llm_config.hpp"
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 #include "server/registry.hpp"
 
 namespace socsim::server {
@@ -57,11 +56,9 @@ std::optional<std::int64_t> integer_option(const CliArgs& a, const std::string& 
 }
 
 Result<Json> read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return fail(ErrorCode::kNotFound, "cannot read '" + path + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  auto j = parse_json_untrusted(ss.str());
+  auto text = cli_read_file(path);
+  if (!text) return tl::unexpected(text.error());
+  auto j = parse_json_untrusted(*text);
   if (!j) {
     auto e = j.error();
     e.detail = path + ": " + e.detail;
@@ -72,12 +69,7 @@ Result<Json> read_json_file(const std::string& path) {
 
 int write_or_print(const CliArgs& a, const Json& j) {
   if (auto out = a.opt("-o")) {
-    std::ofstream f(*out);
-    f << j.dump(2) << "\n";
-    if (!f) {
-      std::cerr << "socsim: cannot write '" << *out << "'\n";
-      return 1;
-    }
+    if (auto s = cli_write_file(*out, j.dump(2) + "\n"); !s) return cli_report(s.error());
     return 0;
   }
   std::cout << j.dump(2) << "\n";
@@ -227,12 +219,7 @@ int household_command(const std::vector<std::string>& args) {
       if (auto s = hh::store_household(**store, *doc, summary, "cli", std::nullopt); !s)
         return report(s.error());
     if (auto out = a.opt("-o")) {
-      std::ofstream f(*out);
-      f << hh::to_json(*doc).dump() << "\n";
-      if (!f) {
-        std::cerr << "socsim: cannot write '" << *out << "'\n";
-        return 1;
-      }
+      if (auto s = cli_write_file(*out, hh::to_json(*doc).dump() + "\n"); !s) return cli_report(s.error());
     }
     std::cout << summary.dump(2) << "\n";
     return 0;

@@ -1,9 +1,7 @@
 // `socsim world generate|validate|export`: floor plans, world.yaml validation with the compliance
 // report, and simulator exports from the shell (offline generator; the knowledge store gives the codes).
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "core/floorplan/offline.hpp"
 #include "core/floorplan/request.hpp"
@@ -12,7 +10,7 @@
 #include "core/store/store.hpp"
 #include "core/world/world_export.hpp"
 #include "core/world/world_yaml.hpp"
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 #include "server/registry.hpp"
 
 namespace socsim::server {
@@ -27,21 +25,6 @@ constexpr const char* kUsage =
     "compliance report\n"
     "  world export FILE --format sdf|pedsim|map|svg -o OUT               simulator/map export (map: OUT.pgm "
     "+ OUT.yaml)\n";
-
-Result<std::string> read_file(const std::string& path, const std::string& what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return fail(ErrorCode::kBadRequest, "cannot read " + what + " '" + path + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Status write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) return fail(ErrorCode::kInternal, "cannot write '" + path + "'");
-  return {};
-}
 
 int usage(const std::string& why) {
   std::cerr << "socsim: " << why << "\nusage:\n" << kUsage;
@@ -67,7 +50,7 @@ int generate(const CliArgs& a) {
   Json body = Json::object();
   if (auto p = a.opt("--prompt")) body["prompt"] = *p;
   if (auto f = a.opt("--scene-graph")) {
-    auto text = read_file(*f, "scene graph");
+    auto text = cli_read_file(*f);
     if (!text) return cli_report(text.error());
     auto j = parse_json_untrusted(*text);
     if (!j) return cli_report(j.error());
@@ -98,7 +81,7 @@ int generate(const CliArgs& a) {
   if (!plan) return cli_report(plan.error());
   const std::string yaml = world::world_to_yaml(plan->world);
   if (auto out = a.opt("-o")) {
-    if (auto s = write_file(*out, yaml); !s) return cli_report(s.error());
+    if (auto s = cli_write_file(*out, yaml); !s) return cli_report(s.error());
   } else {
     std::cout << yaml;
   }
@@ -106,7 +89,7 @@ int generate(const CliArgs& a) {
     Json j = {{"compliance", floorplan::to_json(plan->compliance)},
               {"provenance", plan->provenance},
               {"scene_graph", floorplan::to_json(plan->scene_graph)}};
-    if (auto s = write_file(*report, j.dump(2) + "\n"); !s) return cli_report(s.error());
+    if (auto s = cli_write_file(*report, j.dump(2) + "\n"); !s) return cli_report(s.error());
   }
   std::cerr << plan->world.name() << ": " << plan->world.zones().size() << " zones, "
             << plan->world.doors().size() << " doors, " << plan->world.area() << " m²; "
@@ -116,7 +99,7 @@ int generate(const CliArgs& a) {
 
 int validate(const CliArgs& a) {
   if (a.words.size() < 2) return usage("name the world.yaml to validate");
-  auto text = read_file(a.words[1], "world");
+  auto text = cli_read_file(a.words[1]);
   if (!text) return cli_report(text.error());
   auto w = world::world_from_yaml(*text);
   if (!w) return cli_report(w.error());
@@ -125,9 +108,7 @@ int validate(const CliArgs& a) {
     if (!knowledge::is_building_type(*d)) return usage("unknown --domain '" + *d + "'");
     domain = *d;
   } else {
-    std::vector<std::string> names;
-    for (const auto& z : w->zones()) names.push_back(z.name + " " + z.type);
-    domain = knowledge::classify_building_type(names).type;
+    domain = floorplan::building_type_of(*w);
   }
   auto store = store::Store::open(cli_db_path(a));
   if (!store) return cli_report(store.error());
@@ -145,17 +126,17 @@ int export_world(const CliArgs& a) {
   const auto format = a.opt("--format");
   const auto out = a.opt("-o");
   if (!format || !out) return usage("export needs --format and -o");
-  auto text = read_file(a.words[1], "world");
+  auto text = cli_read_file(a.words[1]);
   if (!text) return cli_report(text.error());
   auto w = world::world_from_yaml(*text);
   if (!w) return cli_report(w.error());
   Status s;
   if (*format == "sdf") {
-    s = write_file(*out, world::export_sdf(*w));
+    s = cli_write_file(*out, world::export_sdf(*w));
   } else if (*format == "pedsim") {
-    s = write_file(*out, world::export_pedsim(*w));
+    s = cli_write_file(*out, world::export_pedsim(*w));
   } else if (*format == "svg") {
-    s = write_file(*out, world::export_svg(*w));
+    s = cli_write_file(*out, world::export_svg(*w));
   } else if (*format == "map") {
     // OUT names the image; the metadata goes next to it with .yaml.
     std::string stem = *out;
@@ -163,8 +144,8 @@ int export_world(const CliArgs& a) {
     world::RosMapOptions mo;
     mo.image_file = std::filesystem::path(stem + ".pgm").filename().string();
     const auto map = world::export_ros_map(*w, mo);
-    s = write_file(stem + ".pgm", map.pgm);
-    if (s) s = write_file(stem + ".yaml", map.yaml);
+    s = cli_write_file(stem + ".pgm", map.pgm);
+    if (s) s = cli_write_file(stem + ".yaml", map.yaml);
   } else {
     return usage("--format is sdf, pedsim, map or svg");
   }

@@ -1,8 +1,6 @@
 // `socsim scenario generate|replay`: text to scenario from the shell with the offline generator
 // (the same pipeline as POST /api/v1/scenarios), and the replay check of a card file.
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "core/cards/catalogue.hpp"
 #include "core/knowledge/knowledge_base.hpp"
@@ -10,7 +8,7 @@
 #include "core/scenario/trajectory_store.hpp"
 #include "core/store/store.hpp"
 #include "core/world/world_yaml.hpp"
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 #include "server/prompt_gate.hpp"
 #include "server/registry.hpp"
 
@@ -27,21 +25,6 @@ constexpr const char* kGenerateUsage =
 constexpr const char* kReplayUsage =
     "  scenario replay CARD.json                                          re-run a card; exit 0 when "
     "bit-identical\n";
-
-Result<std::string> read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return fail(ErrorCode::kNotFound, "cannot read '" + path + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Status write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) return fail(ErrorCode::kInternal, "cannot write '" + path + "'");
-  return {};
-}
 
 // Whole numbers and decimals from the command line become JSON numbers; the request parser
 // then checks their ranges with the same messages as the API.
@@ -64,7 +47,7 @@ int generate_command(const std::vector<std::string>& args) {
   if (auto v = a.opt("--agents")) body["agents"] = number_or_text(*v);
   if (auto v = a.opt("--domain")) body["domain"] = *v;
   if (auto v = a.opt("--scene-graph")) {
-    auto text = read_text(*v);
+    auto text = cli_read_file(*v);
     if (!text) return cli_report(text.error());
     auto graph = parse_json_untrusted(*text);
     if (!graph) return cli_report(graph.error());
@@ -72,7 +55,7 @@ int generate_command(const std::vector<std::string>& args) {
   }
   std::optional<scenario::ScenarioWorld> world;
   if (auto v = a.opt("--world")) {
-    auto text = read_text(*v);
+    auto text = cli_read_file(*v);
     if (!text) return cli_report(text.error());
     auto w = world::world_from_yaml(*text);
     if (!w) return cli_report(w.error());
@@ -100,12 +83,12 @@ int generate_command(const std::vector<std::string>& args) {
 
   const std::string card_text = cards::content_to_json(outcome->card).dump(2) + "\n";
   if (auto out = a.opt("-o")) {
-    if (auto s = write_text(*out, card_text); !s) return cli_report(s.error());
+    if (auto s = cli_write_file(*out, card_text); !s) return cli_report(s.error());
   } else if (!a.flag("--store")) {
     std::cout << card_text;
   }
   if (auto path = a.opt("--log")) {
-    if (auto s = write_text(*path, outcome->log.compressed()); !s) return cli_report(s.error());
+    if (auto s = cli_write_file(*path, outcome->log.compressed()); !s) return cli_report(s.error());
   }
   if (a.flag("--store")) {
     if (auto s = scenario::save_trajectory_log(**store, outcome->log); !s) return cli_report(s.error());
@@ -125,7 +108,7 @@ int replay_command(const std::vector<std::string>& args) {
     std::cerr << "usage:\n" << kReplayUsage;
     return 2;
   }
-  auto text = read_text(a.words[0]);
+  auto text = cli_read_file(a.words[0]);
   if (!text) return cli_report(text.error());
   // A catalogue export document (`socsim card export`, GET /cards/{id}/export), or the content
   // alone (`scenario generate -o`).

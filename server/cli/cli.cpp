@@ -1,6 +1,7 @@
 // `socsim` subcommands other than serve: card list|show|export|import, migrate, version.
-#include "server/cli.hpp"
+#include "server/cli/cli.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -75,31 +76,17 @@ int card_command(const std::vector<std::string>& args) {
     auto doc = catalogue.export_card(p.words[1]);
     if (!doc) return cli_report(doc.error());
     if (auto out = p.opt("-o")) {
-      std::ofstream f(*out, std::ios::binary);
-      f << *doc;
-      if (!f) {
-        std::cerr << "socsim: cannot write " << *out << "\n";
-        return 1;
-      }
+      if (auto s = cli_write_file(*out, *doc); !s) return cli_report(s.error());
     } else {
       std::cout << *doc;
     }
     return 0;
   }
   if (verb == "import") {
-    std::stringstream buf;
-    if (p.words[1] == "-") {
-      buf << std::cin.rdbuf();
-    } else {
-      std::ifstream f(p.words[1], std::ios::binary);
-      if (!f) {
-        std::cerr << "socsim: cannot read " << p.words[1] << "\n";
-        return 2;
-      }
-      buf << f.rdbuf();
-    }
+    auto text = cli_read_file(p.words[1]);
+    if (!text) return cli_report(text.error());
     // The operator's own import keeps the author written in the file (the API does not).
-    auto card = cards::parse_export_document(buf.str(), catalogue.limits());
+    auto card = cards::parse_export_document(*text, catalogue.limits());
     if (!card) return cli_report(card.error());
     auto outcome = catalogue.import_card(*card);
     if (!outcome) return cli_report(outcome.error());
@@ -174,6 +161,29 @@ std::string cli_db_path(const CliArgs& a) {
 int cli_report(const Error& e) {
   std::cerr << "socsim: " << e.message() << "\n";
   return e.status() >= 500 ? 1 : 2;
+}
+
+Result<std::string> cli_read_file(const std::string& path) {
+  std::ostringstream bytes;
+  if (path == "-") {
+    bytes << std::cin.rdbuf();
+    return bytes.str();
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return fail(ErrorCode::kNotFound, "cannot read '" + path + "'");
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+Status cli_write_file(const std::string& path, const std::string& bytes) {
+  const std::filesystem::path file(path);
+  std::error_code ec;
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+  std::ofstream out(file, std::ios::binary);
+  out << bytes;
+  out.close();
+  if (!out) return fail(ErrorCode::kInternal, "cannot write '" + path + "'");
+  return {};
 }
 
 int run_cli(const std::vector<std::string>& args) {
