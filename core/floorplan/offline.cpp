@@ -572,10 +572,10 @@ class Layout {
 
   // The laid-out plan as WorldBuilder input (metres, first quadrant).
   void emit(WorldBuilder& builder, std::vector<Zone>& zones, std::vector<DoorSpec>& doors) const {
-    const auto [min_x, min_y] = origin();
+    const std::pair<int, int> min = origin();  // no structured binding: lambdas capture it (clang 14)
     auto point = [&](int x, int y) {
       auto [tx, ty] = turned(x, y);
-      return Point{m(tx - min_x), m(ty - min_y)};
+      return Point{m(tx - min.first), m(ty - min.second)};
     };
     for (const auto& r : rooms_) {
       Zone z{r.name, r.type, material_of(graph_.domain, r.type), Polygon{ring_of(r.rect), {}}};

@@ -1,6 +1,7 @@
 #include "core/floorplan/placer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -206,23 +207,179 @@ std::optional<Point> Placer::entity(const std::string& type, const std::string& 
   return std::nullopt;
 }
 
-bool Placer::walkable(std::size_t from, std::vector<std::size_t>* drop) const {
-  constexpr double kRes = 0.1, kRadius = 0.25, kReach = 0.4;
-  const Box& b = f_.box;
-  const int nx = std::max(1, static_cast<int>(std::ceil(b.width() / kRes)));
-  const int ny = std::max(1, static_cast<int>(std::ceil(b.height() / kRes)));
-  auto centre = [&](int x, int y) { return Point{b.min.x + (x + 0.5) * kRes, b.min.y + (y + 0.5) * kRes}; };
-  std::vector<std::uint8_t> blocked(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), 0);
-  auto at = [&](int x, int y) {
+namespace {
+
+// The 0.1 m grid over a room's rectangle that walkable() floods: a cell is blocked when a person
+// of radius 0.25 m centred there would touch a wall or a footprint.
+struct WalkCells {
+  static constexpr double kRes = 0.1, kRadius = 0.25, kReach = 0.4;
+  Box b;
+  int nx, ny;
+  explicit WalkCells(const Box& box)
+      : b(box),
+        nx(std::max(1, static_cast<int>(std::ceil(box.width() / kRes)))),
+        ny(std::max(1, static_cast<int>(std::ceil(box.height() / kRes)))) {}
+  [[nodiscard]] std::size_t size() const {
+    return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
+  }
+  [[nodiscard]] Point centre(int x, int y) const {
+    return {b.min.x + (x + 0.5) * kRes, b.min.y + (y + 0.5) * kRes};
+  }
+  [[nodiscard]] std::size_t at(int x, int y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x);
+  }
+  // Cell range [x0, x1] × [y0, y1] of a box grown by `margin`, clamped to the grid.
+  [[nodiscard]] std::array<int, 4> range(const Box& fb, double margin) const {
+    return {std::max(0, static_cast<int>(std::floor((fb.min.x - margin - b.min.x) / kRes))),
+            std::min(nx - 1, static_cast<int>(std::floor((fb.max.x + margin - b.min.x) / kRes))),
+            std::max(0, static_cast<int>(std::floor((fb.min.y - margin - b.min.y) / kRes))),
+            std::min(ny - 1, static_cast<int>(std::floor((fb.max.y + margin - b.min.y) / kRes)))};
+  }
+  static double distance(const Box& fb, Point c) {
+    const double dx = std::max({fb.min.x - c.x, 0.0, c.x - fb.max.x});
+    const double dy = std::max({fb.min.y - c.y, 0.0, c.y - fb.max.y});
+    return std::hypot(dx, dy);
+  }
+  // Blocks the cells a footprint takes; lists those that were free in `newly` when given.
+  void block(const Box& fb, std::vector<std::uint8_t>& blocked, std::vector<std::size_t>* newly) const {
+    const auto [x0, x1, y0, y1] = range(fb, kRadius);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const std::size_t k = at(x, y);
+        if (blocked[k] || distance(fb, centre(x, y)) >= kRadius) continue;
+        blocked[k] = 1;
+        if (newly) newly->push_back(k);
+      }
+  }
+  // Whether a reached cell lies within reach of the footprint (a person can use it).
+  [[nodiscard]] bool near(const Box& fb, const std::vector<std::uint8_t>& reached) const {
+    const auto [x0, x1, y0, y1] = range(fb, kRadius + kReach);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x)
+        if (reached[at(x, y)] && distance(fb, centre(x, y)) <= kRadius + kReach - 0.05) return true;
+    return false;
+  }
+};
+
+bool same_box(const Box& a, const Box& b) {
+  return a.min.x == b.min.x && a.min.y == b.min.y && a.max.x == b.max.x && a.max.y == b.max.y;
+}
+
+}  // namespace
+
+// The door seeds: a cell just inside each door.
+std::vector<std::size_t> Placer::door_cells() const {
+  const WalkCells g(f_.box);
+  std::vector<std::size_t> seeds;
+  for (const auto& d : doors_) {
+    const int side = nearest_side(g.b, d.centre);
+    Point p = d.centre;
+    const double in = WalkCells::kRadius + 0.1;
+    if (side == 0) p.y = g.b.min.y + in;
+    if (side == 1) p.x = g.b.max.x - in;
+    if (side == 2) p.y = g.b.max.y - in;
+    if (side == 3) p.x = g.b.min.x + in;
+    const int x = std::clamp(static_cast<int>(std::floor((p.x - g.b.min.x) / WalkCells::kRes)), 0, g.nx - 1);
+    const int y = std::clamp(static_cast<int>(std::floor((p.y - g.b.min.y) / WalkCells::kRes)), 0, g.ny - 1);
+    seeds.push_back(g.at(x, y));
+  }
+  return seeds;
+}
+
+// One footprint added to a grid that passed: the cells it newly blocks can only cut paths through
+// themselves, so when the reached cells bordering them still connect within a window around
+// them, every cell reached before and not blocked now is still reached — the flood fill's
+// answer without flooding. nullopt when that cannot be shown here (the caller floods).
+std::optional<bool> Placer::walkable_after_one(const std::vector<Box>& boxes) const {
+  if (!walk_ || walk_->boxes.size() + 1 != boxes.size()) return std::nullopt;
+  for (std::size_t k = 0; k < walk_->boxes.size(); ++k)
+    if (!same_box(walk_->boxes[k], boxes[k])) return std::nullopt;
+  const WalkCells g(f_.box);
+  WalkGrid& w = *walk_;
+  const Box& added = boxes.back();
+  std::vector<std::size_t> newly;
+  g.block(added, w.blocked, &newly);
+  std::vector<std::size_t> lost;  // newly blocked cells that were reached
+  auto restore = [&] {
+    for (std::size_t k : lost) w.reached[k] = 1;
+    for (std::size_t k : newly) w.blocked[k] = 0;
   };
-  for (int y = 0; y < ny; ++y)
-    for (int x = 0; x < nx; ++x) {
-      const Point c = centre(x, y);
-      if (c.x - b.min.x < kRadius || b.max.x - c.x < kRadius || c.y - b.min.y < kRadius ||
-          b.max.y - c.y < kRadius)
-        blocked[at(x, y)] = 1;
+  const auto xy = [&](std::size_t k) {
+    return std::pair{static_cast<int>(k % static_cast<std::size_t>(g.nx)),
+                     static_cast<int>(k / static_cast<std::size_t>(g.nx))};
+  };
+  int x0 = g.nx, x1 = -1, y0 = g.ny, y1 = -1;  // the newly blocked cells' bounds
+  std::vector<std::size_t> rim;                // reached free cells next to them
+  for (std::size_t k : newly) {
+    const auto [x, y] = xy(k);
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    const int next[4][2] = {{x + 1, y}, {x - 1, y}, {x, y + 1}, {x, y - 1}};
+    for (const auto& n : next) {
+      if (n[0] < 0 || n[1] < 0 || n[0] >= g.nx || n[1] >= g.ny) continue;
+      const std::size_t c = g.at(n[0], n[1]);
+      if (!w.blocked[c] && w.reached[c]) rim.push_back(c);
     }
+  }
+  for (std::size_t s : door_cells())
+    if (w.blocked[s]) {  // a door walled in: what the flood fill says too
+      restore();
+      return false;
+    }
+  if (rim.size() > 1) {
+    constexpr int kMargin = 10;  // cells (1 m) around the newly blocked ones
+    const int wx0 = std::max(0, x0 - kMargin), wx1 = std::min(g.nx - 1, x1 + kMargin);
+    const int wy0 = std::max(0, y0 - kMargin), wy1 = std::min(g.ny - 1, y1 + kMargin);
+    const int ww = wx1 - wx0 + 1;
+    std::vector<std::uint8_t> seen(static_cast<std::size_t>(ww) * static_cast<std::size_t>(wy1 - wy0 + 1), 0);
+    const auto local = [&](std::size_t c) {
+      const auto [x, y] = xy(c);
+      return static_cast<std::size_t>(y - wy0) * static_cast<std::size_t>(ww) +
+             static_cast<std::size_t>(x - wx0);
+    };
+    std::vector<std::size_t> queue{rim.front()};
+    seen[local(rim.front())] = 1;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const auto [x, y] = xy(queue[head]);
+      const int next[4][2] = {{x + 1, y}, {x - 1, y}, {x, y + 1}, {x, y - 1}};
+      for (const auto& n : next) {
+        if (n[0] < wx0 || n[1] < wy0 || n[0] > wx1 || n[1] > wy1) continue;
+        const std::size_t c = g.at(n[0], n[1]);
+        if (w.blocked[c] || seen[local(c)]) continue;
+        seen[local(c)] = 1;
+        queue.push_back(c);
+      }
+    }
+    if (!std::all_of(rim.begin(), rim.end(), [&](std::size_t c) { return seen[local(c)] != 0; })) {
+      restore();
+      return std::nullopt;
+    }
+  }
+  for (std::size_t k : newly)
+    if (w.reached[k]) {
+      w.reached[k] = 0;
+      lost.push_back(k);
+    }
+  // Every footprint must still have a reached cell within reach: the new one, and those whose
+  // reach could have lost one.
+  const double reach = WalkCells::kRadius + WalkCells::kReach;
+  for (const Box& fb : boxes) {
+    if (!newly.empty() && &fb != &added) {
+      const auto [bx0, bx1, by0, by1] = g.range(fb, reach);
+      if (bx1 < x0 || bx0 > x1 || by1 < y0 || by0 > y1) continue;
+    } else if (&fb != &added) {
+      continue;
+    }
+    if (!g.near(fb, w.reached)) {
+      restore();
+      return false;
+    }
+  }
+  w.boxes.push_back(added);
+  return true;
+}
+
+bool Placer::walkable(std::size_t from, std::vector<std::size_t>* drop) const {
+  const WalkCells g(f_.box);
   std::vector<Box> boxes;
   std::vector<std::size_t> index_of;
   for (std::size_t k = 0; k < out_.entities.size(); ++k) {
@@ -232,45 +389,34 @@ bool Placer::walkable(std::size_t from, std::vector<std::size_t>* drop) const {
     if (!mine(eb)) continue;
     boxes.push_back(eb);
     index_of.push_back(k);
-    const Box& fb = boxes.back();
-    const int x0 = std::max(0, static_cast<int>(std::floor((fb.min.x - kRadius - b.min.x) / kRes)));
-    const int x1 = std::min(nx - 1, static_cast<int>(std::floor((fb.max.x + kRadius - b.min.x) / kRes)));
-    const int y0 = std::max(0, static_cast<int>(std::floor((fb.min.y - kRadius - b.min.y) / kRes)));
-    const int y1 = std::min(ny - 1, static_cast<int>(std::floor((fb.max.y + kRadius - b.min.y) / kRes)));
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) {
-        const Point c = centre(x, y);
-        const double dx = std::max({fb.min.x - c.x, 0.0, c.x - fb.max.x});
-        const double dy = std::max({fb.min.y - c.y, 0.0, c.y - fb.max.y});
-        if (std::hypot(dx, dy) < kRadius) blocked[at(x, y)] = 1;
-      }
   }
-  // Seeds just inside each door.
-  std::vector<std::size_t> seeds;
-  for (const auto& d : doors_) {
-    const int side = nearest_side(b, d.centre);
-    Point p = d.centre;
-    const double in = kRadius + 0.1;
-    if (side == 0) p.y = b.min.y + in;
-    if (side == 1) p.x = b.max.x - in;
-    if (side == 2) p.y = b.max.y - in;
-    if (side == 3) p.x = b.min.x + in;
-    const int x = std::clamp(static_cast<int>(std::floor((p.x - b.min.x) / kRes)), 0, nx - 1);
-    const int y = std::clamp(static_cast<int>(std::floor((p.y - b.min.y) / kRes)), 0, ny - 1);
-    if (blocked[at(x, y)]) return false;
-    seeds.push_back(at(x, y));
+  if (!drop && !doors_.empty()) {
+    if (auto quick = walkable_after_one(boxes)) return *quick;
   }
+
+  std::vector<std::uint8_t> blocked(g.size(), 0);
+  for (int y = 0; y < g.ny; ++y)
+    for (int x = 0; x < g.nx; ++x) {
+      const Point c = g.centre(x, y);
+      if (c.x - g.b.min.x < WalkCells::kRadius || g.b.max.x - c.x < WalkCells::kRadius ||
+          c.y - g.b.min.y < WalkCells::kRadius || g.b.max.y - c.y < WalkCells::kRadius)
+        blocked[g.at(x, y)] = 1;
+    }
+  for (const Box& fb : boxes) g.block(fb, blocked, nullptr);
+  const std::vector<std::size_t> seeds = door_cells();
+  for (std::size_t s : seeds)
+    if (blocked[s]) return false;
   if (seeds.empty()) return true;
   std::vector<std::uint8_t> reached(blocked.size(), 0);
   std::vector<std::size_t> queue{seeds.front()};
   reached[seeds.front()] = 1;
   for (std::size_t head = 0; head < queue.size(); ++head) {
-    const int x = static_cast<int>(queue[head] % static_cast<std::size_t>(nx));
-    const int y = static_cast<int>(queue[head] / static_cast<std::size_t>(nx));
+    const int x = static_cast<int>(queue[head] % static_cast<std::size_t>(g.nx));
+    const int y = static_cast<int>(queue[head] / static_cast<std::size_t>(g.nx));
     const int next[4][2] = {{x + 1, y}, {x - 1, y}, {x, y + 1}, {x, y - 1}};
     for (const auto& n : next) {
-      if (n[0] < 0 || n[1] < 0 || n[0] >= nx || n[1] >= ny) continue;
-      const std::size_t k = at(n[0], n[1]);
+      if (n[0] < 0 || n[1] < 0 || n[0] >= g.nx || n[1] >= g.ny) continue;
+      const std::size_t k = g.at(n[0], n[1]);
       if (blocked[k] || reached[k]) continue;
       reached[k] = 1;
       queue.push_back(k);
@@ -280,23 +426,7 @@ bool Placer::walkable(std::size_t from, std::vector<std::size_t>* drop) const {
     if (!reached[s]) return false;
   bool ok = true;
   for (std::size_t k = 0; k < boxes.size(); ++k) {
-    const Box& fb = boxes[k];
-    bool near = false;
-    const int x0 = std::max(0, static_cast<int>(std::floor((fb.min.x - kRadius - kReach - b.min.x) / kRes)));
-    const int x1 =
-        std::min(nx - 1, static_cast<int>(std::floor((fb.max.x + kRadius + kReach - b.min.x) / kRes)));
-    const int y0 = std::max(0, static_cast<int>(std::floor((fb.min.y - kRadius - kReach - b.min.y) / kRes)));
-    const int y1 =
-        std::min(ny - 1, static_cast<int>(std::floor((fb.max.y + kRadius + kReach - b.min.y) / kRes)));
-    for (int y = y0; y <= y1 && !near; ++y)
-      for (int x = x0; x <= x1 && !near; ++x) {
-        if (!reached[at(x, y)]) continue;
-        const Point c = centre(x, y);
-        const double dx = std::max({fb.min.x - c.x, 0.0, c.x - fb.max.x});
-        const double dy = std::max({fb.min.y - c.y, 0.0, c.y - fb.max.y});
-        near = std::hypot(dx, dy) <= kRadius + kReach - 0.05;
-      }
-    if (near) continue;
+    if (g.near(boxes[k], reached)) continue;
     const std::size_t index = index_of[k];
     if (drop && index >= from) {
       drop->push_back(index);
@@ -304,6 +434,8 @@ bool Placer::walkable(std::size_t from, std::vector<std::size_t>* drop) const {
       ok = false;
     }
   }
+  if (ok && (!drop || drop->empty()))
+    walk_ = WalkGrid{std::move(boxes), std::move(blocked), std::move(reached)};
   return ok;
 }
 

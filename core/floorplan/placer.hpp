@@ -5,6 +5,7 @@
 // must stay free, and only where every door and piece of furniture stays reachable. Shared by
 // room furnishing (furnish.cpp) and the features and objects a request asks for (features.cpp).
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <limits>
 #include <optional>
@@ -192,11 +193,23 @@ class Placer {
                                                  std::vector<std::string> affordances);
 
  private:
+  // The walkability grid of the last walkable() that passed: the footprints it blocked, the cells
+  // blocked and reached. A call with one footprint more checks only around the new one when it
+  // can prove the answer equal to a full flood fill (walkable_after_one()), else floods again.
+  struct WalkGrid {
+    std::vector<Box> boxes;  // the room's footprints, in furnishing order
+    std::vector<std::uint8_t> blocked, reached;
+  };
+  [[nodiscard]] std::optional<bool> walkable_after_one(const std::vector<Box>& boxes) const;
+  // The walkability grid cell just inside each door, where the flood fill starts.
+  [[nodiscard]] std::vector<std::size_t> door_cells() const;
+
   const Zone& zone_;
   Frame f_;
   std::vector<DoorAt> doors_;
   std::vector<Segment> door_segments_;
   Furnishing& out_;
+  mutable std::optional<WalkGrid> walk_;
 };
 
 // The doors of zone `z` as the placer sees them (centre, width, outside or the type beyond).
