@@ -1,7 +1,6 @@
 #include "server/simulation_sessions.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -9,250 +8,17 @@
 
 #include "core/common/ids.hpp"
 #include "core/crowd/scenario_runner.hpp"
+#include "server/frame_sources.hpp"
 
 namespace socsim::server {
 
 using Clock = std::chrono::steady_clock;
 
-// ---------------------------------------------------------------------------------------------
-// Encodings
-
 namespace {
-
-void put_float(std::string& out, float v) {
-  if (!std::isfinite(v)) v = 0.0f;  // JSON has no NaN; the engine keeps states finite anyway
-  char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, ec == std::errc() ? end : buf);
-}
-
-void put_double(std::string& out, double v) {
-  if (!std::isfinite(v)) v = 0.0;
-  char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, ec == std::errc() ? end : buf);
-}
-
-template <class Int>
-void put_int(std::string& out, Int v) {
-  char buf[24];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, ec == std::errc() ? end : buf);
-}
-
-const std::vector<std::string>& quoted_states() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> q;
-    for (std::string_view n : crowd::activity_names()) q.push_back(Json(std::string(n)).dump());
-    return q;
-  }();
-  return names;
-}
 
 // Simulated times on the wire: microseconds are plenty and keep 0.15000000000000002 readable.
 double wire_time(double t) {
   return std::round(t * 1e6) / 1e6;
-}
-
-}  // namespace
-
-std::string encode_frame_json(std::uint32_t seq, double t, std::span<const FrameAgent> agents,
-                              const std::vector<std::string>& roles,
-                              const std::vector<std::string>& targets) {
-  std::vector<std::string> quoted_roles;
-  quoted_roles.reserve(roles.size());
-  for (const auto& r : roles)
-    quoted_roles.push_back(Json(r).dump(-1, ' ', false, Json::error_handler_t::replace));
-  std::vector<std::string> quoted_targets;
-  quoted_targets.reserve(targets.size());
-  for (const auto& s : targets)
-    quoted_targets.push_back(s.empty() ? "null"
-                                       : Json(s).dump(-1, ' ', false, Json::error_handler_t::replace));
-  const auto& states = quoted_states();
-
-  std::string out;
-  out.reserve(64 + agents.size() * 150);
-  out += R"({"type":"frame","seq":)";
-  put_int(out, seq);
-  out += R"(,"t":)";
-  put_double(out, t);
-  out += R"(,"agents":[)";
-  bool first = true;
-  for (const FrameAgent& a : agents) {
-    if (!first) out += ',';
-    first = false;
-    out += R"({"id":)";
-    put_int(out, a.id);
-    out += R"(,"x":)";
-    put_float(out, a.x);
-    out += R"(,"y":)";
-    put_float(out, a.y);
-    out += R"(,"yaw":)";
-    put_float(out, a.yaw);
-    out += R"(,"vx":)";
-    put_float(out, a.vx);
-    out += R"(,"vy":)";
-    put_float(out, a.vy);
-    out += R"(,"state":)";
-    out += a.state < states.size() ? states[a.state] : std::string("null");
-    out += R"(,"role":)";
-    out += a.role < quoted_roles.size() ? quoted_roles[a.role] : std::string("null");
-    out += R"(,"group_id":)";
-    put_int(out, a.group_id);
-    out += R"(,"target":)";
-    out += a.target < quoted_targets.size() ? quoted_targets[a.target] : std::string("null");
-    out += '}';
-  }
-  out += "]}";
-  return out;
-}
-
-// ---------------------------------------------------------------------------------------------
-// What a session plays
-
-// Names of places agents head for, numbered as they first appear (0 = none).
-struct TargetTable {
-  std::unordered_map<std::string, std::uint16_t> index;
-  std::vector<std::string> names{""};
-  bool grew = false;
-  std::uint16_t of(const std::string& name) {
-    if (name.empty()) return 0;
-    if (auto it = index.find(name); it != index.end()) return it->second;
-    if (names.size() > std::numeric_limits<std::uint16_t>::max()) return 0;
-    const auto i = static_cast<std::uint16_t>(names.size());
-    names.push_back(name);
-    index.emplace(name, i);
-    grew = true;
-    return i;
-  }
-};
-
-class FrameSource {
- public:
-  virtual ~FrameSource() = default;
-  [[nodiscard]] virtual double time() const = 0;
-  [[nodiscard]] virtual double interval() const = 0;  // simulated seconds per advance
-  [[nodiscard]] virtual double start_time() const = 0;
-  [[nodiscard]] virtual double end_time() const = 0;
-  [[nodiscard]] virtual std::vector<std::string> roles() const = 0;
-  [[nodiscard]] virtual bool seekable() const { return false; }
-  [[nodiscard]] virtual std::size_t agent_count() const = 0;
-  virtual bool advance() = 0;  // false: nothing follows
-  virtual void seek(double /*t*/) {}
-  virtual void snapshot(std::vector<FrameAgent>& out, TargetTable& targets) = 0;
-};
-
-namespace {
-
-std::int32_t clamp_group(std::int64_t g) {
-  return static_cast<std::int32_t>(std::clamp<std::int64_t>(g, -1, std::numeric_limits<std::int32_t>::max()));
-}
-
-class RunnerSource final : public FrameSource {
- public:
-  RunnerSource(std::shared_ptr<const world::World> world, std::unique_ptr<crowd::ScenarioRunner> runner,
-               double duration)
-      : world_(std::move(world)), runner_(std::move(runner)), duration_(duration) {
-    roles_ = runner_->sim().roles().names();
-    for (std::size_t i = 0; i < roles_.size(); ++i)
-      role_index_.emplace(roles_[i], static_cast<std::uint8_t>(std::min<std::size_t>(i, 255)));
-  }
-  [[nodiscard]] double time() const override { return runner_->time(); }
-  [[nodiscard]] double interval() const override { return runner_->sim().config().dt; }
-  [[nodiscard]] double start_time() const override { return 0.0; }
-  [[nodiscard]] double end_time() const override { return duration_; }
-  [[nodiscard]] std::vector<std::string> roles() const override { return roles_; }
-  [[nodiscard]] std::size_t agent_count() const override { return runner_->agents().size(); }
-  bool advance() override {
-    runner_->step();
-    return true;
-  }
-  void snapshot(std::vector<FrameAgent>& out, TargetTable& targets) override {
-    const std::vector<crowd::PedestrianState> states = runner_->states();
-    out.clear();
-    out.reserve(states.size());
-    for (const crowd::PedestrianState& s : states) {
-      if (s.activity == crowd::Activity::kExited) continue;  // gone: absent from the frame
-      FrameAgent a;
-      a.id = s.id.value();
-      a.x = static_cast<float>(s.pose.x);
-      a.y = static_cast<float>(s.pose.y);
-      a.yaw = static_cast<float>(s.pose.yaw);
-      a.vx = static_cast<float>(s.twist.vx);
-      a.vy = static_cast<float>(s.twist.vy);
-      a.group_id = clamp_group(s.group_id);
-      a.state = static_cast<std::uint8_t>(s.activity);
-      auto r = role_index_.find(s.role);
-      a.role = r == role_index_.end() ? 255 : r->second;
-      a.target = targets.of(s.intent.target);
-      out.push_back(a);
-    }
-  }
-
- private:
-  std::shared_ptr<const world::World> world_;  // the runner refers to it
-  std::unique_ptr<crowd::ScenarioRunner> runner_;
-  double duration_;
-  std::vector<std::string> roles_;
-  std::unordered_map<std::string, std::uint8_t> role_index_;
-};
-
-class RecordingSource final : public FrameSource {
- public:
-  explicit RecordingSource(scenario::TrajectoryLog log) : log_(std::move(log)) {}
-  [[nodiscard]] double time() const override { return log_.frame_time(frame_); }
-  [[nodiscard]] double interval() const override { return log_.frame_interval(); }
-  [[nodiscard]] double start_time() const override { return log_.frame_time(0); }
-  [[nodiscard]] double end_time() const override { return log_.frame_time(log_.frame_count() - 1); }
-  [[nodiscard]] std::vector<std::string> roles() const override { return log_.roles(); }
-  [[nodiscard]] bool seekable() const override { return true; }
-  [[nodiscard]] std::size_t agent_count() const override { return log_.agent_count(); }
-  bool advance() override {
-    if (frame_ + 1 >= log_.frame_count()) return false;
-    ++frame_;
-    return true;
-  }
-  // The last frame at or before t.
-  void seek(double t) override {
-    std::size_t lo = 0, hi = log_.frame_count() - 1;
-    while (lo < hi) {
-      const std::size_t mid = (lo + hi + 1) / 2;
-      if (log_.frame_time(mid) <= t + 1e-9)
-        lo = mid;
-      else
-        hi = mid - 1;
-    }
-    frame_ = lo;
-  }
-  void snapshot(std::vector<FrameAgent>& out, TargetTable&) override {
-    const auto agents = log_.frame(frame_);
-    out.clear();
-    out.reserve(agents.size());
-    for (const scenario::LoggedAgent& l : agents) {
-      FrameAgent a;
-      a.id = l.id;
-      a.x = l.x;
-      a.y = l.y;
-      a.yaw = l.yaw;
-      a.vx = l.vx;
-      a.vy = l.vy;
-      a.group_id = l.group_id;
-      a.state = static_cast<std::uint8_t>(l.activity);
-      a.role = static_cast<std::uint8_t>(std::min<std::uint16_t>(l.role, 255));
-      out.push_back(a);
-    }
-  }
-
- private:
-  scenario::TrajectoryLog log_;
-  std::size_t frame_ = 0;
-};
-
-std::size_t program_agent_count(const crowd::Program& p) {
-  std::size_t n = p.robot ? 1 : 0;
-  for (const auto& a : p.agents) n += a.count;
-  for (const auto& g : p.ambient_groups) n += g.size;
-  return n;
 }
 
 }  // namespace
@@ -731,7 +497,7 @@ Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_program(Pro
   info.world_id = request.world_id;
   info.seed = request.seed;
   info.duration_s = duration;
-  auto source = std::make_unique<RunnerSource>(std::move(request.world), std::move(*runner), duration);
+  auto source = runner_source(std::move(request.world), std::move(*runner), duration);
   return add(std::move(info), std::move(source), request.speed);
 }
 
@@ -754,7 +520,7 @@ Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_recording(
   info.author = request.author;
   info.card_id = request.card_id;
   info.world_id = request.world_id;
-  auto source = std::make_unique<RecordingSource>(std::move(request.log));
+  auto source = recording_source(std::move(request.log));
   info.duration_s = source->end_time() - source->start_time();
   return add(std::move(info), std::move(source), request.speed);
 }

@@ -82,7 +82,7 @@ class ViewerLease {
   std::uint64_t viewer_;
 };
 
-// What a session plays (defined in simulation_sessions.cpp): a live runner or a recorded log.
+// What a session plays (server/frame_sources.hpp): a live runner or a recorded log.
 class FrameSource;
 struct TargetTable;
 
