@@ -421,8 +421,8 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
       score.spl += row[m].spl;
     }
     score.el /= n;
-    score.sr *= 100.0 / n;
-    score.spl *= 100.0 / n;
+    score.sr = 100.0 * score.sr / n;  // k·(100/n) can exceed 100 by an ulp when k = n
+    score.spl = 100.0 * score.spl / n;
     result.scores.push_back(score);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
