@@ -644,24 +644,22 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
       if (w.room_id == room.id && w.id.find("|exterior|") == std::string::npos &&
           std::hypot(w.b.x - w.a.x, w.b.z - w.a.z) >= 1.2)
         room_walls.push_back(&w);
-    std::vector<FloorPoint> openings;  // centres of doors and windows on this room's walls
-    for (const auto& d : h.doors)
-      for (const Wall* w : room_walls)
-        if (d.wall0 == w->id || d.wall1 == w->id) {
-          const double len = std::hypot(w->b.x - w->a.x, w->b.z - w->a.z),
-                       t = (d.hole_min.x + d.hole_max.x) / 2;
-          // wall1 runs the other way along the same segment
-          const double along = d.wall0 == w->id ? t : len - t;
-          openings.push_back(
-              {w->a.x + (w->b.x - w->a.x) * along / len, w->a.z + (w->b.z - w->a.z) * along / len});
+    // Centres of every door and window (world coordinates, from the wall their hole is measured
+    // on): hung fixtures keep 1 m from them, on either side of the wall.
+    std::vector<FloorPoint> openings;
+    auto centre_on = [&](const std::string& on_wall, double along) {
+      for (const auto& w : h.walls)
+        if (w.id == on_wall) {
+          const double len = std::hypot(w.b.x - w.a.x, w.b.z - w.a.z);
+          if (len > 0)
+            openings.push_back(
+                {w.a.x + (w.b.x - w.a.x) * along / len, w.a.z + (w.b.z - w.a.z) * along / len});
+          return;
         }
+    };
+    for (const auto& d : h.doors) centre_on(d.wall0, (d.hole_min.x + d.hole_max.x) / 2);
     for (const auto& win : h.windows)
-      for (const Wall* w : room_walls)
-        if (win["wall0"] == w->id) {
-          const double len = std::hypot(w->b.x - w->a.x, w->b.z - w->a.z);
-          const double t = win["assetPosition"]["x"].get<double>();
-          openings.push_back({w->a.x + (w->b.x - w->a.x) * t / len, w->a.z + (w->b.z - w->a.z) * t / len});
-        }
+      centre_on(win["wall0"].get<std::string>(), win["assetPosition"]["x"].get<double>());
     std::map<std::string, int> counters;
     for (const auto& rule : prog.fixtures) {
       if (!rng.chance(rule.p)) continue;
