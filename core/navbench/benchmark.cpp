@@ -79,7 +79,8 @@ Json map_json(const House& house, const NavMap& map) {
          {"x", r.x},
          {"z", r.z},
          {"size_x", e.size_x},
-         {"size_z", e.size_z}});
+         {"size_z", e.size_z},
+         {"yaw", e.rotation.y}});  // degrees; the size is the piece's own, before the turn
   }
   std::string free(static_cast<std::size_t>(map.cells()), '0');
   for (int c = 0; c < map.cells(); ++c)
