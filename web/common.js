@@ -169,7 +169,7 @@ export const fromHouse = (x, z) => [x, -z];
 const roomType = (t) => String(t).replace(/([a-z0-9])([A-Z])/g, '$1_$2').toLowerCase();  // LivingRoom → living_room
 
 // GET /api/v1/households/{id} → .house: rooms [{id, type, floor: [{x, z}]}], walls [{a, b}],
-// doors [{center, direction, width}], receptacles [{id, type, position, size: {x, z}, yaw (degrees)}].
+// doors [{center, direction, width}], windows (same form, not drawn yet), receptacles [{id, type, position, size: {x, z}, yaw (degrees)}].
 export function planFromHousehold(house) {
   return {
     name: house.id,

@@ -176,6 +176,10 @@ TEST(HouseholdApi, HouseholdJobStoresASceneThatAnswersQueries) {
   EXPECT_FALSE(hint["text"].get<std::string>().empty());
   Json exported = get_json(c, base + "/export?format=procthor&t=" + std::to_string(t));
   EXPECT_TRUE(exported.contains("rooms") && exported.contains("objects"));
+  Json plan = get_json(c, base);
+  ASSERT_TRUE(plan["house"].contains("windows"));
+  EXPECT_FALSE(plan["house"]["windows"].empty()) << "generated houses have windows (issue 18)";
+  for (const auto& w : plan["house"]["windows"]) EXPECT_GT(w["width"].get<double>(), 0.5);
   Json stats = get_json(c, base + "/statistics");
   EXPECT_TRUE(stats.contains("paper"));
   // Issue 18: waking activities per persona-day, median length and "leave home" share, with
