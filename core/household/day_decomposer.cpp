@@ -94,7 +94,7 @@ class DayDecomposition {
         case ActivityRole::kChore:
         case ActivityRole::kLaundry:
           if (t.child && a.name != "tidying the bedroom" && a.name != "tidying the living room") continue;
-          w *= (0.5 + t.tidiness) * (weekend ? 1.5 : 1.0) * 0.8;
+          w *= (0.5 + t.tidiness) * (weekend ? 1.5 : 1.0) * 0.5;
           break;
         case ActivityRole::kExercise:
           w *= 0.8;
@@ -119,11 +119,14 @@ class DayDecomposition {
           w *= 0.6;
           break;
         case ActivityRole::kHotDrink:
-          w *= t.child ? 0.0 : 0.3;
+          w *= t.child ? 0.0 : 0.2;
           break;
         default:
           continue;  // anchored roles are placed by rules, not as fillers
       }
+      // People spend free time in few, longer activities (DynamicTHOR: ~20 waking activities a
+      // day, median 20 min): favour activities that can last.
+      w *= std::max(5, a.max_minutes) / 30.0;
       if (w > 0.0) pool_.push_back({&a, w});
     }
     for (const auto& a : k_.activities)
@@ -153,7 +156,8 @@ class DayDecomposition {
   void emit(const ActivitySpec* spec, int start, int end) {
     if (!spec || end <= start) return;
     if (!out_.empty() && out_.back().activity == k_.activity_index(spec->name) && out_.back().end == start &&
-        (spec->role == ActivityRole::kSleep || spec->role == ActivityRole::kLeaveHome)) {
+        (spec->role == ActivityRole::kSleep || spec->role == ActivityRole::kLeaveHome ||
+         spec->role == ActivityRole::kWork)) {  // one work session runs on, not two
       out_.back().end = end;
       return;
     }
@@ -221,12 +225,12 @@ class DayDecomposition {
     std::vector<Item> front, back;
 
     if (after_sleep) {
-      add(front, find("getting out of bed"), 3);
-      add(front, find("using the toilet"), 1, 0.8);
+      add(front, find("getting out of bed"), 3, 0.5);
+      add(front, find("using the toilet"), 1, 0.25);
       if (t.prayers_per_day > 0) add(front, eligible_named("praying"), 1, 0.9);
       if (morning_shower_ && !(age < 10)) add(front, find("taking a shower"), 1);
       for (const char* n : {"washing face", "shaving", "doing a skincare routine", "doing hair"})
-        if (const auto* a = eligible_named(n)) add(front, a, 0, 0.35);
+        if (const auto* a = eligible_named(n)) add(front, a, 0, 0.2);
       if (age >= 3) add(front, find("getting dressed"), 2, is_weekend(plan_.weekday) ? 0.75 : 0.95);
       if (const auto* yoga = eligible_named("doing yoga");
           yoga && (mentions(t, "every morning") || mentions(t, "starts each day") || mentions(t, "daily")))
@@ -234,13 +238,13 @@ class DayDecomposition {
       if (const auto* st = eligible_named("stretching with a foam roller");
           st && mentions(t, "stretches every morning"))
         add(front, st, 1, 0.8);
-      add(front, find("making the bed"), 0, t.child ? 0.3 : t.tidiness);
+      add(front, find("making the bed"), 0, t.child ? 0.2 : 0.6 * t.tidiness);
       // Breakfast only when it falls in its plausible hours and the morning is long enough.
       const ActivitySpec* breakfast = find("having breakfast");
       std::vector<Item> chain;
       if (!t.child && age >= 12) {
         add(chain, eligible_named(mentions(t, "tea") || mentions(t, "chai") ? "making tea" : "making coffee"),
-            1, 0.55);
+            1, 0.4);
         add(chain, eligible_named("making breakfast"), 1, 0.6);
       }
       const int breakfast_at = b.start + total(front) + total(chain);
@@ -252,29 +256,29 @@ class DayDecomposition {
         if (const auto* med = eligible_named("checking blood pressure")) add(front, med, 1, 0.7);
         add(front, eligible_named("washing dishes"), 0, 0.25 * t.tidiness);
       }
-      add(front, find("brushing teeth"), 2, 0.9);
+      add(front, find("brushing teeth"), 2, 0.5);
       if (const auto* pet = eligible_named("feeding the pet")) add(front, pet, 2);
     } else if (after_away) {
-      add(front, find("coming home"), 3, 0.95);
-      add(front, find("washing hands"), 0, 0.4);
+      add(front, find("coming home"), 3, 0.7);
+      add(front, find("washing hands"), 0, 0.2);
     }
 
     if (before_away) {
       if (after_sleep || b.start < 11 * 60)
         if (const auto* lunch = eligible_named("packing a lunch box"); lunch && pc_.works_away(plan_.weekday))
           add(back, lunch, 0, 0.3);
-      add(back, find("using the toilet"), 0, 0.3);
-      add(back, find("getting ready to leave"), 3, 0.95);
+      add(back, find("using the toilet"), 0, 0.15);
+      add(back, find("getting ready to leave"), 3, 0.7);
     } else if (before_sleep) {
       if (age < 10)
         add(back, find("taking a bath"), 1, 0.7);
       else if (!morning_shower_)
         add(back, rng_.chance(0.2) ? eligible_named("taking a bath") : find("taking a shower"), 1, 0.65);
-      if (const auto* d = eligible_named("doing a skincare routine")) add(back, d, 0, 0.3);
-      if (const auto* j = eligible_named("writing in a journal")) add(back, j, 0, 0.6);
-      add(back, find("brushing teeth"), 2, 0.95);
+      if (const auto* d = eligible_named("doing a skincare routine")) add(back, d, 0, 0.15);
+      if (const auto* j = eligible_named("writing in a journal")) add(back, j, 0, 0.4);
+      add(back, find("brushing teeth"), 2, 0.45);
       if (const auto* story = eligible_named("reading a bedtime story")) add(back, story, 1, 0.8);
-      add(back, find("getting ready for bed"), 3);
+      add(back, find("getting ready for bed"), 3, 0.7);
     }
 
     const int length = b.end - b.start;
@@ -321,7 +325,7 @@ class DayDecomposition {
       Anchor a;
       a.meal = role;
       if (!t.child && age >= 12) add(a.chain, eligible_named(prep), 1, p_prep);
-      add(a.chain, eligible_named("setting the table"), 0, age < 13 ? 0.35 : 0.2);
+      add(a.chain, eligible_named("setting the table"), 0, age < 13 ? 0.2 : 0.1);
       add(a.chain, find(meal), 2);
       if (role == ActivityRole::kDinner) {
         if (const auto* med = eligible_named("taking medication")) add(a.chain, med, 2);
@@ -499,13 +503,17 @@ class DayDecomposition {
         last = pick;
         continue;
       }
-      int len = sample_minutes(*pick);
+      // Fillers last between their typical and their longest length.
+      int len =
+          std::max(pick->min_minutes,
+                   round5(rng_.uniform((pick->min_minutes + pick->max_minutes) / 2.0, pick->max_minutes)));
       if (len > remaining) len = remaining;
       if (remaining - len < 10) len = remaining;
       emit(pick, cursor, cursor + len);
       cursor += len;
       last = pick;
-      work_turn = pick->role != ActivityRole::kWork;
+      // A break after about every other work session, not after each.
+      work_turn = pick->role != ActivityRole::kWork || rng_.chance(0.5);
     }
   }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numbers>
 #include <queue>
 #include <set>
 
@@ -107,13 +108,6 @@ std::string room_number(const Room& r) {
   return bar == std::string::npos ? r.id : r.id.substr(bar + 1);
 }
 
-struct Placed {
-  double x0, z0, x1, z1;
-};
-bool overlaps(const Placed& a, const Placed& b) {
-  return a.x0 < b.x1 && b.x0 < a.x1 && a.z0 < b.z1 && b.z0 < a.z1;
-}
-
 }  // namespace
 
 double polygon_area(const std::vector<FloorPoint>& p) {
@@ -133,6 +127,99 @@ bool point_in_polygon(const std::vector<FloorPoint>& p, double x, double z) {
       inside = !inside;
   }
   return inside;
+}
+
+FloorPoint local_to_world(const Entity& e, double lx, double lz) {
+  const double yaw = e.rotation.y * std::numbers::pi / 180.0;
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  return {e.position.x + lx * c + lz * s, e.position.z - lx * s + lz * c};
+}
+
+Footprint footprint(const Entity& e) {
+  const double hx = e.size_x / 2, hz = e.size_z / 2;
+  return {local_to_world(e, -hx, -hz), local_to_world(e, hx, -hz), local_to_world(e, hx, hz),
+          local_to_world(e, -hx, hz)};
+}
+
+bool footprints_overlap(const Footprint& a, const Footprint& b) {
+  constexpr double eps = 1e-6;
+  for (const Footprint* f : {&a, &b})
+    for (std::size_t i = 0; i < 2; ++i) {
+      const FloorPoint p = (*f)[i], q = (*f)[i + 1];
+      const double ax = -(q.z - p.z), az = q.x - p.x;  // edge normal
+      double amin = 1e18, amax = -1e18, bmin = 1e18, bmax = -1e18;
+      for (const auto& v : a)
+        amin = std::min(amin, v.x * ax + v.z * az), amax = std::max(amax, v.x * ax + v.z * az);
+      for (const auto& v : b)
+        bmin = std::min(bmin, v.x * ax + v.z * az), bmax = std::max(bmax, v.x * ax + v.z * az);
+      const double len = std::hypot(ax, az);
+      if (len < eps) continue;
+      if (amax <= bmin + eps * len || bmax <= amin + eps * len) return false;
+    }
+  return true;
+}
+
+namespace {
+bool segments_cross(FloorPoint a, FloorPoint b, FloorPoint c, FloorPoint d) {
+  auto orient = [](FloorPoint p, FloorPoint q, FloorPoint r) {
+    return (q.x - p.x) * (r.z - p.z) - (q.z - p.z) * (r.x - p.x);
+  };
+  const double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c), d4 = orient(a, b, d);
+  constexpr double eps = 1e-9;
+  return ((d1 > eps && d2 < -eps) || (d1 < -eps && d2 > eps)) &&
+         ((d3 > eps && d4 < -eps) || (d3 < -eps && d4 > eps));
+}
+}  // namespace
+
+bool footprint_inside(const std::vector<FloorPoint>& polygon, const Footprint& f) {
+  for (const auto& c : f)
+    if (!point_in_polygon(polygon, c.x, c.z)) return false;
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    for (std::size_t j = 0; j < 4; ++j)
+      if (segments_cross(polygon[i], polygon[(i + 1) % polygon.size()], f[j], f[(j + 1) % 4])) return false;
+  return true;
+}
+
+std::vector<Footprint> door_clearances(const House& h, int room) {
+  std::vector<Footprint> out;
+  if (room < 0 || room >= static_cast<int>(h.rooms.size())) return out;
+  const Room& r = h.rooms[static_cast<std::size_t>(room)];
+  for (const auto& d : h.doors) {
+    if (d.room0 != r.id && d.room1 != r.id) continue;
+    const auto w =
+        std::find_if(h.walls.begin(), h.walls.end(), [&](const Wall& x) { return x.id == d.wall0; });
+    if (w == h.walls.end()) continue;
+    const double len = std::hypot(w->b.x - w->a.x, w->b.z - w->a.z);
+    if (len <= 0) continue;
+    const double ux = (w->b.x - w->a.x) / len, uz = (w->b.z - w->a.z) / len;
+    const double width = std::abs(d.hole_max.x - d.hole_min.x);
+    const double lo = std::min(d.hole_min.x, d.hole_max.x) - 0.15,
+                 hi = std::max(d.hole_min.x, d.hole_max.x) + 0.15;
+    const FloorPoint p0{w->a.x + ux * lo, w->a.z + uz * lo}, p1{w->a.x + ux * hi, w->a.z + uz * hi};
+    // The room's side of the wall: the normal whose probe point lies in the room.
+    const double mid = (lo + hi) / 2;
+    double nx = -uz, nz = ux;
+    if (!point_in_polygon(r.floor, w->a.x + ux * mid + nx * 0.05, w->a.z + uz * mid + nz * 0.05))
+      nx = -nx, nz = -nz;
+    const double depth = width + 0.1;
+    out.push_back({p0, p1, FloorPoint{p1.x + nx * depth, p1.z + nz * depth},
+                   FloorPoint{p0.x + nx * depth, p0.z + nz * depth}});
+  }
+  return out;
+}
+
+int objects_with_children(const House& h) {
+  int n = 0;
+  for (const auto& e : h.entities) n += e.synthetic ? 0 : 1;
+  return n;
+}
+
+std::pair<int, int> procthor_object_range(int rooms) {
+  const double n = rooms;
+  if (rooms <= 4)
+    return {static_cast<int>(std::ceil(102.0 * n / 4)), static_cast<int>(std::floor(109.0 * n / 4))};
+  return {static_cast<int>(std::ceil(102.0 + (124.0 - 102.0) * (n - 4) / 4)),
+          static_cast<int>(std::floor(109.0 + (166.0 - 109.0) * (n - 4) / 4))};
 }
 
 void House::index() {
@@ -431,25 +518,65 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
     }
   }
 
-  // Furniture.
-  std::vector<Placed> taken;
+  // Windows: on outside walls long enough, away from the front door; at least one per house.
+  {
+    int windows = 0;
+    std::vector<std::pair<const Wall*, const Wall*>> candidates;  // (inside, outside) faces
+    auto add_window = [&](const Room& room, const Wall& inside, const Wall& outside, int attempts) {
+      const double len = std::hypot(inside.b.x - inside.a.x, inside.b.z - inside.a.z);
+      double door_lo = 1e18, door_hi = -1e18;
+      for (const auto& d : h.doors)
+        if (d.wall0 == inside.id) door_lo = d.hole_min.x - 0.3, door_hi = d.hole_max.x + 0.3;
+      for (int attempt = 0; attempt < attempts; ++attempt) {
+        const double width = round_cm(rng.uniform(0.8, std::min(1.6, len - 0.6)));
+        const double start = round_cm(rng.uniform(0.3, len - 0.3 - width));
+        if (start < door_hi && start + width > door_lo) continue;
+        const double sill = rng.chance(0.5) ? 0.9 : 1.0;
+        h.windows.push_back(
+            {{"id", "window|" + room_number(room) + "|" + std::to_string(windows)},
+             {"assetId", "socsim/Window"},
+             {"room0", room.id},
+             {"room1", room.id},
+             {"wall0", inside.id},
+             {"wall1", outside.id},
+             {"holePolygon", Json::array({{{"x", start}, {"y", sill}, {"z", 0}},
+                                          {{"x", round_cm(start + width)}, {"y", 2.1}, {"z", 0}}})},
+             {"assetPosition", {{"x", round_cm(start + width / 2)}, {"y", (sill + 2.1) / 2}, {"z", 0}}}});
+        ++windows;
+        return true;
+      }
+      return false;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      int in_room = 0;
+      for (const auto& w : h.walls) {
+        if (w.room_id != h.rooms[i].id || w.id.find("|exterior|") == std::string::npos) continue;
+        const Wall* inside = find_wall(h.rooms[i].id, w.a, w.b, false);
+        const double len = std::hypot(w.b.x - w.a.x, w.b.z - w.a.z);
+        if (!inside || len < 1.5) continue;
+        candidates.emplace_back(inside, &w);
+        if (in_room < 2 && rng.chance(0.6)) in_room += add_window(h.rooms[i], *inside, w, 4) ? 1 : 0;
+      }
+    }
+    for (std::size_t c = 0; c < candidates.size() && windows == 0; ++c) {
+      const Room& room = h.rooms[static_cast<std::size_t>(h.room_index(candidates[c].first->room_id))];
+      add_window(room, *candidates[c].first, *candidates[c].second, 16);
+    }
+  }
+
+  // Furniture: footprints (local size turned by yaw) inside the room, clear of door swings, with
+  // 0.5 m of free floor between pieces so every piece stays reachable.
+  auto place_on_top = [&](const Entity& rec, double height, double margin) {
+    const double hx = std::max(0.0, rec.size_x / 2 - margin), hz = std::max(0.0, rec.size_z / 2 - margin);
+    const FloorPoint p = local_to_world(rec, rng.uniform(-hx, hx), rng.uniform(-hz, hz));
+    return Vec3{round_cm(p.x), round_cm(height), round_cm(p.z)};
+  };
   for (std::size_t i = 0; i < n; ++i) {
     const Room& room = h.rooms[i];
     const Rect& q = rects[i];
     const auto& prog = k.room_programs[index_of(room.type)];
-    std::vector<Placed> blocked;
-    for (const auto& d : h.doors) {
-      for (const std::string* wid : {&d.wall0, &d.wall1}) {
-        for (const auto& w : h.walls) {
-          if (w.id != *wid || w.room_id != room.id) continue;
-          const double len = std::hypot(w.b.x - w.a.x, w.b.z - w.a.z);
-          const double ux = (w.b.x - w.a.x) / len, uz = (w.b.z - w.a.z) / len;
-          const double cx = w.a.x + ux * (d.hole_min.x + d.hole_max.x) / 2,
-                       cz = w.a.z + uz * (d.hole_min.x + d.hole_max.x) / 2;
-          blocked.push_back({cx - 0.9, cz - 0.9, cx + 0.9, cz + 0.9});  // keep the doorway and its swing free
-        }
-      }
-    }
+    const std::vector<Footprint> blocked = door_clearances(h, static_cast<int>(i));
+    std::vector<Footprint> halos;  // placed pieces grown by 0.25 m each side
     int counter = 0;
     for (const auto& rule : prog.furniture) {
       const auto* spec = k.receptacle(rule.type);
@@ -458,77 +585,185 @@ Result<House> generate_house(const HouseRequest& req, const HouseholdKnowledge& 
       for (int c = 0; c < count; ++c) {
         bool placed = false;
         for (int attempt = 0; attempt < 24 && !placed; ++attempt) {
-          double cx, cz, rot = 0, sx = spec->size_x, sz = spec->size_z;
+          Entity e;
+          e.size_x = spec->size_x;
+          e.size_z = spec->size_z;
+          double cx, cz, yaw;
           if (spec->middle) {
-            cx = rng.uniform(q.x0 + 0.6 + sx / 2, q.x1 - 0.6 - sx / 2);
-            cz = rng.uniform(q.z0 + 0.6 + sz / 2, q.z1 - 0.6 - sz / 2);
+            yaw = (attempt % 2) * 90.0;
+            const double ex = yaw == 0 ? e.size_x : e.size_z, ez = yaw == 0 ? e.size_z : e.size_x;
+            cx = rng.uniform(q.x0 + 0.6 + ex / 2, q.x1 - 0.6 - ex / 2);
+            cz = rng.uniform(q.z0 + 0.6 + ez / 2, q.z1 - 0.6 - ez / 2);
             if (attempt < 4) cx = (q.x0 + q.x1) / 2, cz = (q.z0 + q.z1) / 2 + (attempt - 1.5) * 0.6;
           } else {
+            // Back to the wall, facing into the room: side 0 is the z0 wall (yaw 0 faces +z).
             const int side = static_cast<int>(rng.below(4));
-            const bool along_x = side % 2 == 0;
-            if (!along_x) std::swap(sx, sz);
-            rot = side * 90.0;
-            if (along_x) {
-              cx = rng.uniform(q.x0 + sx / 2 + 0.05, q.x1 - sx / 2 - 0.05);
-              cz = side == 0 ? q.z0 + sz / 2 + 0.02 : q.z1 - sz / 2 - 0.02;
+            yaw = side * 90.0;
+            const double ex = side % 2 == 0 ? e.size_x : e.size_z, ez = side % 2 == 0 ? e.size_z : e.size_x;
+            if (side % 2 == 0) {
+              cx = rng.uniform(q.x0 + ex / 2 + 0.05, q.x1 - ex / 2 - 0.05);
+              cz = side == 0 ? q.z0 + ez / 2 + 0.02 : q.z1 - ez / 2 - 0.02;
             } else {
-              cz = rng.uniform(q.z0 + sz / 2 + 0.05, q.z1 - sz / 2 - 0.05);
-              cx = side == 1 ? q.x0 + sx / 2 + 0.02 : q.x1 - sx / 2 - 0.02;
+              cz = rng.uniform(q.z0 + ez / 2 + 0.05, q.z1 - ez / 2 - 0.05);
+              cx = side == 1 ? q.x0 + ex / 2 + 0.02 : q.x1 - ex / 2 - 0.02;
             }
           }
-          if (!(cx - sx / 2 >= q.x0 - 1e-9 && cx + sx / 2 <= q.x1 + 1e-9 && cz - sz / 2 >= q.z0 - 1e-9 &&
-                cz + sz / 2 <= q.z1 + 1e-9))
-            continue;
-          const Placed box{cx - sx / 2, cz - sz / 2, cx + sx / 2, cz + sz / 2};
-          // Keep 0.5 m of free floor around furniture so every piece stays reachable.
-          const Placed halo{box.x0 - 0.25, box.z0 - 0.25, box.x1 + 0.25, box.z1 + 0.25};
+          e.position = {round_cm(cx), round_cm(spec->height / 2), round_cm(cz)};
+          e.rotation = {0, yaw, 0};
+          const Footprint fp = footprint(e);
+          if (!footprint_inside(room.floor, fp)) continue;
           bool clash = false;
-          for (const auto& b : blocked) clash = clash || overlaps(box, b);
-          for (const auto& t : taken) clash = clash || overlaps(halo, t);
+          for (const auto& b : blocked) clash = clash || footprints_overlap(fp, b);
+          for (const auto& t : halos) clash = clash || footprints_overlap(fp, t);
           if (clash) continue;
-          taken.push_back(box);
-          Entity e;
+          Entity halo = e;
+          halo.size_x += 0.5;
+          halo.size_z += 0.5;
+          halos.push_back(footprint(halo));
           e.kind = EntityKind::kReceptacle;
           e.type = spec->type;
           e.id = spec->type + "|" + room_number(room) + "|" + std::to_string(counter++);
           e.asset_id = "socsim/" + spec->type;
           e.room = static_cast<int>(i);
-          e.position = {round_cm(cx), round_cm(spec->height / 2), round_cm(cz)};
-          e.rotation = {0, rot, 0};
-          e.size_x = round_cm(sx);
-          e.size_z = round_cm(sz);
           h.entities.push_back(std::move(e));
           placed = true;
         }
       }
     }
   }
-  // Movable objects on receptacles (appended after all furniture; parents come first).
   const std::size_t furniture = h.entities.size();
-  std::map<int, int> per_room_counter;
-  for (std::size_t r = 0; r < furniture; ++r) {
-    const Entity rec = h.entities[r];
-    const auto* spec = k.receptacle(rec.type);
-    if (!spec || spec->contents.empty()) continue;
-    const int count = static_cast<int>(std::lround(spec->mean_objects * rng.uniform(0.4, 1.6)));
-    std::vector<double> w;
-    for (const auto& [t, x] : spec->contents) w.push_back(x);
-    for (int c = 0; c < count; ++c) {
-      const auto& type = spec->contents[rng.weighted(w)].first;
-      Entity o;
-      o.kind = EntityKind::kObject;
-      o.type = type;
-      o.id = type + "|surface|" + room_number(h.rooms[static_cast<std::size_t>(rec.room)]) + "|" +
-             std::to_string(per_room_counter[rec.room]++);
-      o.asset_id = "socsim/" + type;
-      o.room = rec.room;
-      o.parent = static_cast<int>(r);
-      o.position = {round_cm(rec.position.x + rng.uniform(-0.35, 0.35) * rec.size_x),
-                    round_cm(spec->height + 0.05),
-                    round_cm(rec.position.z + rng.uniform(-0.35, 0.35) * rec.size_z)};
-      o.size_x = o.size_z = 0.15;
-      h.entities.push_back(std::move(o));
+
+  // Fixtures: hung on the room's inside walls (away from doors and windows) or standing on a
+  // receptacle of the named type (one fixture per receptacle).
+  std::vector<bool> carries_fixture(furniture, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Room& room = h.rooms[i];
+    const auto& prog = k.room_programs[index_of(room.type)];
+    std::vector<const Wall*> room_walls;
+    for (const auto& w : h.walls)
+      if (w.room_id == room.id && w.id.find("|exterior|") == std::string::npos &&
+          std::hypot(w.b.x - w.a.x, w.b.z - w.a.z) >= 1.2)
+        room_walls.push_back(&w);
+    // Centres of every door and window (world coordinates, from the wall their hole is measured
+    // on): hung fixtures keep 1 m from them, on either side of the wall.
+    std::vector<FloorPoint> openings;
+    auto centre_on = [&](const std::string& on_wall, double along) {
+      for (const auto& w : h.walls)
+        if (w.id == on_wall) {
+          const double len = std::hypot(w.b.x - w.a.x, w.b.z - w.a.z);
+          if (len > 0)
+            openings.push_back(
+                {w.a.x + (w.b.x - w.a.x) * along / len, w.a.z + (w.b.z - w.a.z) * along / len});
+          return;
+        }
+    };
+    for (const auto& d : h.doors) centre_on(d.wall0, (d.hole_min.x + d.hole_max.x) / 2);
+    for (const auto& win : h.windows)
+      centre_on(win["wall0"].get<std::string>(), win["assetPosition"]["x"].get<double>());
+    std::map<std::string, int> counters;
+    for (const auto& rule : prog.fixtures) {
+      if (!rng.chance(rule.p)) continue;
+      const int count = rule.max_count <= 1 ? 1 : static_cast<int>(rng.between(1, rule.max_count));
+      for (int c = 0; c < count; ++c) {
+        Entity f;
+        f.kind = EntityKind::kFixture;
+        f.type = rule.type;
+        f.asset_id = "socsim/" + rule.type;
+        f.room = static_cast<int>(i);
+        f.size_x = 0.1;
+        f.size_z = 0.1;
+        bool placed = false;
+        if (rule.on == "wall") {
+          for (int attempt = 0; attempt < 8 && !placed && !room_walls.empty(); ++attempt) {
+            const Wall& w = *room_walls[rng.below(static_cast<std::uint32_t>(room_walls.size()))];
+            const double len = std::hypot(w.b.x - w.a.x, w.b.z - w.a.z);
+            const double ux = (w.b.x - w.a.x) / len, uz = (w.b.z - w.a.z) / len;
+            const double t = rng.uniform(0.4, len - 0.4);
+            FloorPoint p{w.a.x + ux * t, w.a.z + uz * t};
+            bool near = false;
+            for (const auto& o : openings) near = near || std::hypot(o.x - p.x, o.z - p.z) < 1.0;
+            if (near) continue;
+            double nx = -uz, nz = ux;
+            if (!point_in_polygon(room.floor, p.x + nx * 0.05, p.z + nz * 0.05)) nx = -nx, nz = -nz;
+            openings.push_back(p);  // keep the next fixture on this wall apart from this one
+            f.position = {round_cm(p.x + nx * 0.03), rule.type == "LightSwitch" ? 1.2 : 1.5,
+                          round_cm(p.z + nz * 0.03)};
+            // Facing into the room: yaw whose forward (sin, cos) is the inward normal.
+            f.rotation = {0, std::fmod(std::atan2(nx, nz) * 180.0 / std::numbers::pi + 360.0, 360.0), 0};
+            f.size_x = rule.type == "LightSwitch" ? 0.1 : rule.type == "Mirror" ? 0.7 : 0.6;
+            f.size_z = 0.04;
+            placed = true;
+          }
+        } else {
+          std::vector<std::size_t> hosts;
+          for (std::size_t r = 0; r < furniture; ++r)
+            if (h.entities[r].room == static_cast<int>(i) && h.entities[r].type == rule.on &&
+                !carries_fixture[r])
+              hosts.push_back(r);
+          if (!hosts.empty()) {
+            const std::size_t r = hosts[rng.below(static_cast<std::uint32_t>(hosts.size()))];
+            carries_fixture[r] = true;
+            const Entity& rec = h.entities[r];
+            const auto* spec = k.receptacle(rec.type);
+            f.parent = static_cast<int>(r);
+            f.position = place_on_top(rec, spec->height + 0.15, 0.15);
+            f.rotation = rec.rotation;
+            f.size_x = f.size_z = 0.25;
+            placed = true;
+          }
+        }
+        if (!placed) continue;
+        f.id = rule.type + "|" + room_number(room) + "|" + std::to_string(counters[rule.type]++);
+        h.entities.push_back(std::move(f));
+      }
     }
+  }
+
+  // Movable objects on receptacle tops (appended after furniture; parents come first): as many as
+  // bring the house to a count drawn inside ProcTHOR's range for its size, spread over the
+  // receptacles by their usual load and capped by their top area.
+  const auto [lo, hi] = procthor_object_range(static_cast<int>(n));
+  const int target = static_cast<int>(rng.between(lo, hi));
+  const int wanted = std::max(0, target - static_cast<int>(h.entities.size()));
+  std::vector<std::size_t> hosts;
+  std::vector<double> load;
+  std::vector<int> capacity;
+  int total_capacity = 0;
+  for (std::size_t r = 0; r < furniture; ++r) {
+    const auto* spec = k.receptacle(h.entities[r].type);
+    if (!spec || spec->contents.empty() || spec->mean_objects <= 0) continue;
+    hosts.push_back(r);
+    load.push_back(spec->mean_objects);
+    capacity.push_back(std::max(1, static_cast<int>(h.entities[r].size_x * h.entities[r].size_z / 0.06)));
+    total_capacity += capacity.back();
+  }
+  if (!hosts.empty())
+    while (total_capacity < wanted) {  // small houses with few surfaces: allow denser tops
+      total_capacity = 0;
+      for (auto& c : capacity) c *= 2, total_capacity += c;
+    }
+  std::map<int, int> per_room_counter;
+  for (int c = 0; c < wanted && !hosts.empty(); ++c) {
+    std::vector<double> w(hosts.size());
+    for (std::size_t j = 0; j < hosts.size(); ++j) w[j] = capacity[j] > 0 ? load[j] : 0.0;
+    const std::size_t j = rng.weighted(w);
+    --capacity[j];
+    const Entity& rec = h.entities[hosts[j]];
+    const auto* spec = k.receptacle(rec.type);
+    std::vector<double> cw;
+    for (const auto& [t, x] : spec->contents) cw.push_back(x);
+    const auto& type = spec->contents[rng.weighted(cw)].first;
+    Entity o;
+    o.kind = EntityKind::kObject;
+    o.type = type;
+    o.id = type + "|surface|" + room_number(h.rooms[static_cast<std::size_t>(rec.room)]) + "|" +
+           std::to_string(per_room_counter[rec.room]++);
+    o.asset_id = "socsim/" + type;
+    o.room = rec.room;
+    o.parent = static_cast<int>(hosts[j]);
+    o.position = place_on_top(rec, spec->height + 0.05, 0.08);
+    o.size_x = o.size_z = 0.15;
+    h.entities.push_back(std::move(o));
   }
   h.index();
   if (!h.connected()) return fail(ErrorCode::kInternal, "generated house " + h.id + " has unreachable rooms");

@@ -3,6 +3,7 @@
 // plane), walls, doors, receptacles and movable objects of AI2-THOR types on them. Generated
 // procedurally with a seed (rectangles packed by guillotine cuts, doors on shared walls along
 // a spanning tree, so every room is reachable) or imported from ProcTHOR JSON (procthor.hpp).
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -63,7 +64,7 @@ struct Entity {
   int parent = -1;  // index into House::entities (the receptacle it rests on), -1 on the floor
   Vec3 position;
   Vec3 rotation;
-  double size_x = 0.3, size_z = 0.3;  // footprint (receptacles), metres
+  double size_x = 0.3, size_z = 0.3;  // footprint in the entity's own frame (before yaw), metres
   bool synthetic = false;             // made on import (a room's Floor); not exported
   Json extra = Json::object();
   friend bool operator==(const Entity&, const Entity&) = default;
@@ -101,6 +102,26 @@ struct House {
 double polygon_area(const std::vector<FloorPoint>& polygon);
 bool point_in_polygon(const std::vector<FloorPoint>& polygon, double x, double z);
 
+// Footprints: an entity's size_x × size_z rectangle turned by its yaw (rotation.y, degrees, as
+// in AI2-THOR: a local offset (lx, lz) lands at (lx·cos + lz·sin, −lx·sin + lz·cos)).
+using Footprint = std::array<FloorPoint, 4>;
+Footprint footprint(const Entity& e);
+FloorPoint local_to_world(const Entity& e, double lx, double lz);
+// Overlap of two convex quadrilaterals by separating axes; touching edges do not overlap.
+bool footprints_overlap(const Footprint& a, const Footprint& b);
+// Every corner inside the polygon and no polygon edge crossing the rectangle.
+bool footprint_inside(const std::vector<FloorPoint>& polygon, const Footprint& f);
+// Free floor to keep in front of each door of a room: the swing of a door leaf as wide as the
+// opening, plus 0.15 m either side.
+std::vector<Footprint> door_clearances(const House& house, int room);
+// Objects counted as ProcTHOR counts them: every entity, furniture, fixtures and what stands on
+// them (synthetic floors excluded).
+int objects_with_children(const House& house);
+// The range of objects with children in real ProcTHOR houses of that many rooms: the peer
+// houses give 102–109 at 4 rooms and 124–166 at 8; linear between, extended with the 4→8 slope
+// above 8, and proportional (0 rooms → 0) below 4.
+std::pair<int, int> procthor_object_range(int rooms);
+
 struct HouseRequest {
   int rooms = 4;                // 1 … 10
   std::optional<int> bedrooms;  // default: from the room count
@@ -108,8 +129,10 @@ struct HouseRequest {
 };
 
 // A furnished house: room program by size, guillotine layout, doors on shared walls forming a
-// spanning tree from the living room (or kitchen) plus a front door, receptacles from the room
-// programs placed along walls or in the middle, movable objects from the receptacles' contents.
+// spanning tree from the living room (or kitchen) plus a front door, windows on outside walls,
+// receptacles from the room programs placed along walls or in the middle (inside the room, clear
+// of door swings and each other), fixtures, and movable objects on receptacle tops until the
+// house holds a count drawn inside procthor_object_range(rooms).
 Result<House> generate_house(const HouseRequest& request, const HouseholdKnowledge& knowledge);
 
 }  // namespace socsim::household

@@ -363,7 +363,30 @@ Json house_plan_json(const House& h) {
                            {"size", {{"x", e.size_x}, {"z", e.size_z}}},
                            {"yaw", e.rotation.y}});
   }
-  return {{"id", h.id}, {"rooms", rooms}, {"walls", walls}, {"doors", doors}, {"receptacles", receptacles}};
+  // Windows (ProcTHOR form: a hole along wall0), as doors are given: centre, direction, width.
+  Json windows = Json::array();
+  for (const auto& win : h.windows) {
+    if (!win.is_object() || !win.contains("wall0") || !win.contains("holePolygon") ||
+        !win["wall0"].is_string())
+      continue;
+    const auto& hole = win["holePolygon"];
+    if (!hole.is_array() || hole.size() < 2 || !hole[0].contains("x") || !hole[1].contains("x") ||
+        !hole[0]["x"].is_number() || !hole[1]["x"].is_number())
+      continue;
+    const std::string wall_id = win["wall0"].get<std::string>();
+    auto wall = std::find_if(h.walls.begin(), h.walls.end(), [&](const Wall& w) { return w.id == wall_id; });
+    if (wall == h.walls.end()) continue;
+    const double dx = wall->b.x - wall->a.x, dz = wall->b.z - wall->a.z, len = std::hypot(dx, dz);
+    if (len <= 0) continue;
+    const double x0 = hole[0]["x"].get<double>(), x1 = hole[1]["x"].get<double>(), along = (x0 + x1) / 2.0;
+    windows.push_back({{"id", win.value("id", "")},
+                       {"room", win.value("room0", "")},
+                       {"center", point_json(wall->a.x + dx / len * along, wall->a.z + dz / len * along)},
+                       {"direction", point_json(dx / len, dz / len)},
+                       {"width", std::abs(x1 - x0)}});
+  }
+  return {{"id", h.id},     {"rooms", rooms},     {"walls", walls},
+          {"doors", doors}, {"windows", windows}, {"receptacles", receptacles}};
 }
 
 Json objects_at_json(const DynamicScene& scene, Seconds t) {

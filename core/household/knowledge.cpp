@@ -293,6 +293,10 @@ Result<HouseholdKnowledge> load_household_knowledge(store::Store& store) {
             for (const auto& f : body->at("furniture"))
               prog.furniture.push_back(
                   {f.at("type").get<std::string>(), f.at("p").get<double>(), f.at("max").get<int>()});
+            if (body->contains("fixtures"))
+              for (const auto& f : body->at("fixtures"))
+                prog.fixtures.push_back({f.at("type").get<std::string>(), f.at("p").get<double>(),
+                                         f.at("max").get<int>(), f.at("on").get<std::string>()});
           } catch (const Json::exception& e) {
             return fail(ErrorCode::kStore, "room program '" + st.text(0) + "' is malformed: " + e.what());
           }
@@ -304,6 +308,11 @@ Result<HouseholdKnowledge> load_household_knowledge(store::Store& store) {
       return fail(ErrorCode::kStore,
                   "household knowledge tables are empty: the store is missing migrations 0020–0023");
     k.index();
+    for (std::size_t r = 0; r < kRoomTypeCount; ++r)
+      for (const auto& f : k.room_programs[r].fixtures)
+        if (!k.is_fixture(f.type) || (f.on != "wall" && !k.receptacle(f.on)))
+          return fail(ErrorCode::kStore, "room program fixture '" + f.type + "' on '" + f.on +
+                                             "' is not a fixture type on a wall or a known receptacle");
     return k;
   });
 }

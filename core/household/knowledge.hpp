@@ -101,9 +101,19 @@ struct FurnitureRule {
   int max_count = 1;
 };
 
+// A fixture the generator adds to a room: hung on a wall ("wall") or standing on a receptacle of
+// the named type in the same room (a television on the TV stand).
+struct FixtureRule {
+  std::string type;
+  double p = 1.0;
+  int max_count = 1;
+  std::string on = "wall";
+};
+
 struct RoomProgram {
   double min_area = 9.0, max_area = 16.0;
   std::vector<FurnitureRule> furniture;
+  std::vector<FixtureRule> fixtures;
 };
 
 struct HouseholdKnowledge {

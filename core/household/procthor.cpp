@@ -151,10 +151,9 @@ struct Importer {
       e.kind = k.receptacle(e.type)   ? EntityKind::kReceptacle
                : k.is_movable(e.type) ? EntityKind::kObject
                                       : EntityKind::kFixture;
-      if (const auto* spec = k.receptacle(e.type)) {
-        const bool turned = std::fmod(std::abs(e.rotation.y) + 45.0, 180.0) > 90.0;
-        e.size_x = turned ? spec->size_z : spec->size_x;
-        e.size_z = turned ? spec->size_x : spec->size_z;
+      if (const auto* spec = k.receptacle(e.type)) {  // the type's footprint, turned by the yaw
+        e.size_x = spec->size_x;
+        e.size_z = spec->size_z;
       }
       e.room = h.room_at(e.position.x, e.position.z);
       if (e.room < 0 && parent >= 0) e.room = h.entities[static_cast<std::size_t>(parent)].room;

@@ -1,5 +1,6 @@
 #include "core/household/statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -35,6 +36,46 @@ Json paper_statistics() {
           {"activities", {{"names", 564}, {"primaries", 448}}},
           {"objects_per_event", {{"mean", 5.50}, {"sd", 4.58}}},
           {"days", 5}};
+}
+
+Json dynamic_thor_statistics() {
+  // Measured on the paper authors' released schedules (../shared/peers/dsg/character_schedules.csv:
+  // 50 characters × 5 days, 06:00–22:00, no sleep rows); counts only.
+  return {{"per_persona_day", {{"mean", 20.14}, {"sd", 5.90}}},
+          {"median_minutes", 20.0},
+          {"leave_home_share", 0.055},
+          {"primaries", 572}};
+}
+
+Json day_statistics(std::span<const ResidentProfile> residents) {
+  // Waking activities only, as DynamicTHOR lists them: sleep entries are left out.
+  std::vector<double> per_day, minutes;
+  std::size_t entries = 0, leave = 0;
+  for (const auto& r : residents) {
+    std::vector<double> days(static_cast<std::size_t>(std::max(0, r.schedule.days)), 0.0);
+    for (const auto& e : r.schedule.entries) {
+      if (e.role == ActivityRole::kSleep) continue;
+      const auto day = static_cast<std::size_t>(std::max(0, e.start) / 1440);
+      if (day < days.size()) days[day] += 1.0;
+      minutes.push_back(e.end - e.start);
+      ++entries;
+      leave += e.role == ActivityRole::kLeaveHome;
+    }
+    per_day.insert(per_day.end(), days.begin(), days.end());
+  }
+  const auto pd = mean_sd(per_day);
+  double median = 0;
+  if (!minutes.empty()) {
+    std::sort(minutes.begin(), minutes.end());
+    const std::size_t m = minutes.size() / 2;
+    median = minutes.size() % 2 ? minutes[m] : (minutes[m - 1] + minutes[m]) / 2;
+  }
+  return {{"per_persona_day", {{"mean", round2(pd.mean)}, {"sd", round2(pd.sd)}}},
+          {"median_minutes", round2(median)},
+          {"leave_home_share", std::round(1000.0 * static_cast<double>(leave) /
+                                          static_cast<double>(std::max<std::size_t>(1, entries))) /
+                                   1000.0},
+          {"dynamic_thor", dynamic_thor_statistics()}};
 }
 
 Json statistics_report(std::span<const ResidentProfile> residents, std::uint64_t seed) {
@@ -97,6 +138,7 @@ Json statistics_report(std::span<const ResidentProfile> residents, std::uint64_t
         {"per_persona_primaries", {{"mean", round2(ppp.mean)}, {"sd", round2(ppp.sd)}}}}},
       {"objects_per_event",
        {{"events", events}, {"mean", round2(ope.mean)}, {"sd", round2(ope.sd)}, {"percent_by_count", dist}}},
+      {"days_of_activities", day_statistics(residents)},
       {"receptacle_types_per_object_type",
        {{"object_types", receptacles_of.size()}, {"histogram", by_count}, {"by_type", per_type}}},
       {"paper", paper_statistics()}};

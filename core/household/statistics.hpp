@@ -14,6 +14,11 @@ namespace socsim::household {
 // event is drawn from p(l|a) with `seed` to count the objects it may involve.
 Json statistics_report(std::span<const ResidentProfile> residents, std::uint64_t seed);
 
+// Waking activities per persona-day, their median length and the share of "leave home" entries,
+// with DynamicTHOR's figures beside them (also part of statistics_report as "days_of_activities").
+Json day_statistics(std::span<const ResidentProfile> residents);
+Json dynamic_thor_statistics();
+
 // The paper's figures, for comparison.
 Json paper_statistics();
 

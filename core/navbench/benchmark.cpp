@@ -79,7 +79,8 @@ Json map_json(const House& house, const NavMap& map) {
          {"x", r.x},
          {"z", r.z},
          {"size_x", e.size_x},
-         {"size_z", e.size_z}});
+         {"size_z", e.size_z},
+         {"yaw", e.rotation.y}});  // degrees; the size is the piece's own, before the turn
   }
   std::string free(static_cast<std::size_t>(map.cells()), '0');
   for (int c = 0; c < map.cells(); ++c)
@@ -421,8 +422,8 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
       score.spl += row[m].spl;
     }
     score.el /= n;
-    score.sr *= 100.0 / n;
-    score.spl *= 100.0 / n;
+    score.sr = 100.0 * score.sr / n;  // k·(100/n) can exceed 100 by an ulp when k = n
+    score.spl = 100.0 * score.spl / n;
     result.scores.push_back(score);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

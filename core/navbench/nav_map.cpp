@@ -211,24 +211,41 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
   m.width_ = static_cast<int>(w);
   m.depth_ = static_cast<int>(d);
   m.walls_ = solid_walls(house);
+  // Receptacle footprints as oriented rectangles (size in the piece's own frame, turned by yaw),
+  // with their bounding boxes to skip most cells quickly.
   struct Box {
     double x0, z0, x1, z1;
+    household::Footprint corners;
   };
   std::vector<Box> furniture;
   for (int idx : house.receptacles) {
     const auto& e = house.entities[static_cast<std::size_t>(idx)];
     if (e.synthetic) continue;
-    furniture.push_back({e.position.x - e.size_x / 2, e.position.z - e.size_z / 2,
-                         e.position.x + e.size_x / 2, e.position.z + e.size_z / 2});
+    Box b{1e18, 1e18, -1e18, -1e18, household::footprint(e)};
+    for (const auto& c : b.corners)
+      b.x0 = std::min(b.x0, c.x), b.z0 = std::min(b.z0, c.z), b.x1 = std::max(b.x1, c.x),
+      b.z1 = std::max(b.z1, c.z);
+    furniture.push_back(b);
   }
+  auto inside = [](const Box& b, const FloorPoint& p) {
+    if (p.x < b.x0 || p.x > b.x1 || p.z < b.z0 || p.z > b.z1) return false;
+    for (std::size_t i = 0; i < 4; ++i) {  // same side of every edge (corners run one way round)
+      const auto& a = b.corners[i];
+      const auto& c = b.corners[(i + 1) % 4];
+      const auto& e = b.corners[(i + 2) % 4];
+      const double side = (c.x - a.x) * (p.z - a.z) - (c.z - a.z) * (p.x - a.x);
+      const double ref = (c.x - a.x) * (e.z - a.z) - (c.z - a.z) * (e.x - a.x);
+      if (side * ref < -1e-12) return false;
+    }
+    return true;
+  };
   const auto n = static_cast<std::size_t>(m.cells());
   m.free_.assign(n, 0);
   for (int c = 0; c < m.cells(); ++c) {
     const FloorPoint p = m.center(c);
     if (house.room_at(p.x, p.z) < 0) continue;
     bool blocked = false;
-    for (const auto& b : furniture)
-      blocked = blocked || (p.x >= b.x0 && p.x <= b.x1 && p.z >= b.z0 && p.z <= b.z1);
+    for (const auto& b : furniture) blocked = blocked || inside(b, p);
     for (std::size_t i = 0; i < m.walls_.size() && !blocked; ++i)
       blocked = distance_to_segment(p, m.walls_[i].a, m.walls_[i].b) < config.wall_clearance;
     m.free_[static_cast<std::size_t>(c)] = blocked ? 0 : 1;

@@ -176,8 +176,18 @@ TEST(HouseholdApi, HouseholdJobStoresASceneThatAnswersQueries) {
   EXPECT_FALSE(hint["text"].get<std::string>().empty());
   Json exported = get_json(c, base + "/export?format=procthor&t=" + std::to_string(t));
   EXPECT_TRUE(exported.contains("rooms") && exported.contains("objects"));
+  Json plan = get_json(c, base);
+  ASSERT_TRUE(plan["house"].contains("windows"));
+  EXPECT_FALSE(plan["house"]["windows"].empty()) << "generated houses have windows (issue 18)";
+  for (const auto& w : plan["house"]["windows"]) EXPECT_GT(w["width"].get<double>(), 0.5);
   Json stats = get_json(c, base + "/statistics");
   EXPECT_TRUE(stats.contains("paper"));
+  // Issue 18: waking activities per persona-day, median length and "leave home" share, with
+  // DynamicTHOR's figures beside them.
+  ASSERT_TRUE(stats.contains("days_of_activities"));
+  EXPECT_GT(stats["days_of_activities"]["per_persona_day"]["mean"].get<double>(), 0.0);
+  EXPECT_GT(stats["days_of_activities"]["median_minutes"].get<double>(), 0.0);
+  EXPECT_EQ(stats["days_of_activities"]["dynamic_thor"]["median_minutes"], 20.0);
 
   get_json(c, base + "/objects?t=-5", 422);
   Json bad_t = get_json(c, base + "/objects?t=999999999", 422);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -102,6 +103,47 @@ TEST(Statistics, ComparableToDynamicThorData) {
   const double ours = r["activities"]["per_persona_names"]["mean"].get<double>();
   EXPECT_GT(ours, 0.7 * per_persona);
   EXPECT_LT(ours, 2.0 * per_persona);
+}
+
+// Issue 18: days as full as the DynamicTHOR characters' (waking activities per persona-day, their
+// median length, the share of "leave home" entries), measured on the peers' CSV in place.
+TEST(Statistics, DaysAreAsFullAsDynamicThors) {
+  const auto csv_path = std::filesystem::path(testing::shared_file("peers/dsg/character_schedules.csv"));
+  if (!std::filesystem::exists(csv_path)) GTEST_SKIP() << "peer data not present: " << csv_path;
+  std::ifstream csv(csv_path);
+  std::string line;
+  std::getline(csv, line);
+  std::map<std::string, int> per_day;
+  std::vector<int> minutes;
+  int rows = 0, leave = 0;
+  auto clock = [](const std::string& t) {
+    return std::stoi(t.substr(0, 2)) * 60 + std::stoi(t.substr(3, 2));
+  };
+  while (std::getline(csv, line)) {
+    // character,date,activity,start,end; the activity may hold quoted commas, the times never do.
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto e1 = line.rfind(','), e0 = line.rfind(',', e1 - 1);
+    const auto c0 = line.find(','), c1 = line.find(',', c0 + 1);
+    const std::string who = line.substr(0, c0), date = line.substr(c0 + 1, c1 - c0 - 1);
+    const std::string activity = line.substr(c1 + 1, e0 - c1 - 1);
+    const std::string start = line.substr(e0 + 1, e1 - e0 - 1), end = line.substr(e1 + 1);
+    ++per_day[who + date];
+    int d = clock(end) - clock(start);
+    minutes.push_back(d <= 0 ? d + 1440 : d);
+    ++rows;
+    leave += activity == "leave home";
+  }
+  std::sort(minutes.begin(), minutes.end());
+  const double their_mean = static_cast<double>(rows) / static_cast<double>(per_day.size());
+  const double their_median = minutes[minutes.size() / 2];
+  const double their_leave = static_cast<double>(leave) / rows;
+  const Json& d = report()["days_of_activities"];
+  std::cout << "DynamicTHOR: " << their_mean << " activities per persona-day, median " << their_median
+            << " min, leave home " << their_leave << "; ours: " << d.dump() << "\n";
+  EXPECT_NEAR(d["per_persona_day"]["mean"].get<double>(), 20.0, 3.0);
+  EXPECT_NEAR(d["median_minutes"].get<double>(), their_median, 0.3 * their_median);
+  EXPECT_NEAR(d["leave_home_share"].get<double>(), their_leave, 0.5 * their_leave);
+  EXPECT_NEAR(d["dynamic_thor"]["per_persona_day"]["mean"].get<double>(), their_mean, 0.01);
 }
 
 }  // namespace

@@ -184,7 +184,9 @@ TEST(Estimators, PosteriorNeverRulesOutTheTruthAndIsCalibrated) {
   }
   ASSERT_GT(tasks, 50);
   EXPECT_NEAR(truth / tasks, sharpness / tasks, 0.08) << tasks << " tasks";
-  EXPECT_GT(truth / tasks, 0.2);  // and far sharper than uniform over ~40 receptacles
+  // And far sharper than uniform: hard-split houses at ProcTHOR density (issue 18) have 60–80
+  // receptacles, uniform ≈ 0.015 (it was 0.2 against ~40 receptacles before).
+  EXPECT_GT(truth / tasks, 0.15);
 }
 
 TEST(Estimators, PosteriorBeforeAnyEventIsTheStaticPlacement) {
