@@ -168,8 +168,11 @@ export const fromHouse = (x, z) => [x, -z];
 
 const roomType = (t) => String(t).replace(/([a-z0-9])([A-Z])/g, '$1_$2').toLowerCase();  // LivingRoom → living_room
 
-// GET /api/v1/households/{id} → .house: rooms [{id, type, floor: [{x, z}]}], walls [{a, b}],
-// doors [{center, direction, width}], windows (same form, not drawn yet), receptacles [{id, type, position, size: {x, z}, yaw (degrees)}].
+// The one house-plan shape (household::house_plan_json): GET /api/v1/households/{id} → .house and
+// GET /api/v1/navbench/{job}/episodes/{n} → .house (which adds each room's floor as a receptacle,
+// "synthetic": true, drawn as a point, and the map's grid, drawn by the page).
+// rooms [{id, type, floor: [{x, z}]}], walls [{a, b}], doors [{center, direction, width}], windows
+// (same form, not drawn yet), receptacles [{id, type, position, size: {x, z}, yaw (degrees)}].
 export function planFromHousehold(house) {
   return {
     name: house.id,
@@ -182,21 +185,8 @@ export function planFromHousehold(house) {
       name: d.id, pose: fromHouse(d.center.x, d.center.z), width: d.width || 0.9, along: fromHouse(d.direction.x, d.direction.z),
     })),
     entities: house.receptacles.map((r) => ({
-      name: r.id, type: r.type, pose: [...fromHouse(r.position.x, r.position.z), (r.yaw || 0) * Math.PI / 180], size: [r.size.x, r.size.z],
-    })),
-  };
-}
-
-// GET /api/v1/navbench/{job}/episodes/{n} → .house: rooms [{id, type, floor: [[x, z]]}],
-// walls [[x0, z0, x1, z1]], receptacles [{id, type, x, z, size_x, size_z, yaw (degrees)}], grid (drawn by the page).
-export function planFromNavbench(house) {
-  return {
-    name: house.id,
-    zones: house.rooms.map((r) => ({ name: r.id, type: roomType(r.type), label: r.type, polygon: r.floor.map(([x, z]) => fromHouse(x, z)) })),
-    walls: house.walls.map(([x0, z0, x1, z1]) => ({ start: fromHouse(x0, z0), end: fromHouse(x1, z1) })),
-    doors: [],
-    entities: house.receptacles.map((r) => ({
-      name: r.id, type: r.type, pose: [...fromHouse(r.x, r.z), (r.yaw || 0) * Math.PI / 180], size: [r.size_x, r.size_z],
+      name: r.id, type: r.type, pose: [...fromHouse(r.position.x, r.position.z), (r.yaw || 0) * Math.PI / 180],
+      size: r.synthetic ? undefined : [r.size.x, r.size.z],
     })),
   };
 }

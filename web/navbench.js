@@ -2,7 +2,7 @@
 // in the shape of paper 000 Table I, and replays one episode on a canvas — the house, the grid of
 // reachable points, the agent's path step by step, the receptacles visited and the target.
 // Plain ES module, no build step.
-import { $, getJson, postJson, jobText, waitForJob, setStatus, showLegend, COLOURS, drawPlan, planFromNavbench, fromHouse } from './common.js';
+import { $, getJson, postJson, jobText, waitForJob, setStatus, showLegend, COLOURS, drawPlan, planFromHousehold, fromHouse } from './common.js';
 
 // `plan` is the episode's house converted to the plan shape on arrival (common.js).
 const state = { job: null, result: null, episode: null, plan: null, method: null, step: 0, timer: null };
@@ -45,7 +45,7 @@ async function openEpisode(n) {
   $('replay').dataset.ready = '0';
   const episode = await getJson(`/navbench/${state.job}/episodes/${n}`);
   state.episode = episode;
-  state.plan = planFromNavbench(episode.house);
+  state.plan = planFromHousehold(episode.house);
   for (const li of $('episodes').children) li.classList.toggle('current', Number(li.dataset.n) === n);
   const select = $('method');
   const keep = state.method;

@@ -324,7 +324,7 @@ std::string room_id_of(const House& h, int room) {
 
 }  // namespace
 
-Json house_plan_json(const House& h) {
+Json house_plan_json(const House& h, bool floors) {
   Json rooms = Json::array(), walls = Json::array(), doors = Json::array(), receptacles = Json::array();
   for (const auto& r : h.rooms) {
     Json floor = Json::array();
@@ -355,13 +355,15 @@ Json house_plan_json(const House& h) {
   }
   for (int idx : h.receptacles) {
     const Entity& e = h.entities[static_cast<std::size_t>(idx)];
-    if (e.synthetic) continue;
-    receptacles.push_back({{"id", e.id},
-                           {"type", e.type},
-                           {"room", room_id_of(h, e.room)},
-                           {"position", point_json(e.position.x, e.position.z)},
-                           {"size", {{"x", e.size_x}, {"z", e.size_z}}},
-                           {"yaw", e.rotation.y}});
+    if (e.synthetic && !floors) continue;
+    Json r = {{"id", e.id},
+              {"type", e.type},
+              {"room", room_id_of(h, e.room)},
+              {"position", point_json(e.position.x, e.position.z)},
+              {"size", {{"x", e.size_x}, {"z", e.size_z}}},
+              {"yaw", e.rotation.y}};
+    if (e.synthetic) r["synthetic"] = true;
+    receptacles.push_back(std::move(r));
   }
   // Windows (ProcTHOR form: a hole along wall0), as doors are given: centre, direction, width.
   Json windows = Json::array();

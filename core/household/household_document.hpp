@@ -68,8 +68,11 @@ Result<HouseholdDocument> household_document_from_json(const Json& json, const H
 std::string household_id(const HouseholdRequest& request, std::string_view salt);
 
 // JSON views shared by the REST API, the CLI and the viewer.
-// Rooms (polygons), walls, doors (centre on the floor) and receptacles (position, footprint, yaw).
-Json house_plan_json(const House& house);
+// Rooms (polygons), walls, doors (centre on the floor), windows and receptacles (position,
+// footprint, yaw): the one JSON shape of a house plan (households, navbench episodes, the viewer).
+// With `floors`, each room's floor is listed as a receptacle too ("synthetic": true), for views
+// in which objects lying on the floor are searched for.
+Json house_plan_json(const House& house, bool floors = false);
 // Every movable object at time t: its receptacle, room and a floor position on that receptacle
 // (objects sharing a receptacle are spread over its footprint, deterministically).
 Json objects_at_json(const DynamicScene& scene, Seconds t);

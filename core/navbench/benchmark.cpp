@@ -9,6 +9,7 @@
 
 #include "core/common/json_check.hpp"
 #include "core/common/rng.hpp"
+#include "core/household/household_document.hpp"
 
 namespace socsim::navbench {
 namespace {
@@ -50,51 +51,25 @@ std::vector<int> largest_component(const NavMap& map) {
   return best;
 }
 
-Json point(household::FloorPoint p) {
-  return Json::array({p.x, p.z});
-}
-
 Json pose_json(const NavMap& map, int pose) {
   const auto c = map.center(cell_of(pose));
   return Json::array({c.x, c.z, heading_of(pose)});
 }
 
 // What the viewer draws: rooms, solid walls, receptacles, the grid of reachable points.
+// The house as every view gets it (household::house_plan_json, floors included: targets may lie
+// on one), plus the map's grid of reachable cells.
 Json map_json(const House& house, const NavMap& map) {
-  Json rooms = Json::array();
-  for (const auto& r : house.rooms) {
-    Json floor = Json::array();
-    for (const auto& p : r.floor) floor.push_back(point(p));
-    rooms.push_back({{"id", r.id}, {"type", household::room_type_name(r.type)}, {"floor", floor}});
-  }
-  Json walls = Json::array();
-  for (const auto& w : map.walls()) walls.push_back(Json::array({w.a.x, w.a.z, w.b.x, w.b.z}));
-  Json receptacles = Json::array();
-  for (const auto& r : map.receptacles()) {
-    const auto& e = house.entities[static_cast<std::size_t>(r.entity)];
-    receptacles.push_back(
-        {{"id", r.id},
-         {"type", r.type},
-         {"room", r.room >= 0 ? Json(house.rooms[static_cast<std::size_t>(r.room)].id) : Json()},
-         {"x", r.x},
-         {"z", r.z},
-         {"size_x", e.size_x},
-         {"size_z", e.size_z},
-         {"yaw", e.rotation.y}});  // degrees; the size is the piece's own, before the turn
-  }
   std::string free(static_cast<std::size_t>(map.cells()), '0');
   for (int c = 0; c < map.cells(); ++c)
     if (map.free(c)) free[static_cast<std::size_t>(c)] = '1';
-  return {{"id", house.id},
-          {"rooms", rooms},
-          {"walls", walls},
-          {"receptacles", receptacles},
-          {"grid",
-           {{"origin", Json::array({map.origin_x(), map.origin_z()})},
-            {"cell", map.cell_size()},
-            {"width", map.width()},
-            {"depth", map.depth()},
-            {"free", free}}}};
+  Json j = household::house_plan_json(house, true);
+  j["grid"] = {{"origin", Json::array({map.origin_x(), map.origin_z()})},
+               {"cell", map.cell_size()},
+               {"width", map.width()},
+               {"depth", map.depth()},
+               {"free", free}};
+  return j;
 }
 
 }  // namespace

@@ -193,8 +193,8 @@ TEST(Benchmark, AnEpisodeReplaysWithItsPathAndVisits) {
           std::find_if(recs.begin(), recs.end(), [&](const Json& x) { return x["id"] == v["receptacle"]; });
       ASSERT_NE(rec, recs.end());
       const auto& at = e["path"][static_cast<std::size_t>(step)];
-      EXPECT_LE(std::hypot(at[0].get<double>() - (*rec)["x"].get<double>(),
-                           at[1].get<double>() - (*rec)["z"].get<double>()),
+      EXPECT_LE(std::hypot(at[0].get<double>() - (*rec)["position"]["x"].get<double>(),
+                           at[1].get<double>() - (*rec)["position"]["z"].get<double>()),
                 1.5 + 1e-9);
     }
   }
