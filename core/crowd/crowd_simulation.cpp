@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
+#include <vector>
 
 #include "core/common/rng.hpp"
 #include "core/crowd/fast_math.hpp"
@@ -22,12 +24,25 @@ struct CrowdSimulation::CellIndex {
   double inv_cell = 1.0;
   std::int64_t nx = 0;
   std::int64_t ny = 0;
-  std::vector<std::uint32_t> start;    // nx*ny + 1 offsets into the sorted arrays
-  std::vector<std::uint32_t> order;    // sorted position -> agent index
-  std::vector<std::uint32_t> cell_of;  // agent index -> cell, then -> sorted position (kNoCell when inactive)
+  std::vector<std::uint32_t> start;  // nx*ny + 1 offsets into the sorted arrays
+  // Entries: every active agent, then (periodic boundary) the images of those near either end.
+  std::vector<std::uint32_t> entry_agent;
+  std::vector<double> entry_x;
+  std::vector<std::uint32_t> entry_cell;
+  std::vector<std::uint32_t> order;   // sorted position -> entry
+  std::vector<std::uint32_t> agents;  // the active agents in sorted order (no images)
+  // Agent index -> sorted position of its own entry (kNoCell when inactive).
+  std::vector<std::uint32_t> cell_of;
   std::vector<double> x, y, vx, vy, r;
   std::vector<std::int32_t> group;
   std::vector<std::uint32_t> id;
+};
+
+struct CrowdSimulation::Images {
+  std::vector<double> x, y, vx, vy, r;
+  std::vector<std::int32_t> group;
+  std::vector<std::uint32_t> id;
+  std::vector<std::uint8_t> active;
 };
 
 struct CrowdSimulation::AgentMeta {
@@ -199,10 +214,12 @@ class NeighbourSums {
   // `max_radius` bounds every neighbour's radius: only candidates closer than r + max_radius can
   // touch, and only those are re-examined in double precision by flush().
   // (ex, ey): the unit walking direction, (0, 0) without a goal; it defines the band in which
-  // headway() looks for the nearest person ahead.
+  // speed_cap() looks for the people ahead; `band` is that band's half-width.
+  // Neighbours closer than their touching distance + `contact_margin` are listed as contacts
+  // (contacts(), for the hard-contact limit); 0 lists none.
   NeighbourSums(std::uint32_t id, double x, double y, double vx, double vy, double r, std::int32_t group,
                 double cutoff, double max_radius, const ForceParameters& fp, double body_stiffness, double ex,
-                double ey)
+                double ey, double contact_margin, double band)
       : id_(id),
         x_(x),
         y_(y),
@@ -212,17 +229,27 @@ class NeighbourSums {
         group_(group),
         cutoff2_(cutoff * cutoff),
         // Widened by 1e-5 (relative) so the float-rounded offsets flush() tests can never exceed it.
-        close2_((r + max_radius) * (r + max_radius) * (1.0 + 1e-5) + 2.0 * kTiny2),
+        close2_((r + max_radius + contact_margin) * (r + max_radius + contact_margin) * (1.0 + 1e-5) +
+                2.0 * kTiny2),
+        contact_margin_(contact_margin),
         repulsion_factor_(fp.group_repulsion_factor),
         body_stiffness_(body_stiffness),
         ex_(static_cast<float>(ex)),
         ey_(static_cast<float>(ey)),
         heading_(ex != 0.0 || ey != 0.0),
         speed_along_(static_cast<float>(vx * ex + vy * ey)),
-        band_(static_cast<float>(r)),
+        band_(static_cast<float>(band)),
         params_{static_cast<float>(fp.lambda),      static_cast<float>(fp.gamma),
                 static_cast<float>(1.0 / fp.gamma), static_cast<float>(fp.n),
-                static_cast<float>(fp.n_prime),     static_cast<float>(fp.social_factor)} {}
+                static_cast<float>(fp.n_prime),     static_cast<float>(fp.social_factor)},
+        headway_distance_(static_cast<float>(fp.headway_distance)),
+        headway_inv_time_(static_cast<float>(fp.headway_time > 0.0 ? 1.0 / fp.headway_time : 0.0)),
+        headway_anticipation_(static_cast<float>(fp.headway_anticipation)),
+        side_factor_(static_cast<float>(fp.side_factor)),
+        side_inv_range_(static_cast<float>(1.0 / fp.side_range)),
+        side_bias_(static_cast<float>(fp.side_bias)),
+        side_band_(static_cast<float>(fp.side_band)),
+        headway_on_(fp.headway_time > 0.0) {}
 
   [[nodiscard]] std::uint32_t id() const { return id_; }
 
@@ -255,8 +282,10 @@ class NeighbourSums {
       const double d2 = fdx * fdx + fdy * fdy;
       const std::uint32_t k = slot_[m];
       const double reach = r_ + a.r[k];
-      if (d2 >= reach * reach) continue;
       const std::uint32_t who = a.id != nullptr ? a.id[k] : k;
+      if (contact_margin_ > 0.0 && d2 < (reach + contact_margin_) * (reach + contact_margin_))
+        add_contact(who, fdx, fdy, d2, reach, a.vx[k], a.vy[k]);
+      if (d2 >= reach * reach) continue;
       if (d2 <= kTiny2) {  // coincident: part along a fixed per-pair direction
         if (!tied) {
           std::fill(std::begin(batch_.tie_x), std::end(batch_.tie_x), 0.0f);
@@ -271,9 +300,16 @@ class NeighbourSums {
       }
       touching(a.x[k] - x_, a.y[k] - y_, d2, reach, a.group[k], who);
     }
-    if (heading_)
-      headway2_ = nearest_ahead2(count_, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ex_, ey_, band_,
-                                 speed_along_, kOncoming, headway2_);
+    if (heading_) {
+      if (headway_on_)
+        speed_cap_ = headway_speed_cap(count_, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ex_, ey_, band_,
+                                       speed_along_, kOncoming, headway_distance_, headway_inv_time_,
+                                       headway_anticipation_, speed_cap_);
+      if (side_factor_ > 0.0f)
+        side_push_ +=
+            oncoming_side_push(count_, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ex_, ey_, side_band_,
+                               speed_along_, kOncoming, side_bias_, side_factor_, side_inv_range_);
+    }
     // Pad to whole vectors with inert entries (all zero: the kernel returns 0 for them).
     const int padded = (count_ + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
     for (int m = count_; m < padded; ++m) batch_.dx[m] = batch_.dy[m] = batch_.dvx[m] = batch_.dvy[m] = 0.0f;
@@ -293,18 +329,54 @@ class NeighbourSums {
   }
 
   [[nodiscard]] Vec2 social() const {
-    return {static_cast<double>(social_x_) / kForceQuantum, static_cast<double>(social_y_) / kForceQuantum};
+    // The side preference pushes along the right-hand direction (e_y, −e_x).
+    const double side = static_cast<double>(side_push_) / kForceQuantum;
+    return {static_cast<double>(social_x_) / kForceQuantum + side * static_cast<double>(ey_),
+            static_cast<double>(social_y_) / kForceQuantum - side * static_cast<double>(ex_)};
   }
 
-  // Centre distance to the nearest person ahead in the walking band (band_) who does not come
-  // towards the agent; +inf when there is none within the cut-off. A minimum, so independent of
-  // the order neighbours are visited in.
-  [[nodiscard]] double headway() const { return std::sqrt(static_cast<double>(headway2_)); }
+  // The speed–headway cap: the smallest (s − ℓ + τ·(v_j − v_i)·e)/T over the people ahead in the
+  // walking band (band_) who do not come towards the agent; +inf when there is none within the
+  // cut-off. A minimum, so independent of the order neighbours are visited in.
+  [[nodiscard]] double speed_cap() const { return static_cast<double>(speed_cap_); }
 
   FixedSum repulsion_x, repulsion_y;
   FixedSum body_x, body_y;
 
+  // A neighbour within touching distance + margin: its agent id, the unit direction n to it, the
+  // gap between the bodies (negative: overlap) and its frozen velocity.
+  struct Contact {
+    std::uint32_t who;
+    double nx, ny, gap, vx, vy;
+  };
+  static constexpr int kMaxContacts = 32;
+  // Sorted by agent id, so the list (and what is done with it) does not depend on the order
+  // neighbours were visited in; beyond kMaxContacts (bodies piled up) the highest ids are dropped.
+  [[nodiscard]] std::span<const Contact> contacts() const { return {contacts_.data(), contact_count_}; }
+
  private:
+  void add_contact(std::uint32_t who, double dx, double dy, double d2, double reach, double vx, double vy) {
+    Contact c{who, 0.0, 0.0, 0.0, vx, vy};
+    if (d2 > kTiny2) {
+      const double d = std::sqrt(d2);
+      c.nx = dx / d;
+      c.ny = dy / d;
+      c.gap = d - reach;
+    } else {
+      const Vec2 u = tie_break_direction(id_, who);
+      c.nx = u.x;
+      c.ny = u.y;
+      c.gap = -reach;
+    }
+    std::size_t pos = contact_count_;
+    while (pos > 0 && contacts_[pos - 1].who > who) --pos;
+    if (pos >= contacts_.size()) return;
+    const std::size_t last = std::min(contact_count_, contacts_.size() - 1);
+    for (std::size_t k = last; k > pos; --k) contacts_[k] = contacts_[k - 1];
+    contacts_[pos] = c;
+    contact_count_ = std::min(contact_count_ + 1, contacts_.size());
+  }
+
   static constexpr float kOncoming = 0.1f;  // m/s along the walking direction
 
   void touching(double dx, double dy, double d2, double reach, std::int32_t gj, std::uint32_t idj) {
@@ -333,21 +405,28 @@ class NeighbourSums {
   std::uint32_t id_;
   double x_, y_, vx_, vy_, r_;
   std::int32_t group_;
-  double cutoff2_, close2_, repulsion_factor_, body_stiffness_;
+  double cutoff2_, close2_, contact_margin_, repulsion_factor_, body_stiffness_;
+  std::array<Contact, kMaxContacts> contacts_{};
+  std::size_t contact_count_ = 0;
   float ex_, ey_;
   bool heading_;
   float speed_along_;
-  // Someone counts as ahead when their centre is within the agent's own radius of its walking
-  // line: for equal bodies, when they overlap by more than half their widths. People offset by
-  // more pass by turning their shoulders (staggered rows); the social force keeps them apart.
+  // Someone counts as ahead when their centre is within headway_band × the agent's radius of its
+  // walking line (1.5 radii: for equal bodies, when they overlap by more than a quarter of their
+  // widths). People offset by more pass by turning their shoulders (staggered rows); the social
+  // force keeps them apart.
   float band_;
-  float headway2_ = std::numeric_limits<float>::infinity();
+  float speed_cap_ = std::numeric_limits<float>::infinity();
   SocialParams params_;
+  float headway_distance_, headway_inv_time_, headway_anticipation_;
+  float side_factor_, side_inv_range_, side_bias_, side_band_;
+  bool headway_on_;
   const NeighbourArrays* arrays_ = nullptr;
   int count_ = 0;
   int close_count_ = 0;  // batch entries that may touch the agent (listed in close_)
   std::int64_t social_x_ = 0;
   std::int64_t social_y_ = 0;
+  std::int64_t side_push_ = 0;
   std::uint32_t slot_[kBatch];
   std::uint8_t close_[kBatch];
   PairBatch batch_;
@@ -367,6 +446,12 @@ Status validate(const SimulationConfig& c) {
   if (!(std::isfinite(c.body_stiffness) && c.body_stiffness >= 0.0 && c.body_stiffness <= 1000.0))
     errors.push_back(
         field("/body_stiffness", "must be in [0, 1000] 1/s² (stiffer contact is unstable at this dt)"));
+  if (!(std::isfinite(c.periodic_length) && c.periodic_length >= 0.0 && c.periodic_length <= kMaxCoordinate))
+    errors.push_back(field("/periodic_length", "must be 0 (no periodic boundary) or a length in m"));
+  else if (c.periodic_length > 0.0 && !(c.periodic_length >= 2.0 * c.neighbor_cutoff + 0.5))
+    errors.push_back(field("/periodic_length", "must be at least twice the neighbour cut-off + 0.5 m"));
+  if (!finite_in_range(c.periodic_origin, kMaxCoordinate))
+    errors.push_back(field("/periodic_origin", "must be finite and within ±1e6 m"));
   if (errors.empty() && kMaxAgentSpeed * c.dt >= c.wall_cutoff)
     errors.push_back(field("/dt", "the fastest agent must move less than wall_cutoff in one step"));
   if (!errors.empty())
@@ -440,7 +525,7 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
   meta.tags = spec.tags;
   meta.group_id = spec.group_id;
 
-  px_.push_back(spec.position.x);
+  px_.push_back(wrap_x(spec.position.x));
   py_.push_back(spec.position.y);
   // Start no faster than the agent may go.
   double vx = spec.velocity.x;
@@ -630,9 +715,17 @@ void CrowdSimulation::prepare_step() {
   std::fill(group_cx_.begin(), group_cx_.end(), 0.0);
   std::fill(group_cy_.begin(), group_cy_.end(), 0.0);
   std::fill(group_size_.begin(), group_size_.end(), 0u);
+  if (config_.hard_contact) {
+    contact_ids_.resize(size() * kStoredContacts);
+    contact_count_.assign(size(), 0);
+    spx_.resize(size());
+    spy_.resize(size());
+  }
   max_radius_ = 0.0;
+  max_vmax_ = 0.0;
   for (std::size_t i = 0; i < size(); ++i) {
     if (active_[i]) max_radius_ = std::max(max_radius_, radius_[i]);
+    if (active_[i]) max_vmax_ = std::max(max_vmax_, vmax_[i]);
     const std::int32_t g = group_[i];
     if (g < 0 || !active_[i]) continue;
     group_cx_[static_cast<std::size_t>(g)] += px_[i];
@@ -646,21 +739,99 @@ void CrowdSimulation::prepare_step() {
   }
 }
 
+double CrowdSimulation::wrap_x(double x) const {
+  const double length = config_.periodic_length;
+  if (length <= 0.0) return x;
+  const double lo = config_.periodic_origin;
+  if (x >= lo + length) {
+    x -= length;
+  } else if (x < lo) {
+    x += length;
+  }
+  if (x < lo || x >= lo + length) {  // more than one period away (only when agents are added)
+    x = lo + std::fmod(x - lo, length);
+    if (x < lo) x += length;
+    if (x >= lo + length) x = lo;
+  }
+  return x;
+}
+
+// An agent this close to one end of the period has an image beyond the other end that someone
+// may see within the cut-off (1e-6 m of slack: an image too many is filtered by the cut-off).
+bool CrowdSimulation::near_low_end(double x) const {
+  return config_.periodic_length > 0.0 && x < config_.periodic_origin + config_.neighbor_cutoff + 1e-6;
+}
+
+bool CrowdSimulation::near_high_end(double x) const {
+  return config_.periodic_length > 0.0 &&
+         x >= config_.periodic_origin + config_.periodic_length - config_.neighbor_cutoff - 1e-6;
+}
+
+void CrowdSimulation::build_images(Images& m) const {
+  m.x = px_;
+  m.y = py_;
+  m.vx = vx_;
+  m.vy = vy_;
+  m.r = radius_;
+  m.group = group_;
+  m.active = active_;
+  m.id.resize(size());
+  for (std::uint32_t i = 0; i < size(); ++i) m.id[i] = i;
+  const double length = config_.periodic_length;
+  for (std::uint32_t i = 0; i < size(); ++i) {
+    if (!active_[i]) continue;
+    double x = 0.0;
+    if (near_low_end(px_[i])) {
+      x = px_[i] + length;
+    } else if (near_high_end(px_[i])) {
+      x = px_[i] - length;
+    } else {
+      continue;
+    }
+    m.x.push_back(x);
+    m.y.push_back(py_[i]);
+    m.vx.push_back(vx_[i]);
+    m.vy.push_back(vy_[i]);
+    m.r.push_back(radius_[i]);
+    m.group.push_back(group_[i]);
+    m.active.push_back(1);
+    m.id.push_back(i);
+  }
+}
+
 void CrowdSimulation::build_cells() {
   CellIndex& c = *cells_;
   const std::size_t n = size();
   c.cell_of.assign(n, kNoCell);
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-  std::size_t active = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  c.entry_agent.clear();
+  c.entry_x.clear();
+  for (std::uint32_t i = 0; i < n; ++i) {
     if (!active_[i]) continue;
-    ++active;
-    x0 = std::min(x0, px_[i]);
-    y0 = std::min(y0, py_[i]);
-    x1 = std::max(x1, px_[i]);
-    y1 = std::max(y1, py_[i]);
+    c.entry_agent.push_back(i);
+    c.entry_x.push_back(px_[i]);
+  }
+  const std::size_t active = c.entry_agent.size();
+  const double length = config_.periodic_length;
+  for (std::size_t e = 0; e < active; ++e) {  // periodic images, in agent order
+    const std::uint32_t i = c.entry_agent[e];
+    if (near_low_end(px_[i])) {
+      c.entry_agent.push_back(i);
+      c.entry_x.push_back(px_[i] + length);
+    } else if (near_high_end(px_[i])) {
+      c.entry_agent.push_back(i);
+      c.entry_x.push_back(px_[i] - length);
+    }
+  }
+  const std::size_t entries = c.entry_agent.size();
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (std::size_t e = 0; e < entries; ++e) {
+    x0 = std::min(x0, c.entry_x[e]);
+    y0 = std::min(y0, py_[c.entry_agent[e]]);
+    x1 = std::max(x1, c.entry_x[e]);
+    y1 = std::max(y1, py_[c.entry_agent[e]]);
   }
   c.order.clear();
+  c.agents.clear();
   if (active == 0) {
     c.nx = c.ny = 0;
     c.start.assign(1, 0);
@@ -668,7 +839,7 @@ void CrowdSimulation::build_cells() {
   }
   // Cells a third of the cut-off wide, so the scanned cells hug the cut-off disc; in sparse or
   // spread-out crowds the cells grow to keep at most ~2 cells per agent.
-  const double max_cells = std::max(1024.0, 2.0 * static_cast<double>(active));
+  const double max_cells = std::max(1024.0, 2.0 * static_cast<double>(entries));
   auto cells_for = [&](double size) {
     return (std::floor((x1 - x0) / size) + 1.0) * (std::floor((y1 - y0) / size) + 1.0);
   };
@@ -682,36 +853,39 @@ void CrowdSimulation::build_cells() {
   c.ny = static_cast<std::int64_t>((y1 - y0) * c.inv_cell) + 1;
   const auto cells = static_cast<std::size_t>(c.nx * c.ny);
   c.start.assign(cells + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!active_[i]) continue;
-    const auto cx = std::min(static_cast<std::int64_t>((px_[i] - x0) * c.inv_cell), c.nx - 1);
-    const auto cy = std::min(static_cast<std::int64_t>((py_[i] - y0) * c.inv_cell), c.ny - 1);
+  c.entry_cell.resize(entries);
+  for (std::size_t e = 0; e < entries; ++e) {
+    const auto cx = std::min(static_cast<std::int64_t>((c.entry_x[e] - x0) * c.inv_cell), c.nx - 1);
+    const auto cy = std::min(static_cast<std::int64_t>((py_[c.entry_agent[e]] - y0) * c.inv_cell), c.ny - 1);
     const auto cell_index = static_cast<std::uint32_t>(cy * c.nx + cx);
-    c.cell_of[i] = cell_index;
+    c.entry_cell[e] = cell_index;
     ++c.start[cell_index + 1];
   }
   for (std::size_t k = 0; k < cells; ++k) c.start[k + 1] += c.start[k];
-  c.order.resize(active);
+  c.order.resize(entries);
   std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (c.cell_of[i] == kNoCell) continue;
-    const std::uint32_t k = fill[c.cell_of[i]]++;
-    c.order[k] = static_cast<std::uint32_t>(i);
-    c.cell_of[i] = k;  // from here on: the agent's position in the sorted arrays
+  for (std::size_t e = 0; e < entries; ++e) {
+    const std::uint32_t k = fill[c.entry_cell[e]]++;
+    c.order[k] = static_cast<std::uint32_t>(e);
+    if (e < active) c.cell_of[c.entry_agent[e]] = k;  // the agent's position in the sorted arrays
   }
+  c.agents.reserve(active);
+  for (std::size_t k = 0; k < entries; ++k)
+    if (c.order[k] < active) c.agents.push_back(c.entry_agent[c.order[k]]);
   // Three inert entries past the end (far away, never within the cut-off) so the vector gather
   // may read whole groups of four.
-  c.x.assign(active + 3, 1e30);
-  c.y.assign(active + 3, 1e30);
-  c.vx.assign(active + 3, 0.0);
-  c.vy.assign(active + 3, 0.0);
-  c.r.resize(active);
-  c.group.resize(active);
-  c.id.resize(active);
-  pool_->parallel_for(active, 4096, [&](std::size_t begin, std::size_t end) {
+  c.x.assign(entries + 3, 1e30);
+  c.y.assign(entries + 3, 1e30);
+  c.vx.assign(entries + 3, 0.0);
+  c.vy.assign(entries + 3, 0.0);
+  c.r.resize(entries);
+  c.group.resize(entries);
+  c.id.resize(entries);
+  pool_->parallel_for(entries, 4096, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      const std::uint32_t i = c.order[k];
-      c.x[k] = px_[i];
+      const std::uint32_t e = c.order[k];
+      const std::uint32_t i = c.entry_agent[e];
+      c.x[k] = c.entry_x[e];
       c.y[k] = py_[i];
       c.vx[k] = vx_[i];
       c.vy[k] = vy_[i];
@@ -885,16 +1059,18 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
 
   // Social, group-repulsion and body forces from neighbours within the cut-off.
   const std::int32_t g = group_[i];
+  thread_local std::vector<NeighbourSums::Contact> contacts;
   {
+    // Neighbours the two bodies could reach within one step (with 0.05 m to spare) are contacts.
+    const double margin = config_.hard_contact ? dt * (vmax_[i] + max_vmax_) + 0.05 : 0.0;
     NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, max_radius_, fp,
-                       config_.body_stiffness, ex, ey);
+                       config_.body_stiffness, ex, ey, margin, fp.headway_band * r);
     neighbours(sums, x, y);
     sums.flush();
     if (heading) {
       // The desired speed, capped by the headway to the person ahead (speed–headway adaptation).
       double v0 = v0_[i];
-      if (fp.headway_time > 0.0)
-        v0 = std::min(v0, std::max(0.0, (sums.headway() - fp.headway_distance) / fp.headway_time));
+      if (fp.headway_time > 0.0) v0 = std::min(v0, sums.speed_cap());
       f.desired = {fp.desired_factor * (ex * v0 - vx) / fp.relaxation_time,
                    fp.desired_factor * (ey * v0 - vy) / fp.relaxation_time};
     } else {
@@ -903,6 +1079,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
     f.social = sums.social();
     f.group = {sums.repulsion_x.value(), sums.repulsion_y.value()};
     f.body = {sums.body_x.value(), sums.body_y.value()};
+    contacts.assign(sums.contacts().begin(), sums.contacts().end());
   }
 
   // Group gaze and coherence (LightSFM computeGroupForce, non-paper variant).
@@ -946,6 +1123,31 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
     nvx *= k;
     nvy *= k;
   }
+  // Hard contact: towards each contact j (unit direction n, gap g between the bodies), the
+  // velocity along n may exceed the pair's mean frozen velocity along n by at most g/(2·dt). j
+  // limits its own velocity the same way, so the pair closes by at most g in this step and the
+  // bodies do not interpenetrate (to first order; two passes settle agents with several contacts).
+  // Overlapping pairs (g < 0) part at up to 0.2 m/s each; the body force pushes them apart too.
+  // Contacts come sorted by agent id: the result does not depend on the order of the scan.
+  if (config_.hard_contact) {
+    for (int pass = 0; pass < 2; ++pass) {
+      for (const NeighbourSums::Contact& c : contacts) {
+        const double mean = 0.5 * ((vx + c.vx) * c.nx + (vy + c.vy) * c.ny);
+        const double limit = mean + std::max(c.gap, -0.02) / (2.0 * dt);
+        const double along = nvx * c.nx + nvy * c.ny;
+        if (along > limit) {
+          nvx -= (along - limit) * c.nx;
+          nvy -= (along - limit) * c.ny;
+        }
+      }
+    }
+    const double s3 = nvx * nvx + nvy * nvy;
+    if (s3 > kMaxAgentSpeed * kMaxAgentSpeed) {
+      const double k = kMaxAgentSpeed / std::sqrt(s3);
+      nvx *= k;
+      nvy *= k;
+    }
+  }
   const Vec2 target{x + nvx * dt, y + nvy * dt};
   Vec2 next = guard_move({x, y}, target, near_walls, walls_);
   if (!(next == target)) {
@@ -961,6 +1163,65 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   npy_[i] = next.y;
   nvx_[i] = nvx;
   nvy_[i] = nvy;
+  if (config_.hard_contact) {
+    const std::size_t stored = std::min(contacts.size(), kStoredContacts);
+    for (std::size_t k = 0; k < stored; ++k) contact_ids_[i * kStoredContacts + k] = contacts[k].who;
+    contact_count_[i] = static_cast<std::uint8_t>(stored);
+  }
+}
+
+void CrowdSimulation::separate_bodies() {
+  if (!config_.hard_contact) return;
+  constexpr double kTolerance = 0.01;  // m of overlap left alone (the body force handles it)
+  constexpr double kMaxShift = 0.05;   // m per step
+  const double length = config_.periodic_length;
+  pool_->parallel_for(size(), 256, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      spx_[i] = npx_[i];
+      spy_[i] = npy_[i];
+      if (!active_[i]) continue;
+      double cx = 0.0;
+      double cy = 0.0;
+      for (std::size_t k = 0; k < contact_count_[i]; ++k) {
+        const std::uint32_t j = contact_ids_[i * kStoredContacts + k];
+        double dx = npx_[j] - npx_[i];
+        if (length > 0.0) dx -= length * std::round(dx / length);  // the nearest image
+        const double dy = npy_[j] - npy_[i];
+        const double d2 = dx * dx + dy * dy;
+        const double reach = radius_[i] + radius_[j] - kTolerance;
+        if (d2 >= reach * reach) continue;
+        double nx = 0.0;
+        double ny = 0.0;
+        double d = 0.0;
+        if (d2 > kTiny2) {
+          d = std::sqrt(d2);
+          nx = dx / d;
+          ny = dy / d;
+        } else {
+          const Vec2 u = tie_break_direction(static_cast<std::uint32_t>(i), j);
+          nx = u.x;
+          ny = u.y;
+        }
+        cx -= 0.5 * (reach - d) * nx;
+        cy -= 0.5 * (reach - d) * ny;
+      }
+      const double shift2 = cx * cx + cy * cy;
+      if (shift2 == 0.0) continue;
+      if (shift2 > kMaxShift * kMaxShift) {
+        const double k = kMaxShift / std::sqrt(shift2);
+        cx *= k;
+        cy *= k;
+      }
+      // From where the agent was to where it is pushed: still never through a wall.
+      const Vec2 from{px_[i], py_[i]};
+      const Vec2 to{npx_[i] + cx, npy_[i] + cy};
+      const Vec2 next = guard_move(from, to, wall_grid_.near(from.x, from.y), walls_);
+      spx_[i] = next.x;
+      spy_[i] = next.y;
+    }
+  });
+  npx_.swap(spx_);
+  npy_.swap(spy_);
 }
 
 void CrowdSimulation::finish_step() {
@@ -969,7 +1230,7 @@ void CrowdSimulation::finish_step() {
   pool_->parallel_for(size(), 1024, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       if (!active_[i]) continue;
-      px_[i] = npx_[i];
+      px_[i] = wrap_x(npx_[i]);
       py_[i] = npy_[i];
       vx_[i] = nvx_[i];
       vy_[i] = nvy_[i];
@@ -1016,21 +1277,26 @@ void CrowdSimulation::step() {
                       c.ny,
                       {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.group.data(),
                        c.id.data(), nullptr, static_cast<std::uint32_t>(c.x.size())}};
-  pool_->parallel_for(c.order.size(), 128, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) advance_agent(c.order[k], scan, nullptr);
+  pool_->parallel_for(c.agents.size(), 128, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) advance_agent(c.agents[k], scan, nullptr);
   });
+  separate_bodies();
   finish_step();
 }
 
 void CrowdSimulation::step_reference() {
   prepare_step();
-  const FullScan scan{static_cast<std::uint32_t>(size()),
-                      {px_.data(), py_.data(), vx_.data(), vy_.data(), radius_.data(), group_.data(), nullptr,
-                       active_.data(), static_cast<std::uint32_t>(size())}};
+  Images m;
+  build_images(m);
+  const auto entries = static_cast<std::uint32_t>(m.x.size());
+  const FullScan scan{entries,
+                      {m.x.data(), m.y.data(), m.vx.data(), m.vy.data(), m.r.data(), m.group.data(),
+                       m.id.data(), m.active.data(), entries}};
   pool_->parallel_for(size(), 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
       if (active_[i]) advance_agent(static_cast<std::uint32_t>(i), scan, nullptr);
   });
+  separate_bodies();
   finish_step();
 }
 
@@ -1038,9 +1304,12 @@ ForceBreakdown CrowdSimulation::forces(AgentId id) {
   ForceBreakdown out;
   if (id.value() >= size() || !active_[id.value()]) return out;
   prepare_step();  // group centres and wall grid of the current state; the O(N) scan gives the same forces
-  const FullScan scan{static_cast<std::uint32_t>(size()),
-                      {px_.data(), py_.data(), vx_.data(), vy_.data(), radius_.data(), group_.data(), nullptr,
-                       active_.data(), static_cast<std::uint32_t>(size())}};
+  Images m;
+  build_images(m);
+  const auto entries = static_cast<std::uint32_t>(m.x.size());
+  const FullScan scan{entries,
+                      {m.x.data(), m.y.data(), m.vx.data(), m.vy.data(), m.r.data(), m.group.data(),
+                       m.id.data(), m.active.data(), entries}};
   advance_agent(id.value(), scan, &out);
   return out;
 }

@@ -29,6 +29,19 @@ struct SimulationConfig {
   // interpenetrate in crowds: a 1 m door then passes 6.4 persons/s instead of the observed 1–2.
   // 0 gives pure LightSFM.
   double body_stiffness = 500.0;
+  // Periodic boundary along x for corridor studies (RiMEA 4, fundamental diagrams): when > 0,
+  // positions wrap into [periodic_origin, periodic_origin + periodic_length) after every step
+  // and agents interact with the images of the others one period to either side (so the period
+  // must exceed twice the neighbour cut-off). Walls are not wrapped: extend corridor walls by
+  // wall_cutoff beyond both ends. Goals are not wrapped either (give far goals along ±x), and
+  // group centres use the wrapped positions. 0 = no periodic boundary.
+  double periodic_length = 0.0;  // m
+  double periodic_origin = 0.0;  // m
+  // Hard body contact (an addition to LightSFM): after the forces, each agent limits its velocity
+  // towards every neighbour it could reach within one step so that, the other doing the same,
+  // the two bodies do not come closer than the sum of their radii (see docs/crowd.md, "Body
+  // contact"). false: bodies are kept apart by the body force alone.
+  bool hard_contact = true;
 };
 Status validate(const SimulationConfig& config);
 
@@ -125,12 +138,22 @@ class CrowdSimulation {
   CrowdSimulation(const SimulationConfig& config, RoleTable roles);
   struct CellIndex;
   struct AgentMeta;
+  struct Images;
+  // Every agent's frozen state followed by its periodic images (for the O(N²) reference scan).
+  void build_images(Images& images) const;
   Status check_id(AgentId id, const char* what) const;
   // The dense index of a group id (created on first use); -1 for no group.
   std::int32_t group_slot(std::int64_t group_id);
   void prepare_step();
+  // Hard contact, second half: pairs whose bodies the moves of this step would still leave
+  // overlapping by more than 1 cm are pushed apart, each by half the excess (see docs/crowd.md).
+  void separate_bodies();
   void finish_step();
   void build_cells();
+  // x of the images one period to the left/right of agent i's position (periodic boundary only).
+  [[nodiscard]] bool near_low_end(double x) const;
+  [[nodiscard]] bool near_high_end(double x) const;
+  [[nodiscard]] double wrap_x(double x) const;
   template <class Neighbours>
   void advance_agent(std::uint32_t i, const Neighbours& neighbours, ForceBreakdown* breakdown);
 
@@ -151,9 +174,16 @@ class CrowdSimulation {
   // Frozen state (read during a step) and the next state (written by it).
   std::vector<double> px_, py_, vx_, vy_, yaw_, omega_;
   std::vector<double> npx_, npy_, nvx_, nvy_;
+  // Per agent, the ids (ascending) of the neighbours it could touch in this step, for
+  // separate_bodies(): up to kStoredContacts at index i·kStoredContacts, count in contact_count_.
+  static constexpr std::size_t kStoredContacts = 16;
+  std::vector<std::uint32_t> contact_ids_;
+  std::vector<std::uint8_t> contact_count_;
+  std::vector<double> spx_, spy_;  // positions after separate_bodies()
   // Per-agent parameters.
   std::vector<double> radius_, v0_, vmax_;
   double max_radius_ = 0.0;  // largest radius of an active agent (set by prepare_step)
+  double max_vmax_ = 0.0;    // largest speed limit of an active agent (set by prepare_step)
   std::vector<std::uint16_t> role_;
   std::vector<std::int32_t> group_;  // dense group index, -1 = alone
   std::vector<std::uint8_t> active_;

@@ -65,6 +65,12 @@ Status validate(const RoleParameters& r, const std::string& p) {
                    {"/forces/relaxation_time", f.relaxation_time, 0.01, 100.0, false},
                    {"/forces/headway_distance", f.headway_distance, 0.0, 10.0, false},
                    {"/forces/headway_time", f.headway_time, 0.0, 100.0, false},
+                   {"/forces/headway_band", f.headway_band, 0.0, 10.0, false},
+                   {"/forces/headway_anticipation", f.headway_anticipation, 0.0, 100.0, false},
+                   {"/forces/side_factor", f.side_factor, 0.0, 100.0, false},
+                   {"/forces/side_range", f.side_range, 0.01, 100.0, false},
+                   {"/forces/side_bias", f.side_bias, -10.0, 10.0, false},
+                   {"/forces/side_band", f.side_band, 0.0, 10.0, false},
                    {"/proxemics/intimate_radius", r.proxemics.intimate_radius, 0.0, 100.0, false},
                    {"/proxemics/comfort_radius", r.proxemics.comfort_radius, 0.0, 100.0, false},
                    {"/proxemics/social_radius", r.proxemics.social_radius, 0.0, 100.0, false},
@@ -102,7 +108,13 @@ Json to_json(const RoleParameters& r) {
         {"n_prime", f.n_prime},
         {"relaxation_time", f.relaxation_time},
         {"headway_distance", f.headway_distance},
-        {"headway_time", f.headway_time}}},
+        {"headway_time", f.headway_time},
+        {"headway_band", f.headway_band},
+        {"headway_anticipation", f.headway_anticipation},
+        {"side_factor", f.side_factor},
+        {"side_range", f.side_range},
+        {"side_bias", f.side_bias},
+        {"side_band", f.side_band}}},
       {"proxemics",
        {{"intimate_radius", r.proxemics.intimate_radius},
         {"comfort_radius", r.proxemics.comfort_radius},
@@ -134,9 +146,26 @@ Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParame
   if (const Json* f = check.object(j, p, "forces", false)) {
     const std::string fp = JsonChecker::child(p, "forces");
     check.only_keys(*f, fp,
-                    {"desired_factor", "obstacle_factor", "obstacle_sigma", "social_factor",
-                     "group_gaze_factor", "group_coherence_factor", "group_repulsion_factor", "lambda",
-                     "gamma", "n", "n_prime", "relaxation_time", "headway_distance", "headway_time"});
+                    {"desired_factor",
+                     "obstacle_factor",
+                     "obstacle_sigma",
+                     "social_factor",
+                     "group_gaze_factor",
+                     "group_coherence_factor",
+                     "group_repulsion_factor",
+                     "lambda",
+                     "gamma",
+                     "n",
+                     "n_prime",
+                     "relaxation_time",
+                     "headway_distance",
+                     "headway_time",
+                     "headway_band",
+                     "headway_anticipation",
+                     "side_factor",
+                     "side_range",
+                     "side_bias",
+                     "side_band"});
     ForceParameters& x = r.forces;
     read(check, *f, fp, "desired_factor", x.desired_factor);
     read(check, *f, fp, "obstacle_factor", x.obstacle_factor);
@@ -152,6 +181,12 @@ Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParame
     read(check, *f, fp, "relaxation_time", x.relaxation_time);
     read(check, *f, fp, "headway_distance", x.headway_distance);
     read(check, *f, fp, "headway_time", x.headway_time);
+    read(check, *f, fp, "headway_band", x.headway_band);
+    read(check, *f, fp, "headway_anticipation", x.headway_anticipation);
+    read(check, *f, fp, "side_factor", x.side_factor);
+    read(check, *f, fp, "side_range", x.side_range);
+    read(check, *f, fp, "side_bias", x.side_bias);
+    read(check, *f, fp, "side_band", x.side_band);
   }
   if (const Json* x = check.object(j, p, "proxemics", false)) {
     const std::string xp = JsonChecker::child(p, "proxemics");

@@ -34,7 +34,21 @@ struct ForceParameters {
   // agent. Defaults calibrated on Weidmann's fundamental diagram (docs/crowd.md); headway_time = 0
   // turns it off (pure LightSFM).
   double headway_distance = 0.4;  // m
-  double headway_time = 0.5;      // s
+  double headway_time = 0.6;      // s
+  // Who counts as "ahead": a centre within headway_band × the agent's radius of its walking line.
+  double headway_band = 1.5;
+  // Anticipation (s): the gap is taken headway_anticipation seconds ahead at the current relative
+  // speed, s + τ·(v_j − v_i)·e. Neutral in uniform flow (the fundamental diagram is set by
+  // headway_distance and headway_time); lets followers keep up with people accelerating away, as
+  // through a door (calibrated on Seyfried's and Kretz's bottleneck flows, docs/crowd.md).
+  double headway_anticipation = 2.5;
+  // Side preference towards oncoming walkers (an addition): each walker coming towards the agent
+  // within side_band of its walking line pushes it sideways with side_factor·exp(−ahead/side_range),
+  // to the right unless that walker is already more than side_bias right of the line. 0 = off.
+  double side_factor = 1.5;  // m/s²
+  double side_range = 1.5;   // m
+  double side_bias = 0.1;    // m
+  double side_band = 0.7;    // m
   friend bool operator==(const ForceParameters&, const ForceParameters&) = default;
 };
 

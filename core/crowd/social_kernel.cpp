@@ -64,11 +64,10 @@ void social_kernel(const SocialParams& p, int count, const float* __restrict dx,
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
-float nearest_ahead2(int count, const float* __restrict dx, const float* __restrict dy,
-                     const float* __restrict dvx, const float* __restrict dvy, float ex, float ey, float band,
-                     float speed_along, float oncoming, float best) {
-  // d² >= 0, and the bits of non-negative floats order like the floats: an integer minimum
-  // vectorises where a float one would need -ffast-math.
+float headway_speed_cap(int count, const float* __restrict dx, const float* __restrict dy,
+                        const float* __restrict dvx, const float* __restrict dvy, float ex, float ey, float band,
+                        float speed_along, float oncoming, float distance, float inv_time, float anticipation,
+                        float best) {
   const float band2 = band * band;
   std::int32_t least = std::bit_cast<std::int32_t>(best);
   for (int m = 0; m < count; ++m) {
@@ -76,12 +75,38 @@ float nearest_ahead2(int count, const float* __restrict dx, const float* __restr
     const float oy = dy[m];
     const float ahead = ox * ex + oy * ey;
     const float side = ox * ey - oy * ex;
-    const float toward = speed_along - (dvx[m] * ex + dvy[m] * ey);
-    const std::int32_t d2 = std::bit_cast<std::int32_t>(ox * ox + oy * oy);
+    const float closing = dvx[m] * ex + dvy[m] * ey;  // (v_i − v_j)·e
+    const float toward = speed_along - closing;
+    const float d = std::sqrt(ox * ox + oy * oy);
+    const float cap = std::max((d - distance - anticipation * closing) * inv_time, 0.0f);
     const bool counts = (ahead > 0.0f) & (side * side < band2) & (toward >= -oncoming);  // no branches
-    least = std::min(least, counts ? d2 : INT32_MAX);
+    least = std::min(least, counts ? std::bit_cast<std::int32_t>(cap) : INT32_MAX);
   }
   return std::bit_cast<float>(least);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+std::int64_t
+oncoming_side_push(int count, const float* __restrict dx, const float* __restrict dy,
+                   const float* __restrict dvx, const float* __restrict dvy, float ex, float ey, float band,
+                   float speed_along, float oncoming, float bias, float factor, float inv_range) {
+  const float band2 = band * band;
+  const float scale = factor * kForceQuantum;
+  std::int64_t sum = 0;
+  for (int m = 0; m < count; ++m) {
+    const float ox = dx[m];
+    const float oy = dy[m];
+    const float ahead = ox * ex + oy * ey;
+    const float right = ox * ey - oy * ex;  // > 0: the neighbour is right of the walking line
+    const float toward = speed_along - (dvx[m] * ex + dvy[m] * ey);
+    const bool counts = (ahead > 0.0f) & (right * right < band2) & (toward < -oncoming);  // no branches
+    const float push = scale * fast_expf(-ahead * inv_range);
+    const float signed_push = right < bias ? push : -push;
+    sum += static_cast<std::int32_t>(counts ? signed_push : 0.0f);
+  }
+  return sum;
 }
 
 }  // namespace socsim::crowd

@@ -39,13 +39,30 @@ void social_kernel(const SocialParams& p, int count, const float* __restrict dx,
                    const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,
                    const float* __restrict tie_y, std::int32_t* __restrict fx, std::int32_t* __restrict fy);
 
-// The speed–headway search over the same batch: the smallest squared distance d² to a neighbour
-// straight ahead — (dx, dy)·e > 0, its centre within `band` of the walking line through the agent
-// along the unit direction e, and not walking towards the agent (v_j·e ≥ −oncoming, with
-// v_j·e = speed_along − dv·e) — or `best` when none is nearer. A minimum of floats, so the order
-// of the batch does not matter.
-float nearest_ahead2(int count, const float* __restrict dx, const float* __restrict dy,
-                     const float* __restrict dvx, const float* __restrict dvy, float ex, float ey, float band,
-                     float speed_along, float oncoming, float best);
+// The speed–headway cap over the same batch: the smallest (s_j − ℓ + τ·(v_j − v_i)·e)/T, floored
+// at 0, over the neighbours straight ahead — (dx, dy)·e > 0, their centre within `band` of the walking
+// line through the agent along the unit direction e, and not walking towards it (v_j·e ≥
+// −oncoming, with v_j·e = speed_along − dv·e) — (s_j their centre distance, (v_j − v_i)·e
+// = −dv·e how fast they pull away along the walking direction), or `best` when smaller. The
+// relative-speed term vanishes in uniform flow (the fundamental diagram depends on ℓ and T only)
+// and lets a follower keep up with someone accelerating away, as through a door. A minimum over
+// non-negative floats, so the order of the batch does not matter.
+float headway_speed_cap(int count, const float* __restrict dx, const float* __restrict dy,
+                        const float* __restrict dvx, const float* __restrict dvy, float ex, float ey,
+                        float band, float speed_along, float oncoming, float distance, float inv_time,
+                        float anticipation, float best);
+
+// Side preference towards oncoming walkers (an addition to LightSFM): over the same batch, the sum
+// of the sideways pushes from neighbours ahead ((dx, dy)·e > 0) whose centre lies within `band`
+// of the walking line and who walk towards the agent (v_j·e < −oncoming): each pushes with
+// factor·exp(−ahead/range) to the agent's right when it is less than `bias` to the right of the
+// walking line (so two walkers meeting head-on both step to their right and pass left shoulder to
+// left shoulder), and to the left otherwise (it is already passing on the right). Returned in units
+// of 2^-20 m/s² along the agent's right-hand direction (e_y, −e_x); an integer sum, so the order of
+// the batch does not matter.
+std::int64_t oncoming_side_push(int count, const float* __restrict dx, const float* __restrict dy,
+                                const float* __restrict dvx, const float* __restrict dvy, float ex, float ey,
+                                float band, float speed_along, float oncoming, float bias, float factor,
+                                float inv_range);
 
 }  // namespace socsim::crowd

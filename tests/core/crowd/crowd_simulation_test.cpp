@@ -284,9 +284,10 @@ TEST(CrowdSimulation, GroupForcesPullMembersTogether) {
   EXPECT_FALSE(strangers.set_group(AgentId(7), 1));
 }
 
-// Speed–headway adaptation: following someone 0.9 m ahead on the walking line caps the desired
-// speed at (0.9 − 0.4)/0.5 = 1.0 m/s; someone beside the line, behind, or coming the other way
-// does not.
+// Speed–headway adaptation: following someone 0.9 m ahead on the walking line at the same speed
+// caps the desired speed at (0.9 − 0.4)/0.6 = 0.83 m/s; closing in on them at 0.3 m/s takes the
+// gap 2.5 s ahead, 0.9 − 0.75 m, which is below 0.4 m: stop. Someone beside the line (beyond 1.5
+// radii), behind, or coming the other way does not cap the speed.
 TEST(CrowdSimulation, FollowersSlowToTheirHeadway) {
   const auto desired_x = [](Vec2 other, Vec2 other_velocity) {
     CrowdSimulation sim = make();
@@ -295,11 +296,28 @@ TEST(CrowdSimulation, FollowersSlowToTheirHeadway) {
     EXPECT_TRUE(sim.set_goal(a, Goal{{20, 0}, 0.3}));
     return sim.forces(a).desired.x;
   };
-  EXPECT_NEAR(desired_x({0.9, 0.0}, {1.0, 0}), 2.0 * (1.0 - 1.3) / 0.5, 1e-5);
-  EXPECT_NEAR(desired_x({0.9, 0.4}, {1.0, 0}), 0.0, 1e-12);   // beside the walking line
-  EXPECT_NEAR(desired_x({-0.9, 0.0}, {1.0, 0}), 0.0, 1e-12);  // behind
+  EXPECT_NEAR(desired_x({0.9, 0.0}, {1.3, 0}), 2.0 * ((0.9 - 0.4) / 0.6 - 1.3) / 0.5, 1e-5);
+  EXPECT_NEAR(desired_x({0.9, 0.0}, {1.0, 0}), 2.0 * (0.0 - 1.3) / 0.5, 1e-5);  // closing in
+  EXPECT_NEAR(desired_x({0.9, 0.4}, {1.0, 0}), 0.0, 1e-12);                     // beside the walking line
+  EXPECT_NEAR(desired_x({-0.9, 0.0}, {1.0, 0}), 0.0, 1e-12);                    // behind
   EXPECT_NEAR(desired_x({0.9, 0.0}, {-1.0, 0}), 0.0, 1e-12);  // oncoming: left to the social force
   EXPECT_NEAR(desired_x({0.3, 0.0}, {0.0, 0}), 2.0 * (0.0 - 1.3) / 0.5, 1e-12);  // closer than 0.4 m: stop
+}
+
+// Side preference: someone coming head-on pushes the agent to its right (−y when walking +x);
+// someone coming well to the agent's right pushes it left; nobody coming the same way pushes.
+TEST(CrowdSimulation, OncomingWalkersPushToTheRight) {
+  const auto social_y = [](Vec2 other, Vec2 other_velocity) {
+    CrowdSimulation sim = make();
+    const AgentId a = add(sim, {0, 0}, {1.3, 0});
+    add(sim, other, other_velocity);
+    EXPECT_TRUE(sim.set_goal(a, Goal{{20, 0}, 0.3}));
+    return sim.forces(a).social.y;
+  };
+  // Exactly head-on LightSFM's sideways term vanishes (θ = 0): the push alone breaks the tie.
+  EXPECT_NEAR(social_y({2.0, 0.0}, {-1.3, 0}), -1.5 * std::exp(-2.0 / 1.5), 1e-5);
+  EXPECT_GT(social_y({2.0, -0.5}, {-1.3, 0}), 0.0);  // already passing on the right: go left
+  EXPECT_NEAR(social_y({2.0, 0.0}, {1.3, 0}), 0.0, 1e-12);
 }
 
 // ---- determinism and the reference ------------------------------------------------------------
@@ -347,6 +365,64 @@ TEST(CrowdSimulation, CellListAgreesWithBruteForceReference) {
   }
   EXPECT_LT(worst, 1e-4);
   EXPECT_TRUE(bit_identical(snapshot(grid), snapshot(brute)));
+}
+
+// A periodic corridor 20 m long, 4 m wide, with people walking both ways (contacts, headway,
+// side preference and images across the boundary all in play).
+CrowdSimulation periodic_corridor(std::size_t n, unsigned threads, std::uint64_t seed) {
+  SimulationConfig config;
+  config.threads = threads;
+  config.seed = seed;
+  config.periodic_length = 20.0;
+  CrowdSimulation sim = make(config);
+  EXPECT_TRUE(sim.add_wall({-3, 0}, {23, 0}));
+  EXPECT_TRUE(sim.add_wall({-3, 4}, {23, 4}));
+  Rng rng(seed);
+  for (std::size_t k = 0; k < n; ++k) {
+    AgentSpec spec;
+    spec.position = {20.0 * (static_cast<double>(k) + rng.uniform(0.0, 0.5)) / static_cast<double>(n),
+                     rng.uniform(0.4, 3.6)};
+    auto id = sim.add_agent(spec);
+    EXPECT_TRUE(id);
+    EXPECT_TRUE(sim.set_goal(*id, Goal{{k % 3 == 0 ? -1e5 : 1e5, 2.0}, 0.3}));
+  }
+  return sim;
+}
+
+TEST(CrowdSimulation, PeriodicBoundaryWrapsAndSeesAcrossIt) {
+  SimulationConfig config;
+  config.periodic_length = 10.0;
+  config.periodic_origin = -2.0;
+  EXPECT_FALSE(CrowdSimulation::create(SimulationConfig{.periodic_length = 5.0}));  // < 2 cut-offs + 0.5
+  EXPECT_FALSE(CrowdSimulation::create(SimulationConfig{.periodic_length = -1.0}));
+  CrowdSimulation sim = make(config);
+  const AgentId a = add(sim, {7.9, 1.0}, {1.3, 0});   // x in [-2, 8): just before the end
+  const AgentId b = add(sim, {-1.6, 1.0}, {1.3, 0});  // 0.5 m ahead of a, across the boundary
+  const AgentId far = add(sim, {25.0, 3.0});          // placed two periods out: wrapped in
+  EXPECT_NEAR(sim.position(far).x, 5.0, 1e-12);
+  EXPECT_TRUE(sim.set_goal(a, Goal{{1e5, 1.0}, 0.3}));
+  // b, 0.5 m ahead through the boundary, caps a's desired speed (0.5 − 0.4)/0.6 and pushes it back.
+  const ForceBreakdown f = sim.forces(a);
+  EXPECT_NEAR(f.desired.x, 2.0 * ((0.5 - 0.4) / 0.6 - 1.3) / 0.5, 1e-5);
+  EXPECT_LT(f.social.x, 0.0);
+  for (int k = 0; k < 4; ++k) sim.step();
+  EXPECT_GE(sim.position(a).x, -2.0);
+  EXPECT_LT(sim.position(a).x, 8.0);
+  EXPECT_LT(sim.position(b).x, 8.0);
+}
+
+TEST(CrowdSimulation, PeriodicCellListAgreesWithReferenceToTheBit) {
+  CrowdSimulation grid = periodic_corridor(160, 2, 8);
+  CrowdSimulation brute = periodic_corridor(160, 1, 8);
+  for (int k = 0; k < 200; ++k) {
+    grid.step();
+    brute.step_reference();
+  }
+  EXPECT_TRUE(bit_identical(snapshot(grid), snapshot(brute)));
+  for (std::uint32_t i = 0; i < grid.size(); ++i) {
+    EXPECT_GE(grid.position(AgentId(i)).x, 0.0);
+    EXPECT_LT(grid.position(AgentId(i)).x, 20.0);
+  }
 }
 
 // ---- hard guarantees ----------------------------------------------------------------------

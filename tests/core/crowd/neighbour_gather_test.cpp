@@ -175,29 +175,51 @@ TEST(SocialKernel, EveryLaneEqualsThePairComputedAlone) {
   EXPECT_GT(nonzero, kBatch / 2);  // the forces are not trivially zero
 }
 
-// The headway search over a whole batch (vector lanes) finds the same neighbour as asking each
-// pair alone (the scalar tail): the nearest one ahead, within the band, not coming towards the agent.
-TEST(SocialKernel, NearestAheadOverTheBatchEqualsPairByPair) {
+// The headway cap over a whole batch (vector lanes) equals asking each pair alone (the scalar
+// tail): the smallest (d − ℓ − τ·closing)/T, floored at 0, over the neighbours ahead, within the
+// band, not coming towards the agent.
+TEST(SocialKernel, HeadwayCapOverTheBatchEqualsPairByPair) {
   const PairBatch batch = random_batch(29, 3.0, 0.6, 2.0, 0.5);
   const float inf = std::numeric_limits<float>::infinity();
-  const auto ahead = [&](int begin, int count) {
-    return nearest_ahead2(count, batch.dx + begin, batch.dy + begin, batch.dvx + begin, batch.dvy + begin,
-                          1.0f, 0.0f, 0.23f, 1.2f, 0.1f, inf);
+  const auto cap = [&](int begin, int count, float best) {
+    return headway_speed_cap(count, batch.dx + begin, batch.dy + begin, batch.dvx + begin, batch.dvy + begin,
+                             1.0f, 0.0f, 0.345f, 1.2f, 0.1f, 0.4f, 1.0f / 0.6f, 2.5f, best);
   };
   float alone = inf;
   int counted = 0;
   for (int m = 0; m < kBatch; ++m) {
-    const float one = ahead(m, 1);
-    const bool expected = batch.dx[m] > 0.0f && std::abs(batch.dy[m]) < 0.23f && 1.2f - batch.dvx[m] >= -0.1f;
+    const float one = cap(m, 1, inf);
+    const bool expected =
+        batch.dx[m] > 0.0f && std::abs(batch.dy[m]) < 0.345f && 1.2f - batch.dvx[m] >= -0.1f;
     EXPECT_EQ(one != inf, expected) << "lane " << m;
+    if (expected) {
+      EXPECT_GE(one, 0.0f) << "lane " << m;
+    }
     counted += expected;
     alone = std::min(alone, one);
   }
   ASSERT_GT(counted, 2);  // the case is not trivial
-  EXPECT_EQ(ahead(0, kBatch), alone);
-  EXPECT_EQ(
-      nearest_ahead2(kBatch, batch.dx, batch.dy, batch.dvx, batch.dvy, 1.0f, 0.0f, 0.23f, 1.2f, 0.1f, 0.01f),
-      0.01f);  // a nearer one found earlier stays
+  EXPECT_EQ(cap(0, kBatch, inf), alone);
+  EXPECT_EQ(cap(0, kBatch, 0.0f), 0.0f);  // a smaller cap found earlier stays
+}
+
+// The side push over a whole batch is the integer sum of the pairs' pushes, whatever the split.
+TEST(SocialKernel, SidePushOverTheBatchEqualsPairByPair) {
+  const PairBatch batch = random_batch(31, 3.0, 0.8, 3.0, 0.5);
+  const auto push = [&](int begin, int count) {
+    return oncoming_side_push(count, batch.dx + begin, batch.dy + begin, batch.dvx + begin, batch.dvy + begin,
+                              1.0f, 0.0f, 0.7f, 1.2f, 0.1f, 0.1f, 1.5f, 1.0f / 1.5f);
+  };
+  std::int64_t sum = 0;
+  int nonzero = 0;
+  for (int m = 0; m < kBatch; ++m) {
+    const std::int64_t one = push(m, 1);
+    sum += one;
+    nonzero += one != 0;
+  }
+  ASSERT_GT(nonzero, 2);  // the case is not trivial
+  EXPECT_EQ(push(0, kBatch), sum);
+  EXPECT_EQ(push(0, 24) + push(24, kBatch - 24), sum);
 }
 
 }  // namespace

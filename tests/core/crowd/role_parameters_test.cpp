@@ -89,7 +89,7 @@ TEST(RoleParameters, BadOverridesNameTheFieldAndChangeNothing) {
   EXPECT_THAT(headway.error().errors, Contains(Field(&FieldError::pointer, "/adult/forces/headway_time")));
   EXPECT_THAT(headway.error().errors,
               Contains(Field(&FieldError::pointer, "/adult/forces/headway_distance")));
-  EXPECT_DOUBLE_EQ(t.at(*t.index_of("adult")).forces.headway_time, 0.5);
+  EXPECT_DOUBLE_EQ(t.at(*t.index_of("adult")).forces.headway_time, 0.6);
   EXPECT_FALSE(t.apply_json(Json::array()));
 }
 
