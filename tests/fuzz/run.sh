@@ -3,9 +3,11 @@
 # and runs each in turn for the given time on its seed corpus and dictionary, under ASan + UBSan.
 #   tests/fuzz/run.sh [seconds-per-target] [target...]     (default: 10 s, every target)
 # FUZZ_JOBS: build parallelism (default 1). FUZZ_FLAGS: more libFuzzer flags (e.g. -jobs, -seed).
-# New inputs go to build/fuzz/corpus/<target> (tests/fuzz/corpus holds the seeds and is only read);
-# crashes, leaks, timeouts and OOMs to build/fuzz/artifacts/<target>/, each run's log to
-# build/fuzz/logs/<target>.log. Exits 1 when a target found something. (A slow-unit-* file is
+# FUZZ_BUILD=build/asan runs the executables of preset asan (coverage only in the readers; built
+# by `cmake --build --preset asan`) instead of building preset fuzz.
+# New inputs go to <build>/fuzz-corpus/<target> (tests/fuzz/corpus holds the seeds and is only read);
+# crashes, leaks, timeouts and OOMs to <build>/fuzz-artifacts/<target>/, each run's log to
+# <build>/fuzz-logs/<target>.log. Exits 1 when a target found something. (A slow-unit-* file is
 # not a finding: a unit that hangs is a timeout-* after -timeout; a stopped process leaves one.)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -18,10 +20,13 @@ if ((${#targets[@]} == 0)); then
 fi
 
 started=$SECONDS
-cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz -j "${FUZZ_JOBS:-1}" | grep -v '^\[\|^ninja: no work to do' || true
-test -x build/fuzz/tests/fuzz/fuzz_"${targets[0]}" || { echo "fuzz build failed" >&2; exit 1; }
-echo "fuzz build: $((SECONDS - started)) s"
+build=${FUZZ_BUILD:-build/fuzz}
+if [[ $build == build/fuzz ]]; then
+  cmake --preset fuzz >/dev/null
+  cmake --build --preset fuzz -j "${FUZZ_JOBS:-1}" | grep -v '^\[\|^ninja: no work to do' || true
+fi
+test -x "$build/tests/fuzz/fuzz_${targets[0]}" || { echo "no fuzz executables in $build" >&2; exit 1; }
+echo "fuzz build ($build): $((SECONDS - started)) s"
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
@@ -32,10 +37,10 @@ count_findings() {
 found=0
 printf '%-14s %10s %8s %6s %7s %8s %7s  %s\n' target execs exec/s cov ft corpus findings result
 for t in "${targets[@]}"; do
-  exe=build/fuzz/tests/fuzz/fuzz_$t
-  work=build/fuzz/corpus/$t
-  artifacts=build/fuzz/artifacts/$t
-  log=build/fuzz/logs/$t.log
+  exe=$build/tests/fuzz/fuzz_$t
+  work=$build/fuzz-corpus/$t
+  artifacts=$build/fuzz-artifacts/$t
+  log=$build/fuzz-logs/$t.log
   mkdir -p "$work" "$artifacts" "$(dirname "$log")"
   dict=()
   [[ -f tests/fuzz/$t.dict ]] && dict=(-dict="tests/fuzz/$t.dict")
