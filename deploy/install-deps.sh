@@ -10,7 +10,7 @@ packages=(
   libsqlite3-dev sqlite3 libyaml-cpp-dev libgtest-dev libgmock-dev libgeos-dev
   libboost-dev libexpected-dev libssl-dev zlib1g-dev clang-format ccache
   wordnet-base wordnet-dev  # prompt understanding: WordNet 3.0 data in /usr/share/wordnet and libwordnet
-  clang-14 libclang-rt-14-dev  # the libFuzzer build of tests/fuzz (preset fuzz)
+  clang-14 libclang-rt-14-dev  # the sanitizer + libFuzzer build (presets asan and fuzz)
 )
 if [ "${1:-}" = "--with-browser" ]; then
   # Test-only: Chromium for the viewer tests, nginx for the reverse-proxy fault tests.
