@@ -94,6 +94,20 @@ Vec2 tie_break_direction(std::uint32_t i, std::uint32_t j) {
   return i < j ? u : Vec2{-u.x, -u.y};
 }
 
+// Distance between agents i and j and the unit vector from i towards j (dx, dy: j − i; d2 its
+// squared length); coincident agents get distance 0 and their fixed per-pair direction.
+struct Separation {
+  double d, x, y;
+};
+Separation separation(double dx, double dy, double d2, std::uint32_t i, std::uint32_t j) {
+  if (d2 > kTiny2) {
+    const double d = std::sqrt(d2);
+    return {d, dx / d, dy / d};
+  }
+  const Vec2 u = tie_break_direction(i, j);
+  return {0.0, u.x, u.y};
+}
+
 // Where along from→to the move meets the wall's line (0..1).
 double hit_parameter(Vec2 from, Vec2 to, const WallSegment& w) {
   const double o1 = orient(w.a, w.b, from);
@@ -356,18 +370,8 @@ class NeighbourSums {
 
  private:
   void add_contact(std::uint32_t who, double dx, double dy, double d2, double reach, double vx, double vy) {
-    Contact c{who, 0.0, 0.0, 0.0, vx, vy};
-    if (d2 > kTiny2) {
-      const double d = std::sqrt(d2);
-      c.nx = dx / d;
-      c.ny = dy / d;
-      c.gap = d - reach;
-    } else {
-      const Vec2 u = tie_break_direction(id_, who);
-      c.nx = u.x;
-      c.ny = u.y;
-      c.gap = -reach;
-    }
+    const Separation n = separation(dx, dy, d2, id_, who);
+    Contact c{who, n.x, n.y, n.d - reach, vx, vy};
     std::size_t pos = contact_count_;
     while (pos > 0 && contacts_[pos - 1].who > who) --pos;
     if (pos >= contacts_.size()) return;
@@ -385,20 +389,9 @@ class NeighbourSums {
       repulsion_y.add(-repulsion_factor_ * dy);
     }
     if (body_stiffness_ > 0.0) {
-      double ex = 0.0;
-      double ey = 0.0;
-      double d = 0.0;
-      if (d2 > kTiny2) {
-        d = std::sqrt(d2);
-        ex = dx / d;
-        ey = dy / d;
-      } else {
-        const Vec2 u = tie_break_direction(id_, idj);
-        ex = u.x;
-        ey = u.y;
-      }
-      body_x.add(-body_stiffness_ * (reach - d) * ex);
-      body_y.add(-body_stiffness_ * (reach - d) * ey);
+      const Separation n = separation(dx, dy, d2, id_, idj);
+      body_x.add(-body_stiffness_ * (reach - n.d) * n.x);
+      body_y.add(-body_stiffness_ * (reach - n.d) * n.y);
     }
   }
 
@@ -1190,20 +1183,9 @@ void CrowdSimulation::separate_bodies() {
         const double d2 = dx * dx + dy * dy;
         const double reach = radius_[i] + radius_[j] - kTolerance;
         if (d2 >= reach * reach) continue;
-        double nx = 0.0;
-        double ny = 0.0;
-        double d = 0.0;
-        if (d2 > kTiny2) {
-          d = std::sqrt(d2);
-          nx = dx / d;
-          ny = dy / d;
-        } else {
-          const Vec2 u = tie_break_direction(static_cast<std::uint32_t>(i), j);
-          nx = u.x;
-          ny = u.y;
-        }
-        cx -= 0.5 * (reach - d) * nx;
-        cy -= 0.5 * (reach - d) * ny;
+        const Separation n = separation(dx, dy, d2, static_cast<std::uint32_t>(i), j);
+        cx -= 0.5 * (reach - n.d) * n.x;
+        cy -= 0.5 * (reach - n.d) * n.y;
       }
       const double shift2 = cx * cx + cy * cy;
       if (shift2 == 0.0) continue;
