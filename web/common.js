@@ -149,7 +149,7 @@ export const COLOURS = {
   // Groups of household activities (schedule timelines).
   activity: { sleep: '#5c6bc0', away: '#bdbdbd', meal: '#f4a261', hygiene: '#4fc3f7', chores: '#81c784', work: '#e57373', leisure: '#ba68c8' },
   // The plan's own ink.
-  plan: { wall: '#212529', door: '#f08c00', entity: '#343a40', label: '#212529', entityLabel: '#495057', furniture: '#d9d2c5', furnitureEdge: '#8d8577' },
+  plan: { wall: '#212529', door: '#f08c00', entity: '#343a40', label: '#212529', entityLabel: '#495057', furniture: '#d9d2c5', furnitureEdge: '#8d8577', window: '#4dabf7' },
   // Marks drawn over a plan: the navigation target, receptacles visited, the agent's path, the time cursor.
   mark: { target: '#e03131', visited: '#2b8a3e', path: '#1c7ed6', agent: '#0b3d91', free: '#c8c8c8', now: '#d6336c' },
 };
@@ -159,7 +159,8 @@ export const COLOURS = {
 // One plan shape, the JSON form of world.yaml (schemas/world.schema.json), metres, y up:
 //   zones [{name, type, polygon: [[x, y]…], label?}], walls [{start, end}], doors [{name, pose: [x, y], width, along?}],
 //   segmentation [{name, kind, polygon}], entities [{name, type, pose: [x, y, yaw?], size?: [w, d]}].
-// Extras the houses need: a zone's `label` (else its name is shown), a door's `along` (unit vector
+// Extras the houses need: windows [{pose, width, along}] (drawn as a light line across the wall),
+// a zone's `label` (else its name is shown), a door's `along` (unit vector
 // of the opening; else taken from the nearest wall or zone edge), an entity's `size` (drawn as a
 // rectangle turned by yaw, radians, instead of a point).
 
@@ -172,7 +173,7 @@ const roomType = (t) => String(t).replace(/([a-z0-9])([A-Z])/g, '$1_$2').toLower
 // GET /api/v1/navbench/{job}/episodes/{n} → .house (which adds each room's floor as a receptacle,
 // "synthetic": true, drawn as a point, and the map's grid, drawn by the page).
 // rooms [{id, type, floor: [{x, z}]}], walls [{a, b}], doors [{center, direction, width}], windows
-// (same form, not drawn yet), receptacles [{id, type, position, size: {x, z}, yaw (degrees)}].
+// (same form), receptacles [{id, type, position, size: {x, z}, yaw (degrees)}].
 export function planFromHousehold(house) {
   return {
     name: house.id,
@@ -183,6 +184,9 @@ export function planFromHousehold(house) {
     walls: house.walls.map((w) => ({ start: fromHouse(w.a.x, w.a.z), end: fromHouse(w.b.x, w.b.z) })),
     doors: house.doors.filter((d) => d.center).map((d) => ({
       name: d.id, pose: fromHouse(d.center.x, d.center.z), width: d.width || 0.9, along: fromHouse(d.direction.x, d.direction.z),
+    })),
+    windows: (house.windows || []).map((w) => ({
+      pose: fromHouse(w.center.x, w.center.z), width: w.width, along: fromHouse(w.direction.x, w.direction.z),
     })),
     entities: house.receptacles.map((r) => ({
       name: r.id, type: r.type, pose: [...fromHouse(r.position.x, r.position.z), (r.yaw || 0) * Math.PI / 180],
@@ -256,6 +260,16 @@ export function drawPlan(canvas, plan, opts = {}) {
   for (const w of plan.walls || []) {
     const [ax, ay] = t.toPx(w.start), [bx, by] = t.toPx(w.end);
     ctx.beginPath(); ctx.moveTo(ax, ay); ctx.lineTo(bx, by); ctx.stroke();
+  }
+  ctx.strokeStyle = ink.window;  // a window: a light line over the wall, a third of its thickness
+  ctx.lineWidth = Math.max(1.5, 0.035 * t.scale);
+  for (const w of plan.windows || []) {
+    const [cx, cy] = t.toPx(w.pose);
+    const half = w.width * t.scale / 2;
+    ctx.beginPath();
+    ctx.moveTo(cx - w.along[0] * half, cy + w.along[1] * half);
+    ctx.lineTo(cx + w.along[0] * half, cy - w.along[1] * half);
+    ctx.stroke();
   }
   const doors = plan.doors || [];
   const infer = doors.length * ((plan.walls || []).length + 8 * (plan.zones || []).length) < 2e6;  // no quadratic stall on huge worlds
