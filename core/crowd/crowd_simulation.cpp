@@ -940,6 +940,15 @@ struct FullScan {
   }
 };
 
+// The O(N²) scan over every agent and its periodic images (step_reference, forces).
+template <class ImagesT>
+FullScan full_scan(const ImagesT& m) {
+  const auto entries = static_cast<std::uint32_t>(m.x.size());
+  return {entries,
+          {m.x.data(), m.y.data(), m.vx.data(), m.vy.data(), m.r.data(), m.group.data(), m.id.data(),
+           m.active.data(), entries}};
+}
+
 }  // namespace
 
 template <class Neighbours>
@@ -1270,10 +1279,7 @@ void CrowdSimulation::step_reference() {
   prepare_step();
   Images m;
   build_images(m);
-  const auto entries = static_cast<std::uint32_t>(m.x.size());
-  const FullScan scan{entries,
-                      {m.x.data(), m.y.data(), m.vx.data(), m.vy.data(), m.r.data(), m.group.data(),
-                       m.id.data(), m.active.data(), entries}};
+  const FullScan scan = full_scan(m);
   pool_->parallel_for(size(), 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
       if (active_[i]) advance_agent(static_cast<std::uint32_t>(i), scan, nullptr);
@@ -1288,10 +1294,7 @@ ForceBreakdown CrowdSimulation::forces(AgentId id) {
   prepare_step();  // group centres and wall grid of the current state; the O(N) scan gives the same forces
   Images m;
   build_images(m);
-  const auto entries = static_cast<std::uint32_t>(m.x.size());
-  const FullScan scan{entries,
-                      {m.x.data(), m.y.data(), m.vx.data(), m.vy.data(), m.r.data(), m.group.data(),
-                       m.id.data(), m.active.data(), entries}};
+  const FullScan scan = full_scan(m);
   advance_agent(id.value(), scan, &out);
   return out;
 }
