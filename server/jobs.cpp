@@ -8,7 +8,7 @@ namespace socsim::server {
 namespace {
 using store::Database;
 
-constexpr std::string_view kCursorPrefix = "j1.";
+constexpr std::string_view kJobCursorPrefix = "j1.";
 
 Json row_to_json(store::Statement& st) {
   Json j = {{"id", st.text(0)},        {"kind", st.text(1)},    {"status", st.text(2)},
@@ -234,7 +234,7 @@ Result<JobPage> JobRunner::list(std::size_t page_size, const std::optional<std::
   std::optional<std::int64_t> before;
   if (cursor) {
     const std::string digits =
-        cursor->rfind(kCursorPrefix, 0) == 0 ? cursor->substr(kCursorPrefix.size()) : "";
+        cursor->rfind(kJobCursorPrefix, 0) == 0 ? cursor->substr(kJobCursorPrefix.size()) : "";
     if (digits.empty() || digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
       return fail(ErrorCode::kBadRequest, "the cursor is not one this server issued",
                   {{"", "use next_cursor from a previous page", "cursor", 0, 0}});
@@ -260,7 +260,7 @@ Result<JobPage> JobRunner::list(std::size_t page_size, const std::optional<std::
       if (!row) return tl::unexpected(row.error());
       if (!*row) break;
       if (page.items.size() == page_size) {
-        page.next_cursor = std::string(kCursorPrefix) + std::to_string(last);
+        page.next_cursor = std::string(kJobCursorPrefix) + std::to_string(last);
         break;
       }
       last = st->int64(12);

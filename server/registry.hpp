@@ -38,8 +38,8 @@ struct RegisterCommand {
 #define SOCSIM_CAT_(a, b) SOCSIM_CAT2_(a, b)
 // SOCSIM_ROUTES("cards", [](Router& http, RouteContext& ctx) { http.Get(...); });
 #define SOCSIM_ROUTES(name, fn) \
-  static const ::socsim::server::RegisterRoutes SOCSIM_CAT_(socsim_routes_, __LINE__)(name, fn)
+  static const ::socsim::server::RegisterRoutes SOCSIM_CAT_(socsim_routes_, __COUNTER__)(name, fn)
 // SOCSIM_COMMAND("card", "  card list …\n", [](const std::vector<std::string>& args) { return 0; });
 // A two-word name ("scenario generate") registers one subcommand; args then start after both words.
 #define SOCSIM_COMMAND(name, usage, fn) \
-  static const ::socsim::server::RegisterCommand SOCSIM_CAT_(socsim_command_, __LINE__)(name, usage, fn)
+  static const ::socsim::server::RegisterCommand SOCSIM_CAT_(socsim_command_, __COUNTER__)(name, usage, fn)

@@ -43,6 +43,8 @@ struct RouteContext {
   // or the problem that kept it from being queued (429 over the client's quota, 503 queue full).
   void reply_job_accepted(Response& res, const Result<std::string>& job_id,
                           const std::string& instance) const;
+  // A request for the LLM generator on a server without an LLM endpoint: 422 at /generator.
+  [[nodiscard]] Status llm_available() const;
   // ?page_size= and ?cursor= of a list request, with this server's default and maximum page size.
   [[nodiscard]] Result<PageParams> page(const Request& req) const;
 };

@@ -87,14 +87,6 @@ Result<std::int64_t> seconds_param(const Request& req, const std::string& name, 
   return query_int(req, name, fallback, 0, max);
 }
 
-Status llm_available(const RouteContext& ctx) {
-  if (ctx.llm) return {};
-  return fail(
-      ErrorCode::kValidation,
-      "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
-      {FieldError{"/generator", "must be offline on this server"}});
-}
-
 hh::LlmSettings llm_settings(RouteContext& ctx, llm::StructuredGenerator& gen, const JobContext& job,
                              const std::optional<std::string>& model) {
   hh::LlmSettings s;
@@ -194,7 +186,7 @@ void household_routes(Router& http, RouteContext& ctx) {
                      if (!out) return reply_problem(res, out.error(), req.path);
                      return reply_json(res, store ? 201 : 200, *out);
                    }
-                   if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+                   if (auto s = ctx.llm_available(); !s) return reply_problem(res, s.error(), req.path);
                    const hh::PersonaRequest r = request;
                    auto id = ctx.jobs.submit(
                        "personas", *body, ctx.author(req),
@@ -220,7 +212,7 @@ void household_routes(Router& http, RouteContext& ctx) {
         if (!request) return reply_problem(res, request.error(), req.path);
         if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
         if (request->generator == "llm")
-          if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+          if (auto s = ctx.llm_available(); !s) return reply_problem(res, s.error(), req.path);
         auto k = state->knowledge();
         if (!k) return reply_problem(res, k.error(), req.path);
         // What can be checked at once is: the house imports, the personas exist, they fit the bedrooms.
@@ -408,7 +400,7 @@ void household_routes(Router& http, RouteContext& ctx) {
     hh::HintQuery q{&h->scene, static_cast<int>(*resident), *object, *t, *lookback};
     Result<hh::Hint> hint = fail(ErrorCode::kInternal, "no hint");
     if (generator == "llm") {
-      if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+      if (auto s = ctx.llm_available(); !s) return reply_problem(res, s.error(), req.path);
       llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
       hh::LlmSettings settings;
       settings.generator = &gen;

@@ -38,6 +38,14 @@ Status RouteContext::check_model(const std::optional<std::string>& model) const 
   return {};
 }
 
+Status RouteContext::llm_available() const {
+  if (llm) return {};
+  return fail(
+      ErrorCode::kValidation,
+      "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
+      {FieldError{"/generator", "must be offline on this server"}});
+}
+
 Result<PageParams> RouteContext::page(const Request& req) const {
   return parse_page(query(req, "page_size"), query(req, "cursor"), config.default_page_size,
                     config.max_page_size);

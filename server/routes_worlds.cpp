@@ -16,7 +16,7 @@ namespace socsim::server {
 namespace {
 
 constexpr const char* kWorldPath = R"(/api/v1/worlds/(wld_[0-9a-z]{20}|[^/]+))";
-constexpr std::string_view kCursorPrefix = "w1.";
+constexpr std::string_view kWorldCursorPrefix = "w1.";
 
 std::string base64(std::string_view bytes) {
   static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -99,14 +99,6 @@ Result<std::vector<knowledge::MergedConstraint>> constraints(RouteContext& ctx, 
   return ctx.knowledge.constraints_for(domain, jurisdiction);
 }
 
-Status llm_available(const RouteContext& ctx) {
-  if (ctx.llm) return {};
-  return fail(
-      ErrorCode::kValidation,
-      "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is available",
-      {FieldError{"/generator", "must be offline on this server"}});
-}
-
 // Building type for checking a posted world: ?domain=, else classified from zone names and types.
 Result<std::string> domain_for(const Request& req, const world::World& w) {
   if (auto d = query(req, "domain")) {
@@ -149,7 +141,7 @@ void world_routes(Router& http, RouteContext& ctx) {
           return reply_json(res, 201, out);
         }
 
-        if (auto s = llm_available(ctx); !s) return reply_problem(res, s.error(), req.path);
+        if (auto s = ctx.llm_available(); !s) return reply_problem(res, s.error(), req.path);
         const std::string author = ctx.author(req);
         auto id = ctx.jobs.submit(
             "world.generate", *body, author,
@@ -183,7 +175,7 @@ void world_routes(Router& http, RouteContext& ctx) {
     if (!page) return reply_problem(res, page.error(), req.path);
     std::optional<std::int64_t> before;
     if (page->cursor) {
-      auto seq = parse_sequence_cursor(*page->cursor, kCursorPrefix);
+      auto seq = parse_sequence_cursor(*page->cursor, kWorldCursorPrefix);
       if (!seq) return reply_problem(res, seq.error(), req.path);
       before = *seq;
     }
@@ -192,7 +184,7 @@ void world_routes(Router& http, RouteContext& ctx) {
     Json items = Json::array();
     for (const StoredWorld& w : listed->items) items.push_back(summary(w));
     Json next = nullptr;
-    if (listed->next_before) next = std::string(kCursorPrefix) + std::to_string(*listed->next_before);
+    if (listed->next_before) next = std::string(kWorldCursorPrefix) + std::to_string(*listed->next_before);
     reply_json(res, 200, {{"items", std::move(items)}, {"next_cursor", std::move(next)}});
   });
 

@@ -67,10 +67,6 @@ bool finite_in_range(double v, double limit) {
   return std::isfinite(v) && std::abs(v) <= limit;
 }
 
-FieldError field(std::string pointer, std::string message) {
-  return FieldError{std::move(pointer), std::move(message)};
-}
-
 double wrap_angle(double a) {
   while (a > std::numbers::pi) a -= 2.0 * std::numbers::pi;
   while (a <= -std::numbers::pi) a += 2.0 * std::numbers::pi;
@@ -430,23 +426,24 @@ class NeighbourSums {
 Status validate(const SimulationConfig& c) {
   std::vector<FieldError> errors;
   if (!(std::isfinite(c.dt) && c.dt > 0.0 && c.dt <= 0.2))
-    errors.push_back(field("/dt", "must be in (0, 0.2] s: larger steps make the force integration unstable"));
+    errors.push_back(
+        FieldError("/dt", "must be in (0, 0.2] s: larger steps make the force integration unstable"));
   if (!(std::isfinite(c.neighbor_cutoff) && c.neighbor_cutoff >= 0.5 && c.neighbor_cutoff <= 20.0))
-    errors.push_back(field("/neighbor_cutoff", "must be in [0.5, 20] m"));
+    errors.push_back(FieldError("/neighbor_cutoff", "must be in [0.5, 20] m"));
   if (!(std::isfinite(c.wall_cutoff) && c.wall_cutoff >= 0.5 && c.wall_cutoff <= 20.0))
-    errors.push_back(field("/wall_cutoff", "must be in [0.5, 20] m"));
-  if (c.threads < 1 || c.threads > 256) errors.push_back(field("/threads", "must be in [1, 256]"));
+    errors.push_back(FieldError("/wall_cutoff", "must be in [0.5, 20] m"));
+  if (c.threads < 1 || c.threads > 256) errors.push_back(FieldError("/threads", "must be in [1, 256]"));
   if (!(std::isfinite(c.body_stiffness) && c.body_stiffness >= 0.0 && c.body_stiffness <= 1000.0))
     errors.push_back(
-        field("/body_stiffness", "must be in [0, 1000] 1/s² (stiffer contact is unstable at this dt)"));
+        FieldError("/body_stiffness", "must be in [0, 1000] 1/s² (stiffer contact is unstable at this dt)"));
   if (!(std::isfinite(c.periodic_length) && c.periodic_length >= 0.0 && c.periodic_length <= kMaxCoordinate))
-    errors.push_back(field("/periodic_length", "must be 0 (no periodic boundary) or a length in m"));
+    errors.push_back(FieldError("/periodic_length", "must be 0 (no periodic boundary) or a length in m"));
   else if (c.periodic_length > 0.0 && !(c.periodic_length >= 2.0 * c.neighbor_cutoff + 0.5))
-    errors.push_back(field("/periodic_length", "must be at least twice the neighbour cut-off + 0.5 m"));
+    errors.push_back(FieldError("/periodic_length", "must be at least twice the neighbour cut-off + 0.5 m"));
   if (!finite_in_range(c.periodic_origin, kMaxCoordinate))
-    errors.push_back(field("/periodic_origin", "must be finite and within ±1e6 m"));
+    errors.push_back(FieldError("/periodic_origin", "must be finite and within ±1e6 m"));
   if (errors.empty() && kMaxAgentSpeed * c.dt >= c.wall_cutoff)
-    errors.push_back(field("/dt", "the fastest agent must move less than wall_cutoff in one step"));
+    errors.push_back(FieldError("/dt", "the fastest agent must move less than wall_cutoff in one step"));
   if (!errors.empty())
     return fail(ErrorCode::kValidation, "invalid simulation configuration", std::move(errors));
   return {};
@@ -466,14 +463,14 @@ Result<CrowdSimulation> CrowdSimulation::create(const SimulationConfig& config, 
   if (auto ok = validate(config); !ok) return tl::unexpected(ok.error());
   if (!roles.index_of("adult"))
     return fail(ErrorCode::kValidation, "role table has no 'adult' role",
-                {field("/roles", "needs an 'adult' role")});
+                {FieldError("/roles", "needs an 'adult' role")});
   return CrowdSimulation(config, std::move(roles));
 }
 
 Status CrowdSimulation::check_id(AgentId id, const char* what) const {
   if (id.value() >= size())
     return fail(ErrorCode::kNotFound, std::string(what) + ": no agent with id " + std::to_string(id.value()),
-                {field("/agent_id", "unknown agent " + std::to_string(id.value()))});
+                {FieldError("/agent_id", "unknown agent " + std::to_string(id.value()))});
   return {};
 }
 
@@ -483,20 +480,21 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
   if (!role_index) {
     std::string known;
     for (const std::string& n : roles_.names()) known += (known.empty() ? "" : ", ") + n;
-    errors.push_back(field("/role", "unknown role '" + spec.role + "' (known: " + known + ")"));
+    errors.push_back(FieldError("/role", "unknown role '" + spec.role + "' (known: " + known + ")"));
   }
   if (!finite_in_range(spec.position.x, kMaxCoordinate) || !finite_in_range(spec.position.y, kMaxCoordinate))
-    errors.push_back(field("/position", "must be finite and within ±1e6 m"));
+    errors.push_back(FieldError("/position", "must be finite and within ±1e6 m"));
   if (!finite_in_range(spec.velocity.x, kMaxAgentSpeed) || !finite_in_range(spec.velocity.y, kMaxAgentSpeed))
-    errors.push_back(field("/velocity", "components must be finite and within ±8 m/s"));
-  if (spec.yaw && !std::isfinite(*spec.yaw)) errors.push_back(field("/yaw", "must be finite"));
+    errors.push_back(FieldError("/velocity", "components must be finite and within ±8 m/s"));
+  if (spec.yaw && !std::isfinite(*spec.yaw)) errors.push_back(FieldError("/yaw", "must be finite"));
   if (spec.desired_speed && !(std::isfinite(*spec.desired_speed) && *spec.desired_speed >= 0.0 &&
                               *spec.desired_speed <= kMaxAgentSpeed))
-    errors.push_back(field("/desired_speed", "must be in [0, 8] m/s"));
+    errors.push_back(FieldError("/desired_speed", "must be in [0, 8] m/s"));
   if (spec.radius && !(std::isfinite(*spec.radius) && *spec.radius >= 0.05 && *spec.radius <= 1.5))
-    errors.push_back(field("/radius", "must be in [0.05, 1.5] m"));
-  if (spec.group_id < -1) errors.push_back(field("/group_id", "must be -1 (no group) or a non-negative id"));
-  if (size() >= UINT32_MAX - 1) errors.push_back(field("", "too many agents"));
+    errors.push_back(FieldError("/radius", "must be in [0.05, 1.5] m"));
+  if (spec.group_id < -1)
+    errors.push_back(FieldError("/group_id", "must be -1 (no group) or a non-negative id"));
+  if (size() >= UINT32_MAX - 1) errors.push_back(FieldError("", "too many agents"));
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid agent", std::move(errors));
 
   const RoleParameters& role = roles_.at(*role_index);
@@ -510,7 +508,7 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
   const double vmax = v0 * role.max_speed_factor;
   if (vmax * config_.dt >= config_.wall_cutoff)
     return fail(ErrorCode::kValidation, "invalid agent",
-                {field("/desired_speed", "too fast for dt and wall_cutoff")});
+                {FieldError("/desired_speed", "too fast for dt and wall_cutoff")});
 
   const std::int32_t group = group_slot(spec.group_id);
   meta.activity = spec.activity;
@@ -553,10 +551,10 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
 Status CrowdSimulation::add_wall(Vec2 a, Vec2 b) {
   std::vector<FieldError> errors;
   if (!finite_in_range(a.x, kMaxCoordinate) || !finite_in_range(a.y, kMaxCoordinate))
-    errors.push_back(field("/a", "must be finite and within ±1e6 m"));
+    errors.push_back(FieldError("/a", "must be finite and within ±1e6 m"));
   if (!finite_in_range(b.x, kMaxCoordinate) || !finite_in_range(b.y, kMaxCoordinate))
-    errors.push_back(field("/b", "must be finite and within ±1e6 m"));
-  if (walls_.size() >= UINT32_MAX / 2) errors.push_back(field("", "too many walls"));
+    errors.push_back(FieldError("/b", "must be finite and within ±1e6 m"));
+  if (walls_.size() >= UINT32_MAX / 2) errors.push_back(FieldError("", "too many walls"));
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid wall", std::move(errors));
   walls_.push_back({a, b});
   walls_dirty_ = true;
@@ -568,7 +566,7 @@ Status CrowdSimulation::add_polyline(std::span<const Vec2> points, bool closed) 
     const Vec2& p = points[i];
     if (!finite_in_range(p.x, kMaxCoordinate) || !finite_in_range(p.y, kMaxCoordinate))
       return fail(ErrorCode::kValidation, "invalid polyline",
-                  {field("/points/" + std::to_string(i), "must be finite and within ±1e6 m")});
+                  {FieldError("/points/" + std::to_string(i), "must be finite and within ±1e6 m")});
   }
   for (std::size_t i = 0; i + 1 < points.size(); ++i) (void)add_wall(points[i], points[i + 1]);
   if (closed && points.size() > 2) (void)add_wall(points.back(), points.front());
@@ -583,9 +581,9 @@ Status CrowdSimulation::set_goals(AgentId id, std::vector<Goal> goals, bool cycl
     const Goal& g = goals[k];
     if (!finite_in_range(g.position.x, kMaxCoordinate) || !finite_in_range(g.position.y, kMaxCoordinate))
       errors.push_back(
-          field("/goals/" + std::to_string(k) + "/position", "must be finite and within ±1e6 m"));
+          FieldError("/goals/" + std::to_string(k) + "/position", "must be finite and within ±1e6 m"));
     if (!(std::isfinite(g.radius) && g.radius >= 0.0 && g.radius <= 1000.0))
-      errors.push_back(field("/goals/" + std::to_string(k) + "/radius", "must be in [0, 1000] m"));
+      errors.push_back(FieldError("/goals/" + std::to_string(k) + "/radius", "must be in [0, 1000] m"));
   }
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid goals", std::move(errors));
   const std::uint32_t i = id.value();
@@ -609,7 +607,7 @@ Status CrowdSimulation::set_desired_speed(AgentId id, double speed) {
   if (!(std::isfinite(speed) && speed >= 0.0 && speed <= kMaxAgentSpeed) ||
       speed * factor * config_.dt >= config_.wall_cutoff)
     return fail(ErrorCode::kValidation, "invalid desired speed",
-                {field("/desired_speed", "must be in [0, 8] m/s")});
+                {FieldError("/desired_speed", "must be in [0, 8] m/s")});
   v0_[id.value()] = speed;
   vmax_[id.value()] = speed * factor;
   return {};
@@ -660,7 +658,7 @@ Status CrowdSimulation::set_group(AgentId id, std::int64_t group_id) {
   if (auto ok = check_id(id, "set_group"); !ok) return ok;
   if (group_id < -1)
     return fail(ErrorCode::kValidation, "invalid group",
-                {field("/group_id", "must be -1 (no group) or a non-negative id")});
+                {FieldError("/group_id", "must be -1 (no group) or a non-negative id")});
   group_[id.value()] = group_slot(group_id);
   meta_[id.value()].group_id = group_id;
   return {};

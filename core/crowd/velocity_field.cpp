@@ -14,10 +14,6 @@ namespace socsim::crowd {
 
 namespace {
 
-FieldError field(std::string pointer, std::string message) {
-  return FieldError{std::move(pointer), std::move(message)};
-}
-
 constexpr int kMaxCells = 4096;  // per axis
 
 }  // namespace
@@ -26,21 +22,22 @@ Result<VelocityField> VelocityField::from_values(geometry::Box bounds, int width
                                                  std::vector<Vec2> values) {
   std::vector<FieldError> errors;
   if (width < 1 || height < 1 || width > kMaxCells || height > kMaxCells)
-    errors.push_back(field("/size", "width and height must be in [1, 4096]"));
+    errors.push_back(FieldError("/size", "width and height must be in [1, 4096]"));
   else if (values.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
-    errors.push_back(field("/values", "must hold width × height vectors (" + std::to_string(width) + " × " +
-                                          std::to_string(height) + "), has " +
-                                          std::to_string(values.size())));
+    errors.push_back(FieldError("/values", "must hold width × height vectors (" + std::to_string(width) +
+                                               " × " + std::to_string(height) + "), has " +
+                                               std::to_string(values.size())));
   if (!(std::isfinite(bounds.min.x) && std::isfinite(bounds.min.y) && std::isfinite(bounds.max.x) &&
         std::isfinite(bounds.max.y) && bounds.width() > 0.0 && bounds.height() > 0.0))
-    errors.push_back(field("/bounds", "must be a finite box of positive size"));
+    errors.push_back(FieldError("/bounds", "must be a finite box of positive size"));
   for (std::size_t k = 0; k < values.size() && errors.size() < 10; ++k) {
     const Vec2 v = values[k];
     if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::abs(v.x) <= kMaxAgentSpeed &&
           std::abs(v.y) <= kMaxAgentSpeed))
-      errors.push_back(field("/values/" + std::to_string(k / static_cast<std::size_t>(std::max(height, 1))) +
-                                 "/" + std::to_string(k % static_cast<std::size_t>(std::max(height, 1))),
-                             "components must be finite and within ±8 m/s"));
+      errors.push_back(FieldError("/values/" +
+                                      std::to_string(k / static_cast<std::size_t>(std::max(height, 1))) +
+                                      "/" + std::to_string(k % static_cast<std::size_t>(std::max(height, 1))),
+                                  "components must be finite and within ±8 m/s"));
   }
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid velocity field", std::move(errors));
   VelocityField f;
@@ -55,13 +52,14 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
                                                    const GeodesicSpec& spec) {
   std::vector<FieldError> errors;
   if (spec.width < 2 || spec.height < 2 || spec.width > kMaxCells || spec.height > kMaxCells)
-    errors.push_back(field("/resolution", "must be in [2, 4096]"));
+    errors.push_back(FieldError("/resolution", "must be in [2, 4096]"));
   if (!(std::isfinite(spec.speed) && spec.speed > 0.0 && spec.speed <= kMaxAgentSpeed))
-    errors.push_back(field("/speed", "must be in (0, 8] m/s"));
+    errors.push_back(FieldError("/speed", "must be in (0, 8] m/s"));
   if (!(std::isfinite(spec.variation) && spec.variation >= 0.0 && spec.variation <= std::numbers::pi / 2))
-    errors.push_back(field("/variation", "must be in [0, π/2] rad"));
-  if (spec.goal.empty()) errors.push_back(field("/goal", "needs at least one goal region"));
-  if (!(bounds.width() > 0.0 && bounds.height() > 0.0)) errors.push_back(field("/bounds", "empty world"));
+    errors.push_back(FieldError("/variation", "must be in [0, π/2] rad"));
+  if (spec.goal.empty()) errors.push_back(FieldError("/goal", "needs at least one goal region"));
+  if (!(bounds.width() > 0.0 && bounds.height() > 0.0))
+    errors.push_back(FieldError("/bounds", "empty world"));
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid velocity field", std::move(errors));
 
   // Geodesic distance to the union of the goal regions.
@@ -82,7 +80,7 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
       }
     }
     if (found == 0)
-      errors.push_back(field("/goal/" + std::to_string(k), "covers no walkable cell of the world"));
+      errors.push_back(FieldError("/goal/" + std::to_string(k), "covers no walkable cell of the world"));
   }
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid velocity field", std::move(errors));
   const world::GeodesicField distance = world::GeodesicField::from_cells(grid, goal_cells);
@@ -102,9 +100,10 @@ Result<VelocityField> VelocityField::from_geodesic(const world::OccupancyGrid& g
       }
     }
     if (!walkable)
-      errors.push_back(field("/start/" + std::to_string(k), "covers no walkable cell of the world"));
+      errors.push_back(FieldError("/start/" + std::to_string(k), "covers no walkable cell of the world"));
     else if (!reaches)
-      errors.push_back(field("/start/" + std::to_string(k), "cannot reach any goal region around the walls"));
+      errors.push_back(
+          FieldError("/start/" + std::to_string(k), "cannot reach any goal region around the walls"));
   }
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid velocity field", std::move(errors));
 

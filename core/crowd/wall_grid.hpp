@@ -2,6 +2,7 @@
 // Static walls bucketed in a uniform grid: each cell lists the wall segments that come within
 // the cut-off distance of any point of the cell, so one lookup gives every wall that can push
 // (or be reached by) an agent standing in that cell.
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -13,6 +14,10 @@ struct Vec2 {
   double y = 0.0;
   friend bool operator==(const Vec2&, const Vec2&) = default;
 };
+
+inline double distance(Vec2 a, Vec2 b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
 
 struct WallSegment {
   Vec2 a;

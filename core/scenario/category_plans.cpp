@@ -19,9 +19,6 @@ constexpr double kForever = 86400.0;  // s: "until the scenario ends" for waits 
 double round1(double v) {
   return std::round(v * 10.0) / 10.0;
 }
-double dist(crowd::Vec2 a, crowd::Vec2 b) {
-  return std::hypot(a.x - b.x, a.y - b.y);
-}
 std::string num(double v) {
   return format_number(round1(v));
 }
@@ -287,7 +284,7 @@ std::optional<std::string> wait_poi(Draft& d, const Activity& a) {
 std::optional<crowd::Vec2> behind_counter(const WorldProbe& p, const QueueLane& lane) {
   if (lane.counter.empty()) return std::nullopt;
   const crowd::Vec2 c = p.point(lane.counter);
-  const double l = dist(c, lane.head);
+  const double l = crowd::distance(c, lane.head);
   if (l < 1e-6) return std::nullopt;
   for (double back : {0.8, 0.65, 1.0}) {
     const crowd::Vec2 s{c.x + (c.x - lane.head.x) / l * back, c.y + (c.y - lane.head.y) / l * back};
@@ -912,7 +909,7 @@ Status plan_bottleneck(Draft& d, const Activity& a, Rng& rng) {
   double far = -1.0;
   for (const auto& [z, via] : p.neighbours(o.through)) {
     if (z == o.start || p.is_toilet(z)) continue;
-    const double dd = dist(p.point(z), door_at);
+    const double dd = crowd::distance(p.point(z), door_at);
     if (dd > far) {
       far = dd;
       goal = z;

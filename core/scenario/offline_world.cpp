@@ -11,10 +11,6 @@ namespace socsim::scenario {
 
 namespace {
 
-double dist(crowd::Vec2 a, crowd::Vec2 b) {
-  return std::hypot(a.x - b.x, a.y - b.y);
-}
-
 std::string guess_domain(const world::World& w) {
   std::map<std::string, int> votes;
   for (const world::Zone& z : w.zones()) {
@@ -66,7 +62,7 @@ WorldProbe::WorldProbe(const world::World& world) : world_(world), domain_(guess
     lane.length = std::max(box.width(), box.height());
     if (q->counter) {
       for (const world::Entity& e : world_.entities())
-        if (dist({e.pose.x, e.pose.y}, *q->counter) < 1e-6) {
+        if (crowd::distance({e.pose.x, e.pose.y}, *q->counter) < 1e-6) {
           lane.counter = e.name;
           break;
         }
@@ -87,7 +83,7 @@ WorldProbe::WorldProbe(const world::World& world) : world_(world), domain_(guess
       for (const world::Roi& r : world_.rois()) {
         if (r.kind != "entrance" && r.kind != "exit") continue;
         const world::Point c = geometry::centroid(r.polygon.outer);
-        const double d = dist({c.x, c.y}, e.point);
+        const double d = crowd::distance({c.x, c.y}, e.point);
         if (d < best) {
           best = d;
           x.region = r.name;

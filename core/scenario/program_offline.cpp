@@ -15,8 +15,9 @@ namespace {
 
 constexpr double kAlarmWeight = 0.8;  // emergency words at least this strong apply to everyone
 
+using C = Category;
+
 std::vector<std::pair<std::string, double>> default_roles(const std::string& domain, Category c) {
-  using C = Category;
   if (domain == "hospital") {
     switch (c) {
       case C::kQueuing:

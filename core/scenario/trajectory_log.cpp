@@ -31,9 +31,9 @@ void put(std::string& out, T value) {
 }
 
 // Reads the fields of one value type from a frame's column.
-class Reader {
+class LogReader {
  public:
-  explicit Reader(std::string_view bytes) : bytes_(bytes) {}
+  explicit LogReader(std::string_view bytes) : bytes_(bytes) {}
   template <class T>
   bool get(T& value) {
     if (bytes_.size() - pos_ < sizeof(T)) return false;
@@ -137,7 +137,7 @@ Result<TrajectoryLog> TrajectoryLog::from_compressed(std::string_view bytes, std
 }
 
 Result<TrajectoryLog> TrajectoryLog::from_encoded(std::string_view bytes) {
-  Reader r(bytes);
+  LogReader r(bytes);
   std::string magic;
   if (!r.get_text(kMagic.size(), magic) || magic != kMagic) return tl::unexpected(corrupt("bad magic", 0));
   std::uint32_t version = 0;

@@ -15,7 +15,7 @@ namespace {
 
 using geometry::Box;
 
-std::string num(double v) {
+std::string metres(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2f", v);
   std::string s = buf;
@@ -130,7 +130,7 @@ LayoutCheck check_layout(const World& world, const LayoutCheckOptions& opt) {
       }
       if (worst > tol)
         add("door_off_wall", d.name, world.zone(*z).name,
-            "door '" + d.name + "' is " + num(worst) + " m off the wall of zone '" + world.zone(*z).name +
+            "door '" + d.name + "' is " + metres(worst) + " m off the wall of zone '" + world.zone(*z).name +
                 "'");
     }
   }
@@ -167,8 +167,9 @@ LayoutCheck check_layout(const World& world, const LayoutCheckOptions& opt) {
       if (!boxes_meet(boxes[i], wb, 0.0)) continue;
       if (crosses(q, w.segment, tol)) {
         add("entity_on_wall", e.name, "",
-            "entity '" + e.name + "' (" + e.type + ") stands on the wall from (" + num(w.segment.a.x) + ", " +
-                num(w.segment.a.y) + ") to (" + num(w.segment.b.x) + ", " + num(w.segment.b.y) + ")");
+            "entity '" + e.name + "' (" + e.type + ") stands on the wall from (" + metres(w.segment.a.x) +
+                ", " + metres(w.segment.a.y) + ") to (" + metres(w.segment.b.x) + ", " +
+                metres(w.segment.b.y) + ")");
         break;
       }
     }
@@ -178,8 +179,8 @@ LayoutCheck check_layout(const World& world, const LayoutCheckOptions& opt) {
       const double gap = segment_to_quad(q, d.opening);
       if (gap < opt.door_clearance - tol) {
         add("entity_blocks_door", e.name, d.name,
-            "entity '" + e.name + "' (" + e.type + ") is " + num(gap) + " m from door '" + d.name + "' (" +
-                num(opt.door_clearance) + " m kept free)");
+            "entity '" + e.name + "' (" + e.type + ") is " + metres(gap) + " m from door '" + d.name + "' (" +
+                metres(opt.door_clearance) + " m kept free)");
         break;
       }
     }
@@ -201,7 +202,7 @@ LayoutCheck check_layout(const World& world, const LayoutCheckOptions& opt) {
         const std::size_t a = std::min(i, j), b = std::max(i, j);
         add("entity_overlap", entities[a].name, entities[b].name,
             "entities '" + entities[a].name + "' (" + entities[a].type + ") and '" + entities[b].name +
-                "' (" + entities[b].type + ") overlap by " + num(depth) + " m");
+                "' (" + entities[b].type + ") overlap by " + metres(depth) + " m");
       }
     }
   }
@@ -284,7 +285,7 @@ LayoutCheck check_layout(const World& world, const LayoutCheckOptions& opt) {
     if (!zone_reached[z])
       add("zone_unreachable", world.zones()[z].name, "",
           "zone '" + world.zones()[z].name + "' cannot be reached from outside by a person " +
-              num(opt.person_width) + " m wide");
+              metres(opt.person_width) + " m wide");
   }
   for (std::size_t i = 0; i < entities.size(); ++i) {
     bool ok = false;
@@ -297,7 +298,7 @@ LayoutCheck check_layout(const World& world, const LayoutCheckOptions& opt) {
     } else {
       add("entity_unreachable", entities[i].name, "",
           "entity '" + entities[i].name + "' (" + entities[i].type + ") cannot be reached by a person " +
-              num(opt.person_width) + " m wide");
+              metres(opt.person_width) + " m wide");
     }
   }
   return out;

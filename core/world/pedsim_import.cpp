@@ -18,7 +18,7 @@ namespace {
 
 using geometry::MultiPolygon;
 
-std::string num(double v) {
+std::string num3(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", v);
   return buf;
@@ -281,13 +281,13 @@ Result<PedsimScenario> import_pedsim(std::string_view xml, const PedsimImportOpt
                    {}};
   }
   const geometry::Box sb = geometry::bounds(site.outer);
-  const std::string walls_text = "the obstacles enclose x " + num(sb.min.x) + " .. " + num(sb.max.x) +
-                                 ", y " + num(sb.min.y) + " .. " + num(sb.max.y);
+  const std::string walls_text = "the obstacles enclose x " + num3(sb.min.x) + " .. " + num3(sb.max.x) +
+                                 ", y " + num3(sb.min.y) + " .. " + num3(sb.max.y);
   auto inside = [&](Point p) { return geometry::contains(site, p, options.build.boundary_tolerance); };
   auto outside_error = [&](const std::string& ptr, const std::string& what, Point p, int line) {
     errors.push_back(FieldError{
         ptr,
-        what + " at (" + num(p.x) + ", " + num(p.y) + ") lies outside the walls (" + walls_text + ")",
+        what + " at (" + num3(p.x) + ", " + num3(p.y) + ") lies outside the walls (" + walls_text + ")",
         {},
         line,
         1});

@@ -10,7 +10,7 @@
 namespace socsim::server {
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kKnowledgeUsage =
     "  knowledge search TEXT [--kind building_code|behavior_node] [--k 5]   retrieve entries (BM25 + offline "
     "embedding)\n"
     "  knowledge classify TEXT                                            building type of a prompt, with "
@@ -21,7 +21,7 @@ constexpr const char* kUsage =
 int knowledge_command(const std::vector<std::string>& args) {
   const CliArgs a = parse_cli(args);
   if (a.words.size() < 2) {
-    std::cerr << "usage:\n" << kUsage;
+    std::cerr << "usage:\n" << kKnowledgeUsage;
     return 2;
   }
   const std::string& verb = a.words[0];
@@ -72,12 +72,12 @@ int knowledge_command(const std::vector<std::string>& args) {
     std::cout << items.dump(2) << "\n";
     return 0;
   }
-  std::cerr << "socsim: unknown knowledge command '" << verb << "'\nusage:\n" << kUsage;
+  std::cerr << "socsim: unknown knowledge command '" << verb << "'\nusage:\n" << kKnowledgeUsage;
   return 2;
 }
 
 }  // namespace
 
-SOCSIM_COMMAND("knowledge", kUsage, knowledge_command);
+SOCSIM_COMMAND("knowledge", kKnowledgeUsage, knowledge_command);
 
 }  // namespace socsim::server

@@ -10,7 +10,7 @@
 namespace socsim::server {
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kNavbenchUsage =
     "  navbench --split normal|hard --scenes 50 --seed S [--out FILE]   object-goal navigation benchmark "
     "(Table I shape)\n"
     "           [--tasks-per-scene 10] [--max-steps 200] [--training-houses 10000] [--threads 2] "
@@ -34,7 +34,7 @@ std::optional<std::int64_t> int_option(const CliArgs& a, const std::string& key,
 int navbench_command(const std::vector<std::string>& args) {
   const CliArgs a = parse_cli(args);
   if (!a.words.empty() || !a.opt("--split")) {
-    std::cerr << "usage:\n" << kUsage;
+    std::cerr << "usage:\n" << kNavbenchUsage;
     return 2;
   }
   navbench::BenchmarkRequest request;
@@ -81,6 +81,6 @@ int navbench_command(const std::vector<std::string>& args) {
 
 }  // namespace
 
-SOCSIM_COMMAND("navbench", kUsage, navbench_command);
+SOCSIM_COMMAND("navbench", kNavbenchUsage, navbench_command);
 
 }  // namespace socsim::server

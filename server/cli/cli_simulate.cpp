@@ -13,7 +13,7 @@
 namespace socsim::server {
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kSimulateUsage =
     "  simulate --world W.yaml --program P.json --seconds T --seed S --out traj.csv [--metrics m.json]\n"
     "           [--threads 1] [--every 1]   run a scenario program headless (frames every N steps)\n";
 
@@ -41,7 +41,7 @@ int simulate_command(const std::vector<std::string>& args) {
   const auto program_path = a.opt("--program");
   const auto out_path = a.opt("--out");
   if (!a.words.empty() || !world_path || !program_path || !out_path || !a.opt("--seconds")) {
-    std::cerr << "usage:\n" << kUsage;
+    std::cerr << "usage:\n" << kSimulateUsage;
     return 2;
   }
   const auto seconds = number_option(a, "--seconds", 0.0, 0.0, 1.0e6);
@@ -129,6 +129,6 @@ int simulate_command(const std::vector<std::string>& args) {
 
 }  // namespace
 
-SOCSIM_COMMAND("simulate", kUsage, simulate_command);
+SOCSIM_COMMAND("simulate", kSimulateUsage, simulate_command);
 
 }  // namespace socsim::server

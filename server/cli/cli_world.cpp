@@ -16,7 +16,7 @@
 namespace socsim::server {
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kWorldUsage =
     "  world generate (--prompt TEXT | --scene-graph FILE) [--domain D] [--seed S] [--jurisdiction J] [-o "
     "world.yaml] [--report FILE]\n"
     "                                                                     offline floor plan; compliance "
@@ -27,7 +27,7 @@ constexpr const char* kUsage =
     "+ OUT.yaml)\n";
 
 int usage(const std::string& why) {
-  std::cerr << "socsim: " << why << "\nusage:\n" << kUsage;
+  std::cerr << "socsim: " << why << "\nusage:\n" << kWorldUsage;
   return 2;
 }
 
@@ -165,6 +165,6 @@ int world_command(const std::vector<std::string>& args) {
 
 }  // namespace
 
-SOCSIM_COMMAND("world", kUsage, world_command);
+SOCSIM_COMMAND("world", kWorldUsage, world_command);
 
 }  // namespace socsim::server

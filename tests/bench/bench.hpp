@@ -46,6 +46,9 @@ double percentile(std::vector<double> samples, double p);
 inline double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+inline double ms_since(std::chrono::steady_clock::time_point t0) {
+  return seconds_since(t0) * 1e3;
+}
 
 }  // namespace socsim::bench
 
@@ -53,4 +56,4 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
 #define SOCSIM_BENCH_CAT(a, b) SOCSIM_BENCH_CAT2(a, b)
 // SOCSIM_BENCH("crowd", "help text", [](const Args& a) { ...; return 0; });
 #define SOCSIM_BENCH(name, help, fn) \
-  static const ::socsim::bench::Registration SOCSIM_BENCH_CAT(socsim_bench_reg_, __LINE__)(name, help, fn)
+  static const ::socsim::bench::Registration SOCSIM_BENCH_CAT(socsim_bench_reg_, __COUNTER__)(name, help, fn)

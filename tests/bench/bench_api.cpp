@@ -15,7 +15,7 @@ using socsim::bench::Args;
 using socsim::bench::emit;
 using socsim::bench::percentile;
 
-int run(const Args& a) {
+int run_api(const Args& a) {
   const int clients = static_cast<int>(a.integer("clients", 8));
   const int requests = static_cast<int>(a.integer("requests", 2000));
   const auto dir =
@@ -117,6 +117,6 @@ int run(const Args& a) {
 
 SOCSIM_BENCH("api",
              "request latency percentiles over loopback HTTP [--clients 8] [--requests 2000] [--threads 8]",
-             run);
+             run_api);
 
 }  // namespace

@@ -76,10 +76,6 @@ class Daemon {
   int port_ = 0;
 };
 
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return socsim::bench::seconds_since(t0) * 1e3;
-}
-
 std::vector<std::string> fixture_prompts(const std::string& dir) {
   std::vector<std::string> prompts;
   for (const char* file : {"everyday.jsonl", "unseen.jsonl"}) {
@@ -105,7 +101,7 @@ int interpret_bench(const Args& a) {
     auto c = daemon.client();
     const auto t0 = std::chrono::steady_clock::now();
     auto r = c.Post("/api/v1/scenarios/interpret", body(0), "application/json");
-    cold_ms = ms_since(t0);
+    cold_ms = socsim::bench::ms_since(t0);
     if (!r || r->status != 200) {
       std::cerr << "interpret failed: " << (r ? r->body : httplib::to_string(r.error())) << "\n";
       return 1;
@@ -126,7 +122,7 @@ int interpret_bench(const Args& a) {
       for (int i = next++; i < requests; i = next++) {
         const auto s = std::chrono::steady_clock::now();
         auto r = c.Post("/api/v1/scenarios/interpret", body(static_cast<std::size_t>(i)), "application/json");
-        local.push_back(ms_since(s));
+        local.push_back(socsim::bench::ms_since(s));
         if (!r || r->status != 200) ++failures;
       }
       std::lock_guard<std::mutex> lock(m);
@@ -187,7 +183,7 @@ int scenario_api_bench(const Args& a) {
         if (status == "succeeded" || status == "failed" || status == "cancelled") break;
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
       }
-      const double total = ms_since(t0);
+      const double total = socsim::bench::ms_since(t0);
       if (job["status"] != "succeeded") {
         std::cerr << category << " seed " << seed << ": " << job.dump() << "\n";
         ++failures;

@@ -112,7 +112,7 @@ void watch(int port, const std::string& path, bool binary, Clock::time_point fro
   }
 }
 
-int run(const Args& a) {
+int run_stream(const Args& a) {
   const int viewers = static_cast<int>(a.integer("viewers", 20));
   const int agents = static_cast<int>(a.integer("agents", 2000));
   const double seconds = a.number("seconds", 10.0);
@@ -233,6 +233,6 @@ SOCSIM_BENCH(
     "stream",
     "live simulation streaming over WebSocket [--viewers 20] [--agents 2000] [--seconds 10] [--binary] "
     "[--speed 1] [--warmup 1]",
-    run);
+    run_stream);
 
 }  // namespace

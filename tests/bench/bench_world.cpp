@@ -51,10 +51,6 @@ WorldBuilder ten_room_plan() {
 
 int floor_plans(int runs);
 
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return socsim::bench::seconds_since(t0) * 1e3;
-}
-
 // CPU time of this thread: on a loaded machine wall time mostly measures the other processes.
 double thread_cpu_ms() {
   timespec ts{};
@@ -62,7 +58,7 @@ double thread_cpu_ms() {
   return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
 }
 
-int run(const socsim::bench::Args& a) {
+int run_world(const socsim::bench::Args& a) {
   const int runs = static_cast<int>(a.integer("runs", 50));
   const WorldBuilder plan = ten_room_plan();
   std::vector<double> build_ms;
@@ -73,7 +69,7 @@ int run(const socsim::bench::Args& a) {
     const double c0 = thread_cpu_ms();
     auto w = plan.build();
     build_cpu.push_back(thread_cpu_ms() - c0);
-    build_ms.push_back(ms_since(t0));
+    build_ms.push_back(socsim::bench::ms_since(t0));
     if (!w) {
       std::cerr << w.error().message() << "\n";
       return 1;
@@ -106,7 +102,7 @@ int run(const socsim::bench::Args& a) {
     const double c0 = thread_cpu_ms();
     const auto f = GeodesicField::from_points(grid, std::span<const Point>(&source, 1));
     field_cpu.push_back(thread_cpu_ms() - c0);
-    field_ms.push_back(ms_since(t0));
+    field_ms.push_back(socsim::bench::ms_since(t0));
     far = f.distance({24, 1}).value_or(-1);
   }
   socsim::bench::emit({{"bench", "geodesic_field"},
@@ -125,7 +121,7 @@ int run(const socsim::bench::Args& a) {
     const auto t0 = std::chrono::steady_clock::now();
     auto w = world_from_yaml(yaml);
     const std::string again = world_to_yaml(*w);
-    yaml_ms.push_back(ms_since(t0));
+    yaml_ms.push_back(socsim::bench::ms_since(t0));
     if (again != yaml) return 1;
   }
   socsim::bench::emit({{"bench", "world_yaml_read_build_write"},
@@ -152,7 +148,7 @@ int floor_plan(socsim::knowledge::KnowledgeBase& kb, const std::string& label, c
     const double c0 = thread_cpu_ms();
     auto plan = generate_floor_plan(graph, constraints, o);
     gen_cpu.push_back(thread_cpu_ms() - c0);
-    gen_ms.push_back(ms_since(t0));
+    gen_ms.push_back(socsim::bench::ms_since(t0));
     if (!plan || !plan->compliance.passed) {
       std::cerr << label << " seed " << o.seed << ": "
                 << (plan ? "plan not compliant" : plan.error().message()) << "\n";
@@ -215,4 +211,4 @@ int floor_plans(int runs) {
 SOCSIM_BENCH("world",
              "world build+validate (10 rooms), 256x256 geodesic field, world.yaml round trip, offline "
              "floor plans (10-room hospital, 60-room mall and arena)",
-             run);
+             run_world);

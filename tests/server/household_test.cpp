@@ -13,13 +13,7 @@ namespace socsim::server {
 namespace {
 using testing::TestServer;
 
-Json get_json(httplib::Client& c, const std::string& path, int expect = 200) {
-  auto r = c.Get(path.c_str());
-  EXPECT_TRUE(r) << path;
-  if (!r) return Json();
-  EXPECT_EQ(r->status, expect) << path << ": " << r->body;
-  return Json::parse(r->body);
-}
+using testing::get_json;
 
 std::set<std::string> pointers(const Json& problem) {
   std::set<std::string> out;

@@ -13,9 +13,7 @@ namespace {
 using ::testing::HasSubstr;
 using testing::TestServer;
 
-httplib::Result post(httplib::Client& c, const std::string& path, const Json& body) {
-  return c.Post(path.c_str(), body.dump(), "application/json");
-}
+using socsim::testing::post;
 
 std::string spanned(const std::string& prompt, const Json& span) {
   return prompt.substr(span[0].get<std::size_t>(), span[1].get<std::size_t>() - span[0].get<std::size_t>());

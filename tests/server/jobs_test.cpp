@@ -11,11 +11,7 @@ namespace socsim::server {
 namespace {
 using testing::TestServer;
 
-Json get_json(httplib::Client& c, const std::string& path) {
-  auto r = c.Get(path.c_str());
-  EXPECT_TRUE(r);
-  return Json::parse(r->body);
-}
+using testing::get_json;
 
 TEST(Jobs, ReportProgressThenResult) {
   TestServer s;

@@ -6,12 +6,7 @@
 namespace socsim::server {
 namespace {
 
-Json get_json(httplib::Client& c, const std::string& path, int expect = 200) {
-  auto r = c.Get(path.c_str());
-  EXPECT_TRUE(r);
-  EXPECT_EQ(r->status, expect) << r->body;
-  return Json::parse(r->body);
-}
+using socsim::testing::get_json;
 
 TEST(KnowledgeRoutes, PatientBedroomFindsHbn0301First) {
   testing::TestServer s;

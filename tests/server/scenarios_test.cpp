@@ -19,9 +19,7 @@ namespace {
 using ::testing::HasSubstr;
 using testing::TestServer;
 
-httplib::Result post(httplib::Client& c, const std::string& path, const Json& body) {
-  return c.Post(path.c_str(), body.dump(), "application/json");
-}
+using socsim::testing::post;
 
 Json finished_job(TestServer& s, httplib::Client& c, const httplib::Result& accepted) {
   EXPECT_TRUE(accepted);

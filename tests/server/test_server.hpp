@@ -5,12 +5,30 @@
 
 #include <fstream>
 #include <memory>
+#include <string>
 #include <thread>
 
+#include <gtest/gtest.h>
+
+#include "core/common/json_io.hpp"
 #include "server/api_server.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::testing {
+
+// POST a JSON body.
+inline httplib::Result post(httplib::Client& c, const std::string& path, const Json& body) {
+  return c.Post(path.c_str(), body.dump(), "application/json");
+}
+
+// GET a path and parse its JSON body, expecting the status `expect`.
+inline Json get_json(httplib::Client& c, const std::string& path, int expect = 200) {
+  auto r = c.Get(path.c_str());
+  EXPECT_TRUE(r) << path;
+  if (!r) return Json();
+  EXPECT_EQ(r->status, expect) << path << ": " << r->body;
+  return Json::parse(r->body);
+}
 
 class TestServer {
  public:

@@ -26,9 +26,7 @@ Json json_of(const httplib::Result& r) {
   return Json::parse(r->body);
 }
 
-httplib::Result post(httplib::Client& c, const std::string& path, const Json& body) {
-  return c.Post(path.c_str(), body.dump(), "application/json");
-}
+using socsim::testing::post;
 
 TEST(Worlds, OfflineGenerationIsStoredWithComplianceAndProvenance) {
   TestServer s;

@@ -16,7 +16,7 @@ namespace {
 
 using testing::knowledge;
 
-std::set<std::string> pointers(const Error& e) {
+std::set<std::string> pointer_set(const Error& e) {
   std::set<std::string> out;
   for (const auto& f : e.errors) out.insert(f.pointer);
   return out;
@@ -39,16 +39,16 @@ TEST(HouseholdDocument, BadRequestsNameTheirFields) {
                                             {"generator", "magic"},
                                             {"colour", "red"}});
   ASSERT_FALSE(r);
-  const auto p = pointers(r.error());
+  const auto p = pointer_set(r.error());
   for (const char* want : {"/rooms", "/residents/1", "/days", "/start_weekday", "/generator", "/colour"})
     EXPECT_TRUE(p.count(want)) << want;
   auto neither = household_request_from_json(Json{{"days", 3}});
   ASSERT_FALSE(neither);
-  EXPECT_TRUE(pointers(neither.error()).count("/rooms"));
+  EXPECT_TRUE(pointer_set(neither.error()).count("/rooms"));
   // An explicit null is no value (issue 14 #1): {"rooms": null} asks for neither rooms nor a house.
   auto null_rooms = household_request_from_json(Json{{"rooms", nullptr}, {"days", 3}});
   ASSERT_FALSE(null_rooms);
-  EXPECT_TRUE(pointers(null_rooms.error()).count("/rooms"));
+  EXPECT_TRUE(pointer_set(null_rooms.error()).count("/rooms"));
   auto ok = household_request_from_json(
       Json{{"rooms", 5}, {"residents", 2}, {"days", 3}, {"start_weekday", "monday"}, {"seed", 7}});
   ASSERT_TRUE(ok) << ok.error().message();
@@ -89,12 +89,12 @@ TEST(HouseholdDocument, ResidentsByPersonaIdAndUnknownIds) {
   r.resident_ids = {"ben-okafor", "nobody-at-all"};
   auto bad = generate_household(r, knowledge(), knowledge().personas, {}, {}, household_id(r, "ids"));
   ASSERT_FALSE(bad);
-  EXPECT_TRUE(pointers(bad.error()).count("/residents/1"));
+  EXPECT_TRUE(pointer_set(bad.error()).count("/residents/1"));
 
   auto crowded =
       generate_household(request(1, 4, 1, 1), knowledge(), knowledge().personas, {}, {}, "hh_crowded");
   ASSERT_FALSE(crowded);
-  EXPECT_TRUE(pointers(crowded.error()).count("/residents"));
+  EXPECT_TRUE(pointer_set(crowded.error()).count("/residents"));
 }
 
 TEST(HouseholdDocument, StoredDocumentsLoadAndList) {

@@ -30,7 +30,9 @@ using crowd::Activity;
 using crowd::PedestrianState;
 
 using testing::Frame;
+using testing::has_tag;
 using testing::Simulated;
+using testing::speed;
 
 class Categories : public ::testing::Test {
  protected:
@@ -57,14 +59,8 @@ class Categories : public ::testing::Test {
 };
 testing::OfflineWorlds* Categories::worlds_ = nullptr;
 
-bool has_tag(const PedestrianState& s, const std::string& tag) {
-  return std::find(s.metadata.tags.begin(), s.metadata.tags.end(), tag) != s.metadata.tags.end();
-}
 double dist(double x0, double y0, double x1, double y1) {
   return std::hypot(x0 - x1, y0 - y1);
-}
-double speed(const PedestrianState& s) {
-  return std::hypot(s.twist.vx, s.twist.vy);
 }
 world::Point at(const crowd::BtEnvironment& env, const std::string& place) {
   const auto p = env.place(place);

@@ -22,7 +22,9 @@ using crowd::Activity;
 using crowd::PedestrianState;
 
 using testing::Frame;
+using testing::has_tag;
 using testing::Simulated;
+using testing::speed;
 
 // A 20 m corridor with a water dispenser and its queue lane, a door to the outside at one end and
 // an office off it: no reception, no counter.
@@ -80,13 +82,6 @@ class Fig6 : public ::testing::Test {
   static testing::OfflineWorlds* worlds_;
 };
 testing::OfflineWorlds* Fig6::worlds_ = nullptr;
-
-bool has_tag(const PedestrianState& s, const std::string& tag) {
-  return std::find(s.metadata.tags.begin(), s.metadata.tags.end(), tag) != s.metadata.tags.end();
-}
-double speed(const PedestrianState& s) {
-  return std::hypot(s.twist.vx, s.twist.vy);
-}
 
 // Standing queuers are inside the lane in distinct places along it, at most one is served at a
 // time and each is served once; returns how many were served.

@@ -2,6 +2,7 @@
 // Worlds, knowledge and runs for the offline scenario-generator tests: the seeded knowledge store in a
 // temporary database, floor plans of the offline generator by domain and seed, and a small hall
 // with two doors to the outside (the generated plans have one entrance).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -23,6 +24,13 @@
 #include "tests/support/temp_dir.hpp"
 
 namespace socsim::scenario::testing {
+
+inline bool has_tag(const crowd::PedestrianState& s, const std::string& tag) {
+  return std::find(s.metadata.tags.begin(), s.metadata.tags.end(), tag) != s.metadata.tags.end();
+}
+inline double speed(const crowd::PedestrianState& s) {
+  return std::hypot(s.twist.vx, s.twist.vy);
+}
 
 class OfflineWorlds {
  public:

@@ -7,7 +7,7 @@
 namespace socsim::scenario {
 namespace {
 
-Count read(const std::string& text) {
+Count read_count(const std::string& text) {
   const auto t = tokenize_text(text);
   auto q = quantity_at(t, 0);
   if (!q) return Count{};
@@ -15,14 +15,14 @@ Count read(const std::string& text) {
 }
 
 void expect_exact(const std::string& text, double v) {
-  const Count c = read(text);
+  const Count c = read_count(text);
   EXPECT_EQ(c.kind, CountKind::kExact) << text;
   EXPECT_EQ(c.value, v) << text;
 }
 
 void expect_range(const std::string& text, double lo, double hi, CountKind kind = CountKind::kRange) {
   SCOPED_TRACE(text);
-  const Count c = read(text);
+  const Count c = read_count(text);
   EXPECT_EQ(c.kind, kind) << text;
   EXPECT_EQ(c.min, lo) << text;
   EXPECT_EQ(c.max, hi) << text;
@@ -81,7 +81,7 @@ TEST(Quantity, ApproximationsHoldWithinTenPercent) {
   for (const std::string text :
        {"about 200 people", "around 200 people", "roughly 200 people", "approximately 200 people",
         "nearly 200 people", "some 200 people", "200 or so people", "about two hundred people"}) {
-    const Count c = read(text);
+    const Count c = read_count(text);
     EXPECT_EQ(c.kind, CountKind::kApprox) << text;
     EXPECT_EQ(c.value, 200) << text;
     EXPECT_EQ(c.min, 180) << text;
