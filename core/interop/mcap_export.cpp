@@ -20,6 +20,13 @@ void put_number(std::string& out, double v) {
   out.append(buf, ec == std::errc() ? end : buf);
 }
 
+void put_millimetres(std::string& out, double v) {
+  if (!std::isfinite(v)) v = 0.0;
+  char buf[40];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 3);
+  out.append(buf, ec == std::errc() ? end : buf);
+}
+
 Json color(double r, double g, double b, double a = 1.0) {
   return {{"r", r}, {"g", g}, {"b", b}, {"a", a}};
 }
@@ -109,17 +116,14 @@ class PeopleScene {
     for (std::size_t i = 0; i < people.size(); ++i) {
       const crowd::PedestrianState& p = people[i];
       if (i) out_ += ',';
+      // A cylinder is the same at every yaw; positions to the millimetre are plenty to draw.
       out_ += R"({"pose":{"position":{"x":)";
-      put_number(out_, p.pose.x);
+      put_millimetres(out_, p.pose.x);
       out_ += R"(,"y":)";
-      put_number(out_, p.pose.y);
+      put_millimetres(out_, p.pose.y);
       out_ += R"(,"z":)";
       put_number(out_, kPersonHeight / 2);
-      out_ += R"(},"orientation":{"x":0,"y":0,"z":)";
-      put_number(out_, std::sin(p.pose.yaw / 2));
-      out_ += R"(,"w":)";
-      put_number(out_, std::cos(p.pose.yaw / 2));
-      out_ += R"(}},"size":{"x":)";
+      out_ += R"(},"orientation":{"x":0,"y":0,"z":0,"w":1}},"size":{"x":)";
       const double d = diameters_.at(roles[i]);
       put_number(out_, d);
       out_ += R"(,"y":)";
@@ -240,6 +244,8 @@ Result<std::string> export_mcap(const scenario::TrajectoryLog& log, const world:
   McapOptions mcap;
   mcap.profile = "ros2";
   mcap.compression = options.compression;
+  mcap.zstd_level = options.zstd_level;
+  mcap.chunk_size = options.chunk_size;
   McapWriter writer(mcap);
   const std::uint16_t people_schema = writer.add_schema(kPeopleMsgType, "ros2msg", people_msg_definition());
   const std::uint16_t scene_schema =

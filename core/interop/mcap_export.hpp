@@ -22,6 +22,8 @@ struct McapExportOptions {
   Json roles = Json::object();  // the program's role overrides (proxemics, radius per role)
   std::string frame_id = "map";
   McapCompression compression = McapCompression::kZstd;
+  int zstd_level = McapOptions{}.zstd_level;
+  std::size_t chunk_size = McapOptions{}.chunk_size;
   bool scene_people = true;  // false: no /scene/people (a third of a large card's file, docs/interop.md)
 };
 

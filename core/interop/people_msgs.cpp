@@ -93,10 +93,13 @@ void encode_people_cdr(CdrWriter& out, double time, std::string_view frame_id,
   for (const crowd::PedestrianState& p : people) {
     out.u32(p.id.value());
     put_vector3(out, p.pose.x, p.pose.y, 0.0);  // pose.position
-    out.f64(0.0);                               // pose.orientation: yaw about +z
+    // pose.orientation: yaw about +z, in float precision (1e-7 rad): states are float32 in logs and
+    // frames, and the full-precision sin/cos would double the compressed size of a recording.
+    const float half_yaw = static_cast<float>(p.pose.yaw / 2);
     out.f64(0.0);
-    out.f64(std::sin(p.pose.yaw / 2));
-    out.f64(std::cos(p.pose.yaw / 2));
+    out.f64(0.0);
+    out.f64(static_cast<double>(std::sin(half_yaw)));
+    out.f64(static_cast<double>(std::cos(half_yaw)));
     put_vector3(out, p.twist.vx, p.twist.vy, 0.0);  // twist.linear
     put_vector3(out, 0.0, 0.0, p.twist.omega);      // twist.angular
     out.u8(static_cast<std::uint8_t>(p.activity));  // the STATE_* constants follow crowd::Activity

@@ -256,7 +256,7 @@ TEST(PeopleMsgs, CdrDecodesBackToTheStates) {
     const double qx = r.cdr<double>(), qy = r.cdr<double>(), qz = r.cdr<double>(), qw = r.cdr<double>();
     EXPECT_EQ(qx, 0.0);
     EXPECT_EQ(qy, 0.0);
-    EXPECT_NEAR(2 * std::atan2(qz, qw), p.pose.yaw, 1e-12);
+    EXPECT_NEAR(2 * std::atan2(qz, qw), p.pose.yaw, 1e-6);  // float precision
     EXPECT_EQ(r.cdr<double>(), p.twist.vx);
     EXPECT_EQ(r.cdr<double>(), p.twist.vy);
     EXPECT_EQ(r.cdr<double>(), 0.0);
@@ -338,8 +338,8 @@ TEST(McapExport, CardLogBecomesPeopleAndSceneMessagesAtTheFrameTimes) {
   ASSERT_EQ(people.size(), log.frame_count());
   ASSERT_EQ(messages.at(2).size(), 1u);  // the world, once
   ASSERT_EQ(messages.at(3).size(), log.frame_count());
-  const Json world = Json::parse(messages.at(2)[0].second);
-  EXPECT_EQ(world["entities"][0]["cubes"].size(), world.walls().size());
+  const Json world_scene = Json::parse(messages.at(2)[0].second);
+  EXPECT_EQ(world_scene["entities"][0]["cubes"].size(), world.walls().size());
   for (std::size_t f = 0; f < log.frame_count(); ++f) {
     EXPECT_EQ(people[f].first, to_nanoseconds(log.frame_time(f)));
     Reader r{people[f].second, 4};
