@@ -39,12 +39,10 @@ class CdrWriter {
   template <class T>
   void put(T v) {
     static_assert(std::is_arithmetic_v<T>);
-    const std::size_t pos = buf_.size() - kHeader;
-    const std::size_t pad = (sizeof(T) - pos % sizeof(T)) % sizeof(T);
-    buf_.append(pad, '\0');
-    char raw[sizeof(T)];
-    std::memcpy(raw, &v, sizeof(T));
-    buf_.append(raw, sizeof(T));
+    const std::size_t at = buf_.size();
+    const std::size_t pad = (sizeof(T) - (at - kHeader) % sizeof(T)) % sizeof(T);
+    buf_.resize(at + pad + sizeof(T));  // the padding is zeros
+    std::memcpy(buf_.data() + at + pad, &v, sizeof(T));
   }
 
   static constexpr std::size_t kHeader = 4;

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 namespace socsim::interop {
 namespace {
@@ -101,18 +102,22 @@ McapWriter::McapWriter(McapOptions options) : options_(std::move(options)) {
   put_string(header, options_.library);
   put_record(out_, kHeader, header);
   if (options_.compression == McapCompression::kZstd) {
-    zstd_ = ZSTD_createCCtx();
-    if (!zstd_) throw std::bad_alloc();
+    for (void*& context : zstd_) {
+      context = ZSTD_createCCtx();
+      if (!context) throw std::bad_alloc();
+    }
   }
 }
 
 McapWriter::~McapWriter() {
-  ZSTD_freeCCtx(static_cast<ZSTD_CCtx*>(zstd_));
+  for (auto& job : sealing_) job.wait();
+  for (void* context : zstd_) ZSTD_freeCCtx(static_cast<ZSTD_CCtx*>(context));
 }
 
 std::uint16_t McapWriter::add_schema(std::string_view name, std::string_view encoding,
                                      std::string_view data) {
   flush_chunk();  // records reach the data section in call order
+  drain();
   const auto id = static_cast<std::uint16_t>(schemas_.size() + 1);
   schemas_.push_back({id, std::string(name), std::string(encoding), std::string(data)});
   put_record(out_, kSchema, schema_content(id, name, encoding, data));
@@ -124,6 +129,7 @@ std::uint16_t McapWriter::add_channel(std::uint16_t schema_id, std::string_view 
                                       const std::map<std::string, std::string>& metadata) {
   if (schema_id > schemas_.size()) throw std::invalid_argument("McapWriter: unknown schema id");
   flush_chunk();
+  drain();
   const auto id = static_cast<std::uint16_t>(channels_.size() + 1);
   channels_.push_back({id, schema_id, std::string(topic), std::string(message_encoding), metadata});
   put_record(out_, kChannel, channel_content(id, schema_id, topic, message_encoding, metadata));
@@ -135,11 +141,11 @@ void McapWriter::add_message(std::uint16_t channel_id, std::uint64_t log_time, s
   if (channel_id == 0 || channel_id > channels_.size())
     throw std::invalid_argument("McapWriter: unknown channel id");
   ChannelRecord& channel = channels_[channel_id - 1];
-  if (chunk_.empty()) {
-    chunk_start_ = chunk_end_ = log_time;
+  if (chunk_.records.empty()) {
+    chunk_.start = chunk_.end = log_time;
   } else {
-    chunk_start_ = std::min(chunk_start_, log_time);
-    chunk_end_ = std::max(chunk_end_, log_time);
+    chunk_.start = std::min(chunk_.start, log_time);
+    chunk_.end = std::max(chunk_.end, log_time);
   }
   if (message_count_ == 0) {
     start_time_ = end_time_ = log_time;
@@ -147,21 +153,23 @@ void McapWriter::add_message(std::uint16_t channel_id, std::uint64_t log_time, s
     start_time_ = std::min(start_time_, log_time);
     end_time_ = std::max(end_time_, log_time);
   }
-  chunk_index_[channel_id].emplace_back(log_time, chunk_.size());
-  put(chunk_, static_cast<std::uint8_t>(kMessage));
-  put(chunk_, static_cast<std::uint64_t>(2 + 4 + 8 + 8 + data.size()));
-  put(chunk_, channel_id);
-  put(chunk_, channel.sequence++);
-  put(chunk_, log_time);
-  put(chunk_, publish_time);
-  chunk_.append(data);
+  std::string& records = chunk_.records;
+  chunk_.index[channel_id].emplace_back(log_time, records.size());
+  put(records, static_cast<std::uint8_t>(kMessage));
+  put(records, static_cast<std::uint64_t>(2 + 4 + 8 + 8 + data.size()));
+  put(records, channel_id);
+  put(records, channel.sequence++);
+  put(records, log_time);
+  put(records, publish_time);
+  records.append(data);
   ++channel.count;
   ++message_count_;
-  if (chunk_.size() >= options_.chunk_size) flush_chunk();
+  if (records.size() >= options_.chunk_size) flush_chunk();
 }
 
 void McapWriter::add_metadata(std::string_view name, const std::map<std::string, std::string>& metadata) {
   flush_chunk();
+  drain();
   std::string c;
   put_string(c, name);
   put_string_map(c, metadata);
@@ -170,41 +178,47 @@ void McapWriter::add_metadata(std::string_view name, const std::map<std::string,
   metadata_indexes_.push_back({offset, out_.size() - offset, std::string(name)});
 }
 
-void McapWriter::flush_chunk() {
-  if (chunk_.empty()) return;
-  std::string compressed;
-  std::string_view compression;
-  std::string_view records = chunk_;
+McapWriter::SealedChunk McapWriter::seal(OpenChunk chunk, void* zstd) const {
+  SealedChunk sealed;
+  sealed.crc = crc32_of(chunk.records);
   if (options_.compression == McapCompression::kZstd) {
-    compressed.resize(ZSTD_compressBound(chunk_.size()));
+    sealed.compressed.resize(ZSTD_compressBound(chunk.records.size()));
     const std::size_t n =
-        ZSTD_compressCCtx(static_cast<ZSTD_CCtx*>(zstd_), compressed.data(), compressed.size(), chunk_.data(),
-                          chunk_.size(), options_.zstd_level);
+        ZSTD_compressCCtx(static_cast<ZSTD_CCtx*>(zstd), sealed.compressed.data(), sealed.compressed.size(),
+                          chunk.records.data(), chunk.records.size(), options_.zstd_level);
     if (ZSTD_isError(n)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(n));
-    compressed.resize(n);
-    compression = "zstd";
-    records = compressed;
+    sealed.compressed.resize(n);
   }
+  sealed.chunk = std::move(chunk);
+  return sealed;
+}
+
+void McapWriter::write_chunk(const SealedChunk& sealed) {
+  const OpenChunk& chunk = sealed.chunk;
+  const bool zstd = options_.compression == McapCompression::kZstd;
+  const std::string_view compression = zstd ? "zstd" : "";
+  const std::string_view records =
+      zstd ? std::string_view(sealed.compressed) : std::string_view(chunk.records);
   ChunkIndexRecord index{};
-  index.start_time = chunk_start_;
-  index.end_time = chunk_end_;
+  index.start_time = chunk.start;
+  index.end_time = chunk.end;
   index.offset = out_.size();
   index.compressed_size = records.size();
-  index.uncompressed_size = chunk_.size();
+  index.uncompressed_size = chunk.records.size();
 
   put(out_, static_cast<std::uint8_t>(kChunk));
   put(out_, static_cast<std::uint64_t>(8 + 8 + 8 + 4 + 4 + compression.size() + 8 + records.size()));
-  put(out_, chunk_start_);
-  put(out_, chunk_end_);
-  put(out_, static_cast<std::uint64_t>(chunk_.size()));
-  put(out_, crc32_of(chunk_));
+  put(out_, chunk.start);
+  put(out_, chunk.end);
+  put(out_, static_cast<std::uint64_t>(chunk.records.size()));
+  put(out_, sealed.crc);
   put_string(out_, compression);
   put(out_, static_cast<std::uint64_t>(records.size()));
   out_.append(records);
   index.length = out_.size() - index.offset;
 
   const std::uint64_t indexes_start = out_.size();
-  for (const auto& [channel, entries] : chunk_index_) {  // ascending channel id
+  for (const auto& [channel, entries] : chunk.index) {  // ascending channel id
     index.index_offsets[channel] = out_.size();
     put(out_, static_cast<std::uint8_t>(kMessageIndex));
     put(out_, static_cast<std::uint64_t>(2 + 4 + entries.size() * 16));
@@ -217,12 +231,37 @@ void McapWriter::flush_chunk() {
   }
   index.index_length = out_.size() - indexes_start;
   chunk_indexes_.push_back(std::move(index));
-  chunk_.clear();
-  chunk_index_.clear();
+}
+
+void McapWriter::flush_chunk() {
+  if (chunk_.records.empty()) return;
+  if (sealing_.size() == kThreads) write_oldest();
+  void* zstd = zstd_[sealed_count_++ % kThreads];
+  sealing_.push_back(std::async(std::launch::async, [this, zstd, chunk = std::move(chunk_)]() mutable {
+    return seal(std::move(chunk), zstd);
+  }));
+  chunk_ = OpenChunk{};
+  if (!spare_.empty()) {
+    chunk_.records = std::move(spare_.back());
+    spare_.pop_back();
+    chunk_.records.clear();
+  }
+}
+
+void McapWriter::write_oldest() {
+  SealedChunk sealed = sealing_.front().get();
+  sealing_.pop_front();
+  write_chunk(sealed);
+  spare_.push_back(std::move(sealed.chunk.records));
+}
+
+void McapWriter::drain() {
+  while (!sealing_.empty()) write_oldest();
 }
 
 std::string McapWriter::finish() {
   flush_chunk();
+  drain();
   std::string data_end;
   put(data_end, crc32_of(out_));
   put_record(out_, kDataEnd, data_end);

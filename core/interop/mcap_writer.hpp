@@ -3,8 +3,11 @@
 // records, Messages in Chunks (CRC32 of the records, zstd-compressed or not) each followed by its
 // Message Index records, Metadata, Data End, then the summary (Schemas, Channels, Chunk Indexes,
 // Metadata Indexes, Statistics), Summary Offsets and the Footer. Writes into memory; the bytes
-// depend only on what was added (deterministic).
+// depend only on what was added (deterministic). Full chunks are compressed (and their CRCs taken)
+// on two threads while the caller fills the next one; chunks are written in order.
 #include <cstdint>
+#include <deque>
+#include <future>
 #include <map>
 #include <string>
 #include <string_view>
@@ -64,7 +67,25 @@ class McapWriter {
     std::string name;
   };
 
+  // The open chunk with its time range and per channel (log_time, offset) pairs.
+  struct OpenChunk {
+    std::string records;
+    std::uint64_t start = 0, end = 0;
+    std::map<std::uint16_t, std::vector<std::pair<std::uint64_t, std::uint64_t>>> index;
+  };
+  struct SealedChunk {
+    OpenChunk chunk;
+    std::string compressed;  // empty without compression
+    std::uint32_t crc = 0;
+  };
+  SealedChunk seal(OpenChunk chunk, void* zstd) const;
+  void write_chunk(const SealedChunk& sealed);
+  // Hands the open chunk to a compression thread (writing the oldest first when all are busy).
   void flush_chunk();
+  // Writes the oldest chunk being compressed.
+  void write_oldest();
+  // Writes every chunk being compressed: afterwards out_ holds every record added so far.
+  void drain();
 
   McapOptions options_;
   std::string out_;
@@ -72,12 +93,14 @@ class McapWriter {
   std::vector<ChannelRecord> channels_;
   std::vector<ChunkIndexRecord> chunk_indexes_;
   std::vector<MetadataIndexRecord> metadata_indexes_;
-  // The open chunk: its records, time range and per channel (log_time, offset) pairs.
-  std::string chunk_;
-  std::uint64_t chunk_start_ = 0, chunk_end_ = 0;
-  std::map<std::uint16_t, std::vector<std::pair<std::uint64_t, std::uint64_t>>> chunk_index_;
+  OpenChunk chunk_;
+  static constexpr std::size_t kThreads = 2;
+  std::deque<std::future<SealedChunk>> sealing_;  // oldest first, at most kThreads
+  std::size_t sealed_count_ = 0;                  // chunks handed over so far
+  std::vector<std::string> spare_;                // records buffers of written chunks, for reuse
   std::uint64_t message_count_ = 0, start_time_ = 0, end_time_ = 0;
-  void* zstd_ = nullptr;  // ZSTD_CCtx, reused across chunks
+  // ZSTD_CCtx per thread: chunk k uses zstd_[k % kThreads], free again once chunk k - kThreads is written.
+  void* zstd_[kThreads] = {};
 };
 
 }  // namespace socsim::interop
