@@ -1,5 +1,6 @@
 #include "server/card_exports.hpp"
 
+#include "core/interop/export_gazebo_actors.hpp"
 #include "core/interop/mcap_export.hpp"
 #include "core/scenario/trajectory_store.hpp"
 #include "core/world/world_document.hpp"
@@ -39,6 +40,14 @@ Result<std::string> card_mcap(store::Store& store, const cards::Card& card, bool
   auto mcap = interop::export_mcap(*log, s->world, options);
   if (!mcap) return tl::unexpected(Error(mcap.error()).under("/program"));
   return mcap;
+}
+
+Result<std::string> card_gazebo_actors(store::Store& store, const cards::Card& card) {
+  auto s = card_scenario(card);
+  if (!s) return tl::unexpected(s.error());
+  auto log = card_trajectory_log(store, card);
+  if (!log) return tl::unexpected(log.error());
+  return interop::export_gazebo_actors(*log, s->world);
 }
 
 }  // namespace socsim::server

@@ -23,5 +23,7 @@ Result<scenario::TrajectoryLog> card_trajectory_log(store::Store& store, const c
 
 // The card as MCAP (core/interop/mcap_export.hpp): its log, world, role table and seed.
 Result<std::string> card_mcap(store::Store& store, const cards::Card& card, bool scene_people);
+// The card as a Gazebo world with an <actor> per person (core/interop/export_gazebo_actors.hpp).
+Result<std::string> card_gazebo_actors(store::Store& store, const cards::Card& card);
 
 }  // namespace socsim::server

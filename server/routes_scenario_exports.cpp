@@ -1,7 +1,8 @@
-// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap: a scenario card for other simulators.
+// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap|gazebo: a scenario card for other simulators.
 // hunav: a tar of <base>.yaml + behavior_trees/<base>__agent_<id>_bt.xml (or ?archive=json for
 // {"files": {path: text}}); pedsim: pedsim_ros scenario XML; csv: the card's trajectory log;
-// mcap: the trajectory log as a ROS 2 / Foxglove recording (core/interop/mcap_export.hpp).
+// mcap: the trajectory log as a ROS 2 / Foxglove recording (core/interop/mcap_export.hpp);
+// gazebo: an SDF world whose actors walk the logged trajectories.
 // Without ?format the card's own export document is returned, as before.
 //
 // The group is named "card_exports" so that it registers before "cards" (groups register in name
@@ -37,9 +38,10 @@ void export_routes(Router& http, RouteContext& ctx) {
       if (!doc) return reply_problem(res, doc.error(), req.path);
       return attach(res, id + ".card.json", *doc, "application/json");
     }
-    if (*format != "hunav" && *format != "pedsim" && *format != "csv" && *format != "mcap")
-      return reply_problem(res, bad_parameter("format", "format must be card, hunav, pedsim, csv or mcap"),
-                           req.path);
+    if (*format != "hunav" && *format != "pedsim" && *format != "csv" && *format != "mcap" &&
+        *format != "gazebo")
+      return reply_problem(
+          res, bad_parameter("format", "format must be card, hunav, pedsim, csv, mcap or gazebo"), req.path);
     const std::string scene_people = query(req, "scene_people").value_or("true");
     if (scene_people != "true" && scene_people != "false")
       return reply_problem(res, bad_parameter("scene_people", "scene_people must be true or false"),
@@ -60,6 +62,11 @@ void export_routes(Router& http, RouteContext& ctx) {
       auto mcap = card_mcap(ctx.store, *card, scene_people == "true");
       if (!mcap) return reply_problem(res, mcap.error(), req.path);
       return attach(res, id + ".mcap", *mcap, "application/octet-stream");
+    }
+    if (*format == "gazebo") {
+      auto sdf = card_gazebo_actors(ctx.store, *card);
+      if (!sdf) return reply_problem(res, sdf.error(), req.path);
+      return attach(res, id + ".world", *sdf, "application/xml");
     }
     auto s = card_scenario(*card);
     if (!s) return reply_problem(res, s.error(), req.path);

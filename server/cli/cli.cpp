@@ -20,8 +20,9 @@ constexpr const char* kCardUsage =
     "  card list             list cards   [--q TEXT] [--tag T] [--author A] [--domain D] [--page-size N] "
     "[--cursor C]\n"
     "  card show ID          print a card as JSON\n"
-    "  card export ID        write the card's export file  [-o FILE] [--format card|mcap]\n"
-    "                        mcap: the trajectory as a ROS 2 / Foxglove recording [--scene-people false]\n"
+    "  card export ID        write the card's export file  [-o FILE] [--format card|mcap|gazebo]\n"
+    "                        mcap: the trajectory as a ROS 2 / Foxglove recording [--scene-people false];\n"
+    "                        gazebo: an SDF world whose actors walk the trajectory\n"
     "  card import FILE      import an export file ('-' reads standard input)\n";
 
 int card_command(const std::vector<std::string>& args) {
@@ -77,15 +78,18 @@ int card_command(const std::vector<std::string>& args) {
   if (verb == "export") {
     const std::string format = p.opt("--format").value_or("card");
     const std::string scene_people = p.opt("--scene-people").value_or("true");
-    if ((format != "card" && format != "mcap") || (scene_people != "true" && scene_people != "false")) {
-      std::cerr << "socsim: --format must be card or mcap, --scene-people true or false\n" << kCardUsage;
+    if ((format != "card" && format != "mcap" && format != "gazebo") ||
+        (scene_people != "true" && scene_people != "false")) {
+      std::cerr << "socsim: --format must be card, mcap or gazebo, --scene-people true or false\n"
+                << kCardUsage;
       return 2;
     }
     Result<std::string> doc;
-    if (format == "mcap") {
+    if (format != "card") {
       auto card = catalogue.get(p.words[1]);
       if (!card) return cli_report(card.error());
-      doc = card_mcap(**store, *card, scene_people == "true");
+      doc = format == "mcap" ? card_mcap(**store, *card, scene_people == "true")
+                             : card_gazebo_actors(**store, *card);
     } else {
       doc = catalogue.export_card(p.words[1]);
     }

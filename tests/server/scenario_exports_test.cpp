@@ -1,10 +1,12 @@
-// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap: a card with the clinic world and the
+// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap|gazebo: a card with the clinic world and the
 // queue program exports as a HuNavSim tar (or JSON bundle) and pedsim_ros XML; a card with a stored
-// trajectory log as CSV and MCAP; without format the card's export document as before; bad formats 422.
+// trajectory log as CSV, MCAP and Gazebo actors; without format the card's export document as before; bad
+// formats 422.
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
 #include "core/crowd/scenario_runner.hpp"
+#include "core/interop/export_gazebo_actors.hpp"
 #include "core/interop/mcap_export.hpp"
 #include "core/scenario/trajectory_store.hpp"
 #include "core/world/pedsim_import.hpp"
@@ -82,7 +84,7 @@ TEST(ScenarioExports, HunavTarAndJsonBundleAndPedsimXml) {
   EXPECT_NE(card_doc->body.find(id), std::string::npos);
 }
 
-TEST(ScenarioExports, CsvAndMcapFromTheStoredTrajectoryLog) {
+TEST(ScenarioExports, CsvMcapAndGazeboFromTheStoredTrajectoryLog) {
   testing::TestServer s;
   const world::World w = world::world_from_yaml(example("world_clinic.yaml")).value();
   const crowd::Program p = crowd::program_from_text(example("program_queue.json")).value();
@@ -124,17 +126,23 @@ TEST(ScenarioExports, CsvAndMcapFromTheStoredTrajectoryLog) {
   options.scene_people = false;
   EXPECT_EQ(people_only->body, interop::export_mcap(log, w, options).value());
   EXPECT_LT(people_only->body.size(), mcap->body.size());
+
+  auto gazebo = c.Get("/api/v1/cards/" + id + "/export?format=gazebo");
+  ASSERT_TRUE(gazebo);
+  ASSERT_EQ(gazebo->status, 200) << gazebo->body;
+  EXPECT_EQ(gazebo->get_header_value("Content-Type"), "application/xml");
+  EXPECT_EQ(gazebo->body, interop::export_gazebo_actors(log, w));
 }
 
 TEST(ScenarioExports, ProblemsAreNamed) {
   testing::TestServer s;
   auto c = s.client();
   const std::string id = post_card(c, clinic_card());
-  auto bad = c.Get("/api/v1/cards/" + id + "/export?format=gazebo");
+  auto bad = c.Get("/api/v1/cards/" + id + "/export?format=unity");
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 422);
   EXPECT_EQ(Json::parse(bad->body)["errors"][0]["parameter"], "format");
-  for (const char* format : {"csv", "mcap"}) {
+  for (const char* format : {"csv", "mcap", "gazebo"}) {
     auto no_log = c.Get("/api/v1/cards/" + id + "/export?format=" + format);
     ASSERT_TRUE(no_log);
     EXPECT_EQ(no_log->status, 404) << format;
