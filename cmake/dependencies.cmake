@@ -19,6 +19,9 @@ endif()
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
 add_library(httplib::httplib ALIAS PkgConfig::HTTPLIB)
+# zstd (Debian libzstd-dev): compression of MCAP chunks (core/interop/mcap_writer).
+pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
+add_library(zstd::zstd ALIAS PkgConfig::ZSTD)
 
 # WordNet 3.0 (Debian wordnet-dev + wordnet-base): the open vocabulary of prompt understanding.
 # The data files are read at run time from WNSEARCHDIR or /usr/share/wordnet (core/scenario/wordnet.hpp).

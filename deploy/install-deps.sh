@@ -9,6 +9,8 @@ packages=(
   libcpp-httplib-dev nlohmann-json3-dev libcurl4-openssl-dev libeigen3-dev
   libsqlite3-dev sqlite3 libyaml-cpp-dev libgtest-dev libgmock-dev libgeos-dev
   libboost-dev libexpected-dev libssl-dev zlib1g-dev clang-format ccache
+  libzstd-dev  # MCAP chunk compression (core/interop/mcap_writer)
+  libxml2-utils  # xmllint: the shell e2e tests check XML exports
   wordnet-base wordnet-dev  # prompt understanding: WordNet 3.0 data in /usr/share/wordnet and libwordnet
   clang-14 libclang-rt-14-dev  # the sanitizer + libFuzzer build (presets asan and fuzz)
 )

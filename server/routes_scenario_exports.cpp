@@ -1,6 +1,8 @@
-// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv: a scenario card for other simulators.
+// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap|gazebo: a scenario card for other simulators.
 // hunav: a tar of <base>.yaml + behavior_trees/<base>__agent_<id>_bt.xml (or ?archive=json for
-// {"files": {path: text}}); pedsim: pedsim_ros scenario XML; csv: the card's trajectory log.
+// {"files": {path: text}}); pedsim: pedsim_ros scenario XML; csv: the card's trajectory log;
+// mcap: the trajectory log as a ROS 2 / Foxglove recording (core/interop/mcap_export.hpp);
+// gazebo: an SDF world whose actors walk the logged trajectories.
 // Without ?format the card's own export document is returned, as before.
 //
 // The group is named "card_exports" so that it registers before "cards" (groups register in name
@@ -9,8 +11,7 @@
 #include "core/interop/export_pedsim_scenario.hpp"
 #include "core/interop/tar_archive.hpp"
 #include "core/interop/trajectory_csv.hpp"
-#include "core/scenario/trajectory_store.hpp"
-#include "core/world/world_document.hpp"
+#include "server/card_exports.hpp"
 #include "server/http_util.hpp"
 #include "server/routes.hpp"
 
@@ -21,24 +22,6 @@ constexpr const char* kExportPath = R"(/api/v1/cards/(crd_[0-9a-z]{20}|[^/]+)/ex
 
 Error bad_parameter(const std::string& name, const std::string& message) {
   return Error(ErrorCode::kValidation, message, {FieldError{"", message, name, 0, 0}});
-}
-
-// The card's world and program, checked as they are read.
-struct Scenario {
-  world::World world;
-  crowd::Program program;
-};
-
-Result<Scenario> card_scenario(const cards::Card& card) {
-  const cards::CardContent& c = card.content;
-  if (!c.world.is_object() || !c.program.is_object())
-    return fail(ErrorCode::kValidation, "card " + card.id + " has no world and program to export",
-                {FieldError{c.world.is_object() ? "/program" : "/world", "missing"}});
-  auto w = world::world_from_document(c.world);
-  if (!w) return tl::unexpected(Error(w.error()).under("/world"));
-  auto p = crowd::program_from_json(c.program);
-  if (!p) return tl::unexpected(Error(p.error()).under("/program"));
-  return Scenario{std::move(*w), std::move(*p)};
 }
 
 void attach(Response& res, const std::string& file, const std::string& body, const char* type) {
@@ -55,8 +38,13 @@ void export_routes(Router& http, RouteContext& ctx) {
       if (!doc) return reply_problem(res, doc.error(), req.path);
       return attach(res, id + ".card.json", *doc, "application/json");
     }
-    if (*format != "hunav" && *format != "pedsim" && *format != "csv")
-      return reply_problem(res, bad_parameter("format", "format must be card, hunav, pedsim or csv"),
+    if (*format != "hunav" && *format != "pedsim" && *format != "csv" && *format != "mcap" &&
+        *format != "gazebo")
+      return reply_problem(
+          res, bad_parameter("format", "format must be card, hunav, pedsim, csv, mcap or gazebo"), req.path);
+    const std::string scene_people = query(req, "scene_people").value_or("true");
+    if (scene_people != "true" && scene_people != "false")
+      return reply_problem(res, bad_parameter("scene_people", "scene_people must be true or false"),
                            req.path);
     const std::string archive = query(req, "archive").value_or("tar");
     if (archive != "tar" && archive != "json")
@@ -65,17 +53,21 @@ void export_routes(Router& http, RouteContext& ctx) {
     if (!card) return reply_problem(res, card.error(), req.path);
 
     if (*format == "csv") {
-      const Json& log = card->content.trajectory_log;
-      if (!log.is_object() || !log.contains("sha256") || !log["sha256"].is_string())
-        return reply_problem(res,
-                             Error(ErrorCode::kNotFound, "card " + id + " has no trajectory log",
-                                   {FieldError{"/trajectory_log", "missing"}}),
-                             req.path);
-      auto loaded = scenario::load_trajectory_log(ctx.store, log["sha256"].get<std::string>());
+      auto loaded = card_trajectory_log(ctx.store, *card);
       if (!loaded) return reply_problem(res, loaded.error(), req.path);
       return attach(res, id + ".trajectories.csv", interop::trajectories_csv(*loaded), "text/csv");
     }
 
+    if (*format == "mcap") {
+      auto mcap = card_mcap(ctx.store, *card, scene_people == "true");
+      if (!mcap) return reply_problem(res, mcap.error(), req.path);
+      return attach(res, id + ".mcap", *mcap, "application/octet-stream");
+    }
+    if (*format == "gazebo") {
+      auto sdf = card_gazebo_actors(ctx.store, *card);
+      if (!sdf) return reply_problem(res, sdf.error(), req.path);
+      return attach(res, id + ".world", *sdf, "application/xml");
+    }
     auto s = card_scenario(*card);
     if (!s) return reply_problem(res, s.error(), req.path);
     if (*format == "pedsim") {

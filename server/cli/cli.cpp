@@ -9,6 +9,7 @@
 
 #include "core/cards/catalogue.hpp"
 #include "core/store/store.hpp"
+#include "server/card_exports.hpp"
 #include "server/registry.hpp"
 #include "socsim/buildinfo.hpp"
 
@@ -19,7 +20,9 @@ constexpr const char* kCardUsage =
     "  card list             list cards   [--q TEXT] [--tag T] [--author A] [--domain D] [--page-size N] "
     "[--cursor C]\n"
     "  card show ID          print a card as JSON\n"
-    "  card export ID        write the card's export file  [-o FILE]\n"
+    "  card export ID        write the card's export file  [-o FILE] [--format card|mcap|gazebo]\n"
+    "                        mcap: the trajectory as a ROS 2 / Foxglove recording [--scene-people false];\n"
+    "                        gazebo: an SDF world whose actors walk the trajectory\n"
     "  card import FILE      import an export file ('-' reads standard input)\n";
 
 int card_command(const std::vector<std::string>& args) {
@@ -73,7 +76,23 @@ int card_command(const std::vector<std::string>& args) {
     return 0;
   }
   if (verb == "export") {
-    auto doc = catalogue.export_card(p.words[1]);
+    const std::string format = p.opt("--format").value_or("card");
+    const std::string scene_people = p.opt("--scene-people").value_or("true");
+    if ((format != "card" && format != "mcap" && format != "gazebo") ||
+        (scene_people != "true" && scene_people != "false")) {
+      std::cerr << "socsim: --format must be card, mcap or gazebo, --scene-people true or false\n"
+                << kCardUsage;
+      return 2;
+    }
+    Result<std::string> doc;
+    if (format != "card") {
+      auto card = catalogue.get(p.words[1]);
+      if (!card) return cli_report(card.error());
+      doc = format == "mcap" ? card_mcap(**store, *card, scene_people == "true")
+                             : card_gazebo_actors(**store, *card);
+    } else {
+      doc = catalogue.export_card(p.words[1]);
+    }
     if (!doc) return cli_report(doc.error());
     if (auto out = p.opt("-o")) {
       if (auto s = cli_write_file(*out, *doc); !s) return cli_report(s.error());

@@ -3,7 +3,7 @@
 # SQLite file. Usage: scenario_e2e.sh /path/to/socsim
 # (No `producer | grep -q` under pipefail: grep's early exit would fail the producer with SIGPIPE.)
 # Covers: POST /scenarios → job with progress → card; the log downloads and its hash is the
-# card's; replay job identical; CSV/HuNavSim/pedsim exports; a live session of the card streams
+# card's; replay job identical; CSV/HuNavSim/pedsim/MCAP/Gazebo exports (MCAP: API and CLI agree); a live session of the card streams
 # frames over WebSocket (Python standard library client) and takes pause/seek/stop; the CLI's
 # `scenario replay` agrees on an exported card; the card survives a restart.
 set -euo pipefail
@@ -63,7 +63,15 @@ grep -q '<scenario' "$WORK/scenario.xml" || fail "pedsim export is not a scenari
 curl -fsS "$BASE/cards/$CARD/export?format=hunav" -o "$WORK/hunav.tar" || fail "hunav export"
 tar tf "$WORK/hunav.tar" > "$WORK/hunav.list" || fail "hunav export is not a tar"
 grep -q '\.yaml$' "$WORK/hunav.list" || fail "hunav export has no agents YAML"
-echo "ok - CSV, pedsim and HuNavSim exports"
+# MCAP from the API and from the CLI on the same database: the same bytes (tests/e2e/mcap.test.mjs reads them).
+curl -fsS "$BASE/cards/$CARD/export?format=mcap" -o "$WORK/card.mcap" || fail "mcap export"
+"$SOCSIM" card export "$CARD" --format mcap -o "$WORK/cli.mcap" --db "$DB" || fail "socsim card export --format mcap"
+cmp -s "$WORK/card.mcap" "$WORK/cli.mcap" || fail "the CLI's MCAP differs from the API's"
+[ "$(head -c 8 "$WORK/card.mcap" | od -An -c | tr -d ' ')" = '211MCAP0\r\n' ] || fail "mcap export lacks the magic"
+curl -fsS "$BASE/cards/$CARD/export?format=gazebo" -o "$WORK/card.world" || fail "gazebo export"
+xmllint --noout "$WORK/card.world" || fail "the Gazebo world is not well-formed XML"
+[ "$(grep -c '<actor ' "$WORK/card.world")" -gt 0 ] || fail "the Gazebo world has no actors"
+echo "ok - CSV, pedsim, HuNavSim, MCAP and Gazebo actor exports"
 
 # 5. A live session of the card: frames over WebSocket, then stop.
 session=$(curl -fsS -X POST -H 'Content-Type: application/json' -d "{\"card_id\":\"$CARD\",\"speed\":4}" "$BASE/simulations")

@@ -1,10 +1,13 @@
-// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv: a card with the clinic world and the
+// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap|gazebo: a card with the clinic world and the
 // queue program exports as a HuNavSim tar (or JSON bundle) and pedsim_ros XML; a card with a stored
-// trajectory log as CSV; without format the card's export document as before; bad formats 422.
+// trajectory log as CSV, MCAP and Gazebo actors; without format the card's export document as before; bad
+// formats 422.
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
 #include "core/crowd/scenario_runner.hpp"
+#include "core/interop/export_gazebo_actors.hpp"
+#include "core/interop/mcap_export.hpp"
 #include "core/scenario/trajectory_store.hpp"
 #include "core/world/pedsim_import.hpp"
 #include "core/world/world_document.hpp"
@@ -81,7 +84,7 @@ TEST(ScenarioExports, HunavTarAndJsonBundleAndPedsimXml) {
   EXPECT_NE(card_doc->body.find(id), std::string::npos);
 }
 
-TEST(ScenarioExports, CsvFromTheStoredTrajectoryLog) {
+TEST(ScenarioExports, CsvMcapAndGazeboFromTheStoredTrajectoryLog) {
   testing::TestServer s;
   const world::World w = world::world_from_yaml(example("world_clinic.yaml")).value();
   const crowd::Program p = crowd::program_from_text(example("program_queue.json")).value();
@@ -106,19 +109,48 @@ TEST(ScenarioExports, CsvFromTheStoredTrajectoryLog) {
   std::size_t rows = 0;
   for (std::size_t f = 0; f < log.frame_count(); ++f) rows += log.frame(f).size();
   EXPECT_EQ(static_cast<std::size_t>(std::count(csv->body.begin(), csv->body.end(), '\n')), rows + 1);
+
+  // MCAP: the log, the card's world, its id, seed and the program's roles (tests/e2e reads the file).
+  auto mcap = c.Get("/api/v1/cards/" + id + "/export?format=mcap");
+  ASSERT_TRUE(mcap);
+  ASSERT_EQ(mcap->status, 200) << mcap->body;
+  EXPECT_EQ(mcap->get_header_value("Content-Type"), "application/octet-stream");
+  EXPECT_EQ(mcap->get_header_value("Content-Disposition"), "attachment; filename=\"" + id + ".mcap\"");
+  interop::McapExportOptions options;
+  options.card_id = id;
+  options.seed = 11;
+  options.roles = p.roles;
+  EXPECT_EQ(mcap->body, interop::export_mcap(log, w, options).value());
+  auto people_only = c.Get("/api/v1/cards/" + id + "/export?format=mcap&scene_people=false");
+  ASSERT_TRUE(people_only);
+  options.scene_people = false;
+  EXPECT_EQ(people_only->body, interop::export_mcap(log, w, options).value());
+  EXPECT_LT(people_only->body.size(), mcap->body.size());
+
+  auto gazebo = c.Get("/api/v1/cards/" + id + "/export?format=gazebo");
+  ASSERT_TRUE(gazebo);
+  ASSERT_EQ(gazebo->status, 200) << gazebo->body;
+  EXPECT_EQ(gazebo->get_header_value("Content-Type"), "application/xml");
+  EXPECT_EQ(gazebo->body, interop::export_gazebo_actors(log, w));
 }
 
 TEST(ScenarioExports, ProblemsAreNamed) {
   testing::TestServer s;
   auto c = s.client();
   const std::string id = post_card(c, clinic_card());
-  auto bad = c.Get("/api/v1/cards/" + id + "/export?format=gazebo");
+  auto bad = c.Get("/api/v1/cards/" + id + "/export?format=unity");
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 422);
   EXPECT_EQ(Json::parse(bad->body)["errors"][0]["parameter"], "format");
-  auto no_log = c.Get("/api/v1/cards/" + id + "/export?format=csv");
-  ASSERT_TRUE(no_log);
-  EXPECT_EQ(no_log->status, 404);
+  for (const char* format : {"csv", "mcap", "gazebo"}) {
+    auto no_log = c.Get("/api/v1/cards/" + id + "/export?format=" + format);
+    ASSERT_TRUE(no_log);
+    EXPECT_EQ(no_log->status, 404) << format;
+  }
+  auto bad_option = c.Get("/api/v1/cards/" + id + "/export?format=mcap&scene_people=maybe");
+  ASSERT_TRUE(bad_option);
+  EXPECT_EQ(bad_option->status, 422);
+  EXPECT_EQ(Json::parse(bad_option->body)["errors"][0]["parameter"], "scene_people");
   auto missing = c.Get("/api/v1/cards/crd_00000000000000000000/export?format=pedsim");
   ASSERT_TRUE(missing);
   EXPECT_EQ(missing->status, 404);

@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "core/crowd/program.hpp"
+#include "core/crowd/scenario_runner.hpp"
+#include "core/interop/pedsim_program.hpp"
+#include "core/scenario/trajectory_log.hpp"
 #include "core/world/world_yaml.hpp"
 
 namespace socsim::interop::testing {
@@ -67,6 +70,22 @@ inline crowd::Program example_program(const std::string& file) {
   auto p = crowd::program_from_text(example(file));
   if (!p) ADD_FAILURE() << file << ": " << p.error().message();
   return p.value_or(crowd::Program{});
+}
+
+// kHall imported and simulated for `seconds` (seed 0), logged at 10 Hz.
+struct HallRun {
+  ImportedPedsim imported;
+  scenario::TrajectoryLog log;
+};
+inline HallRun run_hall(double seconds) {
+  auto in = import_pedsim_scenario(kHall);
+  if (!in) throw std::runtime_error(in.error().message());
+  auto runner = crowd::ScenarioRunner::create(&in->scenario.world, in->parsed, {});
+  if (!runner) throw std::runtime_error(runner.error().message());
+  scenario::TrajectoryRecorder recorder(0.1);
+  (*runner)->run(
+      seconds, [&](double t, std::span<const crowd::PedestrianState> s) { recorder.add(t, s); }, 2);
+  return {std::move(*in), std::move(recorder).finish()};
 }
 
 }  // namespace socsim::interop::testing

@@ -23,14 +23,7 @@ std::vector<std::string> split(const std::string& line) {
 }
 
 TEST(TrajectoryCsv, RowsReadBackToTheLoggedValues) {
-  auto in = import_pedsim_scenario(testing::kHall);
-  ASSERT_TRUE(in) << in.error().message();
-  auto runner = crowd::ScenarioRunner::create(&in->scenario.world, in->parsed, {});
-  ASSERT_TRUE(runner);
-  scenario::TrajectoryRecorder recorder(0.1);
-  (*runner)->run(
-      3.0, [&](double t, std::span<const crowd::PedestrianState> s) { recorder.add(t, s); }, 2);
-  const scenario::TrajectoryLog log = std::move(recorder).finish();
+  const scenario::TrajectoryLog log = testing::run_hall(3.0).log;
   const std::string csv = trajectories_csv(log);
   std::stringstream lines(csv);
   std::string line;

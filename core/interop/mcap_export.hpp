@@ -1,0 +1,37 @@
+#pragma once
+// A card's trajectory as an MCAP recording (issue 20) for ros2 bag, Foxglove and MCAP tools:
+//   /people        socsim_people_msgs/msg/People, ros2msg schema, CDR; one message per log frame
+//   /scene/world   foxglove.SceneUpdate, jsonschema, JSON; walls, zones, doors once at the first frame
+//   /scene/people  foxglove.SceneUpdate, jsonschema, JSON; a cylinder per person per frame
+// plus a "socsim_map" Metadata record (frame, world bounds and origin, card id, seed). Log times
+// are the frames' times; the bytes depend only on the inputs.
+#include <cstdint>
+#include <string>
+
+#include "core/common/error.hpp"
+#include "core/common/json_io.hpp"
+#include "core/interop/mcap_writer.hpp"
+#include "core/scenario/trajectory_log.hpp"
+#include "core/world/world.hpp"
+
+namespace socsim::interop {
+
+struct McapExportOptions {
+  std::string card_id;          // written to the map metadata
+  std::uint64_t seed = 0;       // written to the map metadata
+  Json roles = Json::object();  // the program's role overrides (proxemics, radius per role)
+  std::string frame_id = "map";
+  McapCompression compression = McapCompression::kZstd;
+  int zstd_level = McapOptions{}.zstd_level;
+  std::size_t chunk_size = McapOptions{}.chunk_size;
+  bool scene_people = true;  // false: no /scene/people (a third of a large card's file, docs/interop.md)
+};
+
+// kValidation when the program's roles do not apply.
+Result<std::string> export_mcap(const scenario::TrajectoryLog& log, const world::World& world,
+                                const McapExportOptions& options);
+
+// The JSON Schema of foxglove.SceneUpdate as far as the export uses it (the channel's schema).
+const Json& scene_update_json_schema();
+
+}  // namespace socsim::interop

@@ -1,0 +1,53 @@
+#include "server/card_exports.hpp"
+
+#include "core/interop/export_gazebo_actors.hpp"
+#include "core/interop/mcap_export.hpp"
+#include "core/scenario/trajectory_store.hpp"
+#include "core/world/world_document.hpp"
+
+namespace socsim::server {
+
+Result<CardScenario> card_scenario(const cards::Card& card) {
+  const cards::CardContent& c = card.content;
+  if (!c.world.is_object() || !c.program.is_object())
+    return fail(ErrorCode::kValidation, "card " + card.id + " has no world and program to export",
+                {FieldError{c.world.is_object() ? "/program" : "/world", "missing"}});
+  auto w = world::world_from_document(c.world);
+  if (!w) return tl::unexpected(Error(w.error()).under("/world"));
+  auto p = crowd::program_from_json(c.program);
+  if (!p) return tl::unexpected(Error(p.error()).under("/program"));
+  return CardScenario{std::move(*w), std::move(*p)};
+}
+
+Result<scenario::TrajectoryLog> card_trajectory_log(store::Store& store, const cards::Card& card) {
+  const Json& log = card.content.trajectory_log;
+  if (!log.is_object() || !log.contains("sha256") || !log["sha256"].is_string())
+    return tl::unexpected(Error(ErrorCode::kNotFound, "card " + card.id + " has no trajectory log",
+                                {FieldError{"/trajectory_log", "missing"}}));
+  return scenario::load_trajectory_log(store, log["sha256"].get<std::string>());
+}
+
+Result<std::string> card_mcap(store::Store& store, const cards::Card& card, bool scene_people) {
+  auto s = card_scenario(card);
+  if (!s) return tl::unexpected(s.error());
+  auto log = card_trajectory_log(store, card);
+  if (!log) return tl::unexpected(log.error());
+  interop::McapExportOptions options;
+  options.card_id = card.id;
+  options.seed = card.content.seed;
+  options.roles = s->program.roles;
+  options.scene_people = scene_people;
+  auto mcap = interop::export_mcap(*log, s->world, options);
+  if (!mcap) return tl::unexpected(Error(mcap.error()).under("/program"));
+  return mcap;
+}
+
+Result<std::string> card_gazebo_actors(store::Store& store, const cards::Card& card) {
+  auto s = card_scenario(card);
+  if (!s) return tl::unexpected(s.error());
+  auto log = card_trajectory_log(store, card);
+  if (!log) return tl::unexpected(log.error());
+  return interop::export_gazebo_actors(*log, s->world);
+}
+
+}  // namespace socsim::server
