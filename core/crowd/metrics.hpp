@@ -52,6 +52,19 @@ struct RunMetrics {
   std::uint64_t person_on_robot_collisions = 0;
 };
 
+// HuNavSim evaluator's force terms (LightSFM, default parameters), shared with the episode metrics:
+// the social force that a body at pa moving with va exerts on one at pb moving with vb, and the
+// obstacle force on a body of `radius` at p, averaged over the nearest points of walls within 2 m.
+Vec2 evaluator_social_force(Vec2 pa, Vec2 va, Vec2 pb, Vec2 vb);
+Vec2 evaluator_obstacle_force(Vec2 p, double radius, const std::vector<WallSegment>& walls);
+// SEAN 2.0's split of a robot–person collision: robot on person when the robot's speed towards the
+// person is the larger, person on robot when the person's is (both when equal).
+struct CollisionSide {
+  bool robot_on_person = false;
+  bool person_on_robot = false;
+};
+CollisionSide collision_side(Vec2 robot, Vec2 robot_velocity, Vec2 person, Vec2 person_velocity);
+
 Json to_json(const AgentMetrics& m);
 Json to_json(const RunMetrics& m);
 
