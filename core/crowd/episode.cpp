@@ -80,6 +80,8 @@ Result<std::unique_ptr<Episode>> Episode::create(const world::World* world, cons
                 "too many robots: " + std::to_string(options.robots.size()) + " (at most " +
                     std::to_string(episode.max_robots) + ")",
                 {FieldError{"/robots", "at most " + std::to_string(episode.max_robots) + " robots"}});
+  for (RobotSpec& r : options.robots)
+    if (r.goal && r.goal->radius == 0.0) r.goal->radius = episode.success_radius;
   std::vector<FieldError> errors;
   for (std::size_t k = 0; k < options.robots.size(); ++k) {
     const RobotSpec& r = options.robots[k];
@@ -114,8 +116,6 @@ Result<std::unique_ptr<Episode>> Episode::create(const world::World* world, cons
     }
     e->log_.robots[0].goal = Goal{*at, program_goal->radius.value_or(episode.success_radius)};
   }
-  for (RobotSpec& r : e->log_.robots)
-    if (r.goal && r.goal->radius <= 0.0) r.goal->radius = episode.success_radius;
   e->log_.results.resize(e->log_.robots.size());
   for (std::size_t k = 0; k < e->log_.robots.size(); ++k) {
     UnicycleState s;

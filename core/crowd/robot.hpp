@@ -44,8 +44,8 @@ Twist2 twist_of(const UnicycleState& s);
 struct RobotSpec {
   std::string name = "robot";
   Pose2 start;
-  std::optional<Goal> goal;
-  double radius = 0.35;  // m
+  std::optional<Goal> goal;  // a goal radius of 0 stands for the episode's success radius
+  double radius = 0.35;      // m
   Presence presence = Presence::kVisible;
   RobotLimits limits;
 };
