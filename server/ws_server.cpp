@@ -330,7 +330,9 @@ class Session : public std::enable_shared_from_this<Session> {
       self->cosim_send(self->cosim_->tick());
       const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
           std::chrono::duration<double>(1.0 / self->cosim_->rate_hz()));
-      if (!self->cosim_->ended()) self->arm_tick(at + period);
+      // A tick that overran its period does not make the next ones pile up on the I/O thread:
+      // the schedule restarts from now (the missed ticks are not made up).
+      if (!self->cosim_->ended()) self->arm_tick(std::max(at + period, std::chrono::steady_clock::now()));
     });
   }
 
