@@ -310,7 +310,10 @@ class Session : public std::enable_shared_from_this<Session> {
       close_code_ =
           reply.protocol_error ? websocket::close_code::policy_error : websocket::close_code::normal;
       stop_cosim_timers();
-      if (reply.messages.empty()) close();
+      if (reply.messages.empty()) {  // nothing left to say: close once any write under way is done
+        close_after_ = true;
+        if (!writing_) close();
+      }
     }
   }
 
