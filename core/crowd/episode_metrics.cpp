@@ -132,29 +132,18 @@ EpisodeMetrics evaluate_episode(const EpisodeLog& log) {
 }
 
 Json to_json(const RobotEpisodeMetrics& m) {
-  return Json{{"name", m.name},
-              {"outcome", std::string(outcome_name(m.outcome))},
-              {"success", m.success},
-              {"time_to_reach_goal", m.time_to_reach_goal ? Json(*m.time_to_reach_goal) : Json(nullptr)},
-              {"path_length", m.path_length},
-              {"cumulative_heading_changes", m.cumulative_heading_changes},
-              {"avg_distance_to_closest_person", m.avg_distance_to_closest_person},
-              {"minimum_distance_to_people", m.minimum_distance_to_people},
-              {"intimate_space_intrusions", m.intimate_space_intrusions},
-              {"personal_space_intrusions", m.personal_space_intrusions},
-              {"social_space_intrusions", m.social_space_intrusions},
-              {"collisions", m.collisions},
-              {"robot_on_person_collision", m.robot_on_person_collision},
-              {"person_on_robot_collision", m.person_on_robot_collision},
-              {"time_not_moving", m.time_not_moving},
-              {"social_force_on_agent", m.social_force_on_agent},
-              {"social_force_on_people", m.social_force_on_people},
-              {"social_work", m.social_work},
-              {"avg_speed", m.avg_speed},
-              {"avg_acceleration", m.avg_acceleration},
-              {"avg_jerk", m.avg_jerk},
-              {"path_efficiency", m.path_efficiency},
-              {"shortest_path_length", m.shortest_path_length}};
+  Json j{{"name", m.name},
+         {"outcome", std::string(outcome_name(m.outcome))},
+         {"success", m.success},
+         {"robot_on_person_collision", m.robot_on_person_collision},
+         {"person_on_robot_collision", m.person_on_robot_collision},
+         {"avg_speed", m.avg_speed},
+         {"avg_acceleration", m.avg_acceleration},
+         {"avg_jerk", m.avg_jerk},
+         {"path_efficiency", m.path_efficiency},
+         {"shortest_path_length", m.shortest_path_length}};
+  put_hunav_figures(j, m);
+  return j;
 }
 
 Json to_json(const EpisodeMetrics& m) {

@@ -283,26 +283,14 @@ Json to_json(const AgentMetrics& m) {
   Json j = {{"id", m.id},
             {"role", m.role},
             {"goal_reached", m.goal_reached},
-            {"time_to_reach_goal", m.time_to_reach_goal ? Json(*m.time_to_reach_goal) : Json(nullptr)},
-            {"path_length", m.path_length},
-            {"cumulative_heading_changes", m.cumulative_heading_changes},
-            {"avg_distance_to_closest_person", m.avg_distance_to_closest_person},
-            {"minimum_distance_to_people", m.minimum_distance_to_people},
-            {"intimate_space_intrusions", m.intimate_space_intrusions},
-            {"personal_space_intrusions", m.personal_space_intrusions},
-            {"social_space_intrusions", m.social_space_intrusions},
-            {"collisions", m.collisions},
-            {"time_not_moving", m.time_not_moving},
             {"avg_linear_speed", m.avg_linear_speed},
             {"avg_angular_speed", m.avg_angular_speed},
             {"avg_acceleration", m.avg_acceleration},
             {"avg_overacceleration", m.avg_overacceleration},
             {"final_goal_distance", m.final_goal_distance},
             {"minimum_goal_distance", m.minimum_goal_distance},
-            {"social_force_on_agent", m.social_force_on_agent},
-            {"social_force_on_people", m.social_force_on_people},
-            {"social_work", m.social_work},
             {"frames", m.frames}};
+  put_hunav_figures(j, m);
   return j;
 }
 
