@@ -9,6 +9,7 @@
 #include "server/http_util.hpp"
 #include "server/pagination.hpp"
 #include "server/routes.hpp"
+#include "server/scenario_inputs.hpp"
 
 namespace socsim::server {
 namespace {
@@ -27,51 +28,6 @@ Json with_urls(RouteContext& ctx, const Request& req, Json status) {
   status["links"] = {{"self", "/api/v1/simulations/" + status["id"].get<std::string>()},
                      {"control", "/api/v1/simulations/" + status["id"].get<std::string>() + "/control"}};
   return status;
-}
-
-// The world of a program session: a stored world by id, a world document, or world.yaml text.
-Result<std::shared_ptr<const world::World>> session_world(RouteContext& ctx, const Json& body) {
-  if (body.contains("world_id")) {
-    const std::string id = body["world_id"].get<std::string>();
-    auto yaml = ctx.store.read([&](store::Database& d) -> Result<std::optional<std::string>> {
-      auto st = d.prepare("SELECT world_yaml FROM worlds WHERE id = ?");
-      if (!st) return tl::unexpected(st.error());
-      st->bind(1, id);
-      auto row = st->step();
-      if (!row) return tl::unexpected(row.error());
-      if (!*row) return std::optional<std::string>();
-      return std::optional<std::string>(st->text(0));
-    });
-    if (!yaml) return tl::unexpected(yaml.error());
-    if (!*yaml)
-      return tl::unexpected(field_error(ErrorCode::kNotFound, "no world with id '" + id + "'", "/world_id",
-                                        "names no stored world (see GET /api/v1/worlds)"));
-    auto w = world::world_from_yaml(**yaml);
-    if (!w)
-      return fail(ErrorCode::kInternal,
-                  "stored world '" + id + "' no longer validates: " + w.error().message());
-    return std::make_shared<const world::World>(std::move(*w));
-  }
-  if (!body.contains("world")) return std::shared_ptr<const world::World>();
-  const Json& doc = body["world"];
-  auto w = doc.is_string() ? world::world_from_yaml(doc.get<std::string>()) : world::world_from_document(doc);
-  if (!w) return tl::unexpected(Error(w.error()).under("/world"));
-  return std::make_shared<const world::World>(std::move(*w));
-}
-
-// Behaviour trees must come inline: the server reads no files named by a client.
-Status no_tree_files(const crowd::Program& p) {
-  std::vector<FieldError> errors;
-  auto check = [&](const std::optional<crowd::ProgramTree>& t) {
-    if (t && !t->file.empty())
-      errors.push_back({"/program" + t->pointer + "/file",
-                        "the server reads no files; give the behaviour tree inline as 'xml'"});
-  };
-  for (const auto& [name, tree] : p.behavior_trees) check(tree);
-  for (const auto& a : p.agents) check(a.behavior);
-  for (const auto& g : p.ambient_groups) check(g.behavior);
-  if (errors.empty()) return {};
-  return fail(ErrorCode::kValidation, "behaviour trees given as files", std::move(errors));
 }
 
 Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, const Json& body,

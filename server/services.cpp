@@ -37,6 +37,11 @@ Result<std::unique_ptr<Services>> Services::create(ServerConfig config, store::S
   limits.idle_s = s->config.sim_idle_s;
   limits.max_duration_s = s->config.max_sim_duration_s;
   s->simulations = std::make_unique<SimulationSessions>(limits);
+  CosimLimits cosim;
+  cosim.max_sessions = s->config.max_simulations;
+  cosim.max_agents = s->config.max_sim_agents;
+  cosim.idle_s = s->config.sim_idle_s;
+  s->cosim = std::make_unique<CosimSessions>(cosim);
   return s;
 }
 

@@ -9,6 +9,7 @@
 #include "core/llm/llm_client.hpp"
 #include "core/store/store.hpp"
 #include "server/config.hpp"
+#include "server/cosim_sessions.hpp"
 #include "server/event_hub.hpp"
 #include "server/jobs.hpp"
 #include "server/simulation_sessions.hpp"
@@ -23,6 +24,7 @@ struct Services {
   std::unique_ptr<llm::LlmClient> llm;  // null: no endpoint configured, offline generator only
   std::unique_ptr<JobRunner> jobs;
   std::unique_ptr<SimulationSessions> simulations;  // live sessions streamed on the WebSocket port
+  std::unique_ptr<CosimSessions> cosim;             // robot co-simulations driven over the WebSocket port
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 
   Services(ServerConfig c, store::Store& s) : config(std::move(c)), store(s) {}
@@ -32,6 +34,7 @@ struct Services {
   // Stops the job workers (cancelling running jobs) and the live simulations.
   void shutdown() {
     if (simulations) simulations->shutdown();
+    if (cosim) cosim->shutdown();
     if (jobs) jobs->shutdown();
   }
 };

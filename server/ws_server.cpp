@@ -16,6 +16,7 @@
 #include "core/common/json_io.hpp"
 #include "server/access_policy.hpp"
 #include "server/auth.hpp"
+#include "server/cosim_sessions.hpp"
 #include "server/services.hpp"
 #include "server/simulation_sessions.hpp"
 #include "socsim/buildinfo.hpp"
@@ -66,6 +67,7 @@ struct Shared {
 };
 
 constexpr std::string_view kSimulationPath = "/ws/simulations/";
+constexpr std::string_view kCosimPath = "/ws/cosim/";
 constexpr std::string_view kBinaryProtocol = "socsim.binary.v1";
 constexpr std::string_view kJsonProtocol = "socsim.json.v1";
 
@@ -208,9 +210,12 @@ class Session : public std::enable_shared_from_this<Session> {
       topic_ = "jobs";
     else if (path.rfind(kSimulationPath, 0) == 0 && websocket::is_upgrade(request_))
       return on_simulation_request(target, path.substr(kSimulationPath.size()));
+    else if (path.rfind(kCosimPath, 0) == 0 && websocket::is_upgrade(request_))
+      return on_cosim_request(path.substr(kCosimPath.size()));
     if (!websocket::is_upgrade(request_) || topic_.empty())
       return refuse(
-          Error(ErrorCode::kNotFound, "WebSocket endpoints: /ws/catalogue, /ws/jobs, /ws/simulations/{id}"));
+          Error(ErrorCode::kNotFound,
+                "WebSocket endpoints: /ws/catalogue, /ws/jobs, /ws/simulations/{id}, /ws/cosim/{id}"));
     upgrade_timeouts();
     ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
   }
@@ -266,9 +271,89 @@ class Session : public std::enable_shared_from_this<Session> {
     ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
   }
 
+  // /ws/cosim/{id}: the one client of a co-simulation; it must speak socsim.cosim.v1.
+  void on_cosim_request(const std::string& id) {
+    if (!shared_.options.cosim)
+      return refuse(Error(ErrorCode::kNotFound, "no co-simulation with id '" + id + "'"));
+    auto session = shared_.options.cosim->find(id);
+    if (!session) return refuse(session.error());
+    const auto offered = offered_protocols(std::string(request_[http::field::sec_websocket_protocol]));
+    if (std::find(offered.begin(), offered.end(), std::string(kCosimProtocol)) == offered.end())
+      return refuse(Error(ErrorCode::kBadRequest, "a co-simulation client must offer the subprotocol " +
+                                                      std::string(kCosimProtocol) +
+                                                      " (Sec-WebSocket-Protocol)"));
+    const auto& keys = shared_.options.keys;
+    if (keys && !may_act_for(*keys, author_, (*session)->author()))
+      return refuse(Error(ErrorCode::kForbidden, "co-simulation '" + id + "' was started by another author"));
+    if (auto ok = (*session)->claim(); !ok) return refuse(ok.error());
+    cosim_ = *session;
+    upgrade_timeouts();
+    ws_.set_option(websocket::stream_base::decorator([](websocket::response_type& res) {
+      res.set(http::field::server, "socsim");
+      res.set(http::field::sec_websocket_protocol, std::string(kCosimProtocol));
+    }));
+    ws_.auto_fragment(false);
+    ws_.read_message_max(1024 * 1024);  // a step with a few robots is small; this is generous
+    ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
+  }
+
+  // Sends what the co-simulation answered; closes after it when it says so.
+  void cosim_send(const CosimReply& reply) {
+    for (std::size_t k = 0; k < reply.messages.size(); ++k) {
+      auto m = std::make_shared<WireMessage>();
+      m->bytes = reply.messages[k];
+      m->frame = reply.droppable;  // real time: a client that does not read loses old observations
+      m->last = reply.close && k + 1 == reply.messages.size();
+      enqueue(std::move(m));
+    }
+    if (reply.close) {
+      close_code_ =
+          reply.protocol_error ? websocket::close_code::policy_error : websocket::close_code::normal;
+      stop_cosim_timers();
+      if (reply.messages.empty()) {  // nothing left to say: close once any write under way is done
+        close_after_ = true;
+        if (!writing_) close();
+      }
+    }
+  }
+
+  void arm_idle() {
+    idle_timer_.expires_after(
+        std::chrono::milliseconds(static_cast<std::int64_t>(cosim_->idle_s() * 1000.0)));
+    idle_timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
+      if (ec || self->closed_ || !self->cosim_) return;
+      self->cosim_send(self->cosim_->expire());
+    });
+  }
+
+  void arm_tick(std::chrono::steady_clock::time_point at) {
+    tick_timer_.expires_at(at);
+    tick_timer_.async_wait([self = shared_from_this(), at](beast::error_code ec) {
+      if (ec || self->closed_ || !self->cosim_) return;
+      self->cosim_send(self->cosim_->tick());
+      const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+          std::chrono::duration<double>(1.0 / self->cosim_->rate_hz()));
+      // A tick that overran its period does not make the next ones pile up on the I/O thread:
+      // the schedule restarts from now (the missed ticks are not made up).
+      if (!self->cosim_->ended()) self->arm_tick(std::max(at + period, std::chrono::steady_clock::now()));
+    });
+  }
+
+  void stop_cosim_timers() {
+    idle_timer_.cancel();
+    tick_timer_.cancel();
+  }
+
   void on_accept(beast::error_code ec) {
     if (ec) return finish();
     open_ = true;
+    if (cosim_) {
+      ws_.text(true);
+      cosim_send(cosim_->hello());
+      arm_idle();
+      if (cosim_->mode() == CosimMode::kRealTime) arm_tick(std::chrono::steady_clock::now());
+      return read_loop();
+    }
     if (simulation_) {
       if (!queue_.empty() && !writing_) write_next();
     } else {
@@ -286,6 +371,10 @@ class Session : public std::enable_shared_from_this<Session> {
     ws_.async_read(in_, [self = shared_from_this()](beast::error_code ec, std::size_t) {
       if (ec) return self->finish();
       if (self->simulation_) self->on_command(beast::buffers_to_string(self->in_.data()));
+      if (self->cosim_ && !self->close_after_) {
+        self->arm_idle();
+        self->cosim_send(self->cosim_->handle(beast::buffers_to_string(self->in_.data())));
+      }
       self->in_.consume(self->in_.size());
       self->read_loop();
     });
@@ -336,8 +425,7 @@ class Session : public std::enable_shared_from_this<Session> {
   // After a simulation's "end": a normal close, then forget the session.
   void close() {
     queue_.clear();
-    ws_.async_close(websocket::close_code::normal,
-                    [self = shared_from_this()](beast::error_code) { self->finish(); });
+    ws_.async_close(close_code_, [self = shared_from_this()](beast::error_code) { self->finish(); });
   }
 
   // Forgets the session. The socket is not closed under a pending operation (Beast's stream
@@ -347,6 +435,10 @@ class Session : public std::enable_shared_from_this<Session> {
     closed_ = true;
     queue_.clear();
     lease_.reset();  // leaves the simulation's viewers
+    if (cosim_) {
+      stop_cosim_timers();
+      cosim_->release();  // a client gone mid-episode ends it ("client_closed")
+    }
     shared_.sessions.erase(shared_from_this());
   }
 
@@ -361,6 +453,10 @@ class Session : public std::enable_shared_from_this<Session> {
   WirePtr current_;
   std::string topic_;                              // "cards" or "jobs", from the path
   std::shared_ptr<SimulationSession> simulation_;  // set for /ws/simulations/{id}
+  std::shared_ptr<CosimSession> cosim_;            // set for /ws/cosim/{id}
+  asio::steady_timer idle_timer_{ws_.get_executor()};
+  asio::steady_timer tick_timer_{ws_.get_executor()};
+  websocket::close_code close_code_ = websocket::close_code::normal;
   std::unique_ptr<ViewerLease> lease_;
   std::shared_ptr<ViewerCounters> counters_;
   bool writing_ = false;
@@ -422,6 +518,7 @@ WsServer::WsServer(WsOptions options, Services& services, int http_port)
             options.policy = std::make_shared<AccessPolicy>(services.config);
             options.keys = std::make_shared<KeyRing>(services.config.api_keys);
             options.http_port = http_port > 0 ? http_port : services.config.port;
+            options.cosim = services.cosim.get();
             return std::move(options);
           }(),
           services.events, services.simulations.get()) {}

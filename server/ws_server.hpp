@@ -2,8 +2,9 @@
 // The WebSocket endpoint (Boost.Beast, its own port). /ws/catalogue streams catalogue events
 // (card.created, card.deleted), /ws/jobs job events (queued, running, progress, finished), as JSON
 // text frames; /ws/simulations/{id} streams a live simulation's frames (JSON, or binary with the
-// subprotocol socsim.binary.v1 or ?format=binary) and takes control commands. A slow client loses
-// its oldest queued frames; it never slows the publisher.
+// subprotocol socsim.binary.v1 or ?format=binary) and takes control commands; /ws/cosim/{id}
+// (subprotocol socsim.cosim.v1) is a robot co-simulation's client. A slow client loses its oldest
+// queued frames; it never slows the publisher.
 #include <chrono>
 #include <memory>
 #include <string>
@@ -14,6 +15,7 @@
 namespace socsim::server {
 
 class AccessPolicy;
+class CosimSessions;
 class KeyRing;
 class SimulationSessions;
 struct Services;
@@ -32,6 +34,8 @@ struct WsOptions {
   std::shared_ptr<const AccessPolicy> policy{};
   std::shared_ptr<const KeyRing> keys{};
   int http_port = 0;
+  // Robot co-simulations driven at /ws/cosim/{id} (docs/cosim.md); null: that path answers 404.
+  CosimSessions* cosim = nullptr;
 };
 
 struct WsStats {

@@ -540,6 +540,7 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
   role_.push_back(static_cast<std::uint16_t>(*role_index));
   group_.push_back(group);
   active_.push_back(spec.activity == Activity::kExited ? 0 : 1);
+  driven_.push_back(kNotDriven);
   has_goal_.push_back(0);
   gx_.push_back(0.0);
   gy_.push_back(0.0);
@@ -639,6 +640,41 @@ Status CrowdSimulation::set_active(AgentId id, bool active) {
     vx_[id.value()] = 0.0;
     vy_[id.value()] = 0.0;
   }
+  return {};
+}
+
+Status CrowdSimulation::set_driven(AgentId id, Presence presence) {
+  if (auto ok = check_id(id, "set_driven"); !ok) return ok;
+  const std::uint32_t i = id.value();
+  driven_[i] = static_cast<std::uint8_t>(1 + static_cast<std::uint8_t>(presence));
+  has_goal_[i] = 0;
+  meta_[i].goals.clear();
+  meta_[i].intent.goal_id = -1;
+  return {};
+}
+
+Status CrowdSimulation::set_driven_state(AgentId id, Pose2 pose, Twist2 twist) {
+  if (auto ok = check_id(id, "set_driven_state"); !ok) return ok;
+  const std::uint32_t i = id.value();
+  std::vector<FieldError> errors;
+  if (driven_[i] == kNotDriven) errors.push_back(field("/agent_id", "agent is not driven"));
+  if (!finite_in_range(pose.x, kMaxCoordinate) || !finite_in_range(pose.y, kMaxCoordinate))
+    errors.push_back(field("/pose", "must be finite and within ±1e6 m"));
+  if (!std::isfinite(pose.yaw)) errors.push_back(field("/pose/yaw", "must be finite"));
+  const double speed = std::hypot(twist.vx, twist.vy);
+  if (!(std::isfinite(speed) && speed <= kMaxAgentSpeed))
+    errors.push_back(field("/twist", "speed must be finite and at most 8 m/s"));
+  if (!finite_in_range(twist.omega, 20.0))
+    errors.push_back(field("/twist/omega", "must be within ±20 rad/s"));
+  if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid driven state", std::move(errors));
+  px_[i] = wrap_x(pose.x);
+  py_[i] = pose.y;
+  yaw_[i] = wrap_angle(pose.yaw);
+  vx_[i] = twist.vx;
+  vy_[i] = twist.vy;
+  omega_[i] = twist.omega;
+  // The contact margin of the others assumes no one is faster than the fastest speed limit.
+  vmax_[i] = std::max(vmax_[i], speed);
   return {};
 }
 
@@ -765,12 +801,15 @@ void CrowdSimulation::build_images(Images& m) const {
   m.vy = vy_;
   m.r = radius_;
   m.group = group_;
-  m.active = active_;
+  m.active.resize(size());
   m.id.resize(size());
-  for (std::uint32_t i = 0; i < size(); ++i) m.id[i] = i;
+  for (std::uint32_t i = 0; i < size(); ++i) {
+    m.id[i] = i;
+    m.active[i] = seen(i) ? 1 : 0;
+  }
   const double length = config_.periodic_length;
   for (std::uint32_t i = 0; i < size(); ++i) {
-    if (!active_[i]) continue;
+    if (!seen(i)) continue;
     double x = 0.0;
     if (near_low_end(px_[i])) {
       x = px_[i] + length;
@@ -797,7 +836,7 @@ void CrowdSimulation::build_cells() {
   c.entry_agent.clear();
   c.entry_x.clear();
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (!active_[i]) continue;
+    if (!seen(i)) continue;
     c.entry_agent.push_back(i);
     c.entry_x.push_back(px_[i]);
   }
@@ -961,6 +1000,15 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   const double r = radius_[i];
   const double dt = config_.dt;
   ForceBreakdown f;
+  if (driven_[i] != kNotDriven) {  // moved from outside: stays where it was put
+    if (breakdown != nullptr) *breakdown = f;
+    npx_[i] = x;
+    npy_[i] = y;
+    nvx_[i] = vx;
+    nvy_[i] = vy;
+    if (config_.hard_contact) contact_count_[i] = 0;
+    return;
+  }
 
   // Desired force (computed after the neighbour scan): relax towards the desired speed along the
   // goal direction (LightSFM computeDesiredForce); brake with −v/τ when there is no goal or it is
@@ -1132,8 +1180,11 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   if (config_.hard_contact) {
     for (int pass = 0; pass < 2; ++pass) {
       for (const NeighbourSums::Contact& c : contacts) {
-        const double mean = 0.5 * ((vx + c.vx) * c.nx + (vy + c.vy) * c.ny);
-        const double limit = mean + std::max(c.gap, -0.02) / (2.0 * dt);
+        // A driven agent (a robot) does not give way: against it the agent takes the whole gap.
+        const bool alone = driven_[c.who] != kNotDriven;
+        const double mean =
+            alone ? c.vx * c.nx + c.vy * c.ny : 0.5 * ((vx + c.vx) * c.nx + (vy + c.vy) * c.ny);
+        const double limit = mean + std::max(c.gap, -0.02) / (alone ? dt : 2.0 * dt);
         const double along = nvx * c.nx + nvy * c.ny;
         if (along > limit) {
           nvx -= (along - limit) * c.nx;
@@ -1179,7 +1230,7 @@ void CrowdSimulation::separate_bodies() {
     for (std::size_t i = begin; i < end; ++i) {
       spx_[i] = npx_[i];
       spy_[i] = npy_[i];
-      if (!active_[i]) continue;
+      if (!active_[i] || driven_[i] != kNotDriven) continue;
       double cx = 0.0;
       double cy = 0.0;
       for (std::size_t k = 0; k < contact_count_[i]; ++k) {
@@ -1191,8 +1242,9 @@ void CrowdSimulation::separate_bodies() {
         const double reach = radius_[i] + radius_[j] - kTolerance;
         if (d2 >= reach * reach) continue;
         const Separation n = separation(dx, dy, d2, static_cast<std::uint32_t>(i), j);
-        cx -= 0.5 * (reach - n.d) * n.x;
-        cy -= 0.5 * (reach - n.d) * n.y;
+        const double share = driven_[j] != kNotDriven ? 1.0 : 0.5;  // a robot is not pushed
+        cx -= share * (reach - n.d) * n.x;
+        cy -= share * (reach - n.d) * n.y;
       }
       const double shift2 = cx * cx + cy * cy;
       if (shift2 == 0.0) continue;
@@ -1218,7 +1270,7 @@ void CrowdSimulation::finish_step() {
   const double dt = config_.dt;
   pool_->parallel_for(size(), 1024, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      if (!active_[i]) continue;
+      if (!active_[i] || driven_[i] != kNotDriven) continue;
       px_[i] = wrap_x(npx_[i]);
       py_[i] = npy_[i];
       vx_[i] = nvx_[i];
@@ -1280,7 +1332,7 @@ void CrowdSimulation::step_reference() {
   const FullScan scan = full_scan(m);
   pool_->parallel_for(size(), 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
-      if (active_[i]) advance_agent(static_cast<std::uint32_t>(i), scan, nullptr);
+      if (seen(i)) advance_agent(static_cast<std::uint32_t>(i), scan, nullptr);
   });
   separate_bodies();
   finish_step();

@@ -45,6 +45,9 @@ struct SimulationConfig {
 };
 Status validate(const SimulationConfig& config);
 
+// How a driven agent shows itself to the others.
+enum class Presence : std::uint8_t { kVisible, kInvisible };
+
 struct Goal {
   Vec2 position;
   double radius = 0.3;  // m, reached when the agent's centre is this close
@@ -107,6 +110,15 @@ class CrowdSimulation {
   Status set_active(AgentId id, bool active);
   // Moves the agent into group `group_id` (-1: no group); group forces apply from the next step.
   Status set_group(AgentId id, std::int64_t group_id);
+
+  // --- driven agents (robots under outside control) ----------------------------------------------
+  // A driven agent is not moved by the forces: its state is what set_driven_state() last gave
+  // (goals are ignored). Visible, the others avoid it exactly as they avoid a person (social,
+  // body and contact terms); invisible, no one sees it.
+  Status set_driven(AgentId id, Presence presence);
+  // Pose and velocity of a driven agent (finite, within ±1e6 m, speed ≤ 8 m/s, |ω| ≤ 20 rad/s).
+  Status set_driven_state(AgentId id, Pose2 pose, Twist2 twist);
+  [[nodiscard]] bool driven(AgentId id) const { return driven_.at(id.value()) != kNotDriven; }
 
   // --- running ------------------------------------------------------------------------------
   void step();
@@ -187,6 +199,12 @@ class CrowdSimulation {
   std::vector<std::uint16_t> role_;
   std::vector<std::int32_t> group_;  // dense group index, -1 = alone
   std::vector<std::uint8_t> active_;
+  // kNotDriven, or 1 + Presence: a driven agent is skipped by the force step; an invisible one
+  // also by every neighbour scan.
+  static constexpr std::uint8_t kNotDriven = 0;
+  static constexpr std::uint8_t kDrivenInvisible = 1 + static_cast<std::uint8_t>(Presence::kInvisible);
+  std::vector<std::uint8_t> driven_;
+  [[nodiscard]] bool seen(std::size_t i) const { return active_[i] != 0 && driven_[i] != kDrivenInvisible; }
   std::vector<std::uint8_t> has_goal_;
   std::vector<double> gx_, gy_, gr_;
   std::vector<AgentMeta> meta_;

@@ -21,9 +21,15 @@ double wrap(double a) {
   return a;
 }
 
+double norm(Vec2 v) {
+  return std::hypot(v.x, v.y);
+}
+
+}  // namespace
+
 // LightSFM's social force that `a` (position pa, velocity va) exerts on `b` (HuNavSim evaluator,
 // default parameters: A = 2.1, λ = 2, γ = 0.35, n = 2, n' = 3).
-Vec2 social_force(Vec2 pa, Vec2 va, Vec2 pb, Vec2 vb) {
+Vec2 evaluator_social_force(Vec2 pa, Vec2 va, Vec2 pb, Vec2 vb) {
   constexpr double A = 2.1, lambda = 2.0, gamma = 0.35, n = 2.0, n_prime = 3.0;
   const double dx = pa.x - pb.x;
   const double dy = pa.y - pb.y;
@@ -45,7 +51,7 @@ Vec2 social_force(Vec2 pa, Vec2 va, Vec2 pb, Vec2 vb) {
 
 // LightSFM obstacle force averaged over the nearest points of the walls within 2 m (HuNavSim
 // averages over the agent's closest obstacles).
-Vec2 obstacle_force(Vec2 p, double radius, const std::vector<WallSegment>& walls) {
+Vec2 evaluator_obstacle_force(Vec2 p, double radius, const std::vector<WallSegment>& walls) {
   Vec2 sum{};
   int count = 0;
   for (const WallSegment& w : walls) {
@@ -67,11 +73,17 @@ Vec2 obstacle_force(Vec2 p, double radius, const std::vector<WallSegment>& walls
   return sum;
 }
 
-double norm(Vec2 v) {
-  return std::hypot(v.x, v.y);
+CollisionSide collision_side(Vec2 robot, Vec2 robot_velocity, Vec2 person, Vec2 person_velocity) {
+  const double d = norm({person.x - robot.x, person.y - robot.y});
+  if (d <= 1e-9) return {};
+  // Who moved into whom: the one with the larger speed towards the other. (HuNavSim compares
+  // bearings with a swapped atan2; this is the rule it describes.)
+  const double robot_in =
+      (robot_velocity.x * (person.x - robot.x) + robot_velocity.y * (person.y - robot.y)) / d;
+  const double person_in =
+      (person_velocity.x * (robot.x - person.x) + person_velocity.y * (robot.y - person.y)) / d;
+  return {robot_in >= person_in, person_in >= robot_in};
 }
-
-}  // namespace
 
 struct MetricsRecorder::Track {
   bool seen = false;
@@ -192,22 +204,19 @@ void MetricsRecorder::observe(double time, const std::vector<PedestrianState>& s
             closest_body = std::min(closest_body, d - ri - rj);
             if (d - ri - rj < 0.02) {
               ++tr.m.collisions;
-              if (is_robot && d > 1e-9) {
-                // Who moved into whom: the one with the larger speed towards the other. (HuNavSim
-                // compares bearings with a swapped atan2; this is the rule it describes.)
-                const double robot_in = (v.x * (q.x - p.x) + v.y * (q.y - p.y)) / d;
-                const double person_in = (o.twist.vx * (p.x - q.x) + o.twist.vy * (p.y - q.y)) / d;
-                if (robot_in >= person_in) ++robot_on_person_;
-                if (person_in >= robot_in) ++person_on_robot_;
+              if (is_robot) {
+                const CollisionSide side = collision_side(p, v, q, {o.twist.vx, o.twist.vy});
+                robot_on_person_ += side.robot_on_person ? 1 : 0;
+                person_on_robot_ += side.person_on_robot ? 1 : 0;
               }
             }
             if (d <= kForceRange) {
               const Vec2 vj{o.twist.vx, o.twist.vy};
-              const Vec2 on_me = social_force(q, vj, p, v);
+              const Vec2 on_me = evaluator_social_force(q, vj, p, v);
               force_on_me.x += on_me.x;
               force_on_me.y += on_me.y;
               tr.m.social_force_on_agent += norm(on_me);
-              const double by_me = norm(social_force(p, v, q, vj));
+              const double by_me = norm(evaluator_social_force(p, v, q, vj));
               tr.m.social_force_on_people += by_me;
               tr.m.social_work += by_me;
             }
@@ -226,7 +235,7 @@ void MetricsRecorder::observe(double time, const std::vector<PedestrianState>& s
       ++tr.personal;
     else if (closest_centre < 3.6)
       ++tr.social;
-    tr.m.social_work += norm(force_on_me) + norm(obstacle_force(p, ri, walls));
+    tr.m.social_work += norm(force_on_me) + norm(evaluator_obstacle_force(p, ri, walls));
 
     tr.seen = true;
     tr.last_pos = p;
@@ -274,26 +283,14 @@ Json to_json(const AgentMetrics& m) {
   Json j = {{"id", m.id},
             {"role", m.role},
             {"goal_reached", m.goal_reached},
-            {"time_to_reach_goal", m.time_to_reach_goal ? Json(*m.time_to_reach_goal) : Json(nullptr)},
-            {"path_length", m.path_length},
-            {"cumulative_heading_changes", m.cumulative_heading_changes},
-            {"avg_distance_to_closest_person", m.avg_distance_to_closest_person},
-            {"minimum_distance_to_people", m.minimum_distance_to_people},
-            {"intimate_space_intrusions", m.intimate_space_intrusions},
-            {"personal_space_intrusions", m.personal_space_intrusions},
-            {"social_space_intrusions", m.social_space_intrusions},
-            {"collisions", m.collisions},
-            {"time_not_moving", m.time_not_moving},
             {"avg_linear_speed", m.avg_linear_speed},
             {"avg_angular_speed", m.avg_angular_speed},
             {"avg_acceleration", m.avg_acceleration},
             {"avg_overacceleration", m.avg_overacceleration},
             {"final_goal_distance", m.final_goal_distance},
             {"minimum_goal_distance", m.minimum_goal_distance},
-            {"social_force_on_agent", m.social_force_on_agent},
-            {"social_force_on_people", m.social_force_on_people},
-            {"social_work", m.social_work},
             {"frames", m.frames}};
+  put_hunav_figures(j, m);
   return j;
 }
 

@@ -52,6 +52,38 @@ struct RunMetrics {
   std::uint64_t person_on_robot_collisions = 0;
 };
 
+// HuNavSim evaluator's force terms (LightSFM, default parameters), shared with the episode metrics:
+// the social force that a body at pa moving with va exerts on one at pb moving with vb, and the
+// obstacle force on a body of `radius` at p, averaged over the nearest points of walls within 2 m.
+Vec2 evaluator_social_force(Vec2 pa, Vec2 va, Vec2 pb, Vec2 vb);
+Vec2 evaluator_obstacle_force(Vec2 p, double radius, const std::vector<WallSegment>& walls);
+// SEAN 2.0's split of a robot–person collision: robot on person when the robot's speed towards the
+// person is the larger, person on robot when the person's is (both when equal).
+struct CollisionSide {
+  bool robot_on_person = false;
+  bool person_on_robot = false;
+};
+CollisionSide collision_side(Vec2 robot, Vec2 robot_velocity, Vec2 person, Vec2 person_velocity);
+
+// The HuNavSim figures that AgentMetrics and the robot episode metrics (episode_metrics.hpp) both
+// carry under the same names, written into j.
+template <class Figures>
+void put_hunav_figures(Json& j, const Figures& m) {
+  j["time_to_reach_goal"] = m.time_to_reach_goal ? Json(*m.time_to_reach_goal) : Json(nullptr);
+  j["path_length"] = m.path_length;
+  j["cumulative_heading_changes"] = m.cumulative_heading_changes;
+  j["avg_distance_to_closest_person"] = m.avg_distance_to_closest_person;
+  j["minimum_distance_to_people"] = m.minimum_distance_to_people;
+  j["intimate_space_intrusions"] = m.intimate_space_intrusions;
+  j["personal_space_intrusions"] = m.personal_space_intrusions;
+  j["social_space_intrusions"] = m.social_space_intrusions;
+  j["collisions"] = m.collisions;
+  j["time_not_moving"] = m.time_not_moving;
+  j["social_force_on_agent"] = m.social_force_on_agent;
+  j["social_force_on_people"] = m.social_force_on_people;
+  j["social_work"] = m.social_work;
+}
+
 Json to_json(const AgentMetrics& m);
 Json to_json(const RunMetrics& m);
 

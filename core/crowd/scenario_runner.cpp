@@ -155,11 +155,13 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
   // Roles, simulation, walls.
   RoleTable roles = RoleTable::defaults();
   if (auto ok = roles.apply_json(program.roles, "/roles"); !ok) return tl::unexpected(ok.error());
-  if (program.robot && !roles.index_of("robot")) {
+  const bool driven = !options.robots.empty();
+  if ((program.robot || driven) && !roles.index_of("robot")) {
     RoleParameters robot = roles.at(*roles.index_of("adult"));
     robot.name = "robot";
-    robot.speed = SpeedDistribution{program.robot->speed, 0.0, 0.0, kMaxAgentSpeed};
-    robot.radius = program.robot->radius;
+    const double speed = program.robot ? program.robot->speed : options.robots.front().limits.max_speed;
+    robot.speed = SpeedDistribution{speed, 0.0, 0.0, kMaxAgentSpeed};
+    robot.radius = program.robot ? program.robot->radius : options.robots.front().radius;
     if (auto ok = roles.put(robot); !ok) return tl::unexpected(at_pointer(ok.error(), "/robot"));
   }
   SimulationConfig config;
@@ -365,9 +367,30 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
     }
   }
 
-  // Robot.
+  // Robot: the program's scripted one, or the driven ones of the options.
   std::optional<AgentId> robot;
-  if (program.robot) {
+  for (std::size_t k = 0; k < options.robots.size(); ++k) {
+    const RobotSpec& r = options.robots[k];
+    const std::string pointer = "/robots/" + std::to_string(k);
+    AgentSpec spec;
+    spec.position = {r.start.x, r.start.y};
+    spec.yaw = r.start.yaw;
+    spec.role = "robot";
+    spec.desired_speed = 0.0;
+    spec.radius = r.radius;
+    auto id = s.add_agent(spec);
+    if (!id) {
+      b.error(id.error(), pointer);
+      continue;
+    }
+    (void)s.set_driven(*id, r.presence);
+    if (!robot && r.presence == Presence::kVisible) robot = *id;
+    run->driven_robots_.push_back(*id);
+    run->agents_.push_back(RunnerAgent{*id, AgentKind::kRobot, r.name, pointer});
+    pending.push_back(Pending{std::nullopt, {}, false});
+    run->exit_at_goal_.push_back(0);
+  }
+  if (program.robot && !driven) {
     const ProgramRobot& r = *program.robot;
     for (const ProgramPoint& g : r.goals)
       if (auto p = b.point(g, env)) run->robot_goals_.push_back(Goal{*p, g.radius.value_or(r.goal_radius)});

@@ -16,6 +16,7 @@
 #include "core/crowd/bt_environment.hpp"
 #include "core/crowd/metrics.hpp"
 #include "core/crowd/program.hpp"
+#include "core/crowd/robot.hpp"
 
 namespace socsim::crowd {
 
@@ -25,6 +26,10 @@ struct RunnerOptions {
   std::filesystem::path base_dir;  // where behaviour-tree files of the program are found
   bool record_metrics = true;      // metrics frames at every decision step
   EnvironmentOptions environment;
+  // Robots driven from outside (co-simulation): added after every person as driven agents of role
+  // "robot", in this order; the program's own (scripted) robot is then left out. The behaviour
+  // nodes that look at or avoid "the robot" see the first visible one.
+  std::vector<RobotSpec> robots;
 };
 
 enum class AgentKind : std::uint8_t { kSpotlight, kAmbient, kRobot };
@@ -58,6 +63,8 @@ class ScenarioRunner {
   [[nodiscard]] CrowdSimulation& sim() { return *sim_; }
   [[nodiscard]] BtEnvironment& environment() { return *env_; }
   [[nodiscard]] const std::vector<RunnerAgent>& agents() const { return agents_; }
+  // The agents of RunnerOptions::robots, in their order.
+  [[nodiscard]] const std::vector<AgentId>& driven_robots() const { return driven_robots_; }
   [[nodiscard]] std::vector<PedestrianState> states() const;
   // The tree of an agent (nullptr for the robot).
   [[nodiscard]] BtTree* tree(AgentId id);
@@ -80,6 +87,7 @@ class ScenarioRunner {
   std::vector<RunnerAgent> agents_;
   std::vector<std::optional<BtTree>> trees_;
   std::vector<std::uint8_t> exit_at_goal_;
+  std::vector<AgentId> driven_robots_;
   std::vector<Goal> robot_goals_;
   std::size_t robot_goal_ = 0;
   bool robot_cyclic_ = false;

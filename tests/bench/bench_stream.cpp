@@ -12,10 +12,9 @@
 #include <boost/asio.hpp>
 #include <boost/beast.hpp>
 
-#include "server/api_server.hpp"
 #include "server/simulation_sessions.hpp"
-#include "server/ws_server.hpp"
 #include "tests/bench/bench.hpp"
+#include "tests/bench/bench_daemon.hpp"
 
 namespace {
 using socsim::bench::Args;
@@ -26,22 +25,6 @@ namespace beast = boost::beast;
 namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 using Clock = std::chrono::steady_clock;
-
-// Lanes 1 m apart, alternate lanes walking in opposite directions between their two ends:
-// counter-flow with neighbours in reach, but no pile-up at a shared goal.
-nlohmann::json lanes_program(int agents) {
-  const int per_lane = 40;
-  const double length = 60.0;
-  nlohmann::json list = nlohmann::json::array();
-  for (int i = 0; i < agents; ++i) {
-    const int lane = i / per_lane;
-    const double y = 1.0 * lane;
-    const double x = (i % per_lane) * (length / per_lane) + (lane % 2 ? 0.7 : 0.0);
-    const double to = lane % 2 ? 0.0 : length;
-    list.push_back({{"position", {x, y}}, {"goals", {{to, y}, {length - to, y}}}});
-  }
-  return {{"name", "stream bench lanes"}, {"dt", 0.05}, {"decision_period", 0.1}, {"agents", list}};
-}
 
 struct ViewerResult {
   std::size_t frames = 0;
@@ -119,46 +102,22 @@ int run_stream(const Args& a) {
   const double warmup = a.number("warmup", 1.0);
   const double speed = a.number("speed", 1.0);
   const bool binary = a.has("binary");
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("socsim-bench-stream-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-
-  socsim::server::ServerConfig cfg;
-  cfg.host = "127.0.0.1";
-  cfg.port = 0;
-  cfg.db = (dir / "bench.db").string();
-  cfg.web_root = dir.string();
-  cfg.rate_limit_rps = 0;
-  cfg.max_viewers = static_cast<std::size_t>(viewers) + 1;
-  cfg.max_sim_agents = static_cast<std::size_t>(agents);
-  cfg.max_body_bytes = 16u << 20;
-  auto store = socsim::store::Store::open(cfg.db);
-  if (!store) {
-    std::cerr << store.error().message() << "\n";
-    return 1;
-  }
-  auto services = socsim::server::Services::create(cfg, **store);
-  if (!services) {
-    std::cerr << services.error().message() << "\n";
-    return 1;
-  }
-  socsim::server::ApiServer api(**services);
-  const int port = api.bind().value();
-  std::thread server([&] { api.run(); });
-  socsim::server::WsServer ws({"127.0.0.1", 0, 1024, 64, cfg.viewer_queue}, **services);
-  const int ws_port = ws.bind().value();
-  (*services)->config.ws_port = ws_port;
-  ws.start();
+  auto daemon = socsim::bench::InProcessDaemon::start("stream", [&](socsim::server::ServerConfig& cfg) {
+    cfg.max_viewers = static_cast<std::size_t>(viewers) + 1;
+    cfg.max_sim_agents = static_cast<std::size_t>(agents);
+  });
+  if (!daemon) return 1;
+  const int port = daemon->port();
+  const int ws_port = daemon->ws_port();
   std::cout.setstate(std::ios::failbit);  // silence the request log lines while measuring
 
   httplib::Client http("127.0.0.1", port);
   http.set_read_timeout(60, 0);
   const auto t_create = Clock::now();
-  auto created =
-      http.Post("/api/v1/simulations",
-                nlohmann::json{{"program", lanes_program(agents)}, {"seed", 1}, {"speed", speed}}.dump(),
-                "application/json");
+  auto created = http.Post(
+      "/api/v1/simulations",
+      nlohmann::json{{"program", socsim::bench::lanes_program(agents)}, {"seed", 1}, {"speed", speed}}.dump(),
+      "application/json");
   const double create_s = socsim::bench::seconds_since(t_create);
   if (!created || created->status != 201) {
     std::cout.clear();
@@ -220,12 +179,6 @@ int run_stream(const Args& a) {
         {"frames_lost_by_viewers", lost},
         {"frames_dropped_by_server", s1["frames_dropped"]},
         {"viewers_failed", failed}});
-  ws.stop();
-  api.stop();
-  server.join();
-  (*services)->shutdown();
-  (*store)->close();
-  std::filesystem::remove_all(dir);
   return failed == 0 ? 0 : 1;
 }
 

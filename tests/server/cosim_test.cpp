@@ -1,0 +1,226 @@
+// Co-simulation end to end: POST /api/v1/cosim on a real daemon, a client driving the robot over a
+// real WebSocket (subprotocol socsim.cosim.v1) in lock-step and in real time; byte-identical reports
+// for the same inputs; every kind of bad input ends in a clear error and a close, never a hang.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/server/live_daemon.hpp"
+
+namespace socsim::server {
+namespace {
+
+const char* kCorridor = "zones:\n  - {name: corridor, polygon: [[0, 0], [20, 0], [20, 3], [0, 3]]}\n";
+
+Json walker_program() {
+  return {{"name", "encounter"},
+          {"agents",
+           {{{"name", "walker"}, {"position", {14, 1.0}}, {"goals", {{1, 1.0}}}, {"cyclic_goals", false}}}}};
+}
+
+Json request(Json extra = Json::object()) {
+  Json body{{"program", walker_program()},
+            {"world", kCorridor},
+            {"seed", 4},
+            {"robot", {{"start", {{"x", 2}, {"y", 2.0}, {"yaw", 0}}}, {"goal", {{"x", 10}, {"y", 2.0}}}}},
+            {"time_limit", 30}};
+  body.update(extra);
+  return body;
+}
+
+std::string step(std::uint64_t k, double v, double omega = 0.0) {
+  return Json{{"type", "step"}, {"step", k}, {"robots", {{{"cmd", {{"v", v}, {"omega", omega}}}}}}}.dump();
+}
+
+struct Client : Viewer {
+  Client(int port, const std::string& path) : Viewer(port, path, "socsim.cosim.v1") {}
+  void send(const std::string& text) {
+    ws.text(true);
+    ws.write(asio::buffer(text));
+  }
+};
+
+// Drives the robot at 0.8 m/s to the end; returns the report message's bytes.
+std::string drive_to_the_end(Daemon& d, const Json& body) {
+  const Json created = d.post("/api/v1/cosim", body, 201);
+  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  EXPECT_EQ(c.protocol, "socsim.cosim.v1");
+  auto hello = c.read();
+  EXPECT_TRUE(hello && hello->type() == "hello");
+  auto first = c.read();
+  EXPECT_TRUE(first && first->type() == "observation");
+  for (std::uint64_t k = 1; k < 2000; ++k) {
+    c.send(step(k, 0.8));
+    auto m = c.read();
+    if (!m) return "no observation";
+    const Json o = m->json();
+    EXPECT_EQ(o["type"], "observation");
+    EXPECT_EQ(o["step"], k);
+    if (o["status"] == "ended") {
+      auto report = c.read();
+      return report ? report->bytes : "no report";
+    }
+  }
+  return "did not end";
+}
+
+TEST(Cosim, LockStepRunsToAReportThatIsTheSameEveryTime) {
+  Daemon d;
+  const std::string a = drive_to_the_end(d, request());
+  const std::string b = drive_to_the_end(d, request());
+  EXPECT_EQ(a, b);
+  const Json r = Json::parse(a);
+  EXPECT_EQ(r["type"], "report");
+  EXPECT_EQ(r["end_reason"], "episode_ended");
+  ASSERT_EQ(r["metrics"]["robots"].size(), 1u);
+  const Json& robot = r["metrics"]["robots"][0];
+  EXPECT_EQ(robot["name"], "robot_0");
+  EXPECT_TRUE(robot["outcome"] == "success" || robot["outcome"] == "collision_person") << robot;
+  for (const char* k :
+       {"path_length", "minimum_distance_to_people", "social_work", "avg_jerk", "path_efficiency"})
+    EXPECT_TRUE(robot.contains(k)) << k;
+  const std::string waiting = d.post("/api/v1/cosim", request(), 201)["id"];
+  EXPECT_EQ(d.get("/api/v1/cosim/" + waiting)["status"], "waiting");
+}
+
+TEST(Cosim, ObservationsCarryThePeopleAndTheRobot) {
+  Daemon d;
+  const Json created = d.post("/api/v1/cosim", request(), 201);
+  EXPECT_EQ(created["subprotocol"], "socsim.cosim.v1");
+  EXPECT_EQ(created["websocket_url"],
+            "ws://127.0.0.1:" + std::to_string(d.ws_port) + created["ws_url"].get<std::string>());
+  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  const Json hello = c.read()->json();
+  EXPECT_EQ(hello["protocol"], "socsim.cosim.v1");
+  EXPECT_DOUBLE_EQ(hello["dt"], 0.05);
+  EXPECT_EQ(hello["robots"][0]["goal"]["radius"], 0.5);
+  const Json o = c.read()->json();
+  ASSERT_EQ(o["people"].size(), 1u);
+  for (const char* k :
+       {"id", "pose", "twist", "state", "role", "intent", "group_id", "proxemics", "metadata"})
+    EXPECT_TRUE(o["people"][0].contains(k)) << k;
+  EXPECT_EQ(o["robots"][0]["outcome"], "running");
+  c.send(step(1, 1.0));
+  const Json o1 = c.read()->json();
+  EXPECT_NEAR(o1["robots"][0]["pose"]["x"].get<double>(), 2.0025, 1e-12);  // 0.05 m/s after one step
+  c.send(R"({"type": "stop"})");
+  const Json report = c.read()->json();
+  EXPECT_EQ(report["type"], "report");
+  EXPECT_EQ(report["end_reason"], "stopped_by_client");
+  EXPECT_FALSE(c.read(1000ms)) << "closed after the report";
+  EXPECT_EQ(d.get("/api/v1/cosim/" + created["id"].get<std::string>())["report"]["steps"], 1);
+}
+
+// Sends `bad` after the hello; expects an error with `code` and `pointer`, then a close.
+void expect_protocol_error(Daemon& d, const std::vector<std::string>& before, const std::string& bad,
+                           const std::string& code, const std::string& pointer) {
+  const Json created = d.post("/api/v1/cosim", request(), 201);
+  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  c.read();
+  c.read();
+  for (const std::string& m : before) {
+    c.send(m);
+    c.read();
+  }
+  c.send(bad);
+  auto m = c.read();
+  ASSERT_TRUE(m) << bad;
+  const Json e = m->json();
+  EXPECT_EQ(e["type"], "error") << e;
+  EXPECT_EQ(e["code"], code) << e;
+  if (!pointer.empty()) {
+    ASSERT_TRUE(e.contains("errors")) << e;
+    EXPECT_EQ(e["errors"][0]["pointer"], pointer) << e;
+  }
+  EXPECT_FALSE(c.read(2000ms)) << "closed after the error";
+  EXPECT_EQ(c.ws.reason().code, websocket::close_code::policy_error);
+  EXPECT_EQ(d.get("/api/v1/cosim/" + created["id"].get<std::string>())["status"], "ended");
+}
+
+TEST(Cosim, BadInputEndsWithAClearErrorAndAClose) {
+  Daemon d;
+  expect_protocol_error(d, {}, R"({"type": "step", "step": 1, "robots": [{"cmd": {"v": NaN, "omega": 0}}]})",
+                        "protocol_error", "");
+  expect_protocol_error(d, {}, step(1, 100.0), "protocol_error", "/robots/0/cmd/v");
+  expect_protocol_error(d, {step(1, 0.5)}, step(3, 0.5), "out_of_order", "/step");
+  expect_protocol_error(d, {}, step(0, 0.5), "out_of_order", "/step");
+  expect_protocol_error(d, {},
+                        R"({"type": "step", "step": 1, "robots": [{"cmd": {"v": 0, "omega": 0}},
+                                                                  {"cmd": {"v": 0, "omega": 0}}]})",
+                        "protocol_error", "/robots");
+  expect_protocol_error(d, {},
+                        R"({"type": "step", "step": 1, "robots": [{"pose": {"x": 9, "y": 2, "yaw": 0},
+                                                                   "twist": {"vx": 0, "vy": 0, "omega": 0}}]})",
+                        "protocol_error", "/robots/0/pose");
+  expect_protocol_error(d, {}, R"({"type": "teleport"})", "protocol_error", "/type");
+  expect_protocol_error(d, {}, R"({"type": "step", "step": 1, "robots": [{"cmd": {"v": 0}}]})",
+                        "protocol_error", "/robots/0/cmd/omega");
+  expect_protocol_error(d, {}, "not json", "protocol_error", "");
+}
+
+TEST(Cosim, BadRequestsAreRefusedWithPointers) {
+  Daemon d;
+  Json many = request();
+  many.erase("robot");
+  many["robots"] = Json::array();
+  for (int k = 0; k < 5; ++k) many["robots"].push_back({{"start", {{"x", 2 + k}, {"y", 1}}}});
+  const Json e = d.post("/api/v1/cosim", many, 422);
+  EXPECT_EQ(e["errors"][0]["pointer"], "/robots");
+  const Json e2 = d.post("/api/v1/cosim", request({{"robot", {{"start", {{"x", 1}}}, {"radius", 9}}}}), 422);
+  EXPECT_EQ(e2["errors"].size(), 2u);
+  EXPECT_EQ(d.post("/api/v1/cosim", request({{"mode", "fast"}}), 422)["errors"][0]["pointer"], "/mode");
+  Json no_robot = request();
+  no_robot.erase("robot");
+  EXPECT_EQ(d.post("/api/v1/cosim", no_robot, 422)["errors"][0]["pointer"], "/robots");
+  EXPECT_EQ(d.post("/api/v1/cosim", request({{"card_id", "card_nope"}}), 422)["errors"][0]["pointer"], "");
+}
+
+TEST(Cosim, TheSubprotocolIsRequiredAndOneClientOnly) {
+  Daemon d;
+  const Json created = d.post("/api/v1/cosim", request(), 201);
+  const std::string path = created["ws_url"];
+  EXPECT_THROW(Viewer(d.ws_port, path), beast::system_error);
+  Client first(d.ws_port, path);
+  EXPECT_THROW(Client(d.ws_port, path), beast::system_error);
+}
+
+TEST(Cosim, AnIdleClientTimesOut) {
+  ServerConfig config = quick_config();
+  config.sim_idle_s = 1;
+  Daemon d(config);
+  const Json created = d.post("/api/v1/cosim", request(), 201);
+  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  c.read();
+  c.read();
+  auto m = c.read(5000ms);
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->json()["code"], "idle_timeout");
+  EXPECT_FALSE(c.read(2000ms));
+}
+
+TEST(Cosim, RealTimeHoldsTheLastCommandAndCountsLateness) {
+  Daemon d;
+  const Json created = d.post("/api/v1/cosim", request({{"mode", "realtime"}, {"rate_hz", 20}}), 201);
+  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  c.read();
+  c.read();
+  c.send(step(1, 1.0));
+  // Without further messages the server keeps stepping with the held command.
+  std::uint64_t last_step = 0;
+  double last_x = 0.0;
+  for (int k = 0; k < 10; ++k) {
+    auto m = c.next("observation");
+    ASSERT_TRUE(m);
+    last_step = m->json()["step"];
+    last_x = m->json()["robots"][0]["pose"]["x"];
+  }
+  EXPECT_GE(last_step, 10u);
+  EXPECT_GT(last_x, 2.05) << "the held 1 m/s command moves the robot";
+  c.send(R"({"type": "stop"})");
+  auto report = c.next("report");
+  ASSERT_TRUE(report);
+  EXPECT_GE(report->json()["late_ticks"].get<int>(), 8);
+}
+
+}  // namespace
+}  // namespace socsim::server
