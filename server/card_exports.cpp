@@ -7,7 +7,7 @@
 
 namespace socsim::server {
 
-Result<CardScenario> card_scenario(const cards::Card& card) {
+Result<CardExport> card_export_scenario(const cards::Card& card) {
   const cards::CardContent& c = card.content;
   if (!c.world.is_object() || !c.program.is_object())
     return fail(ErrorCode::kValidation, "card " + card.id + " has no world and program to export",
@@ -16,7 +16,7 @@ Result<CardScenario> card_scenario(const cards::Card& card) {
   if (!w) return tl::unexpected(Error(w.error()).under("/world"));
   auto p = crowd::program_from_json(c.program);
   if (!p) return tl::unexpected(Error(p.error()).under("/program"));
-  return CardScenario{std::move(*w), std::move(*p)};
+  return CardExport{std::move(*w), std::move(*p)};
 }
 
 Result<scenario::TrajectoryLog> card_trajectory_log(store::Store& store, const cards::Card& card) {
@@ -28,7 +28,7 @@ Result<scenario::TrajectoryLog> card_trajectory_log(store::Store& store, const c
 }
 
 Result<std::string> card_mcap(store::Store& store, const cards::Card& card, bool scene_people) {
-  auto s = card_scenario(card);
+  auto s = card_export_scenario(card);
   if (!s) return tl::unexpected(s.error());
   auto log = card_trajectory_log(store, card);
   if (!log) return tl::unexpected(log.error());
@@ -43,7 +43,7 @@ Result<std::string> card_mcap(store::Store& store, const cards::Card& card, bool
 }
 
 Result<std::string> card_gazebo_actors(store::Store& store, const cards::Card& card) {
-  auto s = card_scenario(card);
+  auto s = card_export_scenario(card);
   if (!s) return tl::unexpected(s.error());
   auto log = card_trajectory_log(store, card);
   if (!log) return tl::unexpected(log.error());

@@ -12,11 +12,11 @@
 namespace socsim::server {
 
 // The card's world and program, checked as they are read.
-struct CardScenario {
+struct CardExport {
   world::World world;
   crowd::Program program;
 };
-Result<CardScenario> card_scenario(const cards::Card& card);
+Result<CardExport> card_export_scenario(const cards::Card& card);
 
 // The card's trajectory log, loaded by the sha256 the card records; kNotFound when it has none.
 Result<scenario::TrajectoryLog> card_trajectory_log(store::Store& store, const cards::Card& card);

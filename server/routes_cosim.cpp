@@ -12,7 +12,7 @@ namespace {
 
 constexpr const char* kCosimPath = R"(/api/v1/cosim/([^/]+))";
 
-Json with_urls(RouteContext& ctx, const Request& req, Json status) {
+Json cosim_with_urls(RouteContext& ctx, const Request& req, Json status) {
   status["ws_port"] = ctx.config.ws_port;
   status["websocket_url"] = "ws://" + ctx.public_host(req) + ":" + std::to_string(ctx.config.ws_port) +
                             status["ws_url"].get<std::string>();
@@ -84,13 +84,13 @@ void cosim_routes(Router& http, RouteContext& ctx) {
                    if (!session) return reply_problem(res, session.error(), req.path);
                    log_line({{"level", "info"}, {"event", "cosim.started"}, {"cosim", (*session)->id()}});
                    res.set_header("Location", "/api/v1/cosim/" + (*session)->id());
-                   reply_json(res, 201, with_urls(ctx, req, (*session)->status()));
+                   reply_json(res, 201, cosim_with_urls(ctx, req, (*session)->status()));
                  });
 
   http.Get(kCosimPath, [&ctx](const Request& req, Response& res) {
     auto s = ctx.services.cosim->find(req.matches[1].str());
     if (!s) return reply_problem(res, s.error(), req.path);
-    reply_json(res, 200, with_urls(ctx, req, (*s)->status()));
+    reply_json(res, 200, cosim_with_urls(ctx, req, (*s)->status()));
   });
 }
 

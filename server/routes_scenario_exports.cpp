@@ -68,7 +68,7 @@ void export_routes(Router& http, RouteContext& ctx) {
       if (!sdf) return reply_problem(res, sdf.error(), req.path);
       return attach(res, id + ".world", *sdf, "application/xml");
     }
-    auto s = card_scenario(*card);
+    auto s = card_export_scenario(*card);
     if (!s) return reply_problem(res, s.error(), req.path);
     if (*format == "pedsim") {
       interop::PedsimExportOptions options;

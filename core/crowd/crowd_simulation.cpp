@@ -657,15 +657,15 @@ Status CrowdSimulation::set_driven_state(AgentId id, Pose2 pose, Twist2 twist) {
   if (auto ok = check_id(id, "set_driven_state"); !ok) return ok;
   const std::uint32_t i = id.value();
   std::vector<FieldError> errors;
-  if (driven_[i] == kNotDriven) errors.push_back(field("/agent_id", "agent is not driven"));
+  if (driven_[i] == kNotDriven) errors.push_back(FieldError("/agent_id", "agent is not driven"));
   if (!finite_in_range(pose.x, kMaxCoordinate) || !finite_in_range(pose.y, kMaxCoordinate))
-    errors.push_back(field("/pose", "must be finite and within ±1e6 m"));
-  if (!std::isfinite(pose.yaw)) errors.push_back(field("/pose/yaw", "must be finite"));
+    errors.push_back(FieldError("/pose", "must be finite and within ±1e6 m"));
+  if (!std::isfinite(pose.yaw)) errors.push_back(FieldError("/pose/yaw", "must be finite"));
   const double speed = std::hypot(twist.vx, twist.vy);
   if (!(std::isfinite(speed) && speed <= kMaxAgentSpeed))
-    errors.push_back(field("/twist", "speed must be finite and at most 8 m/s"));
+    errors.push_back(FieldError("/twist", "speed must be finite and at most 8 m/s"));
   if (!finite_in_range(twist.omega, 20.0))
-    errors.push_back(field("/twist/omega", "must be within ±20 rad/s"));
+    errors.push_back(FieldError("/twist/omega", "must be within ±20 rad/s"));
   if (!errors.empty()) return fail(ErrorCode::kValidation, "invalid driven state", std::move(errors));
   px_[i] = wrap_x(pose.x);
   py_[i] = pose.y;

@@ -13,10 +13,6 @@ constexpr double kMaxCommandTurn = 20.0;             // rad/s
 // to 1 cm inside each other (docs/crowd.md, "Body contact"), so brushing past is not a collision.
 constexpr double kContactTolerance = 0.01;
 
-double distance(Vec2 a, Vec2 b) {
-  return std::hypot(a.x - b.x, a.y - b.y);
-}
-
 Status input_error(std::size_t k, const std::string& field, const std::string& message) {
   const std::string pointer = "/robots/" + std::to_string(k) + field;
   return fail(ErrorCode::kValidation, pointer + ": " + message, {FieldError{pointer, message}});

@@ -11,17 +11,6 @@ namespace socsim::crowd {
 
 namespace {
 
-constexpr double kForceRange = 3.6;  // m, as in metrics.cpp
-
-double norm(Vec2 v) {
-  return std::hypot(v.x, v.y);
-}
-
-double wrap(double a) {
-  a = std::remainder(a, 2.0 * std::numbers::pi);
-  return a <= -std::numbers::pi ? a + 2.0 * std::numbers::pi : a;
-}
-
 RobotEpisodeMetrics evaluate_robot(const EpisodeLog& log, std::size_t k) {
   RobotEpisodeMetrics m;
   const RobotSpec& spec = log.robots[k];
@@ -52,7 +41,7 @@ RobotEpisodeMetrics evaluate_robot(const EpisodeLog& log, std::size_t k) {
     if (f > 0) {
       const LoggedBody& before = log.frames[f - 1].robots[k];
       m.path_length += norm({r.position.x - before.position.x, r.position.y - before.position.y});
-      m.cumulative_heading_changes += std::abs(wrap(r.yaw - before.yaw));
+      m.cumulative_heading_changes += std::abs(angle_in_pi(r.yaw - before.yaw));
       const double acc = (speed - norm(before.velocity)) / log.dt;
       acc_sum += std::abs(acc);
       ++acc_samples;

@@ -11,7 +11,6 @@ namespace socsim::crowd {
 namespace {
 
 constexpr double kCloseRange = 10.0;  // m searched for the closest person
-constexpr double kForceRange = 3.6;   // m: social forces beyond are below 1e-4 of the contact value
 constexpr double kCell = 2.0;         // m, neighbour grid
 constexpr double kPi = std::numbers::pi;
 
@@ -19,10 +18,6 @@ double wrap(double a) {
   while (a > kPi) a -= 2.0 * kPi;
   while (a <= -kPi) a += 2.0 * kPi;
   return a;
-}
-
-double norm(Vec2 v) {
-  return std::hypot(v.x, v.y);
 }
 
 }  // namespace

@@ -13,6 +13,9 @@
 
 namespace socsim::crowd {
 
+// m: social forces beyond are below 1e-4 of the contact value (the metrics ignore them).
+inline constexpr double kForceRange = 3.6;
+
 struct AgentMetrics {
   std::uint32_t id = 0;
   std::string role;

@@ -9,14 +9,7 @@
 
 namespace socsim::crowd {
 
-namespace {
-
-double wrap(double a) {
-  a = std::remainder(a, 2.0 * std::numbers::pi);
-  return a <= -std::numbers::pi ? a + 2.0 * std::numbers::pi : a;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 Status validate(const RobotLimits& limits, const std::string& pointer) {
   std::vector<FieldError> errors;
@@ -50,7 +43,7 @@ UnicycleState integrate_unicycle(const UnicycleState& s, VelocityCommand command
     next.pose.x = s.pose.x + r * (std::sin(yaw + turn) - std::sin(yaw));
     next.pose.y = s.pose.y - r * (std::cos(yaw + turn) - std::cos(yaw));
   }
-  next.pose.yaw = wrap(yaw + turn);
+  next.pose.yaw = angle_in_pi(yaw + turn);
   return next;
 }
 

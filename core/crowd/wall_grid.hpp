@@ -4,6 +4,7 @@
 // (or be reached by) an agent standing in that cell.
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -17,6 +18,14 @@ struct Vec2 {
 
 inline double distance(Vec2 a, Vec2 b) {
   return std::hypot(a.x - b.x, a.y - b.y);
+}
+inline double norm(Vec2 v) {
+  return std::hypot(v.x, v.y);
+}
+// An angle in (-π, π], exactly (std::remainder).
+inline double angle_in_pi(double a) {
+  a = std::remainder(a, 2.0 * std::numbers::pi);
+  return a <= -std::numbers::pi ? a + 2.0 * std::numbers::pi : a;
 }
 
 struct WallSegment {

@@ -7,7 +7,7 @@ namespace socsim::interop {
 namespace {
 
 template <class T>
-void put(std::string& out, T v) {
+void put_number(std::string& out, T v) {
   char buf[32];
   const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, ec == std::errc() ? end : buf);
@@ -21,19 +21,19 @@ std::string trajectories_csv(const scenario::TrajectoryLog& log) {
   for (std::size_t i = 0; i < log.frame_count(); ++i) {
     const double t = log.frame_time(i);
     for (const scenario::LoggedAgent& a : log.frame(i)) {
-      put(out, t);
+      put_number(out, t);
       out += ',';
-      put(out, a.id);
+      put_number(out, a.id);
       for (float v : {a.x, a.y, a.vx, a.vy}) {
         out += ',';
-        put(out, v);
+        put_number(out, v);
       }
       out += ',';
       out += crowd::activity_name(a.activity);
       out += ',';
       out += a.role < roles.size() ? roles[a.role] : std::string("unknown");
       out += ',';
-      put(out, a.group_id);
+      put_number(out, a.group_id);
       out += '\n';
     }
   }

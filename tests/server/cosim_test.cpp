@@ -32,8 +32,8 @@ std::string step(std::uint64_t k, double v, double omega = 0.0) {
   return Json{{"type", "step"}, {"step", k}, {"robots", {{{"cmd", {{"v", v}, {"omega", omega}}}}}}}.dump();
 }
 
-struct Client : Viewer {
-  Client(int port, const std::string& path) : Viewer(port, path, "socsim.cosim.v1") {}
+struct CosimClient : Viewer {
+  CosimClient(int port, const std::string& path) : Viewer(port, path, "socsim.cosim.v1") {}
   void send(const std::string& text) {
     ws.text(true);
     ws.write(asio::buffer(text));
@@ -43,7 +43,7 @@ struct Client : Viewer {
 // Drives the robot at 0.8 m/s to the end; returns the report message's bytes.
 std::string drive_to_the_end(Daemon& d, const Json& body) {
   const Json created = d.post("/api/v1/cosim", body, 201);
-  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  CosimClient c(d.ws_port, created["ws_url"].get<std::string>());
   EXPECT_EQ(c.protocol, "socsim.cosim.v1");
   auto hello = c.read();
   EXPECT_TRUE(hello && hello->type() == "hello");
@@ -89,7 +89,7 @@ TEST(Cosim, ObservationsCarryThePeopleAndTheRobot) {
   EXPECT_EQ(created["subprotocol"], "socsim.cosim.v1");
   EXPECT_EQ(created["websocket_url"],
             "ws://127.0.0.1:" + std::to_string(d.ws_port) + created["ws_url"].get<std::string>());
-  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  CosimClient c(d.ws_port, created["ws_url"].get<std::string>());
   const Json hello = c.read()->json();
   EXPECT_EQ(hello["protocol"], "socsim.cosim.v1");
   EXPECT_DOUBLE_EQ(hello["dt"], 0.05);
@@ -115,7 +115,7 @@ TEST(Cosim, ObservationsCarryThePeopleAndTheRobot) {
 void expect_protocol_error(Daemon& d, const std::vector<std::string>& before, const std::string& bad,
                            const std::string& code, const std::string& pointer) {
   const Json created = d.post("/api/v1/cosim", request(), 201);
-  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  CosimClient c(d.ws_port, created["ws_url"].get<std::string>());
   c.read();
   c.read();
   for (const std::string& m : before) {
@@ -180,8 +180,8 @@ TEST(Cosim, TheSubprotocolIsRequiredAndOneClientOnly) {
   const Json created = d.post("/api/v1/cosim", request(), 201);
   const std::string path = created["ws_url"];
   EXPECT_THROW(Viewer(d.ws_port, path), beast::system_error);
-  Client first(d.ws_port, path);
-  EXPECT_THROW(Client(d.ws_port, path), beast::system_error);
+  CosimClient first(d.ws_port, path);
+  EXPECT_THROW(CosimClient(d.ws_port, path), beast::system_error);
 }
 
 TEST(Cosim, AnIdleClientTimesOut) {
@@ -189,7 +189,7 @@ TEST(Cosim, AnIdleClientTimesOut) {
   config.sim_idle_s = 1;
   Daemon d(config);
   const Json created = d.post("/api/v1/cosim", request(), 201);
-  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  CosimClient c(d.ws_port, created["ws_url"].get<std::string>());
   c.read();
   c.read();
   auto m = c.read(5000ms);
@@ -201,7 +201,7 @@ TEST(Cosim, AnIdleClientTimesOut) {
 TEST(Cosim, RealTimeHoldsTheLastCommandAndCountsLateness) {
   Daemon d;
   const Json created = d.post("/api/v1/cosim", request({{"mode", "realtime"}, {"rate_hz", 20}}), 201);
-  Client c(d.ws_port, created["ws_url"].get<std::string>());
+  CosimClient c(d.ws_port, created["ws_url"].get<std::string>());
   c.read();
   c.read();
   c.send(step(1, 1.0));

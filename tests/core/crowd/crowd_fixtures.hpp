@@ -26,6 +26,13 @@ inline RunnerOptions options(std::uint64_t seed, unsigned threads = 1, std::file
   return o;
 }
 
+// A program from its JSON text; a failed test when it does not read.
+inline Program program(const char* text) {
+  auto p = program_from_text(text);
+  EXPECT_TRUE(p) << p.error().message();
+  return *p;
+}
+
 inline std::string read(const std::filesystem::path& p) {
   std::ifstream in(p);
   std::ostringstream s;

@@ -32,10 +32,6 @@ AgentId add(CrowdSimulation& sim, Vec2 p, Vec2 v = {}, double speed = 1.3, std::
 
 constexpr double kAdultRadius = 0.23;  // the default role's body radius
 
-double norm(Vec2 v) {
-  return std::hypot(v.x, v.y);
-}
-
 // A crowd for determinism and reference checks: random positions in a walled 20×20 m room with
 // two inner walls, groups of 3, goals across the room.
 CrowdSimulation busy_room(std::size_t n, unsigned threads, std::uint64_t seed) {

@@ -22,12 +22,6 @@ world::World corridor() {
   return *w;
 }
 
-Program program(const char* text) {
-  auto p = program_from_text(text);
-  EXPECT_TRUE(p) << p.error().message();
-  return *p;
-}
-
 RobotSpec robot_at(Pose2 start, std::optional<Goal> goal, Presence presence = Presence::kVisible) {
   RobotSpec r;
   r.start = start;
@@ -54,7 +48,7 @@ const char* kEmpty = R"({"name": "empty", "agents": []})";
 
 TEST(Episode, StraightToTheGoalSucceeds) {
   const world::World w = corridor();
-  auto e = episode(w, program(kEmpty), {robot_at({2, 1.5, 0}, Goal{{8, 1.5}, 0.5})});
+  auto e = episode(w, fixtures::program(kEmpty), {robot_at({2, 1.5, 0}, Goal{{8, 1.5}, 0.5})});
   drive(*e, {1.0, 0.0}, 400);
   ASSERT_TRUE(e->ended());
   EXPECT_EQ(e->results()[0].outcome, Outcome::kSuccess);
@@ -69,7 +63,8 @@ TEST(Episode, StraightToTheGoalSucceeds) {
 
 TEST(Episode, DrivingIntoTheWallIsAWallCollision) {
   const world::World w = corridor();
-  auto e = episode(w, program(kEmpty), {robot_at({5, 1.5, std::numbers::pi / 2}, Goal{{15, 1.5}, 0.5})});
+  auto e =
+      episode(w, fixtures::program(kEmpty), {robot_at({5, 1.5, std::numbers::pi / 2}, Goal{{15, 1.5}, 0.5})});
   drive(*e, {1.0, 0.0}, 400);
   EXPECT_EQ(e->results()[0].outcome, Outcome::kCollisionWall);
 }
@@ -79,11 +74,11 @@ TEST(Episode, StandingStillIsStuckAndCirclingTimesOut) {
   EpisodeOptions eo;
   eo.stuck_time = 2.0;
   eo.time_limit = 5.0;
-  auto still = episode(w, program(kEmpty), {robot_at({5, 1.5, 0}, Goal{{15, 1.5}, 0.5})}, eo);
+  auto still = episode(w, fixtures::program(kEmpty), {robot_at({5, 1.5, 0}, Goal{{15, 1.5}, 0.5})}, eo);
   drive(*still, {0.0, 0.0}, 400);
   EXPECT_EQ(still->results()[0].outcome, Outcome::kStuck);
   EXPECT_NEAR(*still->results()[0].end_time, 2.0, 1e-9);
-  auto circling = episode(w, program(kEmpty), {robot_at({5, 1.5, 0}, Goal{{15, 1.5}, 0.5})}, eo);
+  auto circling = episode(w, fixtures::program(kEmpty), {robot_at({5, 1.5, 0}, Goal{{15, 1.5}, 0.5})}, eo);
   drive(*circling, {0.5, 1.0}, 400);
   EXPECT_EQ(circling->results()[0].outcome, Outcome::kTimeout);
   EXPECT_NEAR(*circling->results()[0].end_time, 5.0, 1e-9);
@@ -98,7 +93,8 @@ const char* kWalker = R"({"name": "encounter", "agents": [
 
 TEST(Episode, DrivingIntoAPersonIsAPersonCollision) {
   const world::World w = corridor();
-  auto e = episode(w, program(kWalker), {robot_at({2, 1.5, 0}, Goal{{18, 1.5}, 0.5}, Presence::kInvisible)});
+  auto e = episode(w, fixtures::program(kWalker),
+                   {robot_at({2, 1.5, 0}, Goal{{18, 1.5}, 0.5}, Presence::kInvisible)});
   drive(*e, {1.0, 0.0}, 400);
   EXPECT_EQ(e->results()[0].outcome, Outcome::kCollisionPerson);
   EXPECT_EQ(e->results()[0].hit, 0u);
@@ -110,7 +106,8 @@ RobotEpisodeMetrics parked(Presence presence) {
   EpisodeOptions eo;
   eo.stuck_time = 100.0;
   eo.time_limit = 14.0;
-  auto e = episode(w, program(kWalker), {robot_at({7, 1.4, 0}, Goal{{18, 1.5}, 0.5}, presence)}, eo);
+  auto e =
+      episode(w, fixtures::program(kWalker), {robot_at({7, 1.4, 0}, Goal{{18, 1.5}, 0.5}, presence)}, eo);
   drive(*e, {0.0, 0.0}, 1000);
   return evaluate_episode(e->log()).robots[0];
 }
@@ -128,7 +125,7 @@ TEST(Episode, PeopleKeepAwayFromAVisibleRobotOnly) {
 TEST(Episode, LogsAreBitIdenticalForTheSameInputs) {
   const world::World w = corridor();
   auto run = [&] {
-    auto e = episode(w, program(kWalker), {robot_at({2, 1.0, 0}, Goal{{18, 1.0}, 0.5})});
+    auto e = episode(w, fixtures::program(kWalker), {robot_at({2, 1.0, 0}, Goal{{18, 1.0}, 0.5})});
     drive(*e, {0.6, 0.05}, 150);
     return e->log().frames;
   };
@@ -137,7 +134,7 @@ TEST(Episode, LogsAreBitIdenticalForTheSameInputs) {
 
 TEST(Episode, BadInputsAreRejectedWithoutTakingTheStep) {
   const world::World w = corridor();
-  auto e = episode(w, program(kEmpty), {robot_at({5, 1.5, 0}, Goal{{15, 1.5}, 0.5})});
+  auto e = episode(w, fixtures::program(kEmpty), {robot_at({5, 1.5, 0}, Goal{{15, 1.5}, 0.5})});
   auto expect_error = [&](RobotInput in, const std::string& pointer) {
     auto s = e->step(std::span(&in, 1));
     ASSERT_FALSE(s);
@@ -161,7 +158,7 @@ TEST(Episode, BadInputsAreRejectedWithoutTakingTheStep) {
 
 TEST(Episode, TheProgramRobotIsTheDefaultAndRobotsAreCounted) {
   const world::World w = corridor();
-  const Program p = program(R"({"name": "r", "agents": [],
+  const Program p = fixtures::program(R"({"name": "r", "agents": [],
     "robot": {"position": [2, 1.5], "speed": 0.8, "goals": [[10, 1.5]]}})");
   auto e = Episode::create(&w, p, fixtures::options(1), {});
   ASSERT_TRUE(e) << e.error().message();
@@ -170,14 +167,14 @@ TEST(Episode, TheProgramRobotIsTheDefaultAndRobotsAreCounted) {
   EXPECT_EQ((*e)->robots()[0].goal->position, (Vec2{10, 1.5}));
   EXPECT_DOUBLE_EQ((*e)->robots()[0].limits.max_speed, 0.8);
 
-  auto none = Episode::create(&w, program(kEmpty), fixtures::options(1), {});
+  auto none = Episode::create(&w, fixtures::program(kEmpty), fixtures::options(1), {});
   ASSERT_FALSE(none);
   EXPECT_EQ(none.error().errors[0].pointer, "/robots");
   RunnerOptions many = fixtures::options(1);
   for (int k = 0; k < 3; ++k) many.robots.push_back(robot_at({2.0 + k, 1.5, 0}, std::nullopt));
   EpisodeOptions two;
   two.max_robots = 2;
-  auto too_many = Episode::create(&w, program(kEmpty), many, two);
+  auto too_many = Episode::create(&w, fixtures::program(kEmpty), many, two);
   ASSERT_FALSE(too_many);
   EXPECT_NE(too_many.error().message().find("too many robots"), std::string::npos);
 }

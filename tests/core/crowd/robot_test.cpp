@@ -124,14 +124,8 @@ TEST(RobotDriven, BadDrivenStatesAreRejected) {
   EXPECT_DOUBLE_EQ(sim.yaw(a), 0.5);
 }
 
-Program program(const char* text) {
-  auto p = program_from_text(text);
-  EXPECT_TRUE(p) << p.error().message();
-  return *p;
-}
-
 TEST(RobotDriven, BehaviourNodesSeeTheFirstVisibleRobot) {
-  const Program p = program(R"({"name": "t", "agents": [{"name": "a", "position": [0, 0]}]})");
+  const Program p = fixtures::program(R"({"name": "t", "agents": [{"name": "a", "position": [0, 0]}]})");
   RunnerOptions o = fixtures::options(1);
   o.robots.push_back(RobotSpec{"ghost", {2.0, 0.0, 0.0}, std::nullopt, 0.35, Presence::kInvisible, {}});
   o.robots.push_back(RobotSpec{"seen", {3.0, 0.0, 0.0}, std::nullopt, 0.35, Presence::kVisible, {}});
