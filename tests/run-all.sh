@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# Installs what is needed, builds, and runs every test, in two phases:
-# - preset ci: GCC Debug build (line tables only); every test except those labelled heavy.
-# - preset asan: clang 14, -O1, ASan + UBSan (LeakSanitizer on, every UBSan report fatal), with
-#   SOCSIM_FUZZ: the whole suite including the heavy tests (the slow generator and property sweeps,
-#   CTest label heavy, socsim_test HEAVY in tests/CMakeLists.txt: run once, here, where -O1 makes
-#   them 2-3x faster), and each libFuzzer target replaying its seeds (fuzz_replay.<target>) then
-#   fuzzing for SOCSIM_FUZZ_SECONDS (default 10; fuzz.<target>). So every test runs in one phase or
-#   both, and CI builds with both compilers.
+# Installs what is needed, builds with two compilers, and runs every test once:
+# - preset ci (GCC, Debug, unity batches): the daemon and CLI with every core module, built with
+#   -Wall -Wextra -Werror, so the compiler of the README's install command sees all product code;
+# - preset asan (clang 14, -O1, ASan + UBSan, LeakSanitizer on, every UBSan report fatal, with
+#   SOCSIM_FUZZ): the whole suite, heavy tests included (CTest label heavy, socsim_test HEAVY in
+#   tests/CMakeLists.txt), the end-to-end tests against the sanitized daemon, and each libFuzzer
+#   target replaying its seeds (fuzz_replay.<target>) then fuzzing for SOCSIM_FUZZ_SECONDS
+#   (default 10; fuzz.<target>). Test code itself is compiled without instrumentation
+#   (cmake/warnings.cmake); the code under test is instrumented.
+# Developers: `cmake --preset dev && cmake --build --preset dev && ctest --preset dev` runs the
+# suite without sanitizers; `ctest --preset ci` does so on the CI's GCC build.
 # tests/fuzz/run.sh is for longer local libFuzzer runs (preset fuzz, build/fuzz).
 # Used by README and by .ci/run. Each phase prints its wall time (docs/PERFORMANCE.md, CI time).
 set -euo pipefail
@@ -20,16 +23,13 @@ bash deploy/install-deps.sh --with-browser
 bash tests/check-format.sh
 
 jobs=$(nproc 2>/dev/null || echo 2)
-for preset in ci asan; do
-  phase "${preset}: configure and build"
-  if [[ $preset == asan ]]; then
-    cmake --preset "$preset" -DSOCSIM_FUZZ_SECONDS="${SOCSIM_FUZZ_SECONDS:-10}" >/dev/null
-  else
-    cmake --preset "$preset" >/dev/null
-  fi
-  cmake --build --preset "$preset" -j "$jobs"
-  phase "${preset}: test"
-  ctest --preset "$preset" -j "$jobs"
-done
+phase "ci: configure and build the daemon with GCC"
+cmake --preset ci >/dev/null
+cmake --build --preset ci -j "$jobs" --target socsim
+phase "asan: configure and build"
+cmake --preset asan -DSOCSIM_FUZZ_SECONDS="${SOCSIM_FUZZ_SECONDS:-10}" >/dev/null
+cmake --build --preset asan -j "$jobs"
+phase "asan: test"
+ctest --preset asan -j "$jobs"
 phase "done"
 command -v ccache >/dev/null && ccache -s | grep -E 'Hits|Misses' || true

@@ -74,10 +74,6 @@ class Writer {
       : world_(w), program_(p), env_(runner.environment()), routes_(agent_routes(runner, p)) {}
 
   Result<std::string> write(const PedsimExportOptions& options) {
-    auto base = world::parse_xml(world::export_pedsim(world_));
-    if (!base)
-      return fail(ErrorCode::kInternal,
-                  "the world's pedsim export does not read back: " + base.error().detail);
     // Places that routes walk to: those ROIs must be waypoints even when they could be attractions.
     std::map<std::string, double> lingering;  // attraction → largest chance of lingering there
     for (const AgentRoute& r : routes_) {
@@ -87,8 +83,9 @@ class Writer {
           lingering[s.place] = std::max(lingering[s.place], s.probability);
       }
     }
-    for (const auto& e : base->children)
-      if (const std::string* id = e.attribute("id")) used_.insert(*id);
+    // The world export names a waypoint, queue or attraction after every ROI and entity.
+    for (const world::Roi& roi : world_.rois()) used_.insert(roi.name);
+    for (const world::Entity& e : world_.entities()) used_.insert(e.name);
 
     std::ostringstream rois;
     std::ostringstream attractions;
@@ -130,12 +127,10 @@ class Writer {
     o << "<!-- exported by socsim: world '" << xml_escape(world_.name()) << "', program '"
       << xml_escape(program_.name) << "', seed " << options.seed << " -->\n<scenario>\n";
     o << "  <!--Obstacles-->\n";
-    for (const auto& e : base->children)
-      if (e.name == "obstacle") element(o, e);
+    for (const auto& w : world::pedsim_obstacles(world_)) o << world::pedsim_element(w);
     o << "  <!--Waypoints-->\n" << rois.str();
     o << "  <!--Queues-->\n";
-    for (const auto& e : base->children)
-      if (e.name == "queue") element(o, e);
+    for (const auto& q : world::pedsim_queues(world_)) o << world::pedsim_element(q);
     o << "  <!--Attractions-->\n" << attractions.str();
     o << "  <!--Agents-->\n" << agents.str();
     o << "</scenario>\n";
@@ -144,12 +139,6 @@ class Writer {
 
  private:
   [[nodiscard]] Point P(Point p) const { return geometry::to_parent(world_.origin(), p); }
-
-  static void element(std::ostringstream& o, const world::XmlElement& e) {
-    o << "  <" << e.name;
-    for (const auto& [k, v] : e.attributes) o << " " << k << "=\"" << xml_escape(v) << "\"";
-    o << "/>\n";
-  }
 
   void waypoint(std::ostringstream& o, const std::string& id, Point c, double r) {
     const Point p = P(c);

@@ -55,6 +55,39 @@ Lane lane_axis(const World& world, const Polygon& poly) {
 
 }  // namespace
 
+std::vector<PedsimObstacle> pedsim_obstacles(const World& world) {
+  std::vector<PedsimObstacle> out;
+  out.reserve(world.walls().size());
+  for (const auto& w : world.walls())
+    out.push_back(
+        {geometry::to_parent(world.origin(), w.segment.a), geometry::to_parent(world.origin(), w.segment.b)});
+  return out;
+}
+
+std::vector<PedsimQueue> pedsim_queues(const World& world) {
+  std::vector<PedsimQueue> out;
+  for (const auto& r : world.rois()) {
+    if (r.kind != "queue_lane") continue;
+    const Lane lane = lane_axis(world, r.polygon);
+    const Point head = geometry::to_parent(world.origin(), lane.head);
+    const Point tail = geometry::to_parent(world.origin(), lane.tail);
+    double deg = std::atan2(tail.y - head.y, tail.x - head.x) * 180.0 / std::numbers::pi;
+    if (deg < 0) deg += 360.0;
+    out.push_back({r.name, head, deg, 0});
+  }
+  return out;
+}
+
+std::string pedsim_element(const PedsimObstacle& o) {
+  return "  <obstacle x1=\"" + micro(o.a.x) + "\" y1=\"" + micro(o.a.y) + "\" x2=\"" + micro(o.b.x) +
+         "\" y2=\"" + micro(o.b.y) + "\"/>\n";
+}
+
+std::string pedsim_element(const PedsimQueue& q) {
+  return "  <queue id=\"" + xml_escape(q.id) + "\" x=\"" + micro(q.position.x) + "\" y=\"" +
+         micro(q.position.y) + "\" direction=\"" + micro(q.direction_deg) + "\"/>\n";
+}
+
 std::string export_pedsim(const World& world) {
   const Pose2& origin = world.origin();
   auto P = [&](Point p) { return geometry::to_parent(origin, p); };
@@ -62,12 +95,7 @@ std::string export_pedsim(const World& world) {
   o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   o << "<!-- exported by socsim from world '" << xml_escape(world.name()) << "' -->\n<scenario>\n";
   o << "  <!--Obstacles-->\n";
-  for (const auto& w : world.walls()) {
-    const Point a = P(w.segment.a);
-    const Point b = P(w.segment.b);
-    o << "  <obstacle x1=\"" << micro(a.x) << "\" y1=\"" << micro(a.y) << "\" x2=\"" << micro(b.x)
-      << "\" y2=\"" << micro(b.y) << "\"/>\n";
-  }
+  for (const PedsimObstacle& w : pedsim_obstacles(world)) o << pedsim_element(w);
   o << "  <!--Waypoints-->\n";
   for (const auto& r : world.rois()) {
     // Queue lanes are queues and seating or waiting areas attractions (one element per id, as
@@ -84,16 +112,7 @@ std::string export_pedsim(const World& world) {
       << "\" r=\"1\"/>\n";
   }
   o << "  <!--Queues-->\n";
-  for (const auto& r : world.rois()) {
-    if (r.kind != "queue_lane") continue;
-    const Lane lane = lane_axis(world, r.polygon);
-    const Point head = P(lane.head);
-    const Point tail = P(lane.tail);
-    double deg = std::atan2(tail.y - head.y, tail.x - head.x) * 180.0 / std::numbers::pi;
-    if (deg < 0) deg += 360.0;
-    o << "  <queue id=\"" << xml_escape(r.name) << "\" x=\"" << micro(head.x) << "\" y=\"" << micro(head.y)
-      << "\" direction=\"" << micro(deg) << "\"/>\n";
-  }
+  for (const PedsimQueue& q : pedsim_queues(world)) o << pedsim_element(q);
   o << "  <!--Attractions-->\n";
   for (const auto& r : world.rois()) {
     if (r.kind != "seating_area" && r.kind != "waiting_zone") continue;

@@ -4,6 +4,7 @@
 // SVG places the world at its origin pose (world.origin()).
 #include <string>
 
+#include "core/world/pedsim_import.hpp"
 #include "core/world/world.hpp"
 
 namespace socsim::world {
@@ -42,5 +43,18 @@ RosMap export_ros_map(const World& world, const RosMapOptions& options = {});
 // along the lane), <attraction> per seating_area or waiting_zone ROI (bounding box, strength 1). No agents:
 // those belong to the scenario.
 std::string export_pedsim(const World& world);
+
+// The walls and queues of export_pedsim as values in the parent frame (a queue as the importer
+// reads it: pedsim_import.hpp), so the scenario export
+// (core/interop/export_pedsim_scenario.cpp) writes them without reading its own output back.
+struct PedsimObstacle {
+  Point a;
+  Point b;
+};
+std::vector<PedsimObstacle> pedsim_obstacles(const World& world);
+std::vector<PedsimQueue> pedsim_queues(const World& world);
+// One element as export_pedsim writes it (two spaces of indent, a newline after).
+std::string pedsim_element(const PedsimObstacle& o);
+std::string pedsim_element(const PedsimQueue& q);
 
 }  // namespace socsim::world
