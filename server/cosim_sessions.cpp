@@ -183,7 +183,7 @@ Result<CosimSettings> cosim_settings_from_json(const Json& body, const CosimLimi
   std::vector<FieldError> errors;
   CosimSettings s;
   if (!body.is_object())
-    return fail(ErrorCode::kValidation, "the body is an object", {{"", "must be an object"}});
+    return fail(ErrorCode::kValidation, "the body must be a JSON object", {{"", "must be an object"}});
   Reader r(body, "", errors);
   if (r.has("seed")) {
     if (!body["seed"].is_number_unsigned())
@@ -202,7 +202,7 @@ Result<CosimSettings> cosim_settings_from_json(const Json& body, const CosimLimi
   }
   if (auto hz = r.number("rate_hz")) {
     if (!(*hz >= 1.0 && *hz <= limits.max_rate_hz))
-      errors.push_back({"/rate_hz", "must be in [1, " + std::to_string(limits.max_rate_hz) + "]"});
+      errors.push_back({"/rate_hz", "must be in [1, " + Json(limits.max_rate_hz).dump() + "] Hz"});
     else
       s.rate_hz = *hz;
   }

@@ -23,7 +23,8 @@ Json cosim_with_urls(RouteContext& ctx, const Request& req, Json status) {
 Result<std::shared_ptr<CosimSession>> start_cosim(RouteContext& ctx, const Json& body,
                                                   const std::string& author) {
   if (!body.is_object())
-    return fail(ErrorCode::kValidation, "the body is an object", {FieldError{"", "must be an object"}});
+    return fail(ErrorCode::kValidation, "the body must be a JSON object",
+                {FieldError{"", "must be an object"}});
   std::vector<FieldError> errors;
   for (const auto& [key, v] : body.items())
     if (key != "program" && key != "world" && key != "world_id" && key != "card_id" && key != "seed" &&

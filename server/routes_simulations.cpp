@@ -34,7 +34,7 @@ Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, cons
                                                          const std::string& author) {
   if (!body.is_object())
     return tl::unexpected(
-        field_error(ErrorCode::kValidation, "the body is an object", "", "must be an object"));
+        field_error(ErrorCode::kValidation, "the body must be a JSON object", "", "must be an object"));
   std::vector<FieldError> errors;
   auto add = [&](const std::string& pointer, const std::string& message) {
     errors.push_back({pointer, message});
