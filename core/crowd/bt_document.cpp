@@ -115,7 +115,13 @@ class Loader {
       if (root.error().errors.empty()) error(file, 0, 0, root.error().detail);
       return false;
     }
-    documents_.push_back(std::make_unique<XmlElement>(std::move(*root)));
+    return read_element(std::move(*root), file, dir, depth, main_out);
+  }
+
+  // The same for a document already held as elements (built in code, never written out).
+  bool read_element(XmlElement root, const std::string& file, const std::filesystem::path& dir, int depth,
+                    std::string* main_out) {
+    documents_.push_back(std::make_unique<XmlElement>(std::move(root)));
     const XmlElement& r = *documents_.back();
     if (r.name != "root") {
       error(file, r.line, r.column, "the document element must be <root>, not <" + r.name + ">");
@@ -555,6 +561,18 @@ Result<BtDocument> BtDocument::parse(std::string_view xml, const BtRegistry& reg
   Loader loader(registry, options);
   auto impl = std::make_shared<Impl>();
   loader.read_root(xml, "", options.base_dir, 0, &impl->main);
+  if (loader.ok()) loader.build(*impl);
+  if (!loader.ok()) return tl::unexpected(loader.failure());
+  BtDocument doc;
+  doc.impl_ = std::move(impl);
+  return doc;
+}
+
+Result<BtDocument> BtDocument::from_element(world::XmlElement root, const BtRegistry& registry,
+                                            const BtLoadOptions& options) {
+  Loader loader(registry, options);
+  auto impl = std::make_shared<Impl>();
+  loader.read_element(std::move(root), "", options.base_dir, 0, &impl->main);
   if (loader.ok()) loader.build(*impl);
   if (!loader.ok()) return tl::unexpected(loader.failure());
   BtDocument doc;

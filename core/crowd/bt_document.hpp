@@ -65,6 +65,9 @@ class BtDocument {
   // the line and column and its message starts with "<file>:<line>: ".
   static Result<BtDocument> parse(std::string_view xml, const BtRegistry& registry,
                                   const BtLoadOptions& options = {});
+  // A document built in code as elements (the same checks as parse, lines are 0).
+  static Result<BtDocument> from_element(world::XmlElement root, const BtRegistry& registry,
+                                         const BtLoadOptions& options = {});
   static Result<BtDocument> load(const std::filesystem::path& file, const BtRegistry& registry,
                                  BtLoadOptions options = {});
 

@@ -1,7 +1,9 @@
 #include "core/crowd/scenario_runner.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <functional>
 #include <unordered_map>
 
 #include "core/common/rng.hpp"
@@ -25,11 +27,30 @@ constexpr const char* kRegularNavigation = R"(<root BTCPP_format="4" main_tree_t
   </BehaviorTree>
 </root>)";
 
-std::string ambient_tree(const std::string& field, double tolerance) {
-  return R"(<root BTCPP_format="4" main_tree_to_execute="Ambient"><BehaviorTree ID="Ambient">)"
-         R"(<FollowVelocityField agent_id="{id}" time_step="{dt}" field=")" +
-         world::xml_escape(field) + R"(" tolerance=")" + std::to_string(tolerance) +
-         R"("/></BehaviorTree></root>)";
+std::string shortest_decimal(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+// An ambient agent's tree: follow its group's velocity field. Built as elements from the typed
+// group (the tolerance in its shortest exact decimal form), never written out as text.
+world::XmlElement ambient_tree(const std::string& field, double tolerance) {
+  world::XmlElement follow;
+  follow.name = "FollowVelocityField";
+  follow.attributes = {{"agent_id", "{id}"},
+                       {"time_step", "{dt}"},
+                       {"field", field},
+                       {"tolerance", shortest_decimal(tolerance)}};
+  world::XmlElement tree;
+  tree.name = "BehaviorTree";
+  tree.attributes = {{"ID", "Ambient"}};
+  tree.children.push_back(std::move(follow));
+  world::XmlElement root;
+  root.name = "root";
+  root.attributes = {{"BTCPP_format", "4"}, {"main_tree_to_execute", "Ambient"}};
+  root.children.push_back(std::move(tree));
+  return root;
 }
 
 // Prefixes every field error of `e` with the program pointer (keeps XML lines and columns).
@@ -230,6 +251,8 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
   run->registry_ = std::make_unique<BtRegistry>(behavior_registry(env));
   const BtLoadOptions load = behavior_load_options(env, options.base_dir);
   std::map<std::string, std::size_t> named;
+  std::function<std::optional<std::pair<std::size_t, std::string>>(Result<BtDocument>, const ProgramTree&)>
+      add_document;
   auto load_tree = [&](const ProgramTree& t) -> std::optional<std::pair<std::size_t, std::string>> {
     if (!t.ref.empty()) {
       auto it = named.find(t.ref);
@@ -239,9 +262,12 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       }
       return std::pair{it->second, std::string()};
     }
-    Result<BtDocument> doc = !t.xml.empty()
-                                 ? BtDocument::parse(t.xml, *run->registry_, load)
-                                 : BtDocument::load(options.base_dir / t.file, *run->registry_, load);
+    return add_document(!t.xml.empty() ? BtDocument::parse(t.xml, *run->registry_, load)
+                                       : BtDocument::load(options.base_dir / t.file, *run->registry_, load),
+                        t);
+  };
+  add_document = [&](Result<BtDocument> doc,
+                     const ProgramTree& t) -> std::optional<std::pair<std::size_t, std::string>> {
     if (!doc) {
       b.error(doc.error(), t.pointer);
       return std::nullopt;
@@ -338,9 +364,10 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
     }
     const RoleParameters& rp = roles.at(*role);
     std::optional<std::pair<std::size_t, std::string>> tree =
-        group.behavior
-            ? load_tree(*group.behavior)
-            : load_tree(ProgramTree{ambient_tree(group.name, group.tolerance), {}, {}, {}, group.pointer});
+        group.behavior ? load_tree(*group.behavior)
+                       : add_document(BtDocument::from_element(ambient_tree(group.name, group.tolerance),
+                                                               *run->registry_, load),
+                                      ProgramTree{{}, {}, {}, {}, group.pointer});
     if (!b.ok()) continue;
     for (std::size_t k = 0; k < group.size; ++k) {
       const auto p = b.spawn(starts[g], rp.radius, s);

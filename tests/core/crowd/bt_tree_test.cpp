@@ -452,5 +452,38 @@ TEST_F(BtTreeTest, LoadErrorsNameTheLineAndTheProblem) {
       registry));
 }
 
+TEST_F(BtTreeTest, DocumentsBuiltAsElementsAreCheckedLikeParsedOnes) {
+  auto element = [](std::string name, std::vector<std::pair<std::string, std::string>> attributes,
+                    std::vector<world::XmlElement> children = {}) {
+    world::XmlElement e;
+    e.name = std::move(name);
+    e.attributes = std::move(attributes);
+    e.children = std::move(children);
+    return e;
+  };
+  auto document = [&](world::XmlElement body) {
+    return element("root", {{"BTCPP_format", "4"}, {"main_tree_to_execute", "T"}},
+                   {element("BehaviorTree", {{"ID", "T"}}, {std::move(body)})});
+  };
+  auto doc =
+      BtDocument::from_element(document(element("Sequence", {{"name", "seq"}},
+                                                {element("Check", {{"name", "c"}, {"result", "SUCCESS"}}),
+                                                 element("Async", {{"name", "act"}, {"ticks", "1"}})})),
+                               registry);
+  ASSERT_TRUE(doc) << doc.error().message();
+  EXPECT_EQ(doc->main_tree(), "T");
+  BtTree t = doc->instantiate();
+  EXPECT_EQ(t.tick(0.0), kRunning);
+  EXPECT_EQ(t.tick(0.1), kSuccess);
+  EXPECT_EQ(probes["act"].ticks, 2);
+
+  auto bad = BtDocument::from_element(document(element("Async", {{"ticks", "two"}})), registry);
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error().code, ErrorCode::kValidation);
+  EXPECT_THAT(bad.error().detail, HasSubstr("port 'ticks': 'two' is not a valid int"));
+  EXPECT_THAT(BtDocument::from_element(document(element("Asynk", {})), registry).error().detail,
+              HasSubstr("unknown node 'Asynk' (did you mean 'Async'?)"));
+}
+
 }  // namespace
 }  // namespace socsim::crowd
