@@ -155,52 +155,53 @@ void household_routes(Router& http, RouteContext& ctx) {
                    reply_json(res, 201, persona_item(*p, false));
                  });
 
-  post_with_body(http, "/api/v1/personas/generate", max_body,
-                 [&ctx](const Request& req, Response& res, const std::string& text) {
-                   auto body = json_body(text);
-                   if (!body) return reply_problem(res, body.error(), req.path);
-                   auto parsed = hh::persona_generate_request_from_json(*body);
-                   if (!parsed) return reply_problem(res, parsed.error(), req.path);
-                   if (auto s = ctx.check_model(parsed->model); !s)
-                     return reply_problem(res, s.error(), req.path);
-                   const hh::PersonaRequest& request = parsed->personas;
-                   const std::string generator = parsed->generator;
-                   const bool store = parsed->store;
-                   const std::optional<std::string> model = parsed->model;
-                   auto existing = all_personas(ctx.store);
-                   if (!existing) return reply_problem(res, existing.error(), req.path);
+  post_with_body(
+      http, "/api/v1/personas/generate", max_body,
+      [&ctx, state](const Request& req, Response& res, const std::string& text) {
+        auto body = json_body(text);
+        if (!body) return reply_problem(res, body.error(), req.path);
+        auto parsed = hh::persona_generate_request_from_json(*body);
+        if (!parsed) return reply_problem(res, parsed.error(), req.path);
+        if (auto s = ctx.check_model(parsed->model); !s) return reply_problem(res, s.error(), req.path);
+        const hh::PersonaRequest& request = parsed->personas;
+        const std::string generator = parsed->generator;
+        const bool store = parsed->store;
+        const std::optional<std::string> model = parsed->model;
+        auto existing = all_personas(ctx.store);
+        if (!existing) return reply_problem(res, existing.error(), req.path);
 
-                   auto finish = [&ctx, store](std::vector<hh::Persona> personas) -> Result<Json> {
-                     Json items = Json::array();
-                     for (const auto& p : personas) {
-                       if (store)
-                         if (auto s = hh::store_persona(ctx.store, p); !s) return tl::unexpected(s.error());
-                       items.push_back(persona_item(p, false));
-                     }
-                     return Json{{"personas", items}, {"stored", store}};
-                   };
-                   if (generator == "offline") {
-                     auto personas = hh::generate_personas_offline(request, *existing);
-                     if (!personas) return reply_problem(res, personas.error(), req.path);
-                     auto out = finish(std::move(*personas));
-                     if (!out) return reply_problem(res, out.error(), req.path);
-                     return reply_json(res, store ? 201 : 200, *out);
-                   }
-                   if (auto s = ctx.llm_available(); !s) return reply_problem(res, s.error(), req.path);
-                   const hh::PersonaRequest r = request;
-                   auto id = ctx.jobs.submit(
-                       "personas", *body, ctx.author(req),
-                       [&ctx, r, model, finish, existing = *existing](const JobContext& job) -> Result<Json> {
-                         llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
-                         job.progress(0.0, "asking the LLM for " + std::to_string(r.count) + " personas");
-                         auto personas =
-                             hh::generate_personas_llm(r, existing, llm_settings(ctx, gen, job, model));
-                         if (!personas) return tl::unexpected(personas.error());
-                         return finish(std::move(*personas));
-                       },
-                       ctx.client(req));
-                   ctx.reply_job_accepted(res, id, req.path);
-                 });
+        auto finish = [&ctx, store](std::vector<hh::Persona> personas) -> Result<Json> {
+          Json items = Json::array();
+          for (const auto& p : personas) {
+            if (store)
+              if (auto s = hh::store_persona(ctx.store, p); !s) return tl::unexpected(s.error());
+            items.push_back(persona_item(p, false));
+          }
+          return Json{{"personas", items}, {"stored", store}};
+        };
+        if (generator == "offline") {
+          auto knowledge = state->knowledge();
+          if (!knowledge) return reply_problem(res, knowledge.error(), req.path);
+          auto personas = hh::generate_personas_offline(request, *existing, (*knowledge)->persona_parts);
+          if (!personas) return reply_problem(res, personas.error(), req.path);
+          auto out = finish(std::move(*personas));
+          if (!out) return reply_problem(res, out.error(), req.path);
+          return reply_json(res, store ? 201 : 200, *out);
+        }
+        if (auto s = ctx.llm_available(); !s) return reply_problem(res, s.error(), req.path);
+        const hh::PersonaRequest r = request;
+        auto id = ctx.jobs.submit(
+            "personas", *body, ctx.author(req),
+            [&ctx, r, model, finish, existing = *existing](const JobContext& job) -> Result<Json> {
+              llm::StructuredGenerator gen(*ctx.llm, &ctx.store);
+              job.progress(0.0, "asking the LLM for " + std::to_string(r.count) + " personas");
+              auto personas = hh::generate_personas_llm(r, existing, llm_settings(ctx, gen, job, model));
+              if (!personas) return tl::unexpected(personas.error());
+              return finish(std::move(*personas));
+            },
+            ctx.client(req));
+        ctx.reply_job_accepted(res, id, req.path);
+      });
 
   // ---- households ----
   post_with_body(

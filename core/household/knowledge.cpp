@@ -304,6 +304,14 @@ Result<HouseholdKnowledge> load_household_knowledge(store::Store& store) {
           return {};
         });
     if (!s) return tl::unexpected(s.error());
+    s = for_rows(db, "SELECT kind, name, body FROM household_persona_parts ORDER BY position",
+                 [&](store::Statement& st) -> Status {
+                   auto body = parse_body(st.text(2), "household_persona_parts/" + st.text(1));
+                   if (!body) return tl::unexpected(body.error());
+                   return add_persona_part(k.persona_parts, st.text(0), st.text(1), *body);
+                 });
+    if (!s) return tl::unexpected(s.error());
+    if (s = check_persona_parts(k.persona_parts); !s) return tl::unexpected(s.error());
     if (k.activities.empty() || k.receptacles.empty())
       return fail(ErrorCode::kStore,
                   "household knowledge tables are empty: the store is missing migrations 0020–0023");

@@ -11,6 +11,7 @@
 
 #include "core/common/error.hpp"
 #include "core/household/persona.hpp"
+#include "core/household/persona_generator.hpp"
 #include "core/household/types.hpp"
 #include "core/store/store.hpp"
 
@@ -123,6 +124,7 @@ struct HouseholdKnowledge {
   std::array<RoomProgram, kRoomTypeCount> room_programs;
   std::vector<std::string> movable_types;  // sorted
   std::vector<std::string> fixture_types;  // sorted
+  PersonaParts persona_parts;              // what new personas are composed from
 
   [[nodiscard]] const ActivitySpec* activity(std::string_view primary_name) const;
   [[nodiscard]] int activity_index(std::string_view primary_name) const;  // -1 when unknown

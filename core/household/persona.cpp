@@ -339,6 +339,12 @@ std::string_view work_pattern_name(WorkPattern pattern) {
   return "commute";
 }
 
+std::optional<WorkPattern> parse_work_pattern(std::string_view name) {
+  for (int i = 0; i <= static_cast<int>(WorkPattern::kJobSeeker); ++i)
+    if (work_pattern_name(static_cast<WorkPattern>(i)) == name) return static_cast<WorkPattern>(i);
+  return std::nullopt;
+}
+
 bool mentions(const PersonaTraits& traits, std::string_view phrase) {
   return contains_phrase(traits.text, lower(phrase));
 }

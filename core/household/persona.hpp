@@ -4,7 +4,9 @@
 // free text (sleep times, work pattern and days, tidiness, interests).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/common/error.hpp"
@@ -47,6 +49,7 @@ enum class WorkPattern : std::uint8_t {
   kJobSeeker,
 };
 std::string_view work_pattern_name(WorkPattern pattern);
+std::optional<WorkPattern> parse_work_pattern(std::string_view name);  // "night_shift" → kNightShift
 
 // Minutes after 00:00; bedtimes after midnight are ≥ 1440.
 struct SleepTimes {

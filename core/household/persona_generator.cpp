@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <set>
+#include <stdexcept>
+#include <tuple>
 
 #include "core/common/json_check.hpp"
 #include "core/common/rng.hpp"
@@ -11,696 +13,14 @@
 namespace socsim::household {
 namespace {
 
-// ---- curated parts (written for socsim) ----
-
-struct Culture {
-  std::vector<const char*> female, male, surnames;
-};
-
-const std::vector<Culture>& cultures() {
-  static const std::vector<Culture> all = {
-      {{"Ingrid", "Solveig", "Astrid", "Liv", "Karin", "Freja", "Sigrid", "Maja"},
-       {"Erik", "Lars", "Nils", "Magnus", "Henrik", "Anders", "Sven", "Jonas"},
-       {"Lindgren", "Bergstrom", "Dahl", "Nyberg", "Sandvik", "Aasen", "Holmberg", "Eklund"}},
-      {{"Giulia", "Francesca", "Chiara", "Elena", "Marta", "Lucia", "Sofia", "Carla"},
-       {"Marco", "Luca", "Paolo", "Giorgio", "Matteo", "Enzo", "Stefano", "Davide"},
-       {"Rossi", "Esposito", "Conti", "Marino", "Greco", "Lombardi", "Ferri", "Galli"}},
-      {{"Adaeze", "Chiamaka", "Ngozi", "Amina", "Folake", "Yetunde", "Efua", "Akosua"},
-       {"Chinedu", "Emeka", "Tunde", "Kwame", "Kofi", "Yaw", "Olumide", "Babajide"},
-       {"Okonkwo", "Adeyemi", "Nwosu", "Boateng", "Asante", "Owusu", "Eze", "Balogun"}},
-      {{"Mei", "Xiu", "Lan", "Jing", "Yan", "Hui", "Ling", "Fang"},
-       {"Wei", "Jun", "Hao", "Lei", "Bo", "Ming", "Tao", "Chen"},
-       {"Zhang", "Wang", "Liu", "Huang", "Zhao", "Zhou", "Sun", "Ma"}},
-      {{"Aiko", "Haruka", "Naomi", "Emi", "Rin", "Yui", "Keiko", "Sayaka"},
-       {"Hiroshi", "Takeshi", "Ren", "Daichi", "Kaito", "Shota", "Kenta", "Makoto"},
-       {"Tanaka", "Sato", "Kobayashi", "Yamamoto", "Inoue", "Kimura", "Hayashi", "Shimizu"}},
-      {{"Ananya", "Kavya", "Meera", "Divya", "Lakshmi", "Pooja", "Sunita", "Nisha"},
-       {"Arjun", "Rohan", "Vikram", "Sanjay", "Rahul", "Karthik", "Anil", "Dev"},
-       {"Iyer", "Sharma", "Nair", "Reddy", "Menon", "Patel", "Kapoor", "Joshi"}},
-      {{"Fatima", "Layla", "Yasmin", "Salma", "Rania", "Huda", "Mariam", "Nadia"},
-       {"Karim", "Youssef", "Tariq", "Samir", "Nabil", "Rami", "Bilal", "Khalid"},
-       {"Haddad", "Mansour", "Nasser", "Khoury", "Saleh", "Aziz", "Farouk", "Darwish"}},
-      {{"Camila", "Valentina", "Lucia", "Ximena", "Paula", "Daniela", "Gabriela", "Renata"},
-       {"Diego", "Javier", "Andres", "Santiago", "Emilio", "Tomas", "Pablo", "Joaquin"},
-       {"Gomez", "Herrera", "Castillo", "Rojas", "Vargas", "Mendoza", "Navarro", "Ortega"}},
-      {{"Aleksandra", "Zofia", "Katarzyna", "Agnieszka", "Ewa", "Natalia", "Irena", "Milena"},
-       {"Piotr", "Tomasz", "Marek", "Pawel", "Jakub", "Krzysztof", "Bartek", "Grzegorz"},
-       {"Kowalski", "Wisniewski", "Zielinski", "Lewandowski", "Wojcik", "Kaminski", "Mazur", "Krawczyk"}},
-      {{"Siobhan", "Niamh", "Ciara", "Roisin", "Eileen", "Maeve", "Orla", "Brid"},
-       {"Cian", "Padraig", "Declan", "Eoin", "Ronan", "Fergal", "Seamus", "Donal"},
-       {"Gallagher", "Doherty", "Kennedy", "Byrne", "Walsh", "Quinn", "Regan", "Moran"}},
-      {{"Emily", "Hannah", "Rebecca", "Sarah", "Laura", "Claire", "Megan", "Alice"},
-       {"James", "Thomas", "Daniel", "Oliver", "Samuel", "Peter", "Michael", "Harry"},
-       {"Fletcher", "Barker", "Turner", "Hughes", "Marsh", "Porter", "Webb", "Lawson"}},
-      {{"Ayse", "Elif", "Zeynep", "Derya", "Selin", "Emine", "Gul", "Melike"},
-       {"Mehmet", "Emre", "Burak", "Murat", "Cem", "Onur", "Kerem", "Serkan"},
-       {"Yilmaz", "Demir", "Kaya", "Celik", "Aydin", "Ozturk", "Arslan", "Dogan"}},
-  };
-  return all;
-}
-
-// An occupation with the hours, sleep times and worries that go with it. Text placeholders:
-// {F} first name, {p}/{P} subject pronoun, {pp}/{PP} possessive, {po} object pronoun, {X} a
-// per-occupation variant.
-struct Occupation {
-  const char* key;
-  std::vector<const char*> keywords;  // for the occupation constraint
-  WorkPattern pattern;
-  int min_age, max_age;
-  std::vector<const char*> variants;  // {X}
-  const char* text;
-  int bed_lo, bed_hi, wake_lo, wake_hi;  // minutes after 00:00; bedtimes after midnight ≥ 1440
-  bool day_sleeper = false;              // night shift: sleeps 8 am – 3 pm after a shift
-  std::vector<const char*> thoughts;
-  const char* habit = "";  // lifestyle phrase tied to the work ("" = none)
-};
-
-const std::vector<Occupation>& occupations() {
-  static const std::vector<Occupation> all = {
-      {"night nurse",
-       {"nurse", "nursing", "hospital", "night shift"},
-       WorkPattern::kNightShift,
-       23,
-       62,
-       {"surgical ward", "maternity ward", "intensive care unit"},
-       "{F} is a nurse on the {X} who works the night shift from 7 pm to 7 am, three nights a week.",
-       1440,
-       1470,
-       450,
-       510,
-       true,
-       {"{F} is studying for a specialist certificate and fits the reading in between shifts.",
-        "{F} wonders whether {p} should move to day shifts before winter comes."},
-       "{P} keeps blackout curtains in the bedroom and meal-preps in batches on {pp} days off"},
-      {"night security guard",
-       {"security", "guard", "night shift", "watchman"},
-       WorkPattern::kNightShift,
-       25,
-       64,
-       {"a shopping centre", "the city hospital", "a data centre"},
-       "{F} is a security guard at {X} and works the night shift from 10 pm to 6 am, Monday to Friday.",
-       1440,
-       1470,
-       450,
-       510,
-       true,
-       {"{F} is reading a thick history book on the quiet nights and is halfway through it.",
-        "{F} is trying to get enough daylight on {pp} days off."},
-       "{P} drinks strong coffee before leaving and solves crossword puzzles on breaks"},
-      {"warehouse night worker",
-       {"warehouse", "logistics", "night shift", "forklift"},
-       WorkPattern::kNightShift,
-       19,
-       58,
-       {"a supermarket chain", "an online shop", "a parcel company"},
-       "{F} drives a forklift in the warehouse of {X} and works the night shift from 11 pm to 7 am, Sunday "
-       "to Thursday.",
-       1440,
-       1500,
-       480,
-       540,
-       true,
-       {"{F} is saving for a used car and counts every overtime hour.",
-        "{F} wants to get the forklift instructor licence."},
-       ""},
-      {"line cook",
-       {"cook", "chef", "restaurant", "kitchen"},
-       WorkPattern::kEveningShift,
-       19,
-       55,
-       {"a busy trattoria", "a noodle bar", "a hotel restaurant"},
-       "{F} is a line cook at {X} and works the evening shift from 3 pm to 11 pm, Wednesday to Sunday.",
-       1470,
-       1530,
-       540,
-       600,
-       false,
-       {"{F} dreams of a small food truck and tests sauces at home.",
-        "{F} is tired of the late nights but loves the rush of service."},
-       "{P} cooks elaborate brunches on {pp} days off"},
-      {"bartender",
-       {"bartender", "bar", "barista", "pub"},
-       WorkPattern::kEveningShift,
-       21,
-       45,
-       {"a cocktail bar", "a jazz club", "a student pub"},
-       "{F} is a bartender at {X} and works the evening shift from 5 pm to 1 am, Thursday to Monday.",
-       1560,
-       1590,
-       600,
-       660,
-       false,
-       {"{F} is inventing a signature cocktail for a competition.",
-        "{F} wonders whether {p} should go back to college."},
-       ""},
-      {"accountant",
-       {"accountant", "accounting", "finance", "auditor", "bookkeeper"},
-       WorkPattern::kCommute,
-       24,
-       64,
-       {"an audit firm", "a shipping company", "the city council"},
-       "{F} is an accountant at {X} in the city centre and works from 8:30 am to 5 pm.",
-       1350,
-       1410,
-       390,
-       420,
-       false,
-       {"{F} is buried in the year-end closing and counting the days to the holidays.",
-        "{F} is thinking about taking the chartered accountant exam next year."},
-       "{P} keeps the household accounts in a neat ledger"},
-      {"primary teacher",
-       {"teacher", "teaching", "school teacher", "educator"},
-       WorkPattern::kCommute,
-       24,
-       64,
-       {"a primary school", "a village school", "a bilingual school"},
-       "{F} is a teacher at {X} and works from 7:30 am to 4 pm, grading homework at home in the evenings.",
-       1320,
-       1380,
-       360,
-       390,
-       false,
-       {"{F} is preparing the class for the school play and sewing costumes at night.",
-        "{F} has a parents' evening on Thursday and thirty reports to write."},
-       ""},
-      {"electrician",
-       {"electrician", "tradesman", "builder", "construction", "plumber"},
-       WorkPattern::kCommute,
-       20,
-       63,
-       {"a small building firm", "the housing association", "a solar installer"},
-       "{F} is an electrician for {X} and works from 7 am to 3:30 pm.",
-       1290,
-       1350,
-       345,
-       375,
-       false,
-       {"{F} is thinking about starting {pp} own business next year.",
-        "{F} is rewiring the spare room at home on weekends."},
-       "{P} keeps {pp} tools neatly sorted in the hallway cupboard"},
-      {"bus driver",
-       {"driver", "bus", "transport", "tram"},
-       WorkPattern::kCommute,
-       25,
-       64,
-       {"the early route", "the airport line", "the night-owl express"},
-       "{F} drives a city bus on {X} and works from 6 am to 2 pm.",
-       1260,
-       1290,
-       285,
-       315,
-       false,
-       {"{F} is saving for a trip to visit {pp} cousins abroad.",
-        "{F} would like to switch to the later route next year."},
-       ""},
-      {"shop assistant",
-       {"shop", "retail", "sales", "cashier", "store"},
-       WorkPattern::kCommute,
-       18,
-       66,
-       {"a garden centre", "a bookshop", "a hardware store"},
-       "{F} works at {X} from 9 am to 5:30 pm, Tuesday to Saturday.",
-       1350,
-       1410,
-       420,
-       450,
-       false,
-       {"{F} has been asked to run the shop's new online orders and feels unsure about it.",
-        "{F} is looking forward to the summer sale being over."},
-       ""},
-      {"software developer",
-       {"software", "developer", "programmer", "engineer", "it"},
-       WorkPattern::kRemote,
-       22,
-       60,
-       {"a company abroad", "a health-care startup", "a game studio"},
-       "{F} is a software developer who works remotely for {X}.",
-       1410,
-       1470,
-       450,
-       510,
-       false,
-       {"{F} is debugging a stubborn memory leak and dreams about it at night.",
-        "{F} is wondering whether to take a proper holiday without a laptop."},
-       ""},
-      {"support lead",
-       {"customer support", "call centre", "support", "customer service"},
-       WorkPattern::kRemote,
-       22,
-       62,
-       {"an insurance company", "an internet provider", "a travel agency"},
-       "{F} leads a customer support team for {X} and works from home.",
-       1350,
-       1410,
-       390,
-       435,
-       false,
-       {"{F}'s team is short-staffed this week and {p} is covering extra calls.",
-        "{F} is training two new colleagues over video."},
-       ""},
-      {"translator",
-       {"translator", "translation", "writer", "language"},
-       WorkPattern::kFreelance,
-       24,
-       70,
-       {"technical manuals", "children's books", "legal contracts"},
-       "{F} is a freelance translator of {X}.",
-       1380,
-       1470,
-       420,
-       480,
-       false,
-       {"{F} has a big translation due on Friday and is behind by twenty pages.",
-        "{F} is looking for steadier clients."},
-       "{P} drinks endless cups of tea at {pp} desk"},
-      {"graphic designer",
-       {"designer", "graphic", "illustrator", "artist"},
-       WorkPattern::kFreelance,
-       22,
-       60,
-       {"a desk in the living room", "a corner of the bedroom", "the kitchen table"},
-       "{F} is a freelance graphic designer who works from {X}.",
-       1440,
-       1500,
-       480,
-       540,
-       false,
-       {"{F} is designing a logo for a bakery and has thrown away ten drafts.",
-        "{F} is waiting for two invoices to be paid."},
-       "{P} sketches in a notebook wherever {p} goes"},
-      {"project manager",
-       {"manager", "project manager", "office", "hybrid"},
-       WorkPattern::kHybrid,
-       27,
-       63,
-       {"Mondays and Thursdays", "Tuesdays and Fridays", "Wednesdays and Fridays"},
-       "{F} is a project manager at an engineering company on a hybrid schedule, working from home on {X} "
-       "and at the office on the other weekdays.",
-       1350,
-       1410,
-       390,
-       420,
-       false,
-       {"{F} is juggling three deadlines and a difficult client.",
-        "{F} is planning the team's summer outing."},
-       ""},
-      {"civil servant",
-       {"civil servant", "administrator", "clerk", "government", "hybrid"},
-       WorkPattern::kHybrid,
-       25,
-       65,
-       {"Tuesdays and Thursdays", "Mondays and Wednesdays", "Fridays"},
-       "{F} is a clerk at the tax office on a hybrid schedule, working from home on {X} and at the office on "
-       "the other weekdays.",
-       1350,
-       1410,
-       390,
-       435,
-       false,
-       {"{F} is reorganising the archive and secretly enjoys it.",
-        "{F} is counting the weeks to a long holiday."},
-       ""},
-      {"university student",
-       {"student", "university", "college", "studies"},
-       WorkPattern::kCollege,
-       18,
-       27,
-       {"biology", "history", "mechanical engineering", "economics", "music"},
-       "{F} is a second-year student of {X} at the university with lectures most weekdays.",
-       1440,
-       1530,
-       480,
-       540,
-       false,
-       {"{F} has exams in three weeks and has not started revising.",
-        "{F} is thinking about a semester abroad."},
-       "{P} lives on pasta and instant coffee"},
-      {"phd student",
-       {"phd", "doctoral", "researcher", "thesis", "student"},
-       WorkPattern::kCollege,
-       24,
-       35,
-       {"chemistry", "linguistics", "climate science", "mathematics"},
-       "{F} is a PhD student in {X} at the university who is writing up {pp} thesis.",
-       1440,
-       1500,
-       450,
-       510,
-       false,
-       {"{F}'s thesis chapter is overdue and {pp} supervisor is asking about it.",
-        "{F} is applying for postdoc positions."},
-       ""},
-      {"retiree",
-       {"retired", "retiree", "pensioner"},
-       WorkPattern::kRetired,
-       63,
-       92,
-       {"postman", "school teacher", "nurse", "engineer", "shopkeeper", "librarian"},
-       "{F} is a retired {X}.",
-       1290,
-       1380,
-       360,
-       450,
-       false,
-       {"{F} is waiting for the grandchildren's visit and has baked far too much.",
-        "{F} worries a little about {pp} knee and the stairs.",
-        "{F} is writing down family recipes for the grandchildren."},
-       "{P} reads the newspaper cover to cover every morning"},
-      {"stay-at-home parent",
-       {"stay-at-home", "homemaker", "parent", "carer"},
-       WorkPattern::kHomemaker,
-       24,
-       52,
-       {"the house and the children", "two small children", "a toddler and a baby"},
-       "{F} is a stay-at-home parent who looks after {X}.",
-       1350,
-       1410,
-       360,
-       405,
-       false,
-       {"{F} misses adult conversation and is thinking about a part-time job.",
-        "{F} is potty-training the toddler this week."},
-       "{P} cooks all the family meals and does the laundry almost daily"},
-      {"job seeker",
-       {"job seeker", "unemployed", "between jobs", "looking for work"},
-       WorkPattern::kJobSeeker,
-       20,
-       62,
-       {"{pp} contract ended", "the factory closed", "moving to the city"},
-       "{F} is between jobs after {X} and is looking for work, sending applications every morning.",
-       1410,
-       1500,
-       450,
-       540,
-       false,
-       {"{F} has an interview next week and is anxious about money.",
-        "{F} is taking an online course to retrain."},
-       "{P} writes cover letters at the kitchen table"},
-      {"office cleaner",
-       {"cleaner", "cleaning", "janitor", "split shift"},
-       WorkPattern::kSplitShift,
-       20,
-       64,
-       {"offices in the business park", "the university buildings", "a bank headquarters"},
-       "{F} cleans {X} on a split shift, from 5:30 am to 9 am and again from 6 pm to 9 pm.",
-       1320,
-       1350,
-       270,
-       285,
-       false,
-       {"{F} is saving to send money to {pp} family.", "{F} is learning English in the afternoons."},
-       ""},
-      {"baker",
-       {"baker", "bakery", "pastry"},
-       WorkPattern::kCommute,
-       20,
-       64,
-       {"a family bakery", "the bakery at the market", "a sourdough bakery"},
-       "{F} is a baker at {X} and works from 4 am to 12 pm, six days a week.",
-       1230,
-       1260,
-       180,
-       195,
-       false,
-       {"{F} wonders whether {p} will ever open a bakery of {pp} own.",
-        "{F} is perfecting a rye bread recipe."},
-       "{P} naps in the afternoon after work"},
-      {"family doctor",
-       {"doctor", "physician", "gp", "medical", "dentist"},
-       WorkPattern::kCommute,
-       29,
-       66,
-       {"a health centre", "a village practice", "a children's clinic"},
-       "{F} is a family doctor at {X} and works from 8 am to 6 pm, Monday to Thursday.",
-       1350,
-       1410,
-       375,
-       405,
-       false,
-       {"{F} is worried about a patient and keeps thinking about the case.",
-        "{F} is organising a charity run for the clinic."},
-       ""},
-      {"librarian",
-       {"librarian", "library", "archivist"},
-       WorkPattern::kCommute,
-       23,
-       66,
-       {"the public library", "the university library", "a school library"},
-       "{F} is a librarian at {X} and works from 10 am to 6 pm.",
-       1410,
-       1470,
-       450,
-       480,
-       false,
-       {"{F} is planning a reading club for teenagers.",
-        "{F} is cataloguing a donated collection of old maps."},
-       "{P} reads novels in bed every night"},
-      {"mechanic",
-       {"mechanic", "garage", "car", "technician"},
-       WorkPattern::kCommute,
-       19,
-       64,
-       {"a car repair garage", "the bus depot", "a bicycle shop"},
-       "{F} is a mechanic at {X} and works from 7:30 am to 4:30 pm.",
-       1320,
-       1380,
-       360,
-       390,
-       false,
-       {"{F} is restoring an old motorbike and hunting for spare parts.",
-        "{F} is thinking about becoming a master mechanic."},
-       ""},
-      {"piano teacher",
-       {"music teacher", "piano", "musician", "teacher"},
-       WorkPattern::kFreelance,
-       24,
-       75,
-       {"piano", "violin", "guitar"},
-       "{F} is a freelance {X} teacher who gives lessons at home in the afternoons.",
-       1380,
-       1440,
-       450,
-       510,
-       false,
-       {"{F} is preparing {pp} students for the spring recital.",
-        "{F} is composing a short piece for a friend's wedding."},
-       ""},
-      {"content writer",
-       {"writer", "journalist", "copywriter", "content writer"},
-       WorkPattern::kRemote,
-       22,
-       60,
-       {"a travel magazine", "a software company", "a news website"},
-       "{F} is a content writer who works remotely for {X}.",
-       1440,
-       1530,
-       480,
-       570,
-       false,
-       {"{F} has two articles due and a blank page in front of {po}.",
-        "{F} is pitching a book idea to a publisher."},
-       ""},
-      {"pharmacist",
-       {"pharmacist", "pharmacy", "chemist"},
-       WorkPattern::kCommute,
-       25,
-       66,
-       {"a pharmacy on the high street", "the hospital pharmacy", "a pharmacy in the mall"},
-       "{F} is a pharmacist at {X} and works from 8 am to 4:30 pm.",
-       1350,
-       1410,
-       390,
-       420,
-       false,
-       {"{F} is training a new assistant and has little patience left.",
-        "{F} is thinking about running a half marathon."},
-       ""},
-      // Children (household role "child" only).
-      {"preschooler",
-       {"kindergarten", "preschool", "toddler", "child"},
-       WorkPattern::kPreschool,
-       3,
-       5,
-       {"kindergarten"},
-       "{F} goes to {X} in the mornings from 8:30 am to 12:30 pm on weekdays.",
-       1140,
-       1170,
-       405,
-       435,
-       false,
-       {"{F} wants to be a firefighter and tells everyone so.", "{F} is learning to write {pp} name."},
-       "{P} naps after lunch and needs help brushing {pp} teeth"},
-      {"primary pupil",
-       {"pupil", "school", "child", "primary school"},
-       WorkPattern::kSchool,
-       6,
-       10,
-       {"the primary school around the corner", "the village school", "a bilingual primary school"},
-       "{F} is a pupil at {X}.",
-       1200,
-       1245,
-       405,
-       435,
-       false,
-       {"{F} is nervous about a spelling test and practises words at breakfast.",
-        "{F} wants a puppy more than anything."},
-       ""},
-      {"middle schooler",
-       {"school", "middle school", "pupil", "child"},
-       WorkPattern::kSchool,
-       11,
-       13,
-       {"the middle school", "the school across town", "a music school"},
-       "{F} is a pupil at {X} and does homework every afternoon.",
-       1260,
-       1305,
-       390,
-       420,
-       false,
-       {"{F} has a science project due and has turned the desk into a laboratory.",
-        "{F} is trying out for the school choir."},
-       ""},
-      {"high schooler",
-       {"high school", "school", "teenager", "student"},
-       WorkPattern::kSchool,
-       14,
-       17,
-       {"the high school", "a sports high school", "the grammar school"},
-       "{F} is a student at {X} and does homework at {pp} desk most evenings.",
-       1320,
-       1410,
-       375,
-       405,
-       false,
-       {"{F} has a chemistry test on Thursday and a match on Saturday.",
-        "{F} is trying to decide what to study after school."},
-       ""},
-  };
-  return all;
-}
-
-bool is_child_occupation(const Occupation& o) {
-  return o.pattern == WorkPattern::kPreschool || o.pattern == WorkPattern::kSchool;
-}
-
-struct Hobby {
-  const char* text;
-  int min_age, max_age;
-};
-
-const std::vector<Hobby>& hobbies() {
-  static const std::vector<Hobby> all = {
-      {"plays the guitar in the evenings", 12, 90},
-      {"knits scarves for the whole family", 14, 95},
-      {"bakes bread at weekends", 14, 95},
-      {"does yoga before breakfast", 16, 85},
-      {"reads crime novels in bed", 13, 95},
-      {"keeps houseplants on every windowsill", 16, 95},
-      {"plays video games with friends online", 10, 55},
-      {"solves crossword puzzles", 16, 99},
-      {"paints with watercolours", 10, 95},
-      {"sews {pp} own clothes", 16, 90},
-      {"plays chess online", 10, 95},
-      {"practises the piano every evening", 7, 90},
-      {"writes in a journal before sleeping", 12, 95},
-      {"builds plastic model kits", 10, 80},
-      {"watches football with friends", 14, 85},
-      {"cooks big pots of stew for the week", 20, 95},
-      {"does a home workout with dumbbells", 16, 70},
-      {"grows herbs on the balcony", 18, 95},
-      {"meditates every morning", 16, 95},
-      {"plays board games with the neighbours", 10, 95},
-      {"listens to jazz records", 16, 95},
-      {"calls {pp} mother every evening", 18, 75},
-      {"goes birdwatching at weekends", 16, 90},
-      {"does jigsaw puzzles", 8, 99},
-      {"bakes cakes for friends' birthdays", 14, 90},
-      {"meal-preps on Sundays", 18, 70},
-      {"learns a new language with an app", 12, 85},
-      {"plays the violin", 7, 85},
-      {"sketches buildings in a notebook", 12, 90},
-      {"does the ironing while listening to the radio", 20, 95},
-      {"builds with building blocks", 3, 10},
-      {"draws with crayons", 3, 9},
-      {"plays with {pp} dolls and teddy bear", 3, 8},
-      {"plays football in the park after school", 6, 15},
-      {"reads comics in bed", 7, 16},
-      {"practises the drums after school", 9, 18},
-  };
-  return all;
-}
-
-const std::vector<const char*> kTidyTraits = {"meticulous", "organized", "tidy",         "methodical",
-                                              "punctual",   "diligent",  "conscientious"};
-const std::vector<const char*> kMessyTraits = {"scatterbrained", "forgetful", "laid-back",
-                                               "spontaneous",    "impulsive", "chaotic"};
-const std::vector<const char*> kSocialTraits = {"sociable", "outgoing", "talkative",
-                                                "cheerful", "friendly", "chatty"};
-const std::vector<const char*> kSolitaryTraits = {"introverted", "reserved", "shy", "quiet"};
-const std::vector<const char*> kOtherTraits = {
-    "curious",    "patient",      "kind",  "stubborn",  "witty",     "calm",       "ambitious", "generous",
-    "anxious",    "dry-humoured", "warm",  "practical", "creative",  "determined", "gentle",    "sarcastic",
-    "optimistic", "thoughtful",   "loyal", "proud",     "easygoing", "sensitive"};
-const std::vector<const char*> kTidyHabits = {"keeps the kitchen spotless",
-                                              "tidies up every evening before bed",
-                                              "puts everything back where it belongs"};
-const std::vector<const char*> kMessyHabits = {"leaves cups all over the house",
-                                               "lets the dishes pile up until the weekend",
-                                               "can never find {pp} keys"};
-
-struct RoleText {
-  HouseholdRole role;
-  int min_age, max_age;
-  std::vector<const char*> lines;
-  std::vector<const char*> thoughts;
-};
-
-const std::vector<RoleText>& role_texts() {
-  static const std::vector<RoleText> all = {
-      {HouseholdRole::kSingle,
-       18,
-       99,
-       {"{P} lives alone in a small flat", "{P} lives on {pp} own with an old cat",
-        "{P} lives alone and likes the quiet"},
-       {"{F} is thinking about getting a dog for company."}},
-      {HouseholdRole::kPartner,
-       18,
-       99,
-       {"{P} lives with {pp} partner, who works long hours", "{P} lives with {pp} partner and their cat",
-        "{P} recently moved in with {pp} partner"},
-       {"{F} and {pp} partner are planning a trip for their anniversary."}},
-      {HouseholdRole::kParent,
-       22,
-       62,
-       {"{P} lives with {pp} partner and their two children", "{P} is raising {pp} teenage son on {pp} own",
-        "{P} lives with {pp} partner and their six-year-old daughter"},
-       {"{F} is organising a birthday party for {pp} daughter.",
-        "{F} worries that the children spend too long on screens."}},
-      {HouseholdRole::kChild,
-       3,
-       17,
-       {"{P} lives with {pp} parents and a younger brother", "{P} lives with {pp} mother and grandmother",
-        "{P} lives with {pp} parents and an older sister"},
-       {}},
-      {HouseholdRole::kGrandparent,
-       55,
-       99,
-       {"{P} lives with {pp} spouse and looks after the grandchildren twice a week",
-        "{P} lives with {pp} daughter's family and helps with the grandchildren"},
-       {"{F} is knitting a blanket for the newest grandchild."}},
-      {HouseholdRole::kFlatmate,
-       18,
-       45,
-       {"{P} shares a flat with two friends", "{P} shares a flat with a colleague and takes turns cooking"},
-       {"{F} is tired of arguing about the washing-up rota."}},
-  };
-  return all;
-}
-
-const RoleText& role_text(HouseholdRole role) {
-  for (const auto& r : role_texts())
+const HouseholdRolePart& role_text(const PersonaParts& parts, HouseholdRole role) {
+  for (const auto& r : parts.roles)
     if (r.role == role) return r;
-  return role_texts().front();
+  return parts.roles.front();
+}
+
+bool is_child_occupation(const OccupationPart& o) {
+  return o.pattern == WorkPattern::kPreschool || o.pattern == WorkPattern::kSchool;
 }
 
 std::string clock_text(int minutes) {
@@ -779,7 +99,7 @@ std::set<std::string> content_words(const Persona& p) {
 
 struct Candidate {
   Persona persona;
-  const Occupation* occupation = nullptr;
+  const OccupationPart* occupation = nullptr;
   int bed = 0, wake = 0;
 };
 
@@ -798,11 +118,11 @@ int pick_quarter(Rng& rng, int lo, int hi) {
   return lo + 15 * static_cast<int>(rng.between(0, std::max(0, n)));
 }
 
-const char* pick_c(Rng& rng, const std::vector<const char*>& v) {
+const std::string& pick(Rng& rng, const std::vector<std::string>& v) {
   return v[rng.below(static_cast<std::uint32_t>(v.size()))];
 }
 
-std::string routine_text(Rng& rng, const Voice& v, const Occupation& o, int bed, int wake, bool child) {
+std::string routine_text(Rng& rng, const Voice& v, const OccupationPart& o, int bed, int wake, bool child) {
   if (o.day_sleeper)
     return fill(
         "On work days {F} sleeps from 8 am to 3 pm after {pp} night shift; on free days {p} goes to bed at " +
@@ -818,17 +138,19 @@ std::string routine_text(Rng& rng, const Voice& v, const Occupation& o, int bed,
   return fill(forms[rng.below(static_cast<std::uint32_t>(forms.size()))], v);
 }
 
-std::vector<const Occupation*> matching_occupations(const PersonaConstraints& c, HouseholdRole role, int lo,
-                                                    int hi) {
-  std::vector<const Occupation*> out;
+std::vector<const OccupationPart*> matching_occupations(const PersonaParts& parts,
+                                                        const PersonaConstraints& c, HouseholdRole role,
+                                                        int lo, int hi) {
+  std::vector<const OccupationPart*> out;
   const std::string wanted = c.occupation ? ascii_lower(*c.occupation) : "";
-  for (const auto& o : occupations()) {
+  for (const auto& o : parts.occupations) {
     if ((role == HouseholdRole::kChild) != is_child_occupation(o)) continue;
     if (o.pattern == WorkPattern::kHomemaker && role != HouseholdRole::kParent) continue;
     if (std::max(lo, o.min_age) > std::min(hi, o.max_age)) continue;
     if (!wanted.empty()) {
       bool match = contains_word(wanted, o.key) || contains_word(o.key, wanted);
-      for (const char* k : o.keywords) match = match || contains_word(wanted, k) || contains_word(k, wanted);
+      for (const std::string& k : o.keywords)
+        match = match || contains_word(wanted, k) || contains_word(k, wanted);
       if (!match) continue;
     }
     out.push_back(&o);
@@ -965,18 +287,120 @@ bool near_duplicate(const Persona& a, const Persona& b) {
   return persona_similarity(a, b) >= 0.5;
 }
 
-std::vector<std::string> known_occupations() {
+namespace {
+
+std::vector<std::string> strings_of(const Json& j) {
   std::vector<std::string> out;
-  for (const auto& o : occupations()) out.emplace_back(o.key);
+  for (const auto& s : j) out.push_back(s.get<std::string>());
+  if (out.empty()) throw std::invalid_argument("an empty list");
+  return out;
+}
+
+std::pair<int, int> range_of(const Json& j) {
+  const auto r = std::pair{j.at(0).get<int>(), j.at(1).get<int>()};
+  if (j.size() != 2 || r.first > r.second) throw std::invalid_argument("a range must be [low, high]");
+  return r;
+}
+
+OccupationPart occupation_of(const std::string& key, const Json& b) {
+  OccupationPart o;
+  o.key = key;
+  for (const auto& k : b.at("keywords")) o.keywords.push_back(k.get<std::string>());
+  const auto pattern = parse_work_pattern(b.at("pattern").get<std::string>());
+  if (!pattern) throw std::invalid_argument("unknown work pattern " + b.at("pattern").dump());
+  o.pattern = *pattern;
+  std::tie(o.min_age, o.max_age) = range_of(b.at("ages"));
+  for (const auto& v : b.at("variants")) o.variants.push_back(v.get<std::string>());
+  o.text = b.at("text").get<std::string>();
+  std::tie(o.bed_lo, o.bed_hi) = range_of(b.at("bed"));
+  std::tie(o.wake_lo, o.wake_hi) = range_of(b.at("wake"));
+  o.day_sleeper = b.at("day_sleeper").get<bool>();
+  o.thoughts = strings_of(b.at("thoughts"));
+  o.habit = b.at("habit").get<std::string>();
+  return o;
+}
+
+}  // namespace
+
+Status add_persona_part(PersonaParts& parts, std::string_view kind, const std::string& name,
+                        const Json& body) {
+  const std::string where = "persona part " + std::string(kind) + " '" + name + "'";
+  try {
+    if (kind == "culture") {
+      parts.cultures.push_back(
+          {strings_of(body.at("female")), strings_of(body.at("male")), strings_of(body.at("surnames"))});
+    } else if (kind == "occupation") {
+      parts.occupations.push_back(occupation_of(name, body));
+      if (parts.occupations.back().text.empty()) throw std::invalid_argument("an empty text");
+    } else if (kind == "occupation_fallback") {
+      parts.fallback = occupation_of(name, body);
+      parts.has_fallback = true;
+    } else if (kind == "hobby") {
+      HobbyPart h{body.at("text").get<std::string>(), 0, 0};
+      std::tie(h.min_age, h.max_age) = range_of(body.at("ages"));
+      parts.hobbies.push_back(std::move(h));
+    } else if (kind == "traits" || kind == "habits") {
+      std::vector<std::string>* list = nullptr;
+      if (kind == "traits")
+        list = name == "tidy"       ? &parts.tidy_traits
+               : name == "messy"    ? &parts.messy_traits
+               : name == "social"   ? &parts.social_traits
+               : name == "solitary" ? &parts.solitary_traits
+               : name == "other"    ? &parts.other_traits
+                                    : nullptr;
+      else
+        list = name == "tidy" ? &parts.tidy_habits : name == "messy" ? &parts.messy_habits : nullptr;
+      if (list == nullptr) return fail(ErrorCode::kStore, where + ": unknown group");
+      *list = strings_of(body);
+    } else if (kind == "household_role") {
+      const auto role = parse_household_role(name);
+      if (!role) return fail(ErrorCode::kStore, where + ": unknown household role");
+      HouseholdRolePart r{*role, 0, 0, strings_of(body.at("lines")), {}};
+      std::tie(r.min_age, r.max_age) = range_of(body.at("ages"));
+      for (const auto& t : body.at("thoughts")) r.thoughts.push_back(t.get<std::string>());
+      parts.roles.push_back(std::move(r));
+    } else {
+      return fail(ErrorCode::kStore, where + ": unknown kind");
+    }
+  } catch (const std::exception& e) {
+    return fail(ErrorCode::kStore, where + " is malformed: " + e.what());
+  }
+  return {};
+}
+
+Status check_persona_parts(const PersonaParts& p) {
+  std::string missing;
+  auto need = [&missing](bool ok, const char* what) {
+    if (!ok) missing += (missing.empty() ? "" : ", ") + std::string(what);
+  };
+  need(!p.cultures.empty(), "cultures");
+  need(!p.occupations.empty(), "occupations");
+  need(p.has_fallback, "the fallback occupation");
+  need(!p.hobbies.empty(), "hobbies");
+  need(!p.tidy_traits.empty() && !p.messy_traits.empty() && !p.social_traits.empty() &&
+           !p.solitary_traits.empty() && !p.other_traits.empty(),
+       "the five trait groups");
+  need(!p.tidy_habits.empty() && !p.messy_habits.empty(), "tidy and messy habits");
+  need(!p.roles.empty(), "household roles");
+  if (missing.empty()) return {};
+  return fail(ErrorCode::kStore, "the persona parts lack " + missing +
+                                     ": the store is missing migration 0026 (household_persona_parts)");
+}
+
+std::vector<std::string> known_occupations(const PersonaParts& parts) {
+  std::vector<std::string> out;
+  for (const auto& o : parts.occupations) out.push_back(o.key);
   return out;
 }
 
 Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& request,
-                                                       std::span<const Persona> existing) {
+                                                       std::span<const Persona> existing,
+                                                       const PersonaParts& parts) {
   if (request.count < 1 || request.count > 200)
     return fail(ErrorCode::kValidation, "count must be between 1 and 200",
                 {FieldError{"/count", "must be between 1 and 200"}});
   const PersonaConstraints& c = request.constraints;
+  if (auto s = check_persona_parts(parts); !s) return tl::unexpected(s.error());
   const int lo = c.min_age.value_or(0), hi = c.max_age.value_or(120);
   if (lo > hi)
     return fail(ErrorCode::kValidation, "empty age range",
@@ -984,50 +408,35 @@ Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& req
 
   // Roles that fit the age range, and the occupations that fit role and constraints.
   std::vector<HouseholdRole> roles;
-  for (const auto& r : role_texts()) {
+  for (const auto& r : parts.roles) {
     if (c.household_role && r.role != *c.household_role) continue;
     if (std::max(lo, r.min_age) > std::min(hi, r.max_age)) continue;
     roles.push_back(r.role);
   }
-  std::vector<std::pair<HouseholdRole, std::vector<const Occupation*>>> options;
+  std::vector<std::pair<HouseholdRole, std::vector<const OccupationPart*>>> options;
   for (auto role : roles) {
-    const auto& rt = role_text(role);
-    auto occ = matching_occupations(c, role, std::max(lo, rt.min_age), std::min(hi, rt.max_age));
+    const auto& rt = role_text(parts, role);
+    auto occ = matching_occupations(parts, c, role, std::max(lo, rt.min_age), std::min(hi, rt.max_age));
     if (!occ.empty()) options.emplace_back(role, std::move(occ));
   }
   // An occupation the list does not know becomes a day job of that name (adults only).
-  Occupation custom{"custom",
-                    {},
-                    WorkPattern::kCommute,
-                    18,
-                    70,
-                    {},
-                    "",
-                    1350,
-                    1410,
-                    390,
-                    420,
-                    false,
-                    {"{F} is hoping for a promotion this year.", "{F} is thinking about a change of career."},
-                    ""};
-  std::string custom_text;
+  OccupationPart custom = parts.fallback;
   if (options.empty() && c.occupation && (!c.household_role || *c.household_role != HouseholdRole::kChild) &&
-      hi >= 18) {
-    custom_text = "{F} works as " + article_for(*c.occupation) + " " + ascii_lower(*c.occupation) +
+      hi >= parts.fallback.min_age) {
+    custom.text = "{F} works as " + article_for(*c.occupation) + " " + ascii_lower(*c.occupation) +
                   " from 9 am to 5 pm.";
-    custom.text = custom_text.c_str();
-    custom.min_age = std::max(18, lo);
-    custom.max_age = std::min(70, hi);
+    custom.min_age = std::max(parts.fallback.min_age, lo);
+    custom.max_age = std::min(parts.fallback.max_age, hi);
     for (auto role : roles)
       if (role != HouseholdRole::kChild) {
-        const auto& rt = role_text(role);
+        const auto& rt = role_text(parts, role);
         if (std::max(custom.min_age, rt.min_age) <= std::min(custom.max_age, rt.max_age))
           options.push_back({role, {&custom}});
       }
   }
   if (options.empty()) {
     std::string known;
-    for (const auto& k : known_occupations()) known += (known.empty() ? "" : ", ") + k;
+    for (const auto& k : known_occupations(parts)) known += (known.empty() ? "" : ", ") + k;
     return fail(ErrorCode::kValidation, "no persona fits these constraints",
                 {FieldError{c.occupation ? "/constraints/occupation" : "/constraints",
                             "no occupation fits the age range and household role (known: " + known + ")"}});
@@ -1039,8 +448,8 @@ Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& req
   const int max_attempts = 60 * request.count + 200;
   for (int attempt = 0; attempt < max_attempts && static_cast<int>(out.size()) < request.count; ++attempt) {
     const auto& [role, occs] = options[rng.below(static_cast<std::uint32_t>(options.size()))];
-    const Occupation& o = *occs[rng.below(static_cast<std::uint32_t>(occs.size()))];
-    const RoleText& rt = role_text(role);
+    const OccupationPart& o = *occs[rng.below(static_cast<std::uint32_t>(occs.size()))];
+    const HouseholdRolePart& rt = role_text(parts, role);
     const int age_lo = std::max({lo, rt.min_age, o.min_age}), age_hi = std::min({hi, rt.max_age, o.max_age});
     if (age_lo > age_hi) continue;
     Candidate cand;
@@ -1049,16 +458,16 @@ Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& req
     p.age = static_cast<int>(rng.between(age_lo, age_hi));
     const bool female = c.gender ? *c.gender == "female" : rng.chance(0.5);
     p.gender = female ? "female" : "male";
-    const Culture& culture = cultures()[rng.below(static_cast<std::uint32_t>(cultures().size()))];
-    const std::string first = pick_c(rng, female ? culture.female : culture.male);
-    p.name = first + " " + pick_c(rng, culture.surnames);
+    const CulturePart& culture = parts.cultures[rng.below(static_cast<std::uint32_t>(parts.cultures.size()))];
+    const std::string first = pick(rng, female ? culture.female : culture.male);
+    p.name = first + " " + pick(rng, culture.surnames);
     const Voice v{first, female ? "she" : "he", female ? "her" : "his", female ? "her" : "him"};
 
     cand.bed = pick_quarter(rng, o.bed_lo, o.bed_hi);
     cand.wake = pick_quarter(rng, o.wake_lo, o.wake_hi);
     const bool child = role == HouseholdRole::kChild;
     p.routine = routine_text(rng, v, o, cand.bed, cand.wake, child);
-    std::string variant = o.variants.empty() ? "" : pick_c(rng, o.variants);
+    std::string variant = o.variants.empty() ? "" : pick(rng, o.variants);
     variant = fill(variant, v);
     p.occupation = fill(o.text, v, variant);
 
@@ -1066,44 +475,42 @@ Result<std::vector<Persona>> generate_personas_offline(const PersonaRequest& req
     std::vector<std::string> traits;
     const double t_roll = rng.uniform(), s_roll = rng.uniform();
     if (t_roll < 0.4)
-      traits.emplace_back(pick_c(rng, kTidyTraits));
+      traits.emplace_back(pick(rng, parts.tidy_traits));
     else if (t_roll < 0.75)
-      traits.emplace_back(pick_c(rng, kMessyTraits));
+      traits.emplace_back(pick(rng, parts.messy_traits));
     if (s_roll < 0.4)
-      traits.emplace_back(pick_c(rng, kSocialTraits));
+      traits.emplace_back(pick(rng, parts.social_traits));
     else if (s_roll < 0.75)
-      traits.emplace_back(pick_c(rng, kSolitaryTraits));
+      traits.emplace_back(pick(rng, parts.solitary_traits));
     while (traits.size() < 3 || (traits.size() < 4 && rng.chance(0.3))) {
-      std::string t = pick_c(rng, kOtherTraits);
+      std::string t = pick(rng, parts.other_traits);
       if (std::find(traits.begin(), traits.end(), t) == traits.end()) traits.push_back(std::move(t));
     }
     p.personality = traits;
 
     // Lifestyle: household, two or three hobbies, a work habit, a tidiness habit.
-    std::vector<const Hobby*> fit;
-    for (const auto& h : hobbies())
+    std::vector<const HobbyPart*> fit;
+    for (const auto& h : parts.hobbies)
       if (p.age >= h.min_age && p.age <= h.max_age) fit.push_back(&h);
     rng.shuffle(fit);
     const std::size_t n_hobbies = std::min<std::size_t>(fit.size(), rng.chance(0.5) ? 2 : 3);
-    std::string life = fill(pick_c(rng, rt.lines), v) + ". " + capitalised(v.p) + " ";
+    std::string life = fill(pick(rng, rt.lines), v) + ". " + capitalised(v.p) + " ";
     for (std::size_t i = 0; i < n_hobbies; ++i)
       life += fill(fit[i]->text, v) + (i + 2 < n_hobbies ? ", " : i + 2 == n_hobbies ? " and " : ".");
-    if (*o.habit) life += " " + fill(o.habit, v) + ".";
-    const bool tidy = std::any_of(traits.begin(), traits.end(), [](const std::string& t) {
-      return std::find_if(kTidyTraits.begin(), kTidyTraits.end(), [&](const char* x) { return t == x; }) !=
-             kTidyTraits.end();
-    });
-    const bool messy = std::any_of(traits.begin(), traits.end(), [](const std::string& t) {
-      return std::find_if(kMessyTraits.begin(), kMessyTraits.end(), [&](const char* x) { return t == x; }) !=
-             kMessyTraits.end();
-    });
-    if (tidy && !child) life += " " + capitalised(v.p) + " " + fill(pick_c(rng, kTidyHabits), v) + ".";
-    if (messy && !child) life += " " + capitalised(v.p) + " " + fill(pick_c(rng, kMessyHabits), v) + ".";
+    if (!o.habit.empty()) life += " " + fill(o.habit, v) + ".";
+    auto leans = [&traits](const std::vector<std::string>& words) {
+      return std::any_of(traits.begin(), traits.end(), [&words](const std::string& t) {
+        return std::find(words.begin(), words.end(), t) != words.end();
+      });
+    };
+    const bool tidy = leans(parts.tidy_traits), messy = leans(parts.messy_traits);
+    if (tidy && !child) life += " " + capitalised(v.p) + " " + fill(pick(rng, parts.tidy_habits), v) + ".";
+    if (messy && !child) life += " " + capitalised(v.p) + " " + fill(pick(rng, parts.messy_habits), v) + ".";
     p.lifestyle = life;
 
-    std::vector<const char*> thoughts = o.thoughts;
+    std::vector<std::string> thoughts = o.thoughts;
     thoughts.insert(thoughts.end(), rt.thoughts.begin(), rt.thoughts.end());
-    p.thoughts = fill(pick_c(rng, thoughts), v);
+    p.thoughts = fill(pick(rng, thoughts), v);
 
     if (!persona_from_json(to_json(p))) continue;
     if (!reads_back(cand)) continue;

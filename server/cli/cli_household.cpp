@@ -123,7 +123,9 @@ int persona_command(const std::vector<std::string>& args) {
     if (!constraints.empty()) body["constraints"] = constraints;
     auto request = hh::persona_request_from_json(body);
     if (!request) return report(request.error());
-    auto personas = hh::generate_personas_offline(*request, *all);
+    auto knowledge = hh::load_household_knowledge(**store);
+    if (!knowledge) return report(knowledge.error());
+    auto personas = hh::generate_personas_offline(*request, *all, knowledge->persona_parts);
     if (!personas) return report(personas.error());
     Json out = Json::array();
     for (const auto& p : *personas) {

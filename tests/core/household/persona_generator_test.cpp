@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "core/household/schedule.hpp"
@@ -27,7 +28,7 @@ TEST(PersonaGenerator, GeneratesValidDistinctPersonasThatScheduleConsistently) {
   PersonaRequest r;
   r.count = 60;
   r.seed = 11;
-  auto personas = generate_personas_offline(r, existing);
+  auto personas = generate_personas_offline(r, existing, knowledge().persona_parts);
   ASSERT_TRUE(personas) << personas.error().message();
   ASSERT_EQ(personas->size(), 60u);
   std::set<std::string> ids, occupations_seen;
@@ -61,10 +62,10 @@ TEST(PersonaGenerator, SameSeedSamePersonasOtherSeedOthers) {
   PersonaRequest r;
   r.count = 5;
   r.seed = 42;
-  auto a = generate_personas_offline(r, existing);
-  auto b = generate_personas_offline(r, existing);
+  auto a = generate_personas_offline(r, existing, knowledge().persona_parts);
+  auto b = generate_personas_offline(r, existing, knowledge().persona_parts);
   r.seed = 43;
-  auto c = generate_personas_offline(r, existing);
+  auto c = generate_personas_offline(r, existing, knowledge().persona_parts);
   ASSERT_TRUE(a && b && c);
   EXPECT_EQ(*a, *b);
   EXPECT_NE(*a, *c);
@@ -78,7 +79,7 @@ TEST(PersonaGenerator, HonoursAgeOccupationRoleAndGender) {
   r.constraints.max_age = 45;
   r.constraints.occupation = "nurse";
   r.constraints.gender = "female";
-  auto nurses = generate_personas_offline(r, builtin());
+  auto nurses = generate_personas_offline(r, builtin(), knowledge().persona_parts);
   ASSERT_TRUE(nurses) << nurses.error().message();
   for (const auto& p : *nurses) {
     EXPECT_GE(p.age, 30);
@@ -92,7 +93,7 @@ TEST(PersonaGenerator, HonoursAgeOccupationRoleAndGender) {
   kids.count = 8;
   kids.seed = 9;
   kids.constraints.household_role = HouseholdRole::kChild;
-  auto children = generate_personas_offline(kids, builtin());
+  auto children = generate_personas_offline(kids, builtin(), knowledge().persona_parts);
   ASSERT_TRUE(children) << children.error().message();
   for (const auto& p : *children) {
     EXPECT_LT(p.age, 18);
@@ -103,7 +104,7 @@ TEST(PersonaGenerator, HonoursAgeOccupationRoleAndGender) {
   PersonaRequest grand;
   grand.count = 4;
   grand.constraints.household_role = HouseholdRole::kGrandparent;
-  auto g = generate_personas_offline(grand, builtin());
+  auto g = generate_personas_offline(grand, builtin(), knowledge().persona_parts);
   ASSERT_TRUE(g) << g.error().message();
   for (const auto& p : *g) {
     EXPECT_GE(p.age, 55);
@@ -115,7 +116,7 @@ TEST(PersonaGenerator, UnknownOccupationBecomesADayJob) {
   PersonaRequest r;
   r.count = 2;
   r.constraints.occupation = "beekeeper";
-  auto p = generate_personas_offline(r, builtin());
+  auto p = generate_personas_offline(r, builtin(), knowledge().persona_parts);
   ASSERT_TRUE(p) << p.error().message();
   for (const auto& q : *p) {
     EXPECT_NE(q.occupation.find("works as a beekeeper"), std::string::npos);
@@ -128,7 +129,7 @@ TEST(PersonaGenerator, ImpossibleConstraintsAreNamed) {
   r.constraints.min_age = 4;
   r.constraints.max_age = 5;
   r.constraints.occupation = "accountant";
-  auto p = generate_personas_offline(r, builtin());
+  auto p = generate_personas_offline(r, builtin(), knowledge().persona_parts);
   ASSERT_FALSE(p);
   EXPECT_EQ(p.error().code, ErrorCode::kValidation);
   ASSERT_FALSE(p.error().errors.empty());
@@ -154,6 +155,33 @@ TEST(PersonaGenerator, NearDuplicatesAreRecognised) {
   renamed.name = a.name;
   EXPECT_TRUE(near_duplicate(a, renamed));  // same id
   EXPECT_FALSE(near_duplicate(knowledge().personas[0], knowledge().personas[1]));
+}
+
+TEST(PersonaGenerator, PartsComeFromTheStoreAndBadRowsAreNamed) {
+  const PersonaParts& parts = knowledge().persona_parts;
+  EXPECT_TRUE(check_persona_parts(parts));
+  const auto known = known_occupations(parts);
+  EXPECT_NE(std::find(known.begin(), known.end(), "night nurse"), known.end());
+
+  PersonaParts bad;
+  const Status pattern = add_persona_part(bad, "occupation", "astronaut",
+                                          Json::parse(R"({"keywords":[],"pattern":"orbit","ages":[20,60],
+      "variants":[],"text":"{F} flies.","bed":[1320,1380],"wake":[360,420],"day_sleeper":false,
+      "thoughts":["{F} looks up."],"habit":""})"));
+  ASSERT_FALSE(pattern);
+  EXPECT_EQ(pattern.error().code, ErrorCode::kStore);
+  EXPECT_NE(pattern.error().detail.find("occupation 'astronaut'"), std::string::npos)
+      << pattern.error().detail;
+  EXPECT_FALSE(add_persona_part(bad, "hobby", "h", Json::parse(R"({"text":"rows","ages":[60,20]})")));
+  EXPECT_FALSE(add_persona_part(bad, "traits", "grumpy", Json::parse(R"(["cross"])")));
+  EXPECT_FALSE(add_persona_part(bad, "spaceship", "x", Json::object()));
+
+  // Without the parts (a store that lacks the migration) generation says so instead of crashing.
+  PersonaRequest r;
+  auto none = generate_personas_offline(r, builtin(), PersonaParts{});
+  ASSERT_FALSE(none);
+  EXPECT_EQ(none.error().code, ErrorCode::kStore);
+  EXPECT_NE(none.error().detail.find("migration 0026"), std::string::npos) << none.error().detail;
 }
 
 }  // namespace
