@@ -1,5 +1,6 @@
 #include "server/scenario_inputs.hpp"
 
+#include "core/cards/world_store.hpp"
 #include "core/world/world_document.hpp"
 #include "core/world/world_yaml.hpp"
 
@@ -17,20 +18,12 @@ Error field_error(ErrorCode code, const std::string& detail, const std::string& 
 Result<std::shared_ptr<const world::World>> session_world(RouteContext& ctx, const Json& body) {
   if (body.contains("world_id")) {
     const std::string id = body["world_id"].get<std::string>();
-    auto yaml = ctx.store.read([&](store::Database& d) -> Result<std::optional<std::string>> {
-      auto st = d.prepare("SELECT world_yaml FROM worlds WHERE id = ?");
-      if (!st) return tl::unexpected(st.error());
-      st->bind(1, id);
-      auto row = st->step();
-      if (!row) return tl::unexpected(row.error());
-      if (!*row) return std::optional<std::string>();
-      return std::optional<std::string>(st->text(0));
-    });
-    if (!yaml) return tl::unexpected(yaml.error());
-    if (!*yaml)
+    auto stored = cards::WorldStore(ctx.store).get(id);
+    if (!stored && stored.error().code == ErrorCode::kNotFound)
       return tl::unexpected(field_error(ErrorCode::kNotFound, "no world with id '" + id + "'", "/world_id",
                                         "names no stored world (see GET /api/v1/worlds)"));
-    auto w = world::world_from_yaml(**yaml);
+    if (!stored) return tl::unexpected(stored.error());
+    auto w = world::world_from_yaml(stored->world_yaml);
     if (!w)
       return fail(ErrorCode::kInternal,
                   "stored world '" + id + "' no longer validates: " + w.error().message());

@@ -118,6 +118,9 @@ TEST(Simulations, ProgramInAStoredOrInlineWorld) {
   const Json inline_world =
       d.post("/api/v1/simulations", {{"program", program}, {"world", document}, {"seed", 1}}, 201);
   EXPECT_EQ(inline_world["agents"], 3);
+  const Json missing =
+      d.post("/api/v1/simulations", {{"program", program}, {"world_id", "wld_aaaaaaaaaaaaaaaaaaaa"}}, 404);
+  EXPECT_EQ(missing["errors"][0]["pointer"], "/world_id") << missing.dump();
   Json unknown_place = program;
   unknown_place["agents"][0]["goals"][0] = "no_such_room";
   const Json p = d.post("/api/v1/simulations", {{"program", unknown_place}, {"world_id", world_id}}, 422);
