@@ -92,6 +92,9 @@ Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, cons
     RecordingSessionRequest r;
     r.log = std::move(*log);
     r.card_id = id;
+    if (c->content.world.is_object())
+      if (auto w = world::world_from_document(c->content.world))
+        r.world = std::make_shared<const world::World>(std::move(*w));
     if (c->content.provenance.is_object() && c->content.provenance.contains("world_id") &&
         c->content.provenance["world_id"].is_string())
       r.world_id = c->content.provenance["world_id"].get<std::string>();

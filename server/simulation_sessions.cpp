@@ -497,6 +497,7 @@ Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_program(Pro
   info.world_id = request.world_id;
   info.seed = request.seed;
   info.duration_s = duration;
+  info.world = request.world;
   auto source = runner_source(std::move(request.world), std::move(*runner), duration);
   return add(std::move(info), std::move(source), request.speed);
 }
@@ -520,6 +521,7 @@ Result<std::shared_ptr<SimulationSession>> SimulationSessions::start_recording(
   info.author = request.author;
   info.card_id = request.card_id;
   info.world_id = request.world_id;
+  info.world = std::move(request.world);
   auto source = recording_source(std::move(request.log));
   info.duration_s = source->end_time() - source->start_time();
   return add(std::move(info), std::move(source), request.speed);

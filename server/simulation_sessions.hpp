@@ -92,7 +92,8 @@ struct SessionInfo {
   std::optional<std::string> world_id;
   std::optional<std::string> card_id;
   std::optional<std::uint64_t> seed;
-  double duration_s = 0;  // simulated seconds until the session ends by itself
+  double duration_s = 0;                      // simulated seconds until the session ends by itself
+  std::shared_ptr<const world::World> world;  // may be null (the Foxglove bridge draws it)
 };
 
 class SimulationSession {
@@ -187,6 +188,7 @@ struct ProgramSessionRequest {
 
 struct RecordingSessionRequest {
   scenario::TrajectoryLog log;
+  std::shared_ptr<const world::World> world;  // the card's world, when it has one
   std::string card_id;
   std::optional<std::string> world_id;
   double speed = 1.0;

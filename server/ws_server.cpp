@@ -17,6 +17,7 @@
 #include "server/access_policy.hpp"
 #include "server/auth.hpp"
 #include "server/cosim_sessions.hpp"
+#include "server/foxglove_bridge.hpp"
 #include "server/services.hpp"
 #include "server/simulation_sessions.hpp"
 #include "socsim/buildinfo.hpp"
@@ -149,8 +150,10 @@ class Session : public std::enable_shared_from_this<Session> {
   // (its hello first) and are written once the handshake is done.
   void enqueue(WirePtr message) {
     if (closed_ || close_after_) return;
-    const std::size_t limit =
-        simulation_ ? shared_.options.max_queued_simulation_frames : shared_.options.max_queued_frames;
+    // A Foxglove client's frame is a Time record and one record per subscription.
+    const std::size_t limit = simulation_ ? shared_.options.max_queued_simulation_frames *
+                                                (bridge_ ? 1 + bridge_->subscriptions() : 1)
+                                          : shared_.options.max_queued_frames;
     const auto droppable = [](const WirePtr& m) { return m->frame || m->droppable; };
     if (droppable(message) && queue_.size() >= limit) {
       // Drop the oldest frame (or status, error) for a slow reader; hello, targets and end are kept.
@@ -212,10 +215,13 @@ class Session : public std::enable_shared_from_this<Session> {
       return on_simulation_request(target, path.substr(kSimulationPath.size()));
     else if (path.rfind(kCosimPath, 0) == 0 && websocket::is_upgrade(request_))
       return on_cosim_request(path.substr(kCosimPath.size()));
+    else if (path.rfind(kFoxglovePath, 0) == 0 && websocket::is_upgrade(request_))
+      return on_foxglove_request(path.substr(kFoxglovePath.size()));
     if (!websocket::is_upgrade(request_) || topic_.empty())
       return refuse(
           Error(ErrorCode::kNotFound,
-                "WebSocket endpoints: /ws/catalogue, /ws/jobs, /ws/simulations/{id}, /ws/cosim/{id}"));
+                "WebSocket endpoints: /ws/catalogue, /ws/jobs, /ws/simulations/{id}, /ws/cosim/{id}, "
+                "/foxglove/{simulation id}"));
     upgrade_timeouts();
     ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
   }
@@ -269,6 +275,55 @@ class Session : public std::enable_shared_from_this<Session> {
     ws_.auto_fragment(false);         // one WebSocket frame per message: fewer writes
     ws_.read_message_max(64 * 1024);  // control commands are small
     ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
+  }
+
+  // /foxglove/{id}: a Foxglove client (foxglove.websocket.v1) of a live simulation. It watches as
+  // a binary viewer; the bridge turns the session's frames into the channels it subscribed to.
+  void on_foxglove_request(const std::string& id) {
+    if (!shared_.simulations)
+      return refuse(Error(ErrorCode::kNotFound, "no simulation with id '" + id + "'"));
+    auto session = shared_.simulations->find(id);
+    if (!session) return refuse(session.error());
+    const auto offered = offered_protocols(std::string(request_[http::field::sec_websocket_protocol]));
+    if (std::find(offered.begin(), offered.end(), std::string(kFoxgloveProtocol)) == offered.end())
+      return refuse(Error(ErrorCode::kBadRequest, "a Foxglove client must offer the subprotocol " +
+                                                      std::string(kFoxgloveProtocol) +
+                                                      " (Sec-WebSocket-Protocol)"));
+    bridge_ = std::make_unique<FoxgloveBridge>((*session)->id(), (*session)->info().world);
+    for (WirePtr& m : bridge_->open()) enqueue(std::move(m));
+    simulation_ = *session;
+    counters_ = std::make_shared<ViewerCounters>();
+    std::weak_ptr<Session> weak = shared_from_this();
+    std::shared_ptr<IoGate> gate = shared_.gate;
+    auto lease = (*session)->attach(
+        *session, WireFormat::kBinary,
+        [weak, gate](const WirePtr& m) {
+          gate->post([weak, m] {
+            if (auto self = weak.lock()) self->on_foxglove_session(*m);
+          });
+        },
+        counters_);
+    if (!lease) {
+      simulation_.reset();
+      bridge_.reset();
+      queue_.clear();
+      return refuse(lease.error());
+    }
+    lease_ = std::move(*lease);
+    upgrade_timeouts();
+    ws_.set_option(websocket::stream_base::decorator([](websocket::response_type& res) {
+      res.set(http::field::server, "socsim");
+      res.set(http::field::sec_websocket_protocol, std::string(kFoxgloveProtocol));
+    }));
+    ws_.auto_fragment(false);
+    ws_.read_message_max(64 * 1024);  // subscribe/unsubscribe requests are small
+    ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
+  }
+
+  // On the I/O thread: one message of the session, through the bridge.
+  void on_foxglove_session(const WireMessage& m) {
+    if (closed_ || !bridge_) return;
+    for (WirePtr& out : bridge_->on_session(m)) enqueue(std::move(out));
   }
 
   // /ws/cosim/{id}: the one client of a co-simulation; it must speak socsim.cosim.v1.
@@ -370,7 +425,13 @@ class Session : public std::enable_shared_from_this<Session> {
   void read_loop() {
     ws_.async_read(in_, [self = shared_from_this()](beast::error_code ec, std::size_t) {
       if (ec) return self->finish();
-      if (self->simulation_) self->on_command(beast::buffers_to_string(self->in_.data()));
+      if (self->bridge_) {
+        if (self->ws_.got_text())
+          for (WirePtr& m : self->bridge_->on_client_text(beast::buffers_to_string(self->in_.data())))
+            self->enqueue(std::move(m));
+      } else if (self->simulation_) {
+        self->on_command(beast::buffers_to_string(self->in_.data()));
+      }
       if (self->cosim_ && !self->close_after_) {
         self->arm_idle();
         self->cosim_send(self->cosim_->handle(beast::buffers_to_string(self->in_.data())));
@@ -454,6 +515,7 @@ class Session : public std::enable_shared_from_this<Session> {
   std::string topic_;                              // "cards" or "jobs", from the path
   std::shared_ptr<SimulationSession> simulation_;  // set for /ws/simulations/{id}
   std::shared_ptr<CosimSession> cosim_;            // set for /ws/cosim/{id}
+  std::unique_ptr<FoxgloveBridge> bridge_;         // set for /foxglove/{id} (with simulation_)
   asio::steady_timer idle_timer_{ws_.get_executor()};
   asio::steady_timer tick_timer_{ws_.get_executor()};
   websocket::close_code close_code_ = websocket::close_code::normal;

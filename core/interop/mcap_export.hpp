@@ -31,7 +31,4 @@ struct McapExportOptions {
 Result<std::string> export_mcap(const scenario::TrajectoryLog& log, const world::World& world,
                                 const McapExportOptions& options);
 
-// The JSON Schema of foxglove.SceneUpdate as far as the export uses it (the channel's schema).
-const Json& scene_update_json_schema();
-
 }  // namespace socsim::interop
