@@ -1,5 +1,6 @@
 #include "server/card_exports.hpp"
 
+#include "core/interop/export_arena.hpp"
 #include "core/interop/export_gazebo_actors.hpp"
 #include "core/interop/mcap_export.hpp"
 #include "core/scenario/trajectory_store.hpp"
@@ -48,6 +49,16 @@ Result<std::string> card_gazebo_actors(store::Store& store, const cards::Card& c
   auto log = card_trajectory_log(store, card);
   if (!log) return tl::unexpected(log.error());
   return interop::export_gazebo_actors(*log, s->world);
+}
+
+Result<std::string> card_arena(const cards::Card& card) {
+  auto s = card_export_scenario(card);
+  if (!s) return tl::unexpected(s.error());
+  interop::ArenaExportOptions options;
+  options.seed = card.content.seed;
+  auto json = interop::export_arena_scenario(s->world, s->program, options);
+  if (!json) return tl::unexpected(Error(json.error()).under("/program"));
+  return json;
 }
 
 }  // namespace socsim::server

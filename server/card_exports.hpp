@@ -25,5 +25,7 @@ Result<scenario::TrajectoryLog> card_trajectory_log(store::Store& store, const c
 Result<std::string> card_mcap(store::Store& store, const cards::Card& card, bool scene_people);
 // The card as a Gazebo world with an <actor> per person (core/interop/export_gazebo_actors.hpp).
 Result<std::string> card_gazebo_actors(store::Store& store, const cards::Card& card);
+// The card's world and program as an Arena-Rosnav scenario file (core/interop/export_arena.hpp).
+Result<std::string> card_arena(const cards::Card& card);
 
 }  // namespace socsim::server

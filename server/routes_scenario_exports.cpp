@@ -1,8 +1,8 @@
-// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap|gazebo: a scenario card for other simulators.
-// hunav: a tar of <base>.yaml + behavior_trees/<base>__agent_<id>_bt.xml (or ?archive=json for
+// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap|gazebo|arena: a scenario card for other
+// simulators. hunav: a tar of <base>.yaml + behavior_trees/<base>__agent_<id>_bt.xml (or ?archive=json for
 // {"files": {path: text}}); pedsim: pedsim_ros scenario XML; csv: the card's trajectory log;
 // mcap: the trajectory log as a ROS 2 / Foxglove recording (core/interop/mcap_export.hpp);
-// gazebo: an SDF world whose actors walk the logged trajectories.
+// gazebo: an SDF world whose actors walk the logged trajectories; arena: an Arena-Rosnav scenario.
 // Without ?format the card's own export document is returned, as before.
 //
 // The group is named "card_exports" so that it registers before "cards" (groups register in name
@@ -39,9 +39,10 @@ void export_routes(Router& http, RouteContext& ctx) {
       return attach(res, id + ".card.json", *doc, "application/json");
     }
     if (*format != "hunav" && *format != "pedsim" && *format != "csv" && *format != "mcap" &&
-        *format != "gazebo")
+        *format != "gazebo" && *format != "arena")
       return reply_problem(
-          res, bad_parameter("format", "format must be card, hunav, pedsim, csv, mcap or gazebo"), req.path);
+          res, bad_parameter("format", "format must be card, hunav, pedsim, csv, mcap, gazebo or arena"),
+          req.path);
     const std::string scene_people = query(req, "scene_people").value_or("true");
     if (scene_people != "true" && scene_people != "false")
       return reply_problem(res, bad_parameter("scene_people", "scene_people must be true or false"),
@@ -67,6 +68,11 @@ void export_routes(Router& http, RouteContext& ctx) {
       auto sdf = card_gazebo_actors(ctx.store, *card);
       if (!sdf) return reply_problem(res, sdf.error(), req.path);
       return attach(res, id + ".world", *sdf, "application/xml");
+    }
+    if (*format == "arena") {
+      auto json = card_arena(*card);
+      if (!json) return reply_problem(res, json.error(), req.path);
+      return attach(res, id + ".arena.json", *json, "application/json");
     }
     auto s = card_export_scenario(*card);
     if (!s) return reply_problem(res, s.error(), req.path);

@@ -20,9 +20,10 @@ constexpr const char* kCardUsage =
     "  card list             list cards   [--q TEXT] [--tag T] [--author A] [--domain D] [--page-size N] "
     "[--cursor C]\n"
     "  card show ID          print a card as JSON\n"
-    "  card export ID        write the card's export file  [-o FILE] [--format card|mcap|gazebo]\n"
+    "  card export ID        write the card's export file  [-o FILE] [--format card|mcap|gazebo|arena]\n"
     "                        mcap: the trajectory as a ROS 2 / Foxglove recording [--scene-people false];\n"
-    "                        gazebo: an SDF world whose actors walk the trajectory\n"
+    "                        gazebo: an SDF world whose actors walk the trajectory;\n"
+    "                        arena: an Arena-Rosnav scenario (people, obstacles, robot start and goal)\n"
     "  card import FILE      import an export file ('-' reads standard input)\n";
 
 int card_command(const std::vector<std::string>& args) {
@@ -78,9 +79,9 @@ int card_command(const std::vector<std::string>& args) {
   if (verb == "export") {
     const std::string format = p.opt("--format").value_or("card");
     const std::string scene_people = p.opt("--scene-people").value_or("true");
-    if ((format != "card" && format != "mcap" && format != "gazebo") ||
+    if ((format != "card" && format != "mcap" && format != "gazebo" && format != "arena") ||
         (scene_people != "true" && scene_people != "false")) {
-      std::cerr << "socsim: --format must be card, mcap or gazebo, --scene-people true or false\n"
+      std::cerr << "socsim: --format must be card, mcap, gazebo or arena, --scene-people true or false\n"
                 << kCardUsage;
       return 2;
     }
@@ -88,8 +89,9 @@ int card_command(const std::vector<std::string>& args) {
     if (format != "card") {
       auto card = catalogue.get(p.words[1]);
       if (!card) return cli_report(card.error());
-      doc = format == "mcap" ? card_mcap(**store, *card, scene_people == "true")
-                             : card_gazebo_actors(**store, *card);
+      doc = format == "mcap"    ? card_mcap(**store, *card, scene_people == "true")
+            : format == "arena" ? card_arena(*card)
+                                : card_gazebo_actors(**store, *card);
     } else {
       doc = catalogue.export_card(p.words[1]);
     }

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "core/crowd/program.hpp"
+#include "core/interop/export_arena.hpp"
 #include "core/interop/export_hunav.hpp"
 #include "core/interop/export_pedsim_scenario.hpp"
 #include "core/interop/pedsim_program.hpp"
@@ -19,8 +20,9 @@ constexpr const char* kImportUsage =
     "  scenario import-pedsim FILE.xml --world-out W.yaml --program-out P.json\n"
     "                        a pedsim_ros scenario as a world and a scenario program (for socsim simulate)\n";
 constexpr const char* kExportUsage =
-    "  scenario export --world W.yaml --program P.json --format hunav|pedsim --out DIR [--seed S]\n"
-    "                        HuNavSim agents YAML + one BT per agent, or a pedsim_ros scenario XML\n";
+    "  scenario export --world W.yaml --program P.json --format hunav|pedsim|arena --out DIR [--seed S]\n"
+    "                        HuNavSim agents YAML + one BT per agent, a pedsim_ros scenario XML,\n"
+    "                        or an Arena-Rosnav scenario JSON\n";
 
 bool write_file(const std::filesystem::path& path, const std::string& text) {
   auto s = cli_write_file(path.string(), text);
@@ -75,8 +77,8 @@ int export_command(const std::vector<std::string>& args) {
     std::cerr << "usage:\n" << kExportUsage;
     return 2;
   }
-  if (*format != "hunav" && *format != "pedsim") {
-    std::cerr << "socsim: --format must be hunav or pedsim, not '" << *format << "'\n";
+  if (*format != "hunav" && *format != "pedsim" && *format != "arena") {
+    std::cerr << "socsim: --format must be hunav, pedsim or arena, not '" << *format << "'\n";
     return 2;
   }
   std::uint64_t seed = 0;
@@ -103,6 +105,14 @@ int export_command(const std::vector<std::string>& args) {
     auto bundle = interop::export_hunav(*w, *program, options);
     if (!bundle) return report(*program_path, bundle.error());
     files = std::move(*bundle);
+  } else if (*format == "arena") {
+    interop::ArenaExportOptions options;
+    options.seed = seed;
+    auto json = interop::export_arena_scenario(*w, *program, options);
+    if (!json) return report(*program_path, json.error());
+    files.push_back(
+        {interop::file_stem(program->name.empty() ? w->name() : program->name, "scenario") + ".json",
+         std::move(*json)});
   } else {
     interop::PedsimExportOptions options;
     options.seed = seed;
