@@ -2,6 +2,7 @@
 
 #include "core/interop/export_arena.hpp"
 #include "core/interop/export_gazebo_actors.hpp"
+#include "core/interop/export_isaac.hpp"
 #include "core/interop/mcap_export.hpp"
 #include "core/scenario/trajectory_store.hpp"
 #include "core/world/world_document.hpp"
@@ -59,6 +60,19 @@ Result<std::string> card_arena(const cards::Card& card) {
   auto json = interop::export_arena_scenario(s->world, s->program, options);
   if (!json) return tl::unexpected(Error(json.error()).under("/program"));
   return json;
+}
+
+Result<std::vector<interop::ExportFile>> card_isaac(const cards::Card& card) {
+  auto s = card_export_scenario(card);
+  if (!s) return tl::unexpected(s.error());
+  interop::IsaacExportOptions options;
+  options.seed = card.content.seed;
+  const Json& log = card.content.trajectory_log;
+  if (log.is_object() && log.contains("duration_s") && log["duration_s"].is_number())
+    options.duration_s = log["duration_s"].get<double>();
+  auto files = interop::export_isaac(s->world, s->program, options);
+  if (!files) return tl::unexpected(Error(files.error()).under("/program"));
+  return files;
 }
 
 }  // namespace socsim::server

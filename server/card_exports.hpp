@@ -5,6 +5,7 @@
 
 #include "core/cards/card.hpp"
 #include "core/crowd/program.hpp"
+#include "core/interop/export_hunav.hpp"
 #include "core/scenario/trajectory_log.hpp"
 #include "core/store/store.hpp"
 #include "core/world/world.hpp"
@@ -27,5 +28,7 @@ Result<std::string> card_mcap(store::Store& store, const cards::Card& card, bool
 Result<std::string> card_gazebo_actors(store::Store& store, const cards::Card& card);
 // The card's world and program as an Arena-Rosnav scenario file (core/interop/export_arena.hpp).
 Result<std::string> card_arena(const cards::Card& card);
+// The card's world and program for Isaac Sim's Replicator Agent (core/interop/export_isaac.hpp).
+Result<std::vector<interop::ExportFile>> card_isaac(const cards::Card& card);
 
 }  // namespace socsim::server

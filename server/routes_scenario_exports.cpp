@@ -2,7 +2,8 @@
 // simulators. hunav: a tar of <base>.yaml + behavior_trees/<base>__agent_<id>_bt.xml (or ?archive=json for
 // {"files": {path: text}}); pedsim: pedsim_ros scenario XML; csv: the card's trajectory log;
 // mcap: the trajectory log as a ROS 2 / Foxglove recording (core/interop/mcap_export.hpp);
-// gazebo: an SDF world whose actors walk the logged trajectories; arena: an Arena-Rosnav scenario.
+// gazebo: an SDF world whose actors walk the logged trajectories; arena: an Arena-Rosnav scenario;
+// isaac: a tar (or ?archive=json) of world.usda, ira_config.yaml and people_commands.txt.
 // Without ?format the card's own export document is returned, as before.
 //
 // The group is named "card_exports" so that it registers before "cards" (groups register in name
@@ -39,9 +40,10 @@ void export_routes(Router& http, RouteContext& ctx) {
       return attach(res, id + ".card.json", *doc, "application/json");
     }
     if (*format != "hunav" && *format != "pedsim" && *format != "csv" && *format != "mcap" &&
-        *format != "gazebo" && *format != "arena")
+        *format != "gazebo" && *format != "arena" && *format != "isaac")
       return reply_problem(
-          res, bad_parameter("format", "format must be card, hunav, pedsim, csv, mcap, gazebo or arena"),
+          res,
+          bad_parameter("format", "format must be card, hunav, pedsim, csv, mcap, gazebo, arena or isaac"),
           req.path);
     const std::string scene_people = query(req, "scene_people").value_or("true");
     if (scene_people != "true" && scene_people != "false")
@@ -83,19 +85,24 @@ void export_routes(Router& http, RouteContext& ctx) {
       if (!xml) return reply_problem(res, xml.error(), req.path);
       return attach(res, id + ".pedsim.xml", *xml, "application/xml");
     }
-    interop::HunavOptions options;
-    options.seed = card->content.seed;
-    options.base_name = interop::file_stem(id, "card") + "_agents";
-    auto files = interop::export_hunav(s->world, s->program, options);
+    Result<std::vector<interop::ExportFile>> files;
+    if (*format == "isaac") {
+      files = card_isaac(*card);
+    } else {
+      interop::HunavOptions options;
+      options.seed = card->content.seed;
+      options.base_name = interop::file_stem(id, "card") + "_agents";
+      files = interop::export_hunav(s->world, s->program, options);
+    }
     if (!files) return reply_problem(res, files.error(), req.path);
     if (archive == "json") {
       Json bundle = Json::object();
       for (const auto& f : *files) bundle[f.path] = f.content;
-      return reply_json(res, 200, {{"format", "hunav"}, {"files", bundle}});
+      return reply_json(res, 200, {{"format", *format}, {"files", bundle}});
     }
     auto tar = interop::tar_archive(*files);
     if (!tar) return reply_problem(res, tar.error(), req.path);
-    attach(res, id + ".hunav.tar", *tar, "application/x-tar");
+    attach(res, id + "." + *format + ".tar", *tar, "application/x-tar");
   });
 }
 

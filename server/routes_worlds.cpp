@@ -207,12 +207,13 @@ void world_routes(Router& http, RouteContext& ctx) {
 
   http.Get(std::string(kWorldPath) + "/export", [&ctx](const Request& req, Response& res) {
     const auto format = query(req, "format");
-    static const std::vector<std::string> kFormats = {"sdf", "pedsim", "map", "map-pgm", "map-yaml", "svg"};
+    static const std::vector<std::string> kFormats = {"sdf",     "usda",     "pedsim", "map",
+                                                      "map-pgm", "map-yaml", "svg"};
     if (!format || std::find(kFormats.begin(), kFormats.end(), *format) == kFormats.end())
       return reply_problem(
           res,
           Error(ErrorCode::kValidation, "choose an export format",
-                {FieldError::query("format", "one of sdf, pedsim, map, map-pgm, map-yaml, svg")}),
+                {FieldError::query("format", "one of sdf, usda, pedsim, map, map-pgm, map-yaml, svg")}),
           req.path);
     auto w = load_world(ctx.store, req.matches[1].str());
     if (!w) return reply_problem(res, w.error(), req.path);
@@ -225,6 +226,10 @@ void world_routes(Router& http, RouteContext& ctx) {
     if (*format == "sdf") {
       attach(file + ".sdf");
       return res.set_content(world::export_sdf(*world), "application/xml");
+    }
+    if (*format == "usda") {
+      attach(file + ".usda");
+      return res.set_content(world::export_usda(*world), "model/vnd.usda");
     }
     if (*format == "pedsim") {
       attach(file + ".pedsim.xml");

@@ -25,6 +25,14 @@ struct SdfOptions {
 // the thickness so corners close; door jambs are not.
 std::string export_sdf(const World& world, const SdfOptions& options = {});
 
+struct UsdOptions {
+  double wall_thickness = 0.15;  // m, as the SDF export
+};
+// USD ASCII (usda 1.0, Z up, metres): /World at the world's origin pose with Scopes Zones (one
+// flat Mesh per zone, named after it), Walls (scaled unit Cubes; door openings are the gaps),
+// Doors and Entities (Xforms with socsim:* attributes) and Regions (guide Meshes of the ROIs).
+std::string export_usda(const World& world, const UsdOptions& options = {});
+
 struct RosMapOptions {
   double resolution = 0.05;  // m per pixel
   std::string image_file = "map.pgm";

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/cards/catalogue.hpp"
+#include "core/interop/tar_archive.hpp"
 #include "core/store/store.hpp"
 #include "server/card_exports.hpp"
 #include "server/registry.hpp"
@@ -20,10 +21,12 @@ constexpr const char* kCardUsage =
     "  card list             list cards   [--q TEXT] [--tag T] [--author A] [--domain D] [--page-size N] "
     "[--cursor C]\n"
     "  card show ID          print a card as JSON\n"
-    "  card export ID        write the card's export file  [-o FILE] [--format card|mcap|gazebo|arena]\n"
+    "  card export ID        write the card's export file  [-o FILE] [--format "
+    "card|mcap|gazebo|arena|isaac]\n"
     "                        mcap: the trajectory as a ROS 2 / Foxglove recording [--scene-people false];\n"
     "                        gazebo: an SDF world whose actors walk the trajectory;\n"
-    "                        arena: an Arena-Rosnav scenario (people, obstacles, robot start and goal)\n"
+    "                        arena: an Arena-Rosnav scenario (people, obstacles, robot start and goal);\n"
+    "                        isaac: a tar of world.usda, ira_config.yaml and people_commands.txt\n"
     "  card import FILE      import an export file ('-' reads standard input)\n";
 
 int card_command(const std::vector<std::string>& args) {
@@ -79,19 +82,26 @@ int card_command(const std::vector<std::string>& args) {
   if (verb == "export") {
     const std::string format = p.opt("--format").value_or("card");
     const std::string scene_people = p.opt("--scene-people").value_or("true");
-    if ((format != "card" && format != "mcap" && format != "gazebo" && format != "arena") ||
+    if ((format != "card" && format != "mcap" && format != "gazebo" && format != "arena" &&
+         format != "isaac") ||
         (scene_people != "true" && scene_people != "false")) {
-      std::cerr << "socsim: --format must be card, mcap, gazebo or arena, --scene-people true or false\n"
-                << kCardUsage;
+      std::cerr
+          << "socsim: --format must be card, mcap, gazebo, arena or isaac, --scene-people true or false\n"
+          << kCardUsage;
       return 2;
     }
     Result<std::string> doc;
     if (format != "card") {
       auto card = catalogue.get(p.words[1]);
       if (!card) return cli_report(card.error());
-      doc = format == "mcap"    ? card_mcap(**store, *card, scene_people == "true")
-            : format == "arena" ? card_arena(*card)
-                                : card_gazebo_actors(**store, *card);
+      if (format == "isaac") {
+        auto files = card_isaac(*card);
+        doc = files ? interop::tar_archive(*files) : Result<std::string>(tl::unexpected(files.error()));
+      } else {
+        doc = format == "mcap"    ? card_mcap(**store, *card, scene_people == "true")
+              : format == "arena" ? card_arena(*card)
+                                  : card_gazebo_actors(**store, *card);
+      }
     } else {
       doc = catalogue.export_card(p.words[1]);
     }

@@ -7,6 +7,7 @@
 #include "core/crowd/program.hpp"
 #include "core/interop/export_arena.hpp"
 #include "core/interop/export_hunav.hpp"
+#include "core/interop/export_isaac.hpp"
 #include "core/interop/export_pedsim_scenario.hpp"
 #include "core/interop/pedsim_program.hpp"
 #include "core/world/world_yaml.hpp"
@@ -20,9 +21,11 @@ constexpr const char* kImportUsage =
     "  scenario import-pedsim FILE.xml --world-out W.yaml --program-out P.json\n"
     "                        a pedsim_ros scenario as a world and a scenario program (for socsim simulate)\n";
 constexpr const char* kExportUsage =
-    "  scenario export --world W.yaml --program P.json --format hunav|pedsim|arena --out DIR [--seed S]\n"
+    "  scenario export --world W.yaml --program P.json --format hunav|pedsim|arena|isaac --out DIR [--seed "
+    "S]\n"
     "                        HuNavSim agents YAML + one BT per agent, a pedsim_ros scenario XML,\n"
-    "                        or an Arena-Rosnav scenario JSON\n";
+    "                        an Arena-Rosnav scenario JSON, or Isaac Sim files (world.usda, IRA\n"
+    "                        config, omni.anim.people commands)\n";
 
 bool write_file(const std::filesystem::path& path, const std::string& text) {
   auto s = cli_write_file(path.string(), text);
@@ -77,8 +80,8 @@ int export_command(const std::vector<std::string>& args) {
     std::cerr << "usage:\n" << kExportUsage;
     return 2;
   }
-  if (*format != "hunav" && *format != "pedsim" && *format != "arena") {
-    std::cerr << "socsim: --format must be hunav, pedsim or arena, not '" << *format << "'\n";
+  if (*format != "hunav" && *format != "pedsim" && *format != "arena" && *format != "isaac") {
+    std::cerr << "socsim: --format must be hunav, pedsim, arena or isaac, not '" << *format << "'\n";
     return 2;
   }
   std::uint64_t seed = 0;
@@ -103,6 +106,12 @@ int export_command(const std::vector<std::string>& args) {
     interop::HunavOptions options;
     options.seed = seed;
     auto bundle = interop::export_hunav(*w, *program, options);
+    if (!bundle) return report(*program_path, bundle.error());
+    files = std::move(*bundle);
+  } else if (*format == "isaac") {
+    interop::IsaacExportOptions options;
+    options.seed = seed;
+    auto bundle = interop::export_isaac(*w, *program, options);
     if (!bundle) return report(*program_path, bundle.error());
     files = std::move(*bundle);
   } else if (*format == "arena") {

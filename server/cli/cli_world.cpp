@@ -23,7 +23,7 @@ constexpr const char* kWorldUsage =
     "summary on stderr\n"
     "  world validate FILE [--domain D] [--jurisdiction J]                 validation (line, field) and "
     "compliance report\n"
-    "  world export FILE --format sdf|pedsim|map|svg -o OUT               simulator/map export (map: OUT.pgm "
+    "  world export FILE --format sdf|usda|pedsim|map|svg -o OUT          simulator/map export (map: OUT.pgm "
     "+ OUT.yaml)\n";
 
 int usage(const std::string& why) {
@@ -133,6 +133,8 @@ int export_world(const CliArgs& a) {
   Status s;
   if (*format == "sdf") {
     s = cli_write_file(*out, world::export_sdf(*w));
+  } else if (*format == "usda") {
+    s = cli_write_file(*out, world::export_usda(*w));
   } else if (*format == "pedsim") {
     s = cli_write_file(*out, world::export_pedsim(*w));
   } else if (*format == "svg") {
@@ -147,7 +149,7 @@ int export_world(const CliArgs& a) {
     s = cli_write_file(stem + ".pgm", map.pgm);
     if (s) s = cli_write_file(stem + ".yaml", map.yaml);
   } else {
-    return usage("--format is sdf, pedsim, map or svg");
+    return usage("--format is sdf, usda, pedsim, map or svg");
   }
   if (!s) return cli_report(s.error());
   return 0;

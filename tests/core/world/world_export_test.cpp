@@ -3,7 +3,10 @@
 // files for the clinic example and the world origin applied to simulator coordinates.
 #include "core/world/world_export.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -102,6 +105,114 @@ TEST(WorldExport, SdfGoldenForTheClinic) {
       "# golden: export_sdf of schemas/examples/world_clinic.yaml — floor box, one static link per\n"
       "# golden: derived wall (length x 0.15 x 3 m box at its centre, corners closed, jambs not).\n",
       export_sdf(clinic()));
+}
+
+// USD ASCII read back by a small reader of its syntax: the header, balanced brackets outside
+// strings, every prim a valid identifier unique among its siblings, finite numbers; the scopes hold
+// one prim per zone, non-degenerate wall, door, region and entity.
+struct UsdaPrims {
+  std::map<std::string, std::vector<std::string>> children;  // scope path → prim names
+  std::string error;
+};
+UsdaPrims read_usda(const std::string& text) {
+  UsdaPrims out;
+  if (text.rfind("#usda 1.0\n", 0) != 0) out.error = "no #usda 1.0 header";
+  std::vector<char> open;
+  std::vector<std::string> path;  // prim names of the open '{' blocks ("" for non-prim braces)
+  std::string pending;            // the prim a following '{' opens
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size() && out.error.empty(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
+      continue;
+    }
+    if (c == '#' && (i == 0 || text[i - 1] == '\n')) {
+      while (i < text.size() && text[i] != '\n') ++i;
+      continue;
+    }
+    const bool word_start = i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1]));
+    if (word_start && (text.compare(i, 3, "nan") == 0 || text.compare(i, 3, "inf") == 0) &&
+        (i + 3 >= text.size() || !std::isalnum(static_cast<unsigned char>(text[i + 3]))))
+      out.error = "a non-finite number";
+    if (c == '"') {
+      in_string = true;
+    } else if (c == 'd' && text.compare(i, 4, "def ") == 0 && (i == 0 || std::isspace(text[i - 1]))) {
+      const std::size_t q1 = text.find('"', i), q2 = text.find('"', q1 + 1);
+      const std::string name = text.substr(q1 + 1, q2 - q1 - 1);
+      const bool valid = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+                         std::all_of(name.begin(), name.end(), [](char ch) {
+                           return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+                         });
+      if (!valid) out.error = "invalid prim name '" + name + "'";
+      std::string parent;
+      for (const auto& p : path)
+        if (!p.empty()) parent += "/" + p;
+      auto& siblings = out.children[parent];
+      if (std::find(siblings.begin(), siblings.end(), name) != siblings.end())
+        out.error = "prim " + parent + "/" + name + " defined twice";
+      siblings.push_back(name);
+      pending = name;
+      i = q2;
+    } else if (c == '{' || c == '(' || c == '[') {
+      open.push_back(c);
+      if (c == '{') path.push_back(std::exchange(pending, {}));
+    } else if (c == '}' || c == ')' || c == ']') {
+      const char want = c == '}' ? '{' : c == ')' ? '(' : '[';
+      if (open.empty() || open.back() != want)
+        out.error = std::string("unbalanced '") + c + "'";
+      else
+        open.pop_back();
+      if (c == '}' && !path.empty()) path.pop_back();
+    }
+  }
+  if (out.error.empty() && (in_string || !open.empty())) out.error = "unclosed string or bracket";
+  return out;
+}
+
+TEST(WorldExport, UsdaStageHasOnePrimPerElementAndParses) {
+  for (const char* file : {"world_clinic.yaml", "world_fig3.yaml"}) {
+    const World w = testing::load(testing::example(file));
+    const std::string usda = export_usda(w);
+    const UsdaPrims prims = read_usda(usda);
+    ASSERT_TRUE(prims.error.empty()) << file << ": " << prims.error;
+    EXPECT_EQ(prims.children.at(""), std::vector<std::string>{"World"});
+    EXPECT_EQ(prims.children.at("/World"),
+              (std::vector<std::string>{"Zones", "Walls", "Doors", "Regions", "Entities"}));
+    auto count = [&](const std::string& scope) {
+      const auto it = prims.children.find("/World/" + scope);
+      return it == prims.children.end() ? 0u : it->second.size();
+    };
+    EXPECT_EQ(count("Zones"), w.zones().size()) << file;
+    EXPECT_EQ(count("Walls"), w.walls().size()) << file;
+    EXPECT_EQ(count("Doors"), w.doors().size()) << file;
+    EXPECT_EQ(count("Regions"), w.rois().size()) << file;
+    EXPECT_EQ(count("Entities"), w.entities().size()) << file;
+    EXPECT_THAT(usda, HasSubstr("upAxis = \"Z\""));
+  }
+  // Names that are not USD identifiers are made into ones, and stay distinct.
+  World odd = testing::load(R"(name: odd
+zones:
+  - {name: 2nd.floor, type: hall, polygon: [[0,0],[4,0],[4,4],[0,4]]}
+  - {name: 2nd-floor, type: hall, polygon: [[4,0],[8,0],[8,4],[4,4]]}
+doors:
+  - {name: d, pose: [4, 2], width: 1.0, connects: [2nd.floor, 2nd-floor]}
+)");
+  const UsdaPrims prims = read_usda(export_usda(odd));
+  ASSERT_TRUE(prims.error.empty()) << prims.error;
+  EXPECT_EQ(prims.children.at("/World/Zones"), (std::vector<std::string>{"_2nd_floor", "_2nd_floor_2"}));
+}
+
+TEST(WorldExport, UsdaGoldenForTheClinic) {
+  testing::expect_golden(
+      "world_clinic.usda",
+      "# golden: export_usda of schemas/examples/world_clinic.yaml — zones as flat meshes, "
+      "walls as scaled cubes,\n"
+      "# golden: doors, regions (guide meshes) and entities with socsim:* attributes.\n",
+      export_usda(clinic()));
 }
 
 TEST(WorldExport, RosMapMarksWallsAndOutsideOccupied) {
