@@ -1,12 +1,15 @@
-// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap|gazebo: a card with the clinic world and the
-// queue program exports as a HuNavSim tar (or JSON bundle) and pedsim_ros XML; a card with a stored
+// GET /api/v1/cards/{id}/export?format=hunav|pedsim|csv|mcap|gazebo|arena|isaac: a card with the clinic world
+// and the queue program exports as a HuNavSim tar (or JSON bundle), pedsim_ros XML, an Arena-Rosnav scenario
+// and the Isaac Sim files (the same bytes as the core exporters with the card's seed); a card with a stored
 // trajectory log as CSV, MCAP and Gazebo actors; without format the card's export document as before; bad
 // formats 422.
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
 #include "core/crowd/scenario_runner.hpp"
+#include "core/interop/export_arena.hpp"
 #include "core/interop/export_gazebo_actors.hpp"
+#include "core/interop/export_isaac.hpp"
 #include "core/interop/mcap_export.hpp"
 #include "core/scenario/trajectory_store.hpp"
 #include "core/world/pedsim_import.hpp"
@@ -82,6 +85,38 @@ TEST(ScenarioExports, HunavTarAndJsonBundleAndPedsimXml) {
   EXPECT_EQ(card_doc->status, 200);
   EXPECT_EQ(card_doc->get_header_value("Content-Type"), "application/json");
   EXPECT_NE(card_doc->body.find(id), std::string::npos);
+}
+
+TEST(ScenarioExports, ArenaScenarioAndIsaacFilesAreTheCoreExportsWithTheCardsSeed) {
+  testing::TestServer s;
+  auto c = s.client();
+  const std::string id = post_card(c, clinic_card());
+  const world::World w = world::world_from_yaml(example("world_clinic.yaml")).value();
+  const crowd::Program p = crowd::program_from_text(example("program_queue.json")).value();
+
+  auto arena = c.Get("/api/v1/cards/" + id + "/export?format=arena");
+  ASSERT_TRUE(arena);
+  ASSERT_EQ(arena->status, 200) << arena->body;
+  EXPECT_EQ(arena->get_header_value("Content-Type"), "application/json");
+  interop::ArenaExportOptions ao;
+  ao.seed = 11;
+  // The card's world went through its JSON document: compare with the same document's world.
+  const world::World stored = world::world_from_document(world::world_to_document(w)).value();
+  EXPECT_EQ(arena->body, interop::export_arena_scenario(stored, p, ao).value());
+
+  auto isaac = c.Get("/api/v1/cards/" + id + "/export?format=isaac&archive=json");
+  ASSERT_TRUE(isaac);
+  ASSERT_EQ(isaac->status, 200) << isaac->body;
+  const Json files = Json::parse(isaac->body);
+  EXPECT_EQ(files["format"], "isaac");
+  interop::IsaacExportOptions io;
+  io.seed = 11;
+  for (const auto& f : interop::export_isaac(stored, p, io).value())
+    EXPECT_EQ(files["files"][f.path], f.content) << f.path;
+  auto tar = c.Get("/api/v1/cards/" + id + "/export?format=isaac");
+  ASSERT_TRUE(tar);
+  EXPECT_EQ(tar->get_header_value("Content-Type"), "application/x-tar");
+  EXPECT_NE(tar->body.find("isaacsim.replicator.agent:"), std::string::npos);
 }
 
 TEST(ScenarioExports, CsvMcapAndGazeboFromTheStoredTrajectoryLog) {
