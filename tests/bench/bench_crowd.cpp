@@ -2,6 +2,7 @@
 // pillars and groups) and reports throughput; then checks the cell-list step against the O(N²)
 // reference of the same forces at --reference-agents (default 2000) for 100 steps.
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -43,6 +44,17 @@ SOCSIM_BENCH("crowd", "--agents N --steps S --threads T [--walls] [--groups] [--
                const double seconds = socsim::bench::seconds_since(t0);
                // CPU time of all threads: on a shared machine the wall clock also counts waiting.
                const double cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+               // FNV-1a over the bits of every position and velocity: equal between two builds
+               // exactly when a change to the step left every result bit-identical.
+               std::uint64_t fnv = 14695981039346656037ULL;
+               for (std::uint32_t i = 0; i < n; ++i) {
+                 const Vec2 p = sim.position(socsim::crowd::AgentId(i));
+                 const Vec2 v = sim.velocity(socsim::crowd::AgentId(i));
+                 for (const double value : {p.x, p.y, v.x, v.y}) {
+                   auto bits = std::bit_cast<std::uint64_t>(value);
+                   for (int b = 0; b < 8; ++b, bits >>= 8) fnv = (fnv ^ (bits & 0xffU)) * 1099511628211ULL;
+                 }
+               }
                socsim::bench::emit(
                    {{"bench", "crowd"},
                     {"agents", n},
@@ -53,7 +65,8 @@ SOCSIM_BENCH("crowd", "--agents N --steps S --threads T [--walls] [--groups] [--
                     {"agent_steps_per_s", static_cast<double>(n) * static_cast<double>(steps) / seconds},
                     {"ms_per_step", 1000.0 * seconds / static_cast<double>(steps)},
                     {"cpu_us_per_agent_step",
-                     1e6 * cpu_seconds / (static_cast<double>(n) * static_cast<double>(steps))}});
+                     1e6 * cpu_seconds / (static_cast<double>(n) * static_cast<double>(steps))},
+                    {"state_fnv1a", fnv}});
 
                const auto m = static_cast<std::size_t>(a.integer("reference-agents", 2000));
                if (m == 0) return 0;
