@@ -126,9 +126,12 @@ int crowd_vs_rvo2(const socsim::bench::Args& a) {
     rvo.step();
   }
   Timing socsim_time;
-  Timing rvo_total;  // preferred velocities + doStep
-  Timing rvo_step;   // doStep alone
+  Timing rvo_total;                  // preferred velocities (+ doStep once the rounds are over)
+  Timing rvo_step;                   // doStep alone
+  std::vector<double> round_ratios;  // per round: RVO2's wall time / socsim's, the same load
   for (std::int64_t r = 0; r < rounds; ++r) {
+    const double socsim_before = socsim_time.wall_s;
+    const double rvo_before = rvo_total.wall_s + rvo_step.wall_s;
     socsim_time.add([&] {
       for (std::int64_t k = 0; k < steps; ++k) sim.step();
     });
@@ -136,6 +139,8 @@ int crowd_vs_rvo2(const socsim::bench::Args& a) {
       rvo_total.add([&] { rvo.set_preferred_velocities(); });
       rvo_step.add([&] { rvo.step(); });
     }
+    round_ratios.push_back((rvo_total.wall_s + rvo_step.wall_s - rvo_before) /
+                           (socsim_time.wall_s - socsim_before));
   }
   rvo_total.wall_s += rvo_step.wall_s;
   rvo_total.cpu_s += rvo_step.cpu_s;
@@ -168,6 +173,8 @@ int crowd_vs_rvo2(const socsim::bench::Args& a) {
                        {"ratio_wall", socsim_rate / rvo_rate},
                        {"ratio_wall_vs_dostep_only", socsim_rate / rvo_step_rate},
                        {"ratio_cpu", rvo_total.cpu_s / socsim_time.cpu_s},
+                       {"ratio_wall_per_round", round_ratios},
+                       {"ratio_wall_median_round", socsim::bench::percentile(round_ratios, 50)},
                        {"socsim_mean_speed", socsim_speed / static_cast<double>(n)},
                        {"rvo2_mean_speed", rvo.mean_speed()}});
   return 0;
