@@ -315,14 +315,22 @@ class NeighbourSums {
     const int padded = (count_ + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
     for (int m = count_; m < padded; ++m) batch_.dx[m] = batch_.dy[m] = batch_.dvx[m] = batch_.dvy[m] = 0.0f;
     if (heading_) {
-      if (headway_on_)
-        speed_cap_ = headway_speed_cap(padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ex_, ey_, band_,
-                                       speed_along_, kOncoming, headway_distance_, headway_inv_time_,
-                                       headway_anticipation_, speed_cap_);
-      if (side_factor_ > 0.0f)
-        side_push_ +=
-            oncoming_side_push(padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ex_, ey_, side_band_,
-                               speed_along_, kOncoming, side_bias_, side_factor_, side_inv_range_);
+      const AheadParams ahead{ex_,
+                              ey_,
+                              speed_along_,
+                              kOncoming,
+                              band_,
+                              headway_distance_,
+                              headway_inv_time_,
+                              headway_anticipation_,
+                              side_band_,
+                              side_bias_,
+                              side_factor_,
+                              side_inv_range_};
+      const AheadTerms terms =
+          ahead_terms(padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ahead, speed_cap_);
+      if (headway_on_) speed_cap_ = terms.speed_cap;
+      side_push_ += terms.side_push;  // 0 when side_factor is 0
     }
     static constexpr float kNoTies[kBatch] = {};
     social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy,

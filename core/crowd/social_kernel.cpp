@@ -140,4 +140,67 @@ oncoming_side_push(int count, const float* __restrict dx, const float* __restric
   return sum;
 }
 
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+AheadTerms
+ahead_terms(int count, const float* __restrict dx, const float* __restrict dy, const float* __restrict dvx,
+            const float* __restrict dvy, const AheadParams& p, float best) {
+  // The lane computations of headway_speed_cap and oncoming_side_push, sharing the loads and the
+  // projections on the walking direction.
+  const float ex = p.ex, ey = p.ey, speed_along = p.speed_along, oncoming = p.oncoming;
+  const float band2 = p.headway_band * p.headway_band;
+  const float distance = p.distance, inv_time = p.inv_time, anticipation = p.anticipation;
+  const float side_band2 = p.side_band * p.side_band;
+  const float bias = p.side_bias, scale = p.side_factor * kForceQuantum, inv_range = p.side_inv_range;
+  constexpr int kLanes = 8;
+  alignas(32) std::int32_t least[kLanes];
+  // Per-lane sums of the pushes in 32 bits: a lane sees at most kBatch / 8 = 8 neighbours of a
+  // batch and |push| <= side_factor·2^20 <= 100·2^20, so 8 of them stay below 2^31 (widened once
+  // at the end; integer sums, so the split into lanes does not change the total).
+  alignas(32) std::int32_t lane_sum[kLanes] = {};
+  for (int l = 0; l < kLanes; ++l) least[l] = std::bit_cast<std::int32_t>(best);
+  std::int64_t sum = 0;
+  const auto lane = [&](int m, std::int32_t* cap_bits, std::int32_t* push) {
+    const float ox = dx[m];
+    const float oy = dy[m];
+    const float ahead = ox * ex + oy * ey;
+    const float side = ox * ey - oy * ex;
+    const float closing = dvx[m] * ex + dvy[m] * ey;  // (v_i − v_j)·e
+    const float toward = speed_along - closing;
+    const float d = std::sqrt(ox * ox + oy * oy);
+    const float cap = std::max((d - distance - anticipation * closing) * inv_time, 0.0f);
+    const std::int32_t in_front = -static_cast<std::int32_t>(ahead > 0.0f);
+    const std::int32_t follows = in_front & -static_cast<std::int32_t>(side * side < band2) &
+                                 -static_cast<std::int32_t>(toward >= -oncoming);
+    *cap_bits = (std::bit_cast<std::int32_t>(cap) & follows) | (INT32_MAX & ~follows);
+    const std::int32_t meets = in_front & -static_cast<std::int32_t>(side * side < side_band2) &
+                               -static_cast<std::int32_t>(toward < -oncoming);
+    const float magnitude = scale * fast_expf(-std::max(ahead, 0.0f) * inv_range);
+    const float signed_push = side < bias ? magnitude : -magnitude;
+    *push = static_cast<std::int32_t>(signed_push) & meets;
+  };
+  int m = 0;
+  for (; m + kLanes <= count; m += kLanes) {
+    for (int l = 0; l < kLanes; ++l) {
+      std::int32_t c = 0;
+      std::int32_t push = 0;
+      lane(m + l, &c, &push);
+      least[l] = least[l] < c ? least[l] : c;
+      lane_sum[l] += push;
+    }
+  }
+  for (int l = 0; l < kLanes; ++l) sum += lane_sum[l];
+  for (; m < count; ++m) {
+    std::int32_t c = 0;
+    std::int32_t push = 0;
+    lane(m, &c, &push);
+    least[0] = std::min(least[0], c);
+    sum += push;
+  }
+  std::int32_t result = least[0];
+  for (int l = 1; l < kLanes; ++l) result = std::min(result, least[l]);
+  return {std::bit_cast<float>(result), sum};
+}
+
 }  // namespace socsim::crowd

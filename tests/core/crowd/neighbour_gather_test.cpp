@@ -222,5 +222,30 @@ TEST(SocialKernel, SidePushOverTheBatchEqualsPairByPair) {
   EXPECT_EQ(push(0, 24) + push(24, kBatch - 24), sum);
 }
 
+// The fused pass the step uses gives exactly the two kernels' results, over whole batches and
+// over odd counts (the scalar tail).
+TEST(SocialKernel, AheadTermsEqualTheHeadwayCapAndTheSidePush) {
+  const float inf = std::numeric_limits<float>::infinity();
+  for (std::uint64_t seed : {41, 43, 47}) {
+    const PairBatch batch = random_batch(seed, 3.0, 0.8, 3.0, 0.6);
+    const AheadParams p{0.6f,        0.8f, 1.2f, 0.1f, 0.345f, 0.4f,
+                        1.0f / 0.6f, 2.5f, 0.7f, 0.1f, 1.5f,   1.0f / 1.5f};
+    for (int count : {kBatch, 24, 13, 1}) {
+      for (float best : {inf, 0.7f}) {
+        const AheadTerms t = ahead_terms(count, batch.dx, batch.dy, batch.dvx, batch.dvy, p, best);
+        const float cap =
+            headway_speed_cap(count, batch.dx, batch.dy, batch.dvx, batch.dvy, p.ex, p.ey, p.headway_band,
+                              p.speed_along, p.oncoming, p.distance, p.inv_time, p.anticipation, best);
+        const std::int64_t push =
+            oncoming_side_push(count, batch.dx, batch.dy, batch.dvx, batch.dvy, p.ex, p.ey, p.side_band,
+                               p.speed_along, p.oncoming, p.side_bias, p.side_factor, p.side_inv_range);
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(t.speed_cap), std::bit_cast<std::uint32_t>(cap))
+            << "seed " << seed << " count " << count;
+        EXPECT_EQ(t.side_push, push) << "seed " << seed << " count " << count;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace socsim::crowd
