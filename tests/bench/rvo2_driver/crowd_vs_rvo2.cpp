@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <vector>
 
@@ -153,30 +154,34 @@ int crowd_vs_rvo2(const socsim::bench::Args& a) {
   const double socsim_rate = agent_steps / socsim_time.wall_s;
   const double rvo_rate = agent_steps / rvo_total.wall_s;
   const double rvo_step_rate = agent_steps / rvo_step.wall_s;
-  socsim::bench::emit({{"bench", "crowd-vs-rvo2"},
-                       {"agents", n},
-                       {"threads", threads},
-                       {"steps", steps * rounds},
-                       {"rounds", rounds},
-                       {"walls", walls},
-                       {"groups", groups},
-                       {"rvo2",
-                        {{"neighbor_dist", p.neighbor_dist},
-                         {"max_neighbors", p.max_neighbors},
-                         {"time_horizon", p.time_horizon},
-                         {"time_horizon_obst", p.time_horizon_obst}}},
-                       {"socsim_agent_steps_per_s", socsim_rate},
-                       {"socsim_cpu_us_per_agent_step", 1e6 * socsim_time.cpu_s / agent_steps},
-                       {"rvo2_agent_steps_per_s", rvo_rate},
-                       {"rvo2_cpu_us_per_agent_step", 1e6 * rvo_total.cpu_s / agent_steps},
-                       {"rvo2_dostep_only_agent_steps_per_s", rvo_step_rate},
-                       {"ratio_wall", socsim_rate / rvo_rate},
-                       {"ratio_wall_vs_dostep_only", socsim_rate / rvo_step_rate},
-                       {"ratio_cpu", rvo_total.cpu_s / socsim_time.cpu_s},
-                       {"ratio_wall_per_round", round_ratios},
-                       {"ratio_wall_median_round", socsim::bench::percentile(round_ratios, 50)},
-                       {"socsim_mean_speed", socsim_speed / static_cast<double>(n)},
-                       {"rvo2_mean_speed", rvo.mean_speed()}});
+  socsim::bench::emit(
+      {{"bench", "crowd-vs-rvo2"},
+       {"agents", n},
+       {"threads", threads},
+       {"steps", steps * rounds},
+       {"rounds", rounds},
+       {"walls", walls},
+       {"groups", groups},
+       // GOMP busy-waits at RVO2's barriers unless told otherwise; on a loaded
+       // machine that inflates RVO2's times (docs/crowd.md, "Side by side").
+       {"omp_wait_policy", std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY") : "(default)"},
+       {"rvo2",
+        {{"neighbor_dist", p.neighbor_dist},
+         {"max_neighbors", p.max_neighbors},
+         {"time_horizon", p.time_horizon},
+         {"time_horizon_obst", p.time_horizon_obst}}},
+       {"socsim_agent_steps_per_s", socsim_rate},
+       {"socsim_cpu_us_per_agent_step", 1e6 * socsim_time.cpu_s / agent_steps},
+       {"rvo2_agent_steps_per_s", rvo_rate},
+       {"rvo2_cpu_us_per_agent_step", 1e6 * rvo_total.cpu_s / agent_steps},
+       {"rvo2_dostep_only_agent_steps_per_s", rvo_step_rate},
+       {"ratio_wall", socsim_rate / rvo_rate},
+       {"ratio_wall_vs_dostep_only", socsim_rate / rvo_step_rate},
+       {"ratio_cpu", rvo_total.cpu_s / socsim_time.cpu_s},
+       {"ratio_wall_per_round", round_ratios},
+       {"ratio_wall_median_round", socsim::bench::percentile(round_ratios, 50)},
+       {"socsim_mean_speed", socsim_speed / static_cast<double>(n)},
+       {"rvo2_mean_speed", rvo.mean_speed()}});
   return 0;
 }
 
