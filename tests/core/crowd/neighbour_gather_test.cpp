@@ -247,5 +247,37 @@ TEST(SocialKernel, AheadTermsEqualTheHeadwayCapAndTheSidePush) {
   }
 }
 
+// LightSFM's pair force is antisymmetric between agents with the same parameters, and the
+// kernel keeps that to the bit: seen from j, every input is negated exactly (offset, relative
+// velocity, tie direction), so F_ji = −F_ij. A step could therefore compute each such pair once
+// (docs/crowd.md, "Side by side with RVO2").
+TEST(SocialKernel, PairForceIsAntisymmetricToTheBit) {
+  const SocialParams p{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, 2.1f};
+  PairBatch batch = random_batch(53, 3.0, 3.0, 2.0, 2.0);
+  batch.dx[7] = batch.dy[7] = 0.0f;  // coincident: the tie directions are opposite too
+  batch.tie_x[7] = 0.6f;
+  batch.tie_y[7] = -0.8f;
+  PairBatch mirrored = batch;
+  for (int m = 0; m < kBatch; ++m) {
+    mirrored.dx[m] = -batch.dx[m];
+    mirrored.dy[m] = -batch.dy[m];
+    mirrored.dvx[m] = -batch.dvx[m];
+    mirrored.dvy[m] = -batch.dvy[m];
+    mirrored.tie_x[m] = -batch.tie_x[m];
+    mirrored.tie_y[m] = -batch.tie_y[m];
+  }
+  social_kernel(p, kBatch, batch.dx, batch.dy, batch.dvx, batch.dvy, batch.tie_x, batch.tie_y, batch.fx,
+                batch.fy);
+  social_kernel(p, kBatch, mirrored.dx, mirrored.dy, mirrored.dvx, mirrored.dvy, mirrored.tie_x,
+                mirrored.tie_y, mirrored.fx, mirrored.fy);
+  int nonzero = 0;
+  for (int m = 0; m < kBatch; ++m) {
+    EXPECT_EQ(mirrored.fx[m], -batch.fx[m]) << "lane " << m;
+    EXPECT_EQ(mirrored.fy[m], -batch.fy[m]) << "lane " << m;
+    nonzero += batch.fx[m] != 0;
+  }
+  EXPECT_GT(nonzero, kBatch / 2);
+}
+
 }  // namespace
 }  // namespace socsim::crowd
