@@ -310,19 +310,28 @@ class NeighbourSums {
       }
       touching(a.x[k] - x_, a.y[k] - y_, d2, reach, a.group[k], who);
     }
-    if (heading_) {
-      if (headway_on_)
-        speed_cap_ = headway_speed_cap(count_, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ex_, ey_, band_,
-                                       speed_along_, kOncoming, headway_distance_, headway_inv_time_,
-                                       headway_anticipation_, speed_cap_);
-      if (side_factor_ > 0.0f)
-        side_push_ +=
-            oncoming_side_push(count_, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ex_, ey_, side_band_,
-                               speed_along_, kOncoming, side_bias_, side_factor_, side_inv_range_);
-    }
-    // Pad to whole vectors with inert entries (all zero: the kernel returns 0 for them).
+    // Pad to whole vectors with inert entries (all zero: the kernels return 0 for them and count
+    // them neither ahead nor oncoming, (dx, dy)·e = 0), so no kernel runs a scalar tail.
     const int padded = (count_ + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
     for (int m = count_; m < padded; ++m) batch_.dx[m] = batch_.dy[m] = batch_.dvx[m] = batch_.dvy[m] = 0.0f;
+    if (heading_) {
+      const AheadParams ahead{ex_,
+                              ey_,
+                              speed_along_,
+                              kOncoming,
+                              band_,
+                              headway_distance_,
+                              headway_inv_time_,
+                              headway_anticipation_,
+                              side_band_,
+                              side_bias_,
+                              side_factor_,
+                              side_inv_range_};
+      const AheadTerms terms =
+          ahead_terms(padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ahead, speed_cap_);
+      if (headway_on_) speed_cap_ = terms.speed_cap;
+      side_push_ += terms.side_push;  // 0 when side_factor is 0
+    }
     static constexpr float kNoTies[kBatch] = {};
     social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy,
                   tied ? batch_.tie_x : kNoTies, tied ? batch_.tie_y : kNoTies, batch_.fx, batch_.fy);
@@ -395,7 +404,8 @@ class NeighbourSums {
   double x_, y_, vx_, vy_, r_;
   std::int32_t group_;
   double cutoff2_, close2_, contact_margin_, repulsion_factor_, body_stiffness_;
-  std::array<Contact, kMaxContacts> contacts_{};
+  std::array<Contact, kMaxContacts>
+      contacts_;  // the first contact_count_ are set (no zeroing: 1.5 kB per agent)
   std::size_t contact_count_ = 0;
   float ex_, ey_;
   bool heading_;

@@ -65,4 +65,28 @@ std::int64_t oncoming_side_push(int count, const float* __restrict dx, const flo
                                 float band, float speed_along, float oncoming, float bias, float factor,
                                 float inv_range);
 
+// Both of the above in one pass over the batch (what the step uses; the results are those of
+// headway_speed_cap and oncoming_side_push, bit for bit: tests/core/crowd/neighbour_gather_test.cpp).
+// count <= kBatch and side_factor <= 100 m/s² (RoleTable's limit), so per-lane sums fit 32 bits.
+struct AheadParams {
+  float ex, ey;        // unit walking direction
+  float speed_along;   // v_i·e
+  float oncoming;      // m/s: v_j·e below −oncoming is walking towards the agent
+  float headway_band;  // half-width of the band ahead for the headway cap
+  float distance;      // ℓ
+  float inv_time;      // 1/T
+  float anticipation;  // τ_a
+  float side_band;     // half-width of the band for the side push
+  float side_bias;
+  float side_factor;
+  float side_inv_range;
+};
+struct AheadTerms {
+  float speed_cap;         // as headway_speed_cap(…, best)
+  std::int64_t side_push;  // as oncoming_side_push
+};
+AheadTerms ahead_terms(int count, const float* __restrict dx, const float* __restrict dy,
+                       const float* __restrict dvx, const float* __restrict dvy, const AheadParams& p,
+                       float best);
+
 }  // namespace socsim::crowd

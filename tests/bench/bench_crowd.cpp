@@ -2,6 +2,7 @@
 // pillars and groups) and reports throughput; then checks the cell-list step against the O(N²)
 // reference of the same forces at --reference-agents (default 2000) for 100 steps.
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -14,72 +15,18 @@
 #include "core/crowd/velocity_field.hpp"
 #include "core/world/world_yaml.hpp"
 #include "tests/bench/bench.hpp"
+#include "tests/bench/crowd_bench_scene.hpp"
 
 namespace {
 
-using socsim::crowd::AgentSpec;
 using socsim::crowd::CrowdSimulation;
-using socsim::crowd::Goal;
-using socsim::crowd::SimulationConfig;
 using socsim::crowd::Vec2;
 
-// N agents on a jittered 1 m lattice in a square of side ~sqrt(N); each walks back and forth
-// between two random goals. --walls adds the boundary and a pillar every 8 m; --groups puts
-// about a third of the agents into groups of 2–4 sharing their goals.
+// The scene (tests/bench/crowd_bench_scene.hpp): N agents on a jittered 1 m lattice, walking
+// back and forth between two random goals; --walls, --groups as described there.
 CrowdSimulation make_crowd(std::size_t n, unsigned threads, bool walls, bool groups, std::uint64_t seed) {
-  SimulationConfig config;
-  config.threads = threads;
-  config.seed = seed;
-  auto sim = CrowdSimulation::create(config);
-  if (!sim) throw std::runtime_error(sim.error().message());
-  const auto side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
-  const double size = static_cast<double>(side);
-  socsim::Rng rng(seed);
-  if (walls) {
-    const std::vector<Vec2> box = {
-        {-0.5, -0.5}, {size + 0.5, -0.5}, {size + 0.5, size + 0.5}, {-0.5, size + 0.5}};
-    (void)sim->add_polyline(box, true);
-    for (double px = 4.0; px < size - 2.0; px += 8.0) {
-      for (double py = 4.0; py < size - 2.0; py += 8.0) {
-        const std::vector<Vec2> pillar = {
-            {px - 0.25, py - 0.25}, {px + 0.25, py - 0.25}, {px + 0.25, py + 0.25}, {px - 0.25, py + 0.25}};
-        (void)sim->add_polyline(pillar, true);
-      }
-    }
-  }
-  std::int64_t group = -1;
-  int left_in_group = 0;
-  std::vector<Goal> goals;
-  for (std::size_t k = 0; k < n; ++k) {
-    AgentSpec spec;
-    const double gx = static_cast<double>(k % side);
-    const double gy = static_cast<double>(k / side);
-    spec.position = {gx + 0.5 + rng.uniform(-0.2, 0.2), gy + 0.5 + rng.uniform(-0.2, 0.2)};
-    if (walls && std::fmod(spec.position.x, 8.0) > 3.0 && std::fmod(spec.position.x, 8.0) < 5.0 &&
-        std::fmod(spec.position.y, 8.0) > 3.0 && std::fmod(spec.position.y, 8.0) < 5.0)
-      spec.position.x += 1.5;  // keep clear of the pillars
-    spec.position.x = std::min(spec.position.x, size - 0.1);
-    const bool new_goals = !groups || left_in_group == 0;
-    if (groups) {
-      if (left_in_group == 0) {
-        if (rng.chance(0.33)) {
-          ++group;
-          left_in_group = static_cast<int>(rng.between(2, 4));
-        }
-      }
-      if (left_in_group > 0) {
-        spec.group_id = group;
-        --left_in_group;
-      }
-    }
-    if (new_goals || goals.empty())
-      goals = {Goal{{rng.uniform(1.0, size - 1.0), rng.uniform(1.0, size - 1.0)}, 0.5},
-               Goal{{rng.uniform(1.0, size - 1.0), rng.uniform(1.0, size - 1.0)}, 0.5}};
-    auto id = sim->add_agent(spec);
-    if (!id) throw std::runtime_error(id.error().message());
-    (void)sim->set_goals(*id, goals, true);
-  }
-  return std::move(*sim);
+  return socsim::bench::crowd_bench_simulation(socsim::bench::crowd_bench_scene(n, walls, groups, seed),
+                                               threads, seed);
 }
 
 SOCSIM_BENCH("crowd", "--agents N --steps S --threads T [--walls] [--groups] [--reference-agents M]",
@@ -97,6 +44,17 @@ SOCSIM_BENCH("crowd", "--agents N --steps S --threads T [--walls] [--groups] [--
                const double seconds = socsim::bench::seconds_since(t0);
                // CPU time of all threads: on a shared machine the wall clock also counts waiting.
                const double cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+               // FNV-1a over the bits of every position and velocity: equal between two builds
+               // exactly when a change to the step left every result bit-identical.
+               std::uint64_t fnv = 14695981039346656037ULL;
+               for (std::uint32_t i = 0; i < n; ++i) {
+                 const Vec2 p = sim.position(socsim::crowd::AgentId(i));
+                 const Vec2 v = sim.velocity(socsim::crowd::AgentId(i));
+                 for (const double value : {p.x, p.y, v.x, v.y}) {
+                   auto bits = std::bit_cast<std::uint64_t>(value);
+                   for (int b = 0; b < 8; ++b, bits >>= 8) fnv = (fnv ^ (bits & 0xffU)) * 1099511628211ULL;
+                 }
+               }
                socsim::bench::emit(
                    {{"bench", "crowd"},
                     {"agents", n},
@@ -107,7 +65,8 @@ SOCSIM_BENCH("crowd", "--agents N --steps S --threads T [--walls] [--groups] [--
                     {"agent_steps_per_s", static_cast<double>(n) * static_cast<double>(steps) / seconds},
                     {"ms_per_step", 1000.0 * seconds / static_cast<double>(steps)},
                     {"cpu_us_per_agent_step",
-                     1e6 * cpu_seconds / (static_cast<double>(n) * static_cast<double>(steps))}});
+                     1e6 * cpu_seconds / (static_cast<double>(n) * static_cast<double>(steps))},
+                    {"state_fnv1a", fnv}});
 
                const auto m = static_cast<std::size_t>(a.integer("reference-agents", 2000));
                if (m == 0) return 0;

@@ -222,5 +222,62 @@ TEST(SocialKernel, SidePushOverTheBatchEqualsPairByPair) {
   EXPECT_EQ(push(0, 24) + push(24, kBatch - 24), sum);
 }
 
+// The fused pass the step uses gives exactly the two kernels' results, over whole batches and
+// over odd counts (the scalar tail).
+TEST(SocialKernel, AheadTermsEqualTheHeadwayCapAndTheSidePush) {
+  const float inf = std::numeric_limits<float>::infinity();
+  for (std::uint64_t seed : {41, 43, 47}) {
+    const PairBatch batch = random_batch(seed, 3.0, 0.8, 3.0, 0.6);
+    const AheadParams p{0.6f,        0.8f, 1.2f, 0.1f, 0.345f, 0.4f,
+                        1.0f / 0.6f, 2.5f, 0.7f, 0.1f, 1.5f,   1.0f / 1.5f};
+    for (int count : {kBatch, 24, 13, 1}) {
+      for (float best : {inf, 0.7f}) {
+        const AheadTerms t = ahead_terms(count, batch.dx, batch.dy, batch.dvx, batch.dvy, p, best);
+        const float cap =
+            headway_speed_cap(count, batch.dx, batch.dy, batch.dvx, batch.dvy, p.ex, p.ey, p.headway_band,
+                              p.speed_along, p.oncoming, p.distance, p.inv_time, p.anticipation, best);
+        const std::int64_t push =
+            oncoming_side_push(count, batch.dx, batch.dy, batch.dvx, batch.dvy, p.ex, p.ey, p.side_band,
+                               p.speed_along, p.oncoming, p.side_bias, p.side_factor, p.side_inv_range);
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(t.speed_cap), std::bit_cast<std::uint32_t>(cap))
+            << "seed " << seed << " count " << count;
+        EXPECT_EQ(t.side_push, push) << "seed " << seed << " count " << count;
+      }
+    }
+  }
+}
+
+// LightSFM's pair force is antisymmetric between agents with the same parameters, and the
+// kernel keeps that to the bit: seen from j, every input is negated exactly (offset, relative
+// velocity, tie direction), so F_ji = −F_ij. A step could therefore compute each such pair once
+// (docs/crowd.md, "Side by side with RVO2").
+TEST(SocialKernel, PairForceIsAntisymmetricToTheBit) {
+  const SocialParams p{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, 2.1f};
+  PairBatch batch = random_batch(53, 3.0, 3.0, 2.0, 2.0);
+  batch.dx[7] = batch.dy[7] = 0.0f;  // coincident: the tie directions are opposite too
+  batch.tie_x[7] = 0.6f;
+  batch.tie_y[7] = -0.8f;
+  PairBatch mirrored = batch;
+  for (int m = 0; m < kBatch; ++m) {
+    mirrored.dx[m] = -batch.dx[m];
+    mirrored.dy[m] = -batch.dy[m];
+    mirrored.dvx[m] = -batch.dvx[m];
+    mirrored.dvy[m] = -batch.dvy[m];
+    mirrored.tie_x[m] = -batch.tie_x[m];
+    mirrored.tie_y[m] = -batch.tie_y[m];
+  }
+  social_kernel(p, kBatch, batch.dx, batch.dy, batch.dvx, batch.dvy, batch.tie_x, batch.tie_y, batch.fx,
+                batch.fy);
+  social_kernel(p, kBatch, mirrored.dx, mirrored.dy, mirrored.dvx, mirrored.dvy, mirrored.tie_x,
+                mirrored.tie_y, mirrored.fx, mirrored.fy);
+  int nonzero = 0;
+  for (int m = 0; m < kBatch; ++m) {
+    EXPECT_EQ(mirrored.fx[m], -batch.fx[m]) << "lane " << m;
+    EXPECT_EQ(mirrored.fy[m], -batch.fy[m]) << "lane " << m;
+    nonzero += batch.fx[m] != 0;
+  }
+  EXPECT_GT(nonzero, kBatch / 2);
+}
+
 }  // namespace
 }  // namespace socsim::crowd
