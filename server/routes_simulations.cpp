@@ -14,12 +14,7 @@
 namespace socsim::server {
 namespace {
 
-constexpr const char* kSimulationPath = R"(/api/v1/simulations/([^/]+))";
-
-Error field_error(ErrorCode code, const std::string& detail, const std::string& pointer,
-                  const std::string& message) {
-  return Error(code, detail, {FieldError{pointer, message}});
-}
+constexpr const char* kSimulationRoute = R"(/api/v1/simulations/([^/]+))";
 
 Json with_urls(RouteContext& ctx, const Request& req, Json status) {
   status["ws_port"] = ctx.config.ws_port;
@@ -33,8 +28,8 @@ Json with_urls(RouteContext& ctx, const Request& req, Json status) {
 Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, const Json& body,
                                                          const std::string& author) {
   if (!body.is_object())
-    return tl::unexpected(
-        field_error(ErrorCode::kValidation, "the body must be a JSON object", "", "must be an object"));
+    return fail(ErrorCode::kValidation, "the body must be a JSON object",
+                {FieldError{"", "must be an object"}});
   std::vector<FieldError> errors;
   auto add = [&](const std::string& pointer, const std::string& message) {
     errors.push_back({pointer, message});
@@ -73,20 +68,20 @@ Result<std::shared_ptr<SimulationSession>> start_session(RouteContext& ctx, cons
     auto c = ctx.catalogue.get(id);
     if (!c) {
       if (c.error().code == ErrorCode::kNotFound)
-        return tl::unexpected(field_error(ErrorCode::kNotFound, "no card with id '" + id + "'", "/card_id",
-                                          "names no card in the catalogue"));
+        return fail(ErrorCode::kNotFound, "no card with id '" + id + "'",
+                    {FieldError{"/card_id", "names no card in the catalogue"}});
       return tl::unexpected(c.error());
     }
     const Json& recorded = c->content.trajectory_log;
     if (!recorded.is_object() || !recorded.contains("sha256") || !recorded["sha256"].is_string())
-      return tl::unexpected(field_error(ErrorCode::kValidation, "the card has no trajectory log to play",
-                                        "/card_id", "card '" + id + "' records no trajectories"));
+      return fail(ErrorCode::kValidation, "the card has no trajectory log to play",
+                  {FieldError{"/card_id", "card '" + id + "' records no trajectories"}});
     auto log = scenario::load_trajectory_log(ctx.store, recorded["sha256"].get<std::string>());
     if (!log) {
       if (log.error().code == ErrorCode::kNotFound)
-        return tl::unexpected(
-            field_error(ErrorCode::kNotFound, "the card's trajectory log is not stored here", "/card_id",
-                        "its log " + recorded["sha256"].get<std::string>() + " is missing"));
+        return fail(
+            ErrorCode::kNotFound, "the card's trajectory log is not stored here",
+            {FieldError{"/card_id", "its log " + recorded["sha256"].get<std::string>() + " is missing"}});
       return tl::unexpected(log.error());
     }
     RecordingSessionRequest r;
@@ -177,13 +172,13 @@ void simulation_routes(Router& http, RouteContext& ctx) {
                   {"max_duration_s", l.max_duration_s}}}});
   });
 
-  http.Get(kSimulationPath, [&ctx](const Request& req, Response& res) {
+  http.Get(kSimulationRoute, [&ctx](const Request& req, Response& res) {
     auto s = ctx.services.simulations->find(req.matches[1].str());
     if (!s) return reply_problem(res, s.error(), req.path);
     reply_json(res, 200, with_urls(ctx, req, (*s)->status()));
   });
 
-  post_with_body(http, std::string(kSimulationPath) + "/control", ctx.config.max_body_bytes,
+  post_with_body(http, std::string(kSimulationRoute) + "/control", ctx.config.max_body_bytes,
                  [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto s = ctx.services.simulations->find(req.matches[1].str());
                    if (!s) return reply_problem(res, s.error(), req.path);
@@ -196,7 +191,7 @@ void simulation_routes(Router& http, RouteContext& ctx) {
                    reply_json(res, 200, with_urls(ctx, req, *st));
                  });
 
-  http.Delete(kSimulationPath, [&ctx](const Request& req, Response& res) {
+  http.Delete(kSimulationRoute, [&ctx](const Request& req, Response& res) {
     auto s = ctx.services.simulations->find(req.matches[1].str());
     if (!s) return reply_problem(res, s.error(), req.path);
     if (auto ok = may_change(ctx, req, **s); !ok) return reply_problem(res, ok.error(), req.path);

@@ -5,14 +5,6 @@
 #include "core/world/world_yaml.hpp"
 
 namespace socsim::server {
-namespace {
-
-Error field_error(ErrorCode code, const std::string& detail, const std::string& pointer,
-                  const std::string& message) {
-  return Error(code, detail, {FieldError{pointer, message}});
-}
-
-}  // namespace
 
 // The world of a program session: a stored world by id, a world document, or world.yaml text.
 Result<std::shared_ptr<const world::World>> session_world(RouteContext& ctx, const Json& body) {
@@ -20,8 +12,8 @@ Result<std::shared_ptr<const world::World>> session_world(RouteContext& ctx, con
     const std::string id = body["world_id"].get<std::string>();
     auto stored = cards::WorldStore(ctx.store).get(id);
     if (!stored && stored.error().code == ErrorCode::kNotFound)
-      return tl::unexpected(field_error(ErrorCode::kNotFound, "no world with id '" + id + "'", "/world_id",
-                                        "names no stored world (see GET /api/v1/worlds)"));
+      return fail(ErrorCode::kNotFound, "no world with id '" + id + "'",
+                  {FieldError{"/world_id", "names no stored world (see GET /api/v1/worlds)"}});
     if (!stored) return tl::unexpected(stored.error());
     auto w = world::world_from_yaml(stored->world_yaml);
     if (!w)
@@ -54,13 +46,13 @@ Result<CardScenario> card_scenario(RouteContext& ctx, const std::string& card_id
   auto c = ctx.catalogue.get(card_id);
   if (!c) {
     if (c.error().code == ErrorCode::kNotFound)
-      return tl::unexpected(field_error(ErrorCode::kNotFound, "no card with id '" + card_id + "'", "/card_id",
-                                        "names no card in the catalogue"));
+      return fail(ErrorCode::kNotFound, "no card with id '" + card_id + "'",
+                  {FieldError{"/card_id", "names no card in the catalogue"}});
     return tl::unexpected(c.error());
   }
   if (!c->content.program.is_object())
-    return tl::unexpected(field_error(ErrorCode::kValidation, "the card has no scenario program", "/card_id",
-                                      "card '" + card_id + "' records no program"));
+    return fail(ErrorCode::kValidation, "the card has no scenario program",
+                {FieldError{"/card_id", "card '" + card_id + "' records no program"}});
   CardScenario out;
   if (c->content.world.is_object()) {
     auto w = world::world_from_document(c->content.world);

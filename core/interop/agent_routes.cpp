@@ -252,4 +252,14 @@ std::vector<AgentRoute> agent_routes(crowd::ScenarioRunner& runner, const crowd:
   return out;
 }
 
+Result<std::vector<AgentRoute>> program_routes(const world::World& world, const crowd::Program& program,
+                                               std::uint64_t seed) {
+  crowd::RunnerOptions options;
+  options.seed = seed;
+  options.record_metrics = false;
+  auto runner = crowd::ScenarioRunner::create(&world, program, options);
+  if (!runner) return tl::unexpected(runner.error());
+  return agent_routes(**runner, program);
+}
+
 }  // namespace socsim::interop

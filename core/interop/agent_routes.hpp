@@ -7,8 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "core/common/error.hpp"
 #include "core/crowd/program.hpp"
 #include "core/crowd/scenario_runner.hpp"
+#include "core/world/world.hpp"
 
 namespace socsim::interop {
 
@@ -44,5 +46,10 @@ struct AgentRoute {
 
 // One route per runner agent, in id order. Call before the runner steps (initial states).
 std::vector<AgentRoute> agent_routes(crowd::ScenarioRunner& runner, const crowd::Program& program);
+
+// The routes of `program` in `world` with people placed as the runner spawns them with `seed`;
+// fails as ScenarioRunner::create does when the program does not run in the world.
+Result<std::vector<AgentRoute>> program_routes(const world::World& world, const crowd::Program& program,
+                                               std::uint64_t seed);
 
 }  // namespace socsim::interop

@@ -4,7 +4,6 @@
 #include <numbers>
 
 #include "core/common/json_io.hpp"
-#include "core/crowd/scenario_runner.hpp"
 #include "core/geometry/planar.hpp"
 #include "core/interop/agent_routes.hpp"
 
@@ -27,12 +26,9 @@ std::string arena_type(const std::string& role) {
 
 Result<std::string> export_arena_scenario(const world::World& world, const crowd::Program& program,
                                           const ArenaExportOptions& options) {
-  crowd::RunnerOptions ro;
-  ro.seed = options.seed;
-  ro.record_metrics = false;
-  auto runner = crowd::ScenarioRunner::create(&world, program, ro);
-  if (!runner) return tl::unexpected(runner.error());
-  const std::vector<AgentRoute> routes = agent_routes(**runner, program);
+  auto program_stops = program_routes(world, program, options.seed);
+  if (!program_stops) return tl::unexpected(program_stops.error());
+  const std::vector<AgentRoute>& routes = *program_stops;
 
   const geometry::Pose2& origin = world.origin();
   auto pose = [&origin](double x, double y, double yaw) {

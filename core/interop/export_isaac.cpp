@@ -6,7 +6,6 @@
 #include <numbers>
 #include <sstream>
 
-#include "core/crowd/scenario_runner.hpp"
 #include "core/geometry/planar.hpp"
 #include "core/interop/agent_routes.hpp"
 #include "core/world/export_format.hpp"
@@ -38,12 +37,9 @@ std::string character_name(std::size_t k) {
 
 Result<std::vector<ExportFile>> export_isaac(const world::World& world, const crowd::Program& program,
                                              const IsaacExportOptions& options) {
-  crowd::RunnerOptions ro;
-  ro.seed = options.seed;
-  ro.record_metrics = false;
-  auto runner = crowd::ScenarioRunner::create(&world, program, ro);
-  if (!runner) return tl::unexpected(runner.error());
-  const std::vector<AgentRoute> routes = agent_routes(**runner, program);
+  auto program_stops = program_routes(world, program, options.seed);
+  if (!program_stops) return tl::unexpected(program_stops.error());
+  const std::vector<AgentRoute>& routes = *program_stops;
 
   // Routes in the stage's frame: /World carries the world's origin pose, so stage coordinates are
   // the world's own; omni.anim.people commands are in the stage's world frame.
