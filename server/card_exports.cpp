@@ -29,7 +29,8 @@ Result<scenario::TrajectoryLog> card_trajectory_log(store::Store& store, const c
   return scenario::load_trajectory_log(store, log["sha256"].get<std::string>());
 }
 
-Result<std::string> card_mcap(store::Store& store, const cards::Card& card, bool scene_people) {
+Result<std::string> card_mcap(store::Store& store, const cards::Card& card,
+                              std::optional<bool> scene_people) {
   auto s = card_export_scenario(card);
   if (!s) return tl::unexpected(s.error());
   auto log = card_trajectory_log(store, card);

@@ -1,6 +1,7 @@
 #pragma once
 // What the REST export route and `socsim card export` share: a card's world and program, its
 // trajectory log from the store, and its MCAP recording.
+#include <optional>
 #include <string>
 
 #include "core/cards/card.hpp"
@@ -23,7 +24,7 @@ Result<CardExport> card_export_scenario(const cards::Card& card);
 Result<scenario::TrajectoryLog> card_trajectory_log(store::Store& store, const cards::Card& card);
 
 // The card as MCAP (core/interop/mcap_export.hpp): its log, world, role table and seed.
-Result<std::string> card_mcap(store::Store& store, const cards::Card& card, bool scene_people);
+Result<std::string> card_mcap(store::Store& store, const cards::Card& card, std::optional<bool> scene_people);
 // The card as a Gazebo world with an <actor> per person (core/interop/export_gazebo_actors.hpp).
 Result<std::string> card_gazebo_actors(store::Store& store, const cards::Card& card);
 // The card's world and program as an Arena-Rosnav scenario file (core/interop/export_arena.hpp).

@@ -45,9 +45,9 @@ void export_routes(Router& http, RouteContext& ctx) {
           res,
           bad_parameter("format", "format must be card, hunav, pedsim, csv, mcap, gazebo, arena or isaac"),
           req.path);
-    const std::string scene_people = query(req, "scene_people").value_or("true");
-    if (scene_people != "true" && scene_people != "false")
-      return reply_problem(res, bad_parameter("scene_people", "scene_people must be true or false"),
+    const std::string scene_people = query(req, "scene_people").value_or("auto");
+    if (scene_people != "true" && scene_people != "false" && scene_people != "auto")
+      return reply_problem(res, bad_parameter("scene_people", "scene_people must be true, false or auto"),
                            req.path);
     const std::string archive = query(req, "archive").value_or("tar");
     if (archive != "tar" && archive != "json")
@@ -62,7 +62,9 @@ void export_routes(Router& http, RouteContext& ctx) {
     }
 
     if (*format == "mcap") {
-      auto mcap = card_mcap(ctx.store, *card, scene_people == "true");
+      auto mcap =
+          card_mcap(ctx.store, *card,
+                    scene_people == "auto" ? std::nullopt : std::optional<bool>(scene_people == "true"));
       if (!mcap) return reply_problem(res, mcap.error(), req.path);
       return attach(res, id + ".mcap", *mcap, "application/octet-stream");
     }

@@ -33,13 +33,14 @@ Result<std::string> export_mcap(const scenario::TrajectoryLog& log, const world:
   mcap.zstd_level = options.zstd_level;
   mcap.chunk_size = options.chunk_size;
   McapWriter writer(mcap);
+  const bool scene_people = options.scene_people.value_or(log.agent_count() <= kScenePeopleLimit);
   const std::uint16_t people_schema = writer.add_schema(kPeopleMsgType, "ros2msg", people_msg_definition());
   const std::uint16_t scene_schema =
       writer.add_schema("foxglove.SceneUpdate", "jsonschema", scene_update_json_schema().dump());
   const std::uint16_t people_channel = writer.add_channel(people_schema, "/people", "cdr");
   const std::uint16_t world_channel = writer.add_channel(scene_schema, "/scene/world", "json");
   const std::uint16_t scene_channel =
-      options.scene_people ? writer.add_channel(scene_schema, "/scene/people", "json") : 0;
+      scene_people ? writer.add_channel(scene_schema, "/scene/people", "json") : 0;
 
   const geometry::Box box = world.bounds();
   auto text_of = [](double v) {
@@ -90,7 +91,7 @@ Result<std::string> export_mcap(const scenario::TrajectoryLog& log, const world:
     const std::uint64_t ns = to_nanoseconds(t);
     encode_people_cdr(cdr, t, options.frame_id, people);
     writer.add_message(people_channel, ns, ns, cdr.bytes());
-    if (options.scene_people) writer.add_message(scene_channel, ns, ns, scene.encode(ns, people, roles));
+    if (scene_people) writer.add_message(scene_channel, ns, ns, scene.encode(ns, people, roles));
   }
   return writer.finish();
 }

@@ -6,6 +6,7 @@
 // plus a "socsim_map" Metadata record (frame, world bounds and origin, card id, seed). Log times
 // are the frames' times; the bytes depend only on the inputs.
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "core/common/error.hpp"
@@ -22,10 +23,16 @@ struct McapExportOptions {
   Json roles = Json::object();  // the program's role overrides (proxemics, radius per role)
   std::string frame_id = "map";
   McapCompression compression = McapCompression::kZstd;
-  int zstd_level = McapOptions{}.zstd_level;
+  // zstd's fastest level: on people's states it is both faster and smaller than the default 3
+  // (socsim-bench mcap, docs/PERFORMANCE.md).
+  int zstd_level = 1;
   std::size_t chunk_size = McapOptions{}.chunk_size;
-  bool scene_people = true;  // false: no /scene/people (a third of a large card's file, docs/interop.md)
+  // /scene/people, a cylinder per person per frame for Foxglove's 3D panel, as large again as
+  // /people once compressed. Unset: written for cards of at most kScenePeopleLimit people.
+  std::optional<bool> scene_people;
 };
+
+inline constexpr std::size_t kScenePeopleLimit = 2000;
 
 // kValidation when the program's roles do not apply.
 Result<std::string> export_mcap(const scenario::TrajectoryLog& log, const world::World& world,

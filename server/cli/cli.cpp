@@ -23,7 +23,9 @@ constexpr const char* kCardUsage =
     "  card show ID          print a card as JSON\n"
     "  card export ID        write the card's export file  [-o FILE] [--format "
     "card|mcap|gazebo|arena|isaac]\n"
-    "                        mcap: the trajectory as a ROS 2 / Foxglove recording [--scene-people false];\n"
+    "                        mcap: the trajectory as a ROS 2 / Foxglove recording [--scene-people "
+    "true|false|auto]\n"
+    "                        (auto: the per-frame people scene for cards of at most 2,000 people);\n"
     "                        gazebo: an SDF world whose actors walk the trajectory;\n"
     "                        arena: an Arena-Rosnav scenario (people, obstacles, robot start and goal);\n"
     "                        isaac: a tar of world.usda, ira_config.yaml and people_commands.txt\n"
@@ -81,13 +83,13 @@ int card_command(const std::vector<std::string>& args) {
   }
   if (verb == "export") {
     const std::string format = p.opt("--format").value_or("card");
-    const std::string scene_people = p.opt("--scene-people").value_or("true");
+    const std::string scene_people = p.opt("--scene-people").value_or("auto");
     if ((format != "card" && format != "mcap" && format != "gazebo" && format != "arena" &&
          format != "isaac") ||
-        (scene_people != "true" && scene_people != "false")) {
-      std::cerr
-          << "socsim: --format must be card, mcap, gazebo, arena or isaac, --scene-people true or false\n"
-          << kCardUsage;
+        (scene_people != "true" && scene_people != "false" && scene_people != "auto")) {
+      std::cerr << "socsim: --format must be card, mcap, gazebo, arena or isaac, --scene-people true, false "
+                   "or auto\n"
+                << kCardUsage;
       return 2;
     }
     Result<std::string> doc;
@@ -98,7 +100,10 @@ int card_command(const std::vector<std::string>& args) {
         auto files = card_isaac(*card);
         doc = files ? interop::tar_archive(*files) : Result<std::string>(tl::unexpected(files.error()));
       } else {
-        doc = format == "mcap"    ? card_mcap(**store, *card, scene_people == "true")
+        doc = format == "mcap"
+                  ? card_mcap(
+                        **store, *card,
+                        scene_people == "auto" ? std::nullopt : std::optional<bool>(scene_people == "true"))
               : format == "arena" ? card_arena(*card)
                                   : card_gazebo_actors(**store, *card);
       }

@@ -145,7 +145,9 @@ for (const category of Object.keys(PROMPTS)) {
         assert.equal(p.pose.position.y, Math.fround(e.y));
         assert.equal(p.twist.linear.x, Math.fround(e.vx));
         assert.equal(p.twist.linear.y, Math.fround(e.vy));
-        assert.ok(Math.abs(p.pose.orientation.z ** 2 + p.pose.orientation.w ** 2 - 1) < 1e-6);  // float precision
+        // Orientation components on a 2^-12 grid (core/interop/people_msgs.cpp): a unit quaternion within 5e-4.
+        assert.ok(Math.abs(p.pose.orientation.z ** 2 + p.pose.orientation.w ** 2 - 1) < 5e-4);
+        assert.equal(p.pose.orientation.z * 4096, Math.round(p.pose.orientation.z * 4096));
         assert.equal(STATES[p.state], e.state);
         assert.equal(p.role, e.role);
         assert.equal(p.group_id, BigInt(e.group));

@@ -256,7 +256,10 @@ TEST(PeopleMsgs, CdrDecodesBackToTheStates) {
     const double qx = r.cdr<double>(), qy = r.cdr<double>(), qz = r.cdr<double>(), qw = r.cdr<double>();
     EXPECT_EQ(qx, 0.0);
     EXPECT_EQ(qy, 0.0);
-    EXPECT_NEAR(2 * std::atan2(qz, qw), p.pose.yaw, 1e-6);  // float precision
+    // Components on a 2^-12 grid: the heading within 5e-4 rad (0.03 degrees).
+    EXPECT_NEAR(2 * std::atan2(qz, qw), p.pose.yaw, 5e-4);
+    EXPECT_EQ(qz * 4096, std::round(qz * 4096));
+    EXPECT_EQ(qw * 4096, std::round(qw * 4096));
     EXPECT_EQ(r.cdr<double>(), p.twist.vx);
     EXPECT_EQ(r.cdr<double>(), p.twist.vy);
     EXPECT_EQ(r.cdr<double>(), 0.0);
