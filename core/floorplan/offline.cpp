@@ -1104,6 +1104,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       continue;
     }
     const Rng furnishing_rng = rng.fork("furnish");
+    ComplianceCache travel_cache;   // the worlds of this attempt share their travel-distance grid
     std::set<std::string> dropped;  // furniture the layout check found in the way, left out
     FeatureOutcome outcome;
     // Worlds built again for more exits or with furniture left out are validated without the
@@ -1150,7 +1151,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       last_error = world.error();
       continue;
     }
-    ComplianceReport report = check_compliance(*world, domain, constraints, occupants);
+    ComplianceReport report = check_compliance(*world, domain, constraints, occupants, travel_cache);
     // Exits: as many as the request asks for and the code requires (occupant load, travel
     // distance), each added as far from the others as the outside walls allow.
     // An exit count the request gives is a minimum: the code's exit count (IBC Table 1006.3.2)
@@ -1177,7 +1178,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
         if (layout.widen_exits(each) > before) {
           why.widened = true;
           world = build(false);
-          if (world) report = check_compliance(*world, domain, constraints, occupants);
+          if (world) report = check_compliance(*world, domain, constraints, occupants, travel_cache);
           continue;
         }
       }
@@ -1199,7 +1200,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       }
       if (!exits_ok) break;
       world = build(false);
-      if (world) report = check_compliance(*world, domain, constraints, occupants);
+      if (world) report = check_compliance(*world, domain, constraints, occupants, travel_cache);
     }
     if (!world) {
       tried.push_back("the world with more exits did not validate: " + world.error().message());
@@ -1234,7 +1235,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
           tried.push_back("layout check: " + (world ? check.summary() : world.error().message()));
           continue;
         }
-        report = check_compliance(*world, domain, constraints, occupants);
+        report = check_compliance(*world, domain, constraints, occupants, travel_cache);
       }
     }
     if (!report.passed) {
