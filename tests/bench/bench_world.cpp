@@ -9,6 +9,7 @@
 #include <ctime>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/floorplan/offline.hpp"
@@ -50,7 +51,7 @@ WorldBuilder ten_room_plan() {
   return b;
 }
 
-int floor_plans(int runs);
+int floor_plans(int runs, const std::string& only);
 
 // CPU time of this thread: on a loaded machine wall time mostly measures the other processes.
 double thread_cpu_ms() {
@@ -61,6 +62,9 @@ double thread_cpu_ms() {
 
 int run_world(const socsim::bench::Args& a) {
   const int runs = static_cast<int>(a.integer("runs", 50));
+  // --only mall: just the floor plans whose label has this word (for a profiler).
+  const std::string only = a.str("only", "");
+  if (!only.empty()) return floor_plans(runs, only);
   const WorldBuilder plan = ten_room_plan();
   std::vector<double> build_ms;
   std::vector<double> build_cpu;
@@ -130,7 +134,7 @@ int run_world(const socsim::bench::Args& a) {
                        {"bytes", yaml.size()},
                        {"p50_ms", socsim::bench::percentile(yaml_ms, 50)},
                        {"p95_ms", socsim::bench::percentile(yaml_ms, 95)}});
-  return floor_plans(runs);
+  return floor_plans(runs, "");
 }
 
 // Offline generation of one plan per run (one seed each) against the seeded knowledge store:
@@ -184,7 +188,7 @@ SceneGraph big_arena() {
 // 2 toilets), a 60-room mall (concourse, 50 shops, food court, 2 offices, 6 toilets) and a
 // 60-room arena (concourse, arena floor, 20 concession stands, 10 locker rooms, 2 first-aid
 // rooms, 6 stores, 20 toilets).
-int floor_plans(int runs) {
+int floor_plans(int runs, const std::string& only) {
   const auto db =
       std::filesystem::temp_directory_path() / ("socsim-bench-world-" + std::to_string(::getpid()) + ".db");
   int status = 0;
@@ -195,12 +199,16 @@ int floor_plans(int runs) {
       return 1;
     }
     socsim::knowledge::KnowledgeBase kb(**store);
-    status = floor_plan(kb, "floor_plan_offline_10_rooms", "hospital",
-                        room_program("hospital", {{"patient_room", 3}}), runs);
+    auto wanted = [&only](const std::string& label) {
+      return only.empty() || label.find(only) != std::string::npos;
+    };
     const int big_runs = std::max(1, runs / 5);
-    if (status == 0) status = floor_plan(kb, "floor_plan_offline_60_room_mall", "mall", big_mall(), big_runs);
-    if (status == 0)
-      status = floor_plan(kb, "floor_plan_offline_60_room_arena", "arena", big_arena(), big_runs);
+    for (const auto& [label, domain, graph, n] :
+         {std::tuple{"floor_plan_offline_10_rooms", "hospital",
+                     room_program("hospital", {{"patient_room", 3}}), runs},
+          std::tuple{"floor_plan_offline_60_room_mall", "mall", big_mall(), big_runs},
+          std::tuple{"floor_plan_offline_60_room_arena", "arena", big_arena(), big_runs}})
+      if (status == 0 && wanted(label)) status = floor_plan(kb, label, domain, graph, n);
   }
   std::error_code ec;
   for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix, ec);
