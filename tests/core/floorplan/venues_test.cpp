@@ -261,8 +261,9 @@ TEST_F(Venues, TheArrangementSignatureSeesOrderNotSize) {
 // kept exactly (a door for every edge, between the two rooms it names), the family recorded.
 TEST_F(Venues, EveryLayoutFamilyIsBuiltCleanAndKeepsTheSceneGraph) {
   std::map<std::string, int> families;
-  for (std::string_view type : {"supermarket", "retail", "canteen", "warehouse", "train_station", "airport",
-                                "residential", "hospital", "museum", "theatre", "mall", "factory", "restaurant"}) {
+  for (std::string_view type :
+       {"supermarket", "retail", "canteen", "warehouse", "train_station", "airport", "residential",
+        "hospital", "museum", "theatre", "mall", "factory", "restaurant"}) {
     const SceneGraph g = room_program(type);
     const WorldRequirements wants = typical_request(type);
     for (std::uint64_t seed = 0; seed < 8; ++seed) {
