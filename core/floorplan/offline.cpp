@@ -1164,8 +1164,9 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       continue;
     }
     const Rng furnishing_rng = rng.fork("furnish");
-    ComplianceCache travel_cache;   // the worlds of this attempt share their travel-distance grid
-    std::set<std::string> dropped;  // furniture the layout check found in the way, left out
+    ComplianceCache travel_cache;    // the worlds of this attempt share their travel-distance grid
+    FurnishingMemo furnishing_memo;  // and the furnishing of rooms whose doors did not change
+    std::set<std::string> dropped;   // furniture the layout check found in the way, left out
     FeatureOutcome outcome;
     // Worlds built again for more exits or with furniture left out are validated without the
     // reachability grid (the costliest part of a build); the plan returned is validated in full.
@@ -1186,7 +1187,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       layout.emit_areas(doors, areas, area_doors);
       std::vector<std::string> open_halls;
       if (!areas.empty()) open_halls.push_back(layout.hub_name());
-      Furnishing f = furnish(zones, doors, rules, furnishing, open_halls);
+      Furnishing f = furnish(zones, doors, rules, furnishing, open_halls, furnishing_memo);
       if (!areas.empty()) {
         Rng by_area = furnishing_rng.fork("areas");
         Furnishing a = furnish_areas(areas, area_doors, rules, by_area);
