@@ -105,6 +105,10 @@ class Rng {
     return v[below(static_cast<std::uint32_t>(v.size()))];
   }
 
+ public:
+  // Same state and stream: the same numbers from here on (a memo of work done from this state).
+  friend bool operator==(const Rng&, const Rng&) = default;
+
  private:
   std::uint64_t state_ = 0;
   std::uint64_t inc_ = 1;

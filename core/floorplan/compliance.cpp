@@ -114,11 +114,12 @@ struct ZoneInfo {
 class Checker {
  public:
   Checker(const World& world, std::string_view building_type, std::span<const MergedConstraint> constraints,
-          std::optional<double> occupants)
+          std::optional<double> occupants, ComplianceCache* cache)
       : world_(world),
         building_type_(building_type),
         constraints_(constraints),
-        scenario_occupants_(occupants) {
+        scenario_occupants_(occupants),
+        cache_(cache) {
     for (const auto& z : world.zones())
       zones_.push_back({canonical_room_type(z.type), geometry::area(z.polygon), {}, {}, 0});
     for (const auto& e : world.entities())
@@ -677,8 +678,6 @@ class Checker {
   std::pair<double, std::string> travel_distance(const std::vector<std::size_t>& through = {}) {
     auto& cached = travel_[through];
     if (!cached) {
-      if (!grid_) grid_ = OccupancyGrid::rasterise(world_, {0.2, 0.0, 1'000'000});
-      const OccupancyGrid& grid = *grid_;
       std::vector<Point> sources;
       for (auto i : through.empty() ? exits() : through) {
         const Door& d = world_.doors()[i];
@@ -692,22 +691,63 @@ class Checker {
           if (geometry::contains(world_.zone(d.zone).polygon, p)) sources.push_back(p);
         }
       }
-      const auto field = GeodesicField::from_points(grid, sources);
-      double worst = 0.0;
-      std::optional<ZoneId> where;
-      for (int y = 0; y < grid.height(); ++y)
-        for (int x = 0; x < grid.width(); ++x) {
-          const Cell cell{x, y};
-          if (grid.blocked(cell)) continue;
-          const float v = field.at(cell);
-          if (std::isfinite(v) && v > worst) {
-            worst = v;
-            where = grid.zone_of(cell);
+      std::vector<double> key;
+      for (const Point& p : sources) key.insert(key.end(), {p.x, p.y});
+      const OccupancyGrid& grid = travel_grid();
+      std::optional<std::pair<double, std::optional<std::uint32_t>>> measured;
+      if (cache_) {
+        auto hit = cache_->travel.find(key);
+        if (hit != cache_->travel.end()) measured = hit->second;
+      }
+      if (!measured) {
+        const auto field = GeodesicField::from_points(grid, sources);
+        double worst = 0.0;
+        std::optional<ZoneId> where;
+        for (int y = 0; y < grid.height(); ++y)
+          for (int x = 0; x < grid.width(); ++x) {
+            const Cell cell{x, y};
+            if (grid.blocked(cell)) continue;
+            const float v = field.at(cell);
+            if (std::isfinite(v) && v > worst) {
+              worst = v;
+              where = grid.zone_of(cell);
+            }
           }
-        }
-      cached = std::pair{worst, where ? world_.zone(*where).name : std::string("plan")};
+        measured = {worst, where ? std::optional<std::uint32_t>(static_cast<std::uint32_t>(where->index()))
+                                 : std::nullopt};
+        if (cache_) cache_->travel[key] = *measured;
+      }
+      cached = std::pair{measured->first,
+                         measured->second ? world_.zones()[*measured->second].name : std::string("plan")};
     }
     return *cached;
+  }
+
+  // The 0.2 m grid of the travel distances: the cache's when it was rasterised from the same
+  // zones, walls and outline (its measured distances are dropped when it is not).
+  const OccupancyGrid& travel_grid() {
+    if (grid_) return *grid_;
+    if (!cache_) return grid_.emplace(OccupancyGrid::rasterise(world_, {0.2, 0.0, 1'000'000}));
+    std::vector<double> of;
+    for (const auto& z : world_.zones()) {
+      of.push_back(static_cast<double>(z.polygon.outer.size()));
+      for (const Point& p : z.polygon.outer) of.insert(of.end(), {p.x, p.y});
+      for (const auto& hole : z.polygon.holes) {
+        of.push_back(static_cast<double>(hole.size()));
+        for (const Point& p : hole) of.insert(of.end(), {p.x, p.y});
+      }
+    }
+    of.push_back(-1.0);
+    for (const auto& w : world_.walls())
+      of.insert(of.end(), {w.segment.a.x, w.segment.a.y, w.segment.b.x, w.segment.b.y});
+    of.push_back(-1.0);
+    for (const auto& s : world_.outline()) of.insert(of.end(), {s.a.x, s.a.y, s.b.x, s.b.y});
+    if (!cache_->grid || cache_->grid_of != of) {
+      cache_->grid = OccupancyGrid::rasterise(world_, {0.2, 0.0, 1'000'000});
+      cache_->grid_of = std::move(of);
+      cache_->travel.clear();
+    }
+    return *cache_->grid;
   }
 
   void travel(ComplianceCheck& c) {
@@ -732,7 +772,8 @@ class Checker {
   double occupant_load_ = 0.0;
   double area_load_ = 0.0;
   std::map<std::string, std::pair<double, double>> load_by_use_;  // use → (area, persons)
-  std::optional<OccupancyGrid> grid_;
+  ComplianceCache* cache_ = nullptr;
+  std::optional<OccupancyGrid> grid_;  // when there is no cache
   std::map<std::vector<std::size_t>, std::optional<std::pair<double, std::string>>> travel_;
 };
 
@@ -777,7 +818,13 @@ std::string building_type_of(const World& world) {
 ComplianceReport check_compliance(const World& world, std::string_view building_type,
                                   std::span<const MergedConstraint> constraints,
                                   std::optional<double> occupants) {
-  return Checker(world, building_type, constraints, occupants).run();
+  return Checker(world, building_type, constraints, occupants, nullptr).run();
+}
+
+ComplianceReport check_compliance(const World& world, std::string_view building_type,
+                                  std::span<const MergedConstraint> constraints,
+                                  std::optional<double> occupants, ComplianceCache& cache) {
+  return Checker(world, building_type, constraints, occupants, &cache).run();
 }
 
 Json to_json(const ComplianceCheck& c) {

@@ -2,6 +2,7 @@
 // The compliance report of a world against the building-code constraints retrieved for its
 // building type: every constraint with the measured value, the required value, pass/fail and
 // the code entry (ref_id, section) it came from; plus what a generator must build to pass.
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "core/common/json_io.hpp"
 #include "core/knowledge/knowledge_base.hpp"
+#include "core/world/occupancy_grid.hpp"
 #include "core/world/world.hpp"
 
 namespace socsim::floorplan {
@@ -79,6 +81,20 @@ std::string building_type_of(const World& world);
 ComplianceReport check_compliance(const World& world, std::string_view building_type,
                                   std::span<const knowledge::MergedConstraint> constraints,
                                   std::optional<double> occupants = std::nullopt);
+
+// What successive reports on the worlds of one plan share (a generator builds a plan again with
+// more or wider exits, or with furniture left out): the travel-distance grid while the zones,
+// walls and outline are the same, and each travel distance already measured from the same exit
+// points. A report is the same with or without it; it only skips work.
+struct ComplianceCache {
+  std::vector<double> grid_of;  // the geometry the grid was rasterised from (zones, walls, outline)
+  std::optional<OccupancyGrid> grid;
+  // By the exit points the field was marched from: the longest distance and the zone where it is.
+  std::map<std::vector<double>, std::pair<double, std::optional<std::uint32_t>>> travel;
+};
+ComplianceReport check_compliance(const World& world, std::string_view building_type,
+                                  std::span<const knowledge::MergedConstraint> constraints,
+                                  std::optional<double> occupants, ComplianceCache& cache);
 
 // {building_type, passed, occupant_load, summary: {pass, fail, …}, checks: [...]}
 Json to_json(const ComplianceReport& report);

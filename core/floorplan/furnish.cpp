@@ -505,8 +505,26 @@ FurnishingRules furnishing_rules(std::span<const knowledge::MergedConstraint> co
   return r;
 }
 
+namespace {
+Furnishing furnish_zones(std::span<const Zone> zones, std::span<const DoorSpec> doors,
+                         const FurnishingRules& rules, Rng& rng, std::span<const std::string> unfurnished,
+                         FurnishingMemo* memo);
+}  // namespace
+
 Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
                    Rng& rng, std::span<const std::string> unfurnished) {
+  return furnish_zones(zones, doors, rules, rng, unfurnished, nullptr);
+}
+
+Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
+                   Rng& rng, std::span<const std::string> unfurnished, FurnishingMemo& memo) {
+  return furnish_zones(zones, doors, rules, rng, unfurnished, &memo);
+}
+
+namespace {
+Furnishing furnish_zones(std::span<const Zone> zones, std::span<const DoorSpec> doors,
+                         const FurnishingRules& rules, Rng& rng, std::span<const std::string> unfurnished,
+                         FurnishingMemo* memo) {
   Furnishing out;
   const bool named_entrance = std::any_of(doors.begin(), doors.end(), [](const DoorSpec& d) {
     return d.name == "main_entrance" && d.connects.size() == 1;
@@ -559,14 +577,40 @@ Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors,
     }
     if (!find_room_type(type) || is_corridor_type(type)) continue;
     if (std::find(unfurnished.begin(), unfurnished.end(), z.name) != unfurnished.end()) continue;
+    std::vector<FurnishingMemo::Door> given;
+    if (memo) {
+      for (const auto& d : here)
+        given.push_back({d.centre.x, d.centre.y, d.width, d.exterior, d.other_type, d.name});
+      const auto hit = memo->rooms.find(z.name);
+      if (hit != memo->rooms.end() && hit->second.polygon == z.polygon && hit->second.type == z.type &&
+          hit->second.doors == given && hit->second.before == rng) {
+        out.rois.insert(out.rois.end(), hit->second.rois.begin(), hit->second.rois.end());
+        out.entities.insert(out.entities.end(), hit->second.entities.begin(), hit->second.entities.end());
+        rng = hit->second.after;
+        continue;
+      }
+    }
+    const Rng before = rng;
     auto placer = placer_for(z, zones, doors, out);
     if (!placer) continue;
     const std::size_t first_entity = out.entities.size(), first_roi = out.rois.size();
     furnish_room(*placer, type, rules, rng, geometry::area(z.polygon));
     placer->poi_lanes(first_entity, first_roi, rules.queue_lane_width, 2.2);
+    if (memo)
+      memo->rooms.insert_or_assign(
+          z.name,
+          FurnishingMemo::Room{
+              z.polygon,
+              z.type,
+              std::move(given),
+              before,
+              rng,
+              {out.rois.begin() + static_cast<std::ptrdiff_t>(first_roi), out.rois.end()},
+              {out.entities.begin() + static_cast<std::ptrdiff_t>(first_entity), out.entities.end()}});
   }
   return out;
 }
+}  // namespace
 
 }  // namespace socsim::floorplan
 

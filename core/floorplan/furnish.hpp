@@ -3,6 +3,7 @@
 // reception counter with its queue lane and a waiting zone in a lobby, tables and a serving
 // counter in a dining hall, desks in offices, beds in patient rooms, a sofa in a living room,
 // water dispensers and coffee machines where they fit, corridor and entrance ROIs.
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -37,6 +38,30 @@ struct Furnishing {
 // Zones named in `unfurnished` get only their entrance ROIs (an open hall furnished by its areas).
 Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
                    Rng& rng, std::span<const std::string> unfurnished = {});
+
+// What furnishing the worlds of one plan again (more or wider exits) can re-use: per room, what it
+// was given (zone, its doors, the random stream's state) and what it made (things, areas, the
+// stream's state after). A room's furnishing depends on nothing else (the placer ignores other
+// rooms' things), so a room given the same again gets the same, without placing it again.
+struct FurnishingMemo {
+  struct Door {
+    double x = 0, y = 0, width = 0;
+    bool exterior = false;
+    std::string other_type, name;
+    friend bool operator==(const Door&, const Door&) = default;
+  };
+  struct Room {
+    Polygon polygon;
+    std::string type;
+    std::vector<Door> doors;
+    Rng before{0}, after{0};
+    std::vector<Roi> rois;
+    std::vector<EntitySpec> entities;
+  };
+  std::map<std::string, Room> rooms;  // by zone name
+};
+Furnishing furnish(std::span<const Zone> zones, std::span<const DoorSpec> doors, const FurnishingRules& rules,
+                   Rng& rng, std::span<const std::string> unfurnished, FurnishingMemo& memo);
 
 // Furnishes the zones of an open hall: rectangles inside one room with no walls between them,
 // each typed by what happens there — checkout_zone (a row of check-outs with queue lanes),

@@ -186,6 +186,12 @@ std::vector<AreaShare> open_hall_areas(std::string_view hall, std::string_view d
   if (hall == "dining_hall") return {{"cafe", 0.35}, {"dining_area", 0.65}};
   if (hall == "concourse" && domain == "train_station") return {{"waiting_room", 0.5}, {"concourse", 0.5}};
   if (hall == "concourse") return {{"waiting_room", 0.4}, {"concourse", 0.3}, {"cafe", 0.3}};
+  // A mall's walkway with a café court, a factory's goods-in area before its production lines, a
+  // foyer's box office and bar beside a café, a restaurant's bar room beside its dining room.
+  if (hall == "mall_concourse") return {{"mall_concourse", 0.6}, {"cafe", 0.4}};
+  if (hall == "production_floor") return {{"staging_area", 0.3}, {"production_floor", 0.7}};
+  if (hall == "foyer") return {{"foyer", 0.55}, {"cafe", 0.45}};
+  if (hall == "restaurant") return {{"restaurant", 0.4}, {"dining_area", 0.6}};
   return {};
 }
 
@@ -223,6 +229,11 @@ class Layout {
     if (graph_.entrance.empty()) graph_.entrance = graph_.rooms[*circ_].name;
     entrance_ = index_.at(graph_.entrance);
     neighbours_.assign(n, {});
+    on_hub_.assign(n, false);
+    for (const auto& [a, b] : graph_.adjacency) {
+      if (a == graph_.rooms[*circ_].name) on_hub_[index_.at(b)] = true;
+      if (b == graph_.rooms[*circ_].name) on_hub_[index_.at(a)] = true;
+    }
     std::vector<FieldError> errors;
     std::vector<std::size_t> parent(n);
     for (std::size_t i = 0; i < n; ++i) parent[i] = i;
@@ -338,7 +349,10 @@ class Layout {
 
     // Caps at the ends of the circulation, bands of rooms along its sides.
     const bool corridor = is_corridor_type(rooms_[*circ_].type);
-    const std::size_t max_caps = entrance_ == *circ_ ? 1 : 2;
+    // A hall entered from outside keeps one end free for its entrance, unless it is small (then
+    // its rooms stand in one band and its other long side is outside).
+    const bool small = !home_open_plan_ && n <= 6;
+    const std::size_t max_caps = entrance_ == *circ_ && !small ? 1 : 2;
     std::vector<std::size_t> caps;
     auto try_cap = [&](std::size_t r, double p) {
       if (caps.size() >= max_caps || r == *circ_ || !rng.chance(p)) return;
@@ -353,9 +367,12 @@ class Layout {
           t == "open_office" || t == "loading_bay" || t == "ticket_hall" || t == "food_court")
         try_cap(i, 0.45);
     }
-    // A home without a hallway: any room may close an end of the living room.
-    if (home_open_plan_)
+    // A home without a hallway: any room may close an end of the living room. So may any room of a
+    // small program (a hall and up to five rooms), whose few rooms otherwise stand in few ways.
+    if (home_open_plan_ || small)
       for (std::size_t i = 0; i < n; ++i) try_cap(i, 0.3);
+    // Drawn from a stream of its own, so that larger programs keep their bytes.
+    service_exit_ = small && rng.fork("service exit").chance(0.5);
     bool needs_two_bands = false;
     std::vector<std::vector<std::size_t>> pieces_of(caps.size());
     for (std::size_t k = 0; k < caps.size(); ++k) {
@@ -377,7 +394,8 @@ class Layout {
     const bool single =
         family_ == Family::kOpenHall
             ? !needs_two_bands && band_rooms <= 8u
-            : !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) && rng.chance(corridor ? 0.35 : 0.6);
+            : !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) &&
+                  ((small && entrance_ == *circ_ && caps.size() == 2) || rng.chance(corridor ? 0.35 : 0.6));
     grouped_band_ = grouped ? static_cast<int>(rng.below(2)) : 0;
     std::vector<std::size_t> left[2], middle[2], right[2];
     const bool first_cap_left = rng.chance(0.5);
@@ -432,10 +450,36 @@ class Layout {
     // Band depths and room widths.
     int depth[2] = {0, 0};
     std::vector<std::size_t> band[2];
+    // In a hall's plan, a room at the end of a chain that has no door onto the hall (a store behind
+    // a kitchen, backstage behind an auditorium, the last gallery) may stand behind its neighbour
+    // instead of beside it. Drawn from a stream of its own: plans without such a room keep their bytes.
+    std::vector<std::pair<std::size_t, std::size_t>> behind;  // (room, the band room it stands behind)
     for (int b = 0; b < 2; ++b) {
       band[b] = left[b];
       band[b].insert(band[b].end(), middle[b].begin(), middle[b].end());
       band[b].insert(band[b].end(), right[b].begin(), right[b].end());
+    }
+    if (!corridor && !home_open_plan_) {
+      Rng draw = rng.fork("behind");
+      for (int b = 0; b < 2; ++b) {
+        std::vector<std::size_t> kept;
+        for (auto r : band[b]) {
+          const bool end = neighbours_[r].size() == 1 && !on_hub_[r] && r != entrance_;
+          const std::size_t q = end ? neighbours_[r][0] : r;
+          const bool q_in_band = end && std::find(band[b].begin(), band[b].end(), q) != band[b].end() &&
+                                 std::none_of(behind.begin(), behind.end(), [&](const auto& bq) {
+                                   return bq.first == q || bq.second == q;
+                                 });
+          if (q_in_band && draw.chance(0.7)) {
+            behind.emplace_back(r, q);
+          } else {
+            kept.push_back(r);
+          }
+        }
+        band[b] = std::move(kept);
+      }
+    }
+    for (int b = 0; b < 2; ++b) {
       depth[b] = cm_up(rng.uniform(style.depth_lo, style.depth_hi));
       for (auto r : band[b]) depth[b] = std::max(depth[b], rooms_[r].min_dim);
     }
@@ -524,6 +568,14 @@ class Layout {
                                 : Rect{x_of[r], -depth[b], x_of[r] + width[r], 0};
         rooms_[r].placed = true;
       }
+    for (const auto& [r, q] : behind) {
+      const Rect& in_front = rooms_[q].rect;
+      const int d = cm_up(std::max(rooms_[r].area / m(in_front.x1 - in_front.x0), m(rooms_[r].min_dim)));
+      const bool above = in_front.y0 >= W;  // band 0 stands above the hall, band 1 below it
+      rooms_[r].rect = above ? Rect{in_front.x0, in_front.y1, in_front.x1, in_front.y1 + d}
+                             : Rect{in_front.x0, in_front.y0 - d, in_front.x1, in_front.y0};
+      rooms_[r].placed = true;
+    }
     for (auto cap : caps) {
       const int y0 = band[1].empty() ? 0 : -depth[1];
       const int y1 = W + (band[0].empty() ? 0 : depth[0]);
@@ -619,7 +671,7 @@ class Layout {
     bool near_has_wall = false;
     for (std::size_t r = 0; r < rooms_.size(); ++r)
       if (rooms_[r].name == near && !outside_walls(rects, r).empty()) near_has_wall = true;
-    auto tier = [&](std::size_t r) {
+    auto base_tier = [&](std::size_t r) {
       const std::string& t = rooms_[r].type;
       if (near_has_wall) return rooms_[r].name == near ? 0 : 3;
       if (is_circulation_type(t)) return 0;
@@ -628,6 +680,12 @@ class Layout {
         return 1;
       if (is_toilet_type(t) || is_bedroom_type(t) || t == "storage") return 3;
       return 2;
+    };
+    // A service exit (kitchen, stock room, office) first when this attempt drew one.
+    auto tier = [&](std::size_t r) {
+      const int t = base_tier(r);
+      if (!service_exit_ || near_has_wall) return t;
+      return t == 2 ? 0 : t == 0 ? 1 : t;
     };
     struct Spot {
       std::size_t room;
@@ -889,6 +947,7 @@ class Layout {
   std::size_t entrance_ = 0;
   std::map<std::string, std::size_t> index_;
   std::vector<std::vector<std::size_t>> neighbours_;  // rooms that must stand side by side
+  std::vector<bool> on_hub_;                          // rooms with an edge to the hub
   std::vector<std::vector<std::size_t>> chains_;
   std::vector<std::size_t> chain_of_;
   std::vector<std::string> notes_;
@@ -900,6 +959,7 @@ class Layout {
   int door_w_ = 90, public_w_ = 100, entrance_w_ = 100;
   int grouped_band_ = 0;         // the band stout halls and platforms go to
   bool home_open_plan_ = false;  // the living room is the hub (no hallway in the graph)
+  bool service_exit_ = false;    // a small program's second exit from a service room (this attempt)
   Family family_ = Family::kCorridorWithRooms;
   std::vector<std::pair<std::string, Rect>> areas_;  // open hall: its zones (type, rectangle)
   int rotate_ = 0;
@@ -1104,7 +1164,9 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       continue;
     }
     const Rng furnishing_rng = rng.fork("furnish");
-    std::set<std::string> dropped;  // furniture the layout check found in the way, left out
+    ComplianceCache travel_cache;    // the worlds of this attempt share their travel-distance grid
+    FurnishingMemo furnishing_memo;  // and the furnishing of rooms whose doors did not change
+    std::set<std::string> dropped;   // furniture the layout check found in the way, left out
     FeatureOutcome outcome;
     // Worlds built again for more exits or with furniture left out are validated without the
     // reachability grid (the costliest part of a build); the plan returned is validated in full.
@@ -1125,7 +1187,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       layout.emit_areas(doors, areas, area_doors);
       std::vector<std::string> open_halls;
       if (!areas.empty()) open_halls.push_back(layout.hub_name());
-      Furnishing f = furnish(zones, doors, rules, furnishing, open_halls);
+      Furnishing f = furnish(zones, doors, rules, furnishing, open_halls, furnishing_memo);
       if (!areas.empty()) {
         Rng by_area = furnishing_rng.fork("areas");
         Furnishing a = furnish_areas(areas, area_doors, rules, by_area);
@@ -1150,7 +1212,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       last_error = world.error();
       continue;
     }
-    ComplianceReport report = check_compliance(*world, domain, constraints, occupants);
+    ComplianceReport report = check_compliance(*world, domain, constraints, occupants, travel_cache);
     // Exits: as many as the request asks for and the code requires (occupant load, travel
     // distance), each added as far from the others as the outside walls allow.
     // An exit count the request gives is a minimum: the code's exit count (IBC Table 1006.3.2)
@@ -1177,7 +1239,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
         if (layout.widen_exits(each) > before) {
           why.widened = true;
           world = build(false);
-          if (world) report = check_compliance(*world, domain, constraints, occupants);
+          if (world) report = check_compliance(*world, domain, constraints, occupants, travel_cache);
           continue;
         }
       }
@@ -1199,7 +1261,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       }
       if (!exits_ok) break;
       world = build(false);
-      if (world) report = check_compliance(*world, domain, constraints, occupants);
+      if (world) report = check_compliance(*world, domain, constraints, occupants, travel_cache);
     }
     if (!world) {
       tried.push_back("the world with more exits did not validate: " + world.error().message());
@@ -1234,7 +1296,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
           tried.push_back("layout check: " + (world ? check.summary() : world.error().message()));
           continue;
         }
-        report = check_compliance(*world, domain, constraints, occupants);
+        report = check_compliance(*world, domain, constraints, occupants, travel_cache);
       }
     }
     if (!report.passed) {

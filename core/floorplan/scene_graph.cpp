@@ -404,6 +404,12 @@ SceneGraph room_program(std::string_view domain, const std::map<std::string, int
                                  name);
       previous = name;
     }
+    // Three or more rooms en suite make a circuit: the last opens back onto where the first does.
+    if (r.en_suite && n >= 3) {
+      const auto link = first_of_type.find(std::string(r.link));
+      g.adjacency.emplace_back(r.link.empty() || link == first_of_type.end() ? circulation : link->second,
+                               previous);
+    }
   }
   const auto entrance = first_of_type.find(std::string(p.entrance));
   g.entrance = entrance != first_of_type.end() ? entrance->second : circulation;

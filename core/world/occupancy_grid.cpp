@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <tuple>
 
 #include "core/geometry/planar.hpp"
@@ -122,29 +121,55 @@ std::size_t OccupancyGrid::free_count() const {
 }
 
 std::vector<int> OccupancyGrid::components() const {
-  std::vector<int> label(blocked_.size(), -1);
-  int next = 0;
-  std::deque<Cell> queue;
+  // Runs of free cells along each row, joined (union-find) with the runs they touch in the row
+  // below; components are numbered in the order of their first cell in row-major order, as a
+  // flood fill started from each unlabelled cell in that order would number them.
+  struct Run {
+    int y, x0, x1;  // cells x0 .. x1 - 1 of row y
+  };
+  std::vector<Run> runs;
+  std::vector<std::size_t> row_start(static_cast<std::size_t>(height_) + 1, 0);
   for (int y = 0; y < height_; ++y) {
-    for (int x = 0; x < width_; ++x) {
-      const std::size_t i = index({x, y});
-      if (blocked_[i] || label[i] >= 0) continue;
-      label[i] = next;
-      queue.push_back({x, y});
-      while (!queue.empty()) {
-        const Cell c = queue.front();
-        queue.pop_front();
-        const Cell nbrs[4] = {{c.x + 1, c.y}, {c.x - 1, c.y}, {c.x, c.y + 1}, {c.x, c.y - 1}};
-        for (const Cell& m : nbrs) {
-          if (!in_bounds(m)) continue;
-          const std::size_t j = index(m);
-          if (blocked_[j] || label[j] >= 0) continue;
-          label[j] = next;
-          queue.push_back(m);
-        }
+    row_start[static_cast<std::size_t>(y)] = runs.size();
+    const std::uint8_t* row = blocked_.data() + index({0, y});
+    for (int x = 0; x < width_;) {
+      if (row[x]) {
+        ++x;
+        continue;
       }
-      ++next;
+      const int x0 = x;
+      while (x < width_ && !row[x]) ++x;
+      runs.push_back({y, x0, x});
     }
+  }
+  row_start[static_cast<std::size_t>(height_)] = runs.size();
+  std::vector<std::size_t> parent(runs.size());
+  for (std::size_t r = 0; r < runs.size(); ++r) parent[r] = r;
+  auto root = [&parent](std::size_t r) {
+    while (parent[r] != r) r = parent[r] = parent[parent[r]];
+    return r;
+  };
+  for (int y = 1; y < height_; ++y) {
+    std::size_t below = row_start[static_cast<std::size_t>(y - 1)];
+    const std::size_t below_end = row_start[static_cast<std::size_t>(y)];
+    for (std::size_t r = row_start[static_cast<std::size_t>(y)];
+         r < row_start[static_cast<std::size_t>(y) + 1]; ++r) {
+      while (below < below_end && runs[below].x1 <= runs[r].x0) ++below;
+      for (std::size_t b = below; b < below_end && runs[b].x0 < runs[r].x1; ++b) {
+        const std::size_t ra = root(r), rb = root(b);
+        if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+      }
+    }
+  }
+  std::vector<int> label(blocked_.size(), -1);
+  std::vector<int> number(runs.size(), -1);
+  int next = 0;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    int& n = number[root(r)];
+    if (n < 0) n = next++;
+    const std::size_t row = index({0, runs[r].y});
+    std::fill(label.begin() + static_cast<std::ptrdiff_t>(row + static_cast<std::size_t>(runs[r].x0)),
+              label.begin() + static_cast<std::ptrdiff_t>(row + static_cast<std::size_t>(runs[r].x1)), n);
   }
   return label;
 }

@@ -47,6 +47,8 @@ class OccupancyGrid {
   [[nodiscard]] std::optional<Cell> cell_of(Point p) const;
   // Row-major blocked flags (1 = blocked), row 0 first.
   [[nodiscard]] std::span<const std::uint8_t> blocked_cells() const { return blocked_; }
+  // Row-major zone index per cell (-1 outside every zone), row 0 first.
+  [[nodiscard]] std::span<const std::int32_t> zone_cells() const { return zone_; }
   [[nodiscard]] std::size_t free_count() const;
 
   // 4-connected components of free cells: a label per cell, -1 for blocked cells.

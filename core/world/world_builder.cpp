@@ -828,13 +828,21 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
           OccupancyGrid::rasterise(w, GridOptions{opt.grid_resolution, opt.agent_radius, 4'000'000});
       const auto label = grid.components();
       std::vector<std::map<int, std::size_t>> counts(zones.size());
-      for (int y = 0; y < grid.height(); ++y) {
-        for (int x = 0; x < grid.width(); ++x) {
-          const Cell c{x, y};
-          const int l = label[grid.index(c)];
-          if (l < 0) continue;
-          if (auto z = grid.zone_of(c)) ++counts[z->index()][l];
+      // Neighbouring cells mostly share zone and component: one map lookup per run of them.
+      std::size_t* run = nullptr;
+      std::size_t run_zone = 0;
+      int run_label = -1;
+      const auto zone_of = grid.zone_cells();
+      for (std::size_t i = 0; i < label.size(); ++i) {
+        const int l = label[i];
+        if (l < 0 || zone_of[i] < 0) continue;
+        const auto z = static_cast<std::size_t>(zone_of[i]);
+        if (run == nullptr || run_zone != z || run_label != l) {
+          run_zone = z;
+          run_label = l;
+          run = &counts[run_zone][l];
         }
+        ++*run;
       }
       std::vector<int> main(zones.size(), -1);
       std::map<int, std::size_t> votes;

@@ -9,6 +9,7 @@
 #include <ctime>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/floorplan/offline.hpp"
@@ -18,6 +19,7 @@
 #include "core/world/geodesic.hpp"
 #include "core/world/occupancy_grid.hpp"
 #include "core/world/world_builder.hpp"
+#include "core/world/world_document.hpp"
 #include "core/world/world_yaml.hpp"
 #include "tests/bench/bench.hpp"
 
@@ -49,7 +51,7 @@ WorldBuilder ten_room_plan() {
   return b;
 }
 
-int floor_plans(int runs);
+int floor_plans(int runs, const std::string& only);
 
 // CPU time of this thread: on a loaded machine wall time mostly measures the other processes.
 double thread_cpu_ms() {
@@ -60,6 +62,9 @@ double thread_cpu_ms() {
 
 int run_world(const socsim::bench::Args& a) {
   const int runs = static_cast<int>(a.integer("runs", 50));
+  // --only mall: just the floor plans whose label has this word (for a profiler).
+  const std::string only = a.str("only", "");
+  if (!only.empty()) return floor_plans(runs, only);
   const WorldBuilder plan = ten_room_plan();
   std::vector<double> build_ms;
   std::vector<double> build_cpu;
@@ -129,7 +134,7 @@ int run_world(const socsim::bench::Args& a) {
                        {"bytes", yaml.size()},
                        {"p50_ms", socsim::bench::percentile(yaml_ms, 50)},
                        {"p95_ms", socsim::bench::percentile(yaml_ms, 95)}});
-  return floor_plans(runs);
+  return floor_plans(runs, "");
 }
 
 // Offline generation of one plan per run (one seed each) against the seeded knowledge store:
@@ -171,11 +176,19 @@ int floor_plan(socsim::knowledge::KnowledgeBase& kb, const std::string& label, c
   return 0;
 }
 
+SceneGraph big_mall() {
+  return room_program("mall", {{"shop_unit", 50}, {"private_office", 2}, {"toilet", 6}});
+}
+SceneGraph big_arena() {
+  return room_program(
+      "arena", {{"concession", 20}, {"locker_room", 10}, {"first_aid", 2}, {"storage", 6}, {"toilet", 20}});
+}
+
 // A 10-room hospital plan (lobby, corridor, 3 patient rooms, nurse station, 2 treatment rooms,
 // 2 toilets), a 60-room mall (concourse, 50 shops, food court, 2 offices, 6 toilets) and a
 // 60-room arena (concourse, arena floor, 20 concession stands, 10 locker rooms, 2 first-aid
 // rooms, 6 stores, 20 toilets).
-int floor_plans(int runs) {
+int floor_plans(int runs, const std::string& only) {
   const auto db =
       std::filesystem::temp_directory_path() / ("socsim-bench-world-" + std::to_string(::getpid()) + ".db");
   int status = 0;
@@ -186,20 +199,96 @@ int floor_plans(int runs) {
       return 1;
     }
     socsim::knowledge::KnowledgeBase kb(**store);
-    status = floor_plan(kb, "floor_plan_offline_10_rooms", "hospital",
-                        room_program("hospital", {{"patient_room", 3}}), runs);
+    auto wanted = [&only](const std::string& label) {
+      return only.empty() || label.find(only) != std::string::npos;
+    };
     const int big_runs = std::max(1, runs / 5);
-    if (status == 0)
-      status = floor_plan(kb, "floor_plan_offline_60_room_mall", "mall",
-                          room_program("mall", {{"shop_unit", 50}, {"private_office", 2}, {"toilet", 6}}),
-                          big_runs);
-    if (status == 0)
-      status = floor_plan(
-          kb, "floor_plan_offline_60_room_arena", "arena",
-          room_program(
-              "arena",
-              {{"concession", 20}, {"locker_room", 10}, {"first_aid", 2}, {"storage", 6}, {"toilet", 20}}),
-          big_runs);
+    for (const auto& [label, domain, graph, n] :
+         {std::tuple{"floor_plan_offline_10_rooms", "hospital",
+                     room_program("hospital", {{"patient_room", 3}}), runs},
+          std::tuple{"floor_plan_offline_60_room_mall", "mall", big_mall(), big_runs},
+          std::tuple{"floor_plan_offline_60_room_arena", "arena", big_arena(), big_runs}})
+      if (status == 0 && wanted(label)) status = floor_plan(kb, label, domain, graph, n);
+  }
+  std::error_code ec;
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix, ec);
+  return status;
+}
+
+// FNV-1a of a text: a short digest to compare plans across commits.
+std::uint64_t fnv1a(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+void emit_digest(const std::string& prompt, int seed, const FloorPlan& plan) {
+  socsim::bench::emit({{"prompt", prompt},
+                       {"seed", seed},
+                       {"family", plan.provenance.value("layout_family", "")},
+                       {"rooms", plan.world.zones().size()},
+                       {"world", fnv1a(world_to_document(plan.world).dump())},
+                       {"provenance", fnv1a(plan.provenance.dump())}});
+}
+
+// One line per prompt x seed: the digest of the world's JSON document and of the provenance,
+// so a speed change can show that it left every plan byte-identical (docs/PERFORMANCE.md).
+int run_world_digest(const socsim::bench::Args& a) {
+  const int seeds = static_cast<int>(a.integer("seeds", 3));
+  const std::vector<std::string> prompts = {
+      "a hospital ward with six patient rooms, a waiting room and two treatment rooms",
+      "guests checking in at a small hotel",
+      "visitors in a museum",
+      "passengers in the station concourse",
+      "a family at home in their small flat",
+      "shoppers at the supermarket check-outs",
+      "an evening at the cinema",
+      "a concert at the arena",
+      "shoppers in a shopping mall",
+      "workers on the factory floor",
+      "students at the university lecture halls",
+      "lunch in the office canteen",
+  };
+  const auto db =
+      std::filesystem::temp_directory_path() / ("socsim-bench-digest-" + std::to_string(::getpid()) + ".db");
+  int status = 0;
+  {
+    auto store = socsim::store::Store::open(db.string());
+    if (!store) {
+      std::cerr << store.error().message() << "\n";
+      return 1;
+    }
+    socsim::knowledge::KnowledgeBase kb(**store);
+    for (const auto& prompt : prompts) {
+      auto g = scene_graph_from_prompt(prompt);
+      if (!g) {
+        std::cerr << prompt << ": " << g.error().message() << "\n";
+        status = 1;
+        continue;
+      }
+      const auto constraints = kb.constraints_for(g->graph.domain).value();
+      for (int seed = 0; seed < seeds; ++seed) {
+        OfflineOptions o;
+        o.seed = static_cast<std::uint64_t>(seed);
+        auto plan = generate_floor_plan(g->graph, constraints, o);
+        if (!plan) {
+          socsim::bench::emit({{"prompt", prompt}, {"seed", seed}, {"error", plan.error().message()}});
+          continue;
+        }
+        emit_digest(prompt, seed, *plan);
+      }
+    }
+    // The benchmark's 60-room mall and arena.
+    for (const auto& [label, graph] :
+         {std::pair{"60-room mall", big_mall()}, std::pair{"60-room arena", big_arena()}}) {
+      const auto constraints = kb.constraints_for(graph.domain).value();
+      for (int seed = 1; seed <= seeds; ++seed) {
+        OfflineOptions o;
+        o.seed = static_cast<std::uint64_t>(seed);
+        auto plan = generate_floor_plan(graph, constraints, o);
+        if (plan) emit_digest(label, seed, *plan);
+      }
+    }
   }
   std::error_code ec;
   for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix, ec);
@@ -207,6 +296,11 @@ int floor_plans(int runs) {
 }
 
 }  // namespace
+
+SOCSIM_BENCH("world-digest",
+             "digests of the offline worlds of 12 venue prompts x --seeds seeds (default 3), to compare "
+             "plans across commits",
+             run_world_digest);
 
 SOCSIM_BENCH("world",
              "world build+validate (10 rooms), 256x256 geodesic field, world.yaml round trip, offline "

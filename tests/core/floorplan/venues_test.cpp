@@ -223,7 +223,10 @@ std::string arrangement(const World& w) {
 TEST_F(Venues, TwentySeedsOfOnePromptGiveAtLeastFifteenArrangements) {
   for (const char* prompt : {"a hospital ward with six patient rooms, a waiting room and two treatment rooms",
                              "guests checking in at a small hotel", "visitors in a museum",
-                             "passengers in the station concourse", "a family at home in their small flat"}) {
+                             "passengers in the station concourse", "a family at home in their small flat",
+                             // Programs of four or five rooms (a hall and three or four rooms).
+                             "shoppers at the supermarket check-outs", "lunch in the office canteen",
+                             "dinner at a busy restaurant", "voters at the polling station"}) {
     auto g = scene_graph_from_prompt(prompt);
     ASSERT_TRUE(g) << prompt;
     std::set<std::string> seen;
@@ -234,7 +237,7 @@ TEST_F(Venues, TwentySeedsOfOnePromptGiveAtLeastFifteenArrangements) {
       ASSERT_TRUE(plan) << prompt << " seed " << seed << ": " << plan.error().message();
       seen.insert(arrangement(plan->world));
     }
-    EXPECT_GE(seen.size(), 15u) << prompt;
+    EXPECT_GE(seen.size(), 15u) << prompt << " (" << g->graph.rooms.size() << " rooms)";
   }
 }
 
@@ -258,8 +261,9 @@ TEST_F(Venues, TheArrangementSignatureSeesOrderNotSize) {
 // kept exactly (a door for every edge, between the two rooms it names), the family recorded.
 TEST_F(Venues, EveryLayoutFamilyIsBuiltCleanAndKeepsTheSceneGraph) {
   std::map<std::string, int> families;
-  for (std::string_view type : {"supermarket", "retail", "canteen", "warehouse", "train_station", "airport",
-                                "residential", "hospital", "museum", "theatre", "mall"}) {
+  for (std::string_view type :
+       {"supermarket", "retail", "canteen", "warehouse", "train_station", "airport", "residential",
+        "hospital", "museum", "theatre", "mall", "factory", "restaurant"}) {
     const SceneGraph g = room_program(type);
     const WorldRequirements wants = typical_request(type);
     for (std::uint64_t seed = 0; seed < 8; ++seed) {
