@@ -3,7 +3,10 @@
 // indexed reader opens it (summary and chunk CRCs checked) and its stream reader reads it through
 // (record CRCs); message counts and log times equal the card's frames; @foxglove/rosmsg parses our
 // .msg files and the schema in the file; @foxglove/rosmsg2-serialization decodes every /people
-// message back to the states of the card's log (its CSV export).
+// message back to the states of the card's log (its CSV export). For the same seven cards the
+// simulator exports are read by real readers too (Gazebo SDF by xmllint, the Arena-Rosnav scenario as
+// JSON, the Isaac Sim IRA configuration by the `yaml` package) and a live session of each card
+// reaches Foxglove's own WebSocket client (@foxglove/ws-protocol), whose /people messages decode.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync } from 'node:fs';
@@ -12,7 +15,13 @@ import { McapIndexedReader, McapStreamReader } from '@mcap/core';
 import { parse as parseMessageDefinition } from '@foxglove/rosmsg';
 import { MessageReader } from '@foxglove/rosmsg2-serialization';
 import { decompress } from 'fzstd';
+import { spawnSync } from 'node:child_process';
+import WebSocket from 'ws';
+import wsProtocol from '@foxglove/ws-protocol';
+import YAML from 'yaml';
 import { startServer, repoRoot } from './server.mjs';
+
+const { FoxgloveClient } = wsProtocol;
 
 const msgDir = join(repoRoot, 'schemas', 'ros2', 'socsim_people_msgs', 'msg');
 const STATES = ['walking', 'standing', 'queuing', 'sitting', 'interacting', 'evacuating', 'waiting', 'running', 'exited'];
@@ -170,6 +179,67 @@ for (const category of Object.keys(PROMPTS)) {
     assert.equal(kinds.Message, 2 * frameCount + 1);
     assert.equal(kinds.DataEnd, 1);
     assert.equal(kinds.Footer, 1);
+  });
+}
+
+// The first /people message of a live session of the card, through Foxglove's client.
+async function firstLivePeople(cardId) {
+  const sim = await server.post('/api/v1/simulations', { card_id: cardId });
+  assert.equal(sim.status, 201, JSON.stringify(sim.body));
+  const client = new FoxgloveClient({ ws: new WebSocket(`ws://127.0.0.1:${server.wsPort}/foxglove/${sim.body.id}`, [FoxgloveClient.SUPPORTED_SUBPROTOCOL]) });
+  client.on('error', () => {});
+  try {
+    return await new Promise((resolve, reject) => {
+      const timer = setTimeout(() => reject(new Error('no /people message within 20 s')), 20000);
+      let reader, sub;
+      client.on('advertise', (channels) => {
+        const people = channels.find((c) => c.topic === '/people');
+        if (!people || sub !== undefined) return;
+        reader = new MessageReader(parseMessageDefinition(people.schema, { ros2: true }));
+        sub = client.subscribe(people.id);
+      });
+      client.on('message', (m) => {
+        if (m.subscriptionId !== sub) return;
+        clearTimeout(timer);
+        resolve(reader.readMessage(new Uint8Array(m.data.buffer, m.data.byteOffset, m.data.byteLength)));
+      });
+    });
+  } finally {
+    client.close();
+    await fetch(`${server.base}/api/v1/simulations/${sim.body.id}`, { method: 'DELETE' });  // one of few slots
+  }
+}
+
+for (const category of Object.keys(PROMPTS)) {
+  test(`${category}: Gazebo, Arena and Isaac exports read back, and a live session reaches a Foxglove client`, async () => {
+    const id = cards[category];
+    const sdf = new TextDecoder().decode(await download(`/api/v1/cards/${id}/export?format=gazebo`));
+    const lint = spawnSync('xmllint', ['--noout', '-'], { input: sdf });
+    assert.equal(lint.status, 0, `xmllint: ${lint.stderr}`);
+    assert.ok((sdf.match(/<actor /g) ?? []).length > 0);
+
+    const arena = JSON.parse(new TextDecoder().decode(await download(`/api/v1/cards/${id}/export?format=arena`)));
+    assert.equal(arena.robots.length, 1);
+    assert.ok(arena.obstacles.dynamic.length > 0);
+    for (const o of arena.obstacles.dynamic) {
+      assert.equal(o.pos.length, 3);
+      assert.ok(o.waypoints.length > 0 && o.waypoints.every((w) => w.length === 3 && w.every(Number.isFinite)));
+    }
+
+    const isaac = JSON.parse(new TextDecoder().decode(await download(`/api/v1/cards/${id}/export?format=isaac&archive=json`)));
+    assert.deepEqual(Object.keys(isaac.files).sort(), ['ira_config.yaml', 'people_commands.txt', 'world.usda']);
+    assert.ok(isaac.files['world.usda'].startsWith('#usda 1.0\n'));
+    const ira = YAML.parse(isaac.files['ira_config.yaml'])['isaacsim.replicator.agent'];
+    assert.equal(ira.environment.base_stage_asset_path, 'world.usda');
+    const people = Object.values(ira.character.groups).reduce((n, g) => n + g.num, 0);
+    const characters = new Set(isaac.files['people_commands.txt'].split('\n').filter((l) => l && !l.startsWith('#')).map((l) => l.split(' ')[0]));
+    assert.equal(characters.size, people);
+    for (const line of isaac.files['people_commands.txt'].split('\n').filter((l) => l && !l.startsWith('#')))
+      assert.match(line, /^Character(_\d+)? (GoTo -?[\d.]+ -?[\d.]+ 0 _|Idle [\d.]+)$/);
+
+    const live = await firstLivePeople(id);
+    assert.equal(live.header.frame_id, 'map');
+    assert.ok(live.people.length > 0, `${category}: no people in the live frame`);
   });
 }
 
