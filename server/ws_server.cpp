@@ -333,19 +333,25 @@ class Session : public std::enable_shared_from_this<Session> {
     auto session = shared_.options.cosim->find(id);
     if (!session) return refuse(session.error());
     const auto offered = offered_protocols(std::string(request_[http::field::sec_websocket_protocol]));
-    if (std::find(offered.begin(), offered.end(), std::string(kCosimProtocol)) == offered.end())
-      return refuse(Error(ErrorCode::kBadRequest, "a co-simulation client must offer the subprotocol " +
-                                                      std::string(kCosimProtocol) +
-                                                      " (Sec-WebSocket-Protocol)"));
+    const auto offers = [&offered](std::string_view p) {
+      return std::find(offered.begin(), offered.end(), std::string(p)) != offered.end();
+    };
+    if (!offers(kCosimProtocol) && !offers(kCosimBinaryProtocol))
+      return refuse(Error(ErrorCode::kBadRequest,
+                          "a co-simulation client must offer the subprotocol " + std::string(kCosimProtocol) +
+                              " or " + std::string(kCosimBinaryProtocol) + " (Sec-WebSocket-Protocol)"));
+    const bool binary = offers(kCosimBinaryProtocol);
     const auto& keys = shared_.options.keys;
     if (keys && !may_act_for(*keys, author_, (*session)->author()))
       return refuse(Error(ErrorCode::kForbidden, "co-simulation '" + id + "' was started by another author"));
-    if (auto ok = (*session)->claim(); !ok) return refuse(ok.error());
+    if (auto ok = (*session)->claim(binary ? CosimEncoding::kBinary : CosimEncoding::kJson); !ok)
+      return refuse(ok.error());
     cosim_ = *session;
     upgrade_timeouts();
-    ws_.set_option(websocket::stream_base::decorator([](websocket::response_type& res) {
+    ws_.set_option(websocket::stream_base::decorator([binary](websocket::response_type& res) {
       res.set(http::field::server, "socsim");
-      res.set(http::field::sec_websocket_protocol, std::string(kCosimProtocol));
+      res.set(http::field::sec_websocket_protocol,
+              std::string(binary ? kCosimBinaryProtocol : kCosimProtocol));
     }));
     ws_.auto_fragment(false);
     ws_.read_message_max(1024 * 1024);  // a step with a few robots is small; this is generous
@@ -357,6 +363,7 @@ class Session : public std::enable_shared_from_this<Session> {
     for (std::size_t k = 0; k < reply.messages.size(); ++k) {
       auto m = std::make_shared<WireMessage>();
       m->bytes = reply.messages[k];
+      m->binary = k < reply.binary.size() && reply.binary[k];
       m->frame = reply.droppable;  // real time: a client that does not read loses old observations
       m->last = reply.close && k + 1 == reply.messages.size();
       enqueue(std::move(m));
