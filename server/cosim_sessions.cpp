@@ -1,7 +1,9 @@
 #include "server/cosim_sessions.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
 
 #include "core/common/ids.hpp"
 #include "core/crowd/episode_metrics.hpp"
@@ -285,13 +287,76 @@ bool CosimSession::expire_if_unclaimed(std::chrono::steady_clock::time_point now
   return true;
 }
 
-Status CosimSession::claim() {
+Status CosimSession::claim(CosimEncoding encoding) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (end_reason_)
     return fail(ErrorCode::kConflict, "co-simulation '" + id_ + "' has ended (" + *end_reason_ + ")");
   if (claimed_) return fail(ErrorCode::kConflict, "co-simulation '" + id_ + "' already has its client");
   claimed_ = true;
+  encoding_ = encoding;
+  if (encoding_ == CosimEncoding::kBinary) {
+    const crowd::CrowdSimulation& sim = episode_->runner().sim();
+    for (const crowd::PedestrianState& p : episode_->runner().states())
+      if (!sim.driven(p.id)) roles_.push_back(p.role);
+    std::sort(roles_.begin(), roles_.end());
+    roles_.erase(std::unique(roles_.begin(), roles_.end()), roles_.end());
+    if (roles_.size() > 255) roles_.resize(255);
+  }
   return {};
+}
+
+void CosimSession::push_observation_locked(CosimReply& out) const {
+  if (encoding_ == CosimEncoding::kJson) return out.messages.push_back(observation_locked());
+  out.binary.resize(out.messages.size(), false);
+  out.messages.push_back(binary_observation_locked());
+  out.binary.push_back(true);
+}
+
+// docs/cosim.md, "Binary observations": little-endian; a 32-byte header, 28 bytes per robot,
+// 32 per person; positions and velocities as float32.
+std::string CosimSession::binary_observation_locked() const {
+  static_assert(std::endian::native == std::endian::little, "the binary observation is written as in memory");
+  crowd::Episode& e = *episode_;  // runner() is not const; nothing here changes it
+  const crowd::CrowdSimulation& sim = e.runner().sim();
+  const std::vector<crowd::PedestrianState> states = e.runner().states();
+  std::uint32_t people = 0;
+  for (const crowd::PedestrianState& p : states) people += !sim.driven(p.id) && sim.active(p.id) ? 1 : 0;
+  const std::size_t robots = e.robots().size();
+  std::string out(
+      kCosimBinaryHeaderBytes + robots * kCosimBinaryRobotBytes + people * kCosimBinaryPersonBytes, '\0');
+  char* at = out.data();
+  const auto put = [&at](const auto& v) {
+    std::memcpy(at, &v, sizeof v);
+    at += sizeof v;
+  };
+  std::memcpy(at, "SCB1", 4);
+  at += 4;
+  put(static_cast<std::uint8_t>(e.ended() ? 1 : 0));
+  put(static_cast<std::uint8_t>(robots));
+  put(std::uint16_t{0});
+  put(static_cast<std::uint64_t>(e.steps()));
+  put(e.time());
+  put(people);
+  put(std::uint32_t{0});
+  for (std::size_t k = 0; k < robots; ++k) {
+    const crowd::UnicycleState s = e.robot_state(k);
+    const crowd::Twist2 t = crowd::twist_of(s);
+    for (double v : {s.pose.x, s.pose.y, s.pose.yaw, t.vx, t.vy, t.omega}) put(static_cast<float>(v));
+    put(static_cast<std::uint8_t>(e.results()[k].outcome));
+    put(std::uint8_t{0});
+    put(std::uint16_t{0});
+  }
+  for (const crowd::PedestrianState& p : states) {
+    if (sim.driven(p.id) || !sim.active(p.id)) continue;
+    put(static_cast<std::uint32_t>(p.id.value()));
+    for (double v : {p.pose.x, p.pose.y, p.pose.yaw, p.twist.vx, p.twist.vy}) put(static_cast<float>(v));
+    put(static_cast<std::int32_t>(p.group_id));
+    put(static_cast<std::uint8_t>(p.activity));
+    const auto role = std::lower_bound(roles_.begin(), roles_.end(), p.role);
+    put(static_cast<std::uint8_t>(role != roles_.end() && *role == p.role ? role - roles_.begin() : 255));
+    put(std::uint16_t{0});
+  }
+  return out;
 }
 
 std::string CosimSession::observation_locked() const {
@@ -332,8 +397,10 @@ CosimReply CosimSession::hello() {
                                    {"dt", episode_->log().dt},
                                    {"time_limit", settings_.episode.time_limit},
                                    {"idle_s", limits_.idle_s},
+                                   {"encoding", encoding_ == CosimEncoding::kBinary ? "binary" : "json"},
+                                   {"roles", roles_},
                                    {"robots", std::move(robots)}}));
-  out.messages.push_back(observation_locked());
+  push_observation_locked(out);
   return out;
 }
 
@@ -364,7 +431,7 @@ CosimReply CosimSession::end_locked(const std::string& reason) {
 CosimReply CosimSession::step_locked(const std::vector<RobotInput>& inputs) {
   if (auto ok = episode_->step(inputs); !ok) return fail_locked(ok.error(), "protocol_error");
   CosimReply out;
-  out.messages.push_back(observation_locked());
+  push_observation_locked(out);
   if (episode_->ended()) {
     CosimReply end = end_locked("episode_ended");
     out.messages.insert(out.messages.end(), end.messages.begin(), end.messages.end());
@@ -375,7 +442,7 @@ CosimReply CosimSession::step_locked(const std::vector<RobotInput>& inputs) {
 
 CosimReply CosimSession::handle(std::string_view text) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (end_reason_) return CosimReply{{}, true, false};
+  if (end_reason_) return CosimReply{{}, true, false, false, {}};
   auto parsed = parse_json_untrusted(text);
   if (!parsed) return fail_locked(parsed.error(), "protocol_error");
   const Json& m = *parsed;

@@ -22,6 +22,13 @@
 namespace socsim::server {
 
 inline constexpr std::string_view kCosimProtocol = "socsim.cosim.v1";
+// The same protocol with compact binary observations (docs/cosim.md, "Binary observations"); a
+// client that offers it gets it.
+inline constexpr std::string_view kCosimBinaryProtocol = "socsim.cosim.v1.binary";
+enum class CosimEncoding : std::uint8_t { kJson, kBinary };
+inline constexpr std::size_t kCosimBinaryHeaderBytes = 32;
+inline constexpr std::size_t kCosimBinaryRobotBytes = 28;
+inline constexpr std::size_t kCosimBinaryPersonBytes = 32;
 
 struct CosimLimits {
   std::size_t max_sessions = 4;    // not yet ended, at once
@@ -57,10 +64,11 @@ struct CosimRequest {
 
 // What handle()/hello()/tick()/expire() give the transport to send, in order.
 struct CosimReply {
-  std::vector<std::string> messages;  // JSON text messages
+  std::vector<std::string> messages;  // JSON text messages (or binary observations)
   bool close = false;                 // close the connection after sending them
   bool protocol_error = false;        // …with close code 1008 (policy violation)
   bool droppable = false;             // real-time observations: a slow client may lose old ones
+  std::vector<bool> binary;           // parallel to messages when one is binary; empty: all text
 };
 
 class CosimSession {
@@ -81,8 +89,9 @@ class CosimSession {
   // Whether a client that never connected has let the session go idle (then it ends).
   bool expire_if_unclaimed(std::chrono::steady_clock::time_point now);
 
-  // A client connects: 409 when one is already connected or the session has ended.
-  Status claim();
+  // A client connects: 409 when one is already connected or the session has ended. Its encoding
+  // is that of the subprotocol it chose.
+  Status claim(CosimEncoding encoding = CosimEncoding::kJson);
   // The first messages to a new client: hello and the observation of step 0.
   CosimReply hello();
   // One client message.
@@ -100,7 +109,9 @@ class CosimSession {
   CosimReply fail_locked(const Error& error, const std::string& code);
   CosimReply step_locked(const std::vector<crowd::RobotInput>& inputs);
   CosimReply end_locked(const std::string& reason);
+  void push_observation_locked(CosimReply& out) const;
   [[nodiscard]] std::string observation_locked() const;
+  [[nodiscard]] std::string binary_observation_locked() const;
 
   const std::string id_;
   const std::string author_;
@@ -111,6 +122,8 @@ class CosimSession {
   mutable std::mutex mutex_;
   std::unique_ptr<crowd::Episode> episode_;
   bool claimed_ = false;
+  CosimEncoding encoding_ = CosimEncoding::kJson;
+  std::vector<std::string> roles_;  // binary: the people's roles at claim time, sorted (hello's "roles")
   std::optional<std::string> end_reason_;
   Json report_;                          // set at the end
   std::vector<crowd::RobotInput> held_;  // real time: the last commands

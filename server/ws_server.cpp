@@ -61,6 +61,9 @@ struct Shared {
   SimulationSessions* simulations;
   std::shared_ptr<IoGate> gate = std::make_shared<IoGate>();
   std::set<std::shared_ptr<Session>> sessions;  // touched only on the I/O thread
+  // Co-simulation steps and messages run here, off the I/O thread (one strand per session), so
+  // that a large crowd's step does not delay the port's other clients. Joined before `io` goes.
+  asio::thread_pool cosim_workers{2};
   Shared(WsOptions o, EventHub& e, SimulationSessions* sims)
       : options(std::move(o)), events(e), simulations(sims) {
     gate->io = &io;
@@ -333,19 +336,25 @@ class Session : public std::enable_shared_from_this<Session> {
     auto session = shared_.options.cosim->find(id);
     if (!session) return refuse(session.error());
     const auto offered = offered_protocols(std::string(request_[http::field::sec_websocket_protocol]));
-    if (std::find(offered.begin(), offered.end(), std::string(kCosimProtocol)) == offered.end())
-      return refuse(Error(ErrorCode::kBadRequest, "a co-simulation client must offer the subprotocol " +
-                                                      std::string(kCosimProtocol) +
-                                                      " (Sec-WebSocket-Protocol)"));
+    const auto offers = [&offered](std::string_view p) {
+      return std::find(offered.begin(), offered.end(), std::string(p)) != offered.end();
+    };
+    if (!offers(kCosimProtocol) && !offers(kCosimBinaryProtocol))
+      return refuse(Error(ErrorCode::kBadRequest,
+                          "a co-simulation client must offer the subprotocol " + std::string(kCosimProtocol) +
+                              " or " + std::string(kCosimBinaryProtocol) + " (Sec-WebSocket-Protocol)"));
+    const bool binary = offers(kCosimBinaryProtocol);
     const auto& keys = shared_.options.keys;
     if (keys && !may_act_for(*keys, author_, (*session)->author()))
       return refuse(Error(ErrorCode::kForbidden, "co-simulation '" + id + "' was started by another author"));
-    if (auto ok = (*session)->claim(); !ok) return refuse(ok.error());
+    if (auto ok = (*session)->claim(binary ? CosimEncoding::kBinary : CosimEncoding::kJson); !ok)
+      return refuse(ok.error());
     cosim_ = *session;
     upgrade_timeouts();
-    ws_.set_option(websocket::stream_base::decorator([](websocket::response_type& res) {
+    ws_.set_option(websocket::stream_base::decorator([binary](websocket::response_type& res) {
       res.set(http::field::server, "socsim");
-      res.set(http::field::sec_websocket_protocol, std::string(kCosimProtocol));
+      res.set(http::field::sec_websocket_protocol,
+              std::string(binary ? kCosimBinaryProtocol : kCosimProtocol));
     }));
     ws_.auto_fragment(false);
     ws_.read_message_max(1024 * 1024);  // a step with a few robots is small; this is generous
@@ -357,6 +366,7 @@ class Session : public std::enable_shared_from_this<Session> {
     for (std::size_t k = 0; k < reply.messages.size(); ++k) {
       auto m = std::make_shared<WireMessage>();
       m->bytes = reply.messages[k];
+      m->binary = k < reply.binary.size() && reply.binary[k];
       m->frame = reply.droppable;  // real time: a client that does not read loses old observations
       m->last = reply.close && k + 1 == reply.messages.size();
       enqueue(std::move(m));
@@ -385,12 +395,33 @@ class Session : public std::enable_shared_from_this<Session> {
     tick_timer_.expires_at(at);
     tick_timer_.async_wait([self = shared_from_this(), at](beast::error_code ec) {
       if (ec || self->closed_ || !self->cosim_) return;
-      self->cosim_send(self->cosim_->tick());
+      // A tick still stepping when the next is due: that one is skipped, not queued behind it.
+      if (!self->tick_running_) {
+        self->tick_running_ = true;
+        self->run_cosim([](CosimSession& c) { return c.tick(); }, true);
+      }
       const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
           std::chrono::duration<double>(1.0 / self->cosim_->rate_hz()));
-      // A tick that overran its period does not make the next ones pile up on the I/O thread:
-      // the schedule restarts from now (the missed ticks are not made up).
-      if (!self->cosim_->ended()) self->arm_tick(std::max(at + period, std::chrono::steady_clock::now()));
+      // A tick that overran its period does not make the next ones pile up: the schedule restarts
+      // from now (the missed ticks are not made up). The reply that ends the episode stops the timer.
+      self->arm_tick(std::max(at + period, std::chrono::steady_clock::now()));
+    });
+  }
+
+  // Runs co-simulation work on the session's strand of the workers and sends its reply from the
+  // I/O thread, in order. Only a weak reference travels, so the session is released on the I/O
+  // thread (its destructor counts connections there).
+  template <class Work>
+  void run_cosim(Work work, bool tick = false) {
+    asio::post(cosim_strand_, [weak = weak_from_this(), cosim = cosim_, gate = shared_.gate, tick,
+                               work = std::move(work)]() mutable {
+      CosimReply reply = work(*cosim);
+      gate->post([weak, tick, reply = std::move(reply)]() {
+        auto self = weak.lock();
+        if (!self) return;
+        if (tick) self->tick_running_ = false;
+        if (!self->closed_) self->cosim_send(reply);
+      });
     });
   }
 
@@ -434,7 +465,8 @@ class Session : public std::enable_shared_from_this<Session> {
       }
       if (self->cosim_ && !self->close_after_) {
         self->arm_idle();
-        self->cosim_send(self->cosim_->handle(beast::buffers_to_string(self->in_.data())));
+        self->run_cosim(
+            [text = beast::buffers_to_string(self->in_.data())](CosimSession& c) { return c.handle(text); });
       }
       self->in_.consume(self->in_.size());
       self->read_loop();
@@ -524,7 +556,9 @@ class Session : public std::enable_shared_from_this<Session> {
   bool writing_ = false;
   bool open_ = false;  // handshake done
   bool closed_ = false;
-  bool close_after_ = false;  // the simulation ended: close once its "end" is written
+  bool close_after_ = false;   // the simulation ended: close once its "end" is written
+  bool tick_running_ = false;  // real time: a tick is stepping on the co-simulation workers
+  asio::strand<asio::thread_pool::executor_type> cosim_strand_{asio::make_strand(shared_.cosim_workers)};
   std::size_t dropped_ = 0;
 
  public:
@@ -648,6 +682,7 @@ void WsServer::stop() {
     impl->shared.io.stop();
   });
   impl_->thread.join();
+  impl_->shared.cosim_workers.join();  // steps under way finish; their replies find the gate closed
   for (const auto& s : impl_->shared.sessions) s->leave();
   impl_->shared.sessions.clear();
 }

@@ -4,6 +4,7 @@
 // second against the asked rate, the client's late ticks, and the observation size.
 #include <httplib.h>
 
+#include <cstring>
 #include <utility>  // before Boost.Asio: its awaitable.hpp uses std::exchange
 
 #include <boost/asio.hpp>
@@ -33,6 +34,7 @@ int run(const Args& a) {
   const double seconds = a.number("seconds", 10.0);
   const bool realtime = a.str("mode", "lockstep") == "realtime";
   const double rate = a.number("rate", 20.0);
+  const bool binary = a.str("encoding", "json") == "binary";
   auto daemon = socsim::bench::InProcessDaemon::start("cosim", [&](socsim::server::ServerConfig& cfg) {
     cfg.max_sim_agents = static_cast<std::size_t>(agents);
     cfg.sim_idle_s = 60;
@@ -64,8 +66,9 @@ int run(const Args& a) {
   websocket::stream<tcp::socket> ws(io);
   tcp::resolver resolver(io);
   asio::connect(ws.next_layer(), resolver.resolve("127.0.0.1", std::to_string(daemon->ws_port())));
-  ws.set_option(websocket::stream_base::decorator([](websocket::request_type& req) {
-    req.set(beast::http::field::sec_websocket_protocol, "socsim.cosim.v1");
+  ws.set_option(websocket::stream_base::decorator([binary](websocket::request_type& req) {
+    req.set(beast::http::field::sec_websocket_protocol,
+            binary ? "socsim.cosim.v1.binary" : "socsim.cosim.v1");
   }));
   ws.handshake("127.0.0.1", session["ws_url"].get<std::string>());
   ws.text(true);
@@ -84,10 +87,16 @@ int run(const Args& a) {
     buf.clear();
     ws.read(buf);
     bytes += static_cast<double>(buf.size());
-    const auto o = nlohmann::json::parse(beast::buffers_to_string(buf.data()));
-    if (o.value("type", "") == "report") report = o;
-    if (o.value("type", "") != "observation") break;
-    last_step = o["step"].get<std::uint64_t>();
+    if (ws.got_binary()) {  // a binary observation: the step is the header's u64 at byte 8
+      const std::string b = beast::buffers_to_string(buf.data());
+      if (b.size() < 32 || b.compare(0, 4, "SCB1") != 0) break;
+      std::memcpy(&last_step, b.data() + 8, sizeof last_step);
+    } else {
+      const auto o = nlohmann::json::parse(beast::buffers_to_string(buf.data()));
+      if (o.value("type", "") == "report") report = o;
+      if (o.value("type", "") != "observation") break;
+      last_step = o["step"].get<std::uint64_t>();
+    }
     if (first_step == 0) first_step = last_step;
     if (realtime) ws.write(asio::buffer(step_message(++k, robots).dump()));  // answer every observation
   }
@@ -99,6 +108,7 @@ int run(const Args& a) {
     beast::error_code ec;
     ws.read(buf, ec);
     if (ec) break;
+    if (ws.got_binary()) continue;
     auto m = nlohmann::json::parse(beast::buffers_to_string(buf.data()));
     if (m.value("type", "") == "report") {
       report = m;
@@ -109,6 +119,7 @@ int run(const Args& a) {
   const double steps = static_cast<double>(last_step - first_step + 1);
   emit({{"bench", "cosim"},
         {"mode", realtime ? "realtime" : "lockstep"},
+        {"encoding", binary ? "binary" : "json"},
         {"agents", agents},
         {"robots", robots},
         {"seconds", wall},
@@ -123,7 +134,7 @@ int run(const Args& a) {
 
 SOCSIM_BENCH("cosim",
              "a robot co-simulation over loopback WebSocket [--agents 500] [--robots 1] [--seconds 10] "
-             "[--mode lockstep|realtime] [--rate 20]",
+             "[--mode lockstep|realtime] [--rate 20] [--encoding json|binary]",
              run);
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "tests/server/live_daemon.hpp"
 
@@ -33,7 +34,8 @@ std::string step(std::uint64_t k, double v, double omega = 0.0) {
 }
 
 struct CosimClient : Viewer {
-  CosimClient(int port, const std::string& path) : Viewer(port, path, "socsim.cosim.v1") {}
+  CosimClient(int port, const std::string& path, const std::string& offer = "socsim.cosim.v1")
+      : Viewer(port, path, offer) {}
   void send(const std::string& text) {
     ws.text(true);
     ws.write(asio::buffer(text));
@@ -109,6 +111,59 @@ TEST(Cosim, ObservationsCarryThePeopleAndTheRobot) {
   EXPECT_EQ(report["end_reason"], "stopped_by_client");
   EXPECT_FALSE(c.read(1000ms)) << "closed after the report";
   EXPECT_EQ(d.get("/api/v1/cosim/" + created["id"].get<std::string>())["report"]["steps"], 1);
+}
+
+// A client offering socsim.cosim.v1.binary gets the same observations as binary frames
+// (docs/cosim.md, "Binary observations"): float32 copies of the JSON figures.
+TEST(Cosim, BinaryObservationsCarryTheJsonObservationsFigures) {
+  Daemon d;
+  CosimClient j(d.ws_port, d.post("/api/v1/cosim", request(), 201)["ws_url"].get<std::string>());
+  CosimClient b(d.ws_port, d.post("/api/v1/cosim", request(), 201)["ws_url"].get<std::string>(),
+                "socsim.cosim.v1.binary, socsim.cosim.v1");
+  EXPECT_EQ(b.protocol, "socsim.cosim.v1.binary");
+  j.read();
+  const Json hello = b.read()->json();
+  EXPECT_EQ(hello["encoding"], "binary");
+  ASSERT_EQ(hello["roles"].size(), 1u);
+  j.read();
+  b.read();
+  for (std::uint64_t k = 1; k <= 3; ++k) {
+    j.send(step(k, 0.8, 0.1));
+    b.send(step(k, 0.8, 0.1));
+  }
+  Json o;
+  for (int k = 0; k < 3; ++k) o = j.read()->json();
+  std::optional<Message> m;
+  for (int k = 0; k < 3; ++k) m = b.read();
+  ASSERT_TRUE(m && m->binary);
+  const std::string& bytes = m->bytes;
+  ASSERT_EQ(bytes.size(), 32u + 28u + 32u);  // header, one robot, one person
+  EXPECT_EQ(bytes.substr(0, 4), "SCB1");
+  const auto at = [&bytes](std::size_t offset, auto v) {
+    std::memcpy(&v, bytes.data() + offset, sizeof v);
+    return v;
+  };
+  EXPECT_EQ(at(4, std::uint8_t{}), 0);  // running
+  EXPECT_EQ(at(5, std::uint8_t{}), 1);  // robots
+  EXPECT_EQ(at(8, std::uint64_t{}), 3u);
+  EXPECT_DOUBLE_EQ(at(16, double{}), o["t"].get<double>());
+  EXPECT_EQ(at(24, std::uint32_t{}), 1u);
+  EXPECT_FLOAT_EQ(at(32, float{}), o["robots"][0]["pose"]["x"].get<float>());
+  EXPECT_FLOAT_EQ(at(40, float{}), o["robots"][0]["pose"]["yaw"].get<float>());
+  EXPECT_FLOAT_EQ(at(52, float{}), o["robots"][0]["twist"]["omega"].get<float>());
+  EXPECT_EQ(at(56, std::uint8_t{}), 0);  // outcome running
+  const Json& person = o["people"][0];
+  EXPECT_EQ(at(60, std::uint32_t{}), person["id"].get<std::uint32_t>());
+  EXPECT_FLOAT_EQ(at(64, float{}), person["pose"]["x"].get<float>());
+  EXPECT_FLOAT_EQ(at(68, float{}), person["pose"]["y"].get<float>());
+  EXPECT_FLOAT_EQ(at(76, float{}), person["twist"]["vx"].get<float>());
+  EXPECT_EQ(at(84, std::int32_t{}), person["group_id"].get<std::int32_t>());
+  EXPECT_EQ(at(89, std::uint8_t{}), 0);  // the first of hello's roles
+  EXPECT_EQ(hello["roles"][0], person["role"]);
+  b.send(R"({"type": "stop"})");
+  const auto report = b.read();
+  ASSERT_TRUE(report && !report->binary);
+  EXPECT_EQ(report->json()["type"], "report");
 }
 
 // Sends `bad` after the hello; expects an error with `code` and `pointer`, then a close.
