@@ -52,6 +52,10 @@ struct IoGate {
 };
 
 struct Shared {
+  // Co-simulation steps and messages run here, off the I/O thread (one strand per session), so
+  // that a large crowd's step does not delay the port's other clients. Joined before `io` goes,
+  // and declared before it: the sessions that destroying `io` releases still hold strands of it.
+  asio::thread_pool cosim_workers{2};
   // Declared before the I/O context: sessions its destruction releases still count themselves out.
   std::map<std::string, std::size_t> per_address;  // open connections by peer address (I/O thread)
   std::size_t refused = 0;
@@ -61,9 +65,6 @@ struct Shared {
   SimulationSessions* simulations;
   std::shared_ptr<IoGate> gate = std::make_shared<IoGate>();
   std::set<std::shared_ptr<Session>> sessions;  // touched only on the I/O thread
-  // Co-simulation steps and messages run here, off the I/O thread (one strand per session), so
-  // that a large crowd's step does not delay the port's other clients. Joined before `io` goes.
-  asio::thread_pool cosim_workers{2};
   Shared(WsOptions o, EventHub& e, SimulationSessions* sims)
       : options(std::move(o)), events(e), simulations(sims) {
     gate->io = &io;
