@@ -254,20 +254,29 @@ class Session : public std::enable_shared_from_this<Session> {
         break;
       }
     }
-    simulation_ = *session;
+    watch(*session, format, protocol);
+  }
+
+  // Attaches this connection as a viewer of `session` (the session's messages come to
+  // from_session() on the I/O thread), then accepts the upgrade answering with `protocol`; an
+  // ended or full session is refused with its problem.
+  void watch(std::shared_ptr<SimulationSession> session, WireFormat format, const std::string& protocol) {
+    simulation_ = session;
     counters_ = std::make_shared<ViewerCounters>();
     std::weak_ptr<Session> weak = shared_from_this();
     std::shared_ptr<IoGate> gate = shared_.gate;
-    auto lease = (*session)->attach(
-        *session, format,
+    auto lease = session->attach(
+        session, format,
         [weak, gate](const WirePtr& m) {
           gate->post([weak, m] {
-            if (auto self = weak.lock()) self->enqueue(m);
+            if (auto self = weak.lock()) self->from_session(m);
           });
         },
         counters_);
     if (!lease) {
       simulation_.reset();
+      bridge_.reset();
+      queue_.clear();
       return refuse(lease.error());
     }
     lease_ = std::move(*lease);
@@ -277,8 +286,15 @@ class Session : public std::enable_shared_from_this<Session> {
       if (!protocol.empty()) res.set(http::field::sec_websocket_protocol, protocol);
     }));
     ws_.auto_fragment(false);         // one WebSocket frame per message: fewer writes
-    ws_.read_message_max(64 * 1024);  // control commands are small
+    ws_.read_message_max(64 * 1024);  // control commands and subscriptions are small
     ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
+  }
+
+  // On the I/O thread: a message of the watched session, as it is or through the Foxglove bridge.
+  void from_session(const WirePtr& m) {
+    if (!bridge_) return enqueue(m);
+    if (closed_) return;
+    for (WirePtr& out : bridge_->on_session(*m)) enqueue(std::move(out));
   }
 
   // /foxglove/{id}: a Foxglove client (foxglove.websocket.v1) of a live simulation. It watches as
@@ -295,39 +311,7 @@ class Session : public std::enable_shared_from_this<Session> {
                                                       " (Sec-WebSocket-Protocol)"));
     bridge_ = std::make_unique<FoxgloveBridge>((*session)->id(), (*session)->info().world);
     for (WirePtr& m : bridge_->open()) enqueue(std::move(m));
-    simulation_ = *session;
-    counters_ = std::make_shared<ViewerCounters>();
-    std::weak_ptr<Session> weak = shared_from_this();
-    std::shared_ptr<IoGate> gate = shared_.gate;
-    auto lease = (*session)->attach(
-        *session, WireFormat::kBinary,
-        [weak, gate](const WirePtr& m) {
-          gate->post([weak, m] {
-            if (auto self = weak.lock()) self->on_foxglove_session(*m);
-          });
-        },
-        counters_);
-    if (!lease) {
-      simulation_.reset();
-      bridge_.reset();
-      queue_.clear();
-      return refuse(lease.error());
-    }
-    lease_ = std::move(*lease);
-    upgrade_timeouts();
-    ws_.set_option(websocket::stream_base::decorator([](websocket::response_type& res) {
-      res.set(http::field::server, "socsim");
-      res.set(http::field::sec_websocket_protocol, std::string(kFoxgloveProtocol));
-    }));
-    ws_.auto_fragment(false);
-    ws_.read_message_max(64 * 1024);  // subscribe/unsubscribe requests are small
-    ws_.async_accept(request_, [self = shared_from_this()](beast::error_code e) { self->on_accept(e); });
-  }
-
-  // On the I/O thread: one message of the session, through the bridge.
-  void on_foxglove_session(const WireMessage& m) {
-    if (closed_ || !bridge_) return;
-    for (WirePtr& out : bridge_->on_session(m)) enqueue(std::move(out));
+    watch(*session, WireFormat::kBinary, std::string(kFoxgloveProtocol));
   }
 
   // /ws/cosim/{id}: the one client of a co-simulation; it must speak socsim.cosim.v1.
