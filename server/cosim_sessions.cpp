@@ -284,6 +284,7 @@ bool CosimSession::expire_if_unclaimed(std::chrono::steady_clock::time_point now
   if (claimed_ || end_reason_) return false;
   if (std::chrono::duration<double>(now - created_).count() < limits_.idle_s) return false;
   end_reason_ = "no_client";
+  ended_cv_.notify_all();
   return true;
 }
 
@@ -413,12 +414,14 @@ CosimReply CosimSession::fail_locked(const Error& error, const std::string& code
   out.close = true;
   out.protocol_error = true;
   if (!end_reason_) end_reason_ = code;
+  ended_cv_.notify_all();
   return out;
 }
 
 CosimReply CosimSession::end_locked(const std::string& reason) {
   CosimReply out;
   if (!end_reason_) end_reason_ = reason;
+  ended_cv_.notify_all();
   const crowd::EpisodeMetrics m = crowd::evaluate_episode(episode_->log());
   report_ = Json{{"seed", settings_.seed}, {"steps", episode_->steps()}, {"metrics", crowd::to_json(m)}};
   Json message{{"type", "report"}, {"end_reason", *end_reason_}, {"late_ticks", late_ticks_}};
@@ -533,6 +536,27 @@ void CosimSession::release() {
 void CosimSession::stop(const std::string& reason) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!end_reason_) (void)end_locked(reason);
+}
+
+bool CosimSession::wait_ended(std::chrono::milliseconds timeout) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  ended_cv_.wait_for(lock, timeout, [this] { return end_reason_.has_value(); });
+  if (!end_reason_ && !claimed_ &&
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count() >= limits_.idle_s) {
+    end_reason_ = "no_client";
+    ended_cv_.notify_all();
+  }
+  return end_reason_.has_value();
+}
+
+std::optional<std::string> CosimSession::end_reason() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return end_reason_;
+}
+
+crowd::EpisodeMetrics CosimSession::metrics() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return crowd::evaluate_episode(episode_->log());
 }
 
 Result<std::shared_ptr<CosimSession>> CosimSessions::create(CosimRequest request) {

@@ -5,6 +5,7 @@
 // returns. Lock-step: the crowd advances one step per client "step" message, at any speed.
 // Real time: tick() advances one step per period with each robot's last command held.
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -17,6 +18,7 @@
 #include "core/common/error.hpp"
 #include "core/common/json_io.hpp"
 #include "core/crowd/episode.hpp"
+#include "core/crowd/episode_metrics.hpp"
 #include "core/world/world.hpp"
 
 namespace socsim::server {
@@ -104,6 +106,12 @@ class CosimSession {
   void release();
   // The server stops.
   void stop(const std::string& reason);
+  // Blocks until the episode has ended or `timeout` has passed; true when it has ended. A session
+  // no client has claimed within idle_s ends here ("no_client") as in expire_if_unclaimed.
+  bool wait_ended(std::chrono::milliseconds timeout);
+  // Why it ended (empty while it runs), and the metrics of its log as the report has them.
+  [[nodiscard]] std::optional<std::string> end_reason() const;
+  [[nodiscard]] crowd::EpisodeMetrics metrics() const;
 
  private:
   CosimReply fail_locked(const Error& error, const std::string& code);
@@ -120,6 +128,7 @@ class CosimSession {
   const CosimLimits limits_;
   std::shared_ptr<const world::World> world_;  // the episode refers to it
   mutable std::mutex mutex_;
+  std::condition_variable ended_cv_;  // notified when end_reason_ is set
   std::unique_ptr<crowd::Episode> episode_;
   bool claimed_ = false;
   CosimEncoding encoding_ = CosimEncoding::kJson;

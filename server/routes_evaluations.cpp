@@ -2,6 +2,10 @@
 // docs/cosim.md "Evaluation jobs"); the episodes run in-process (crowd::run_evaluation), the result
 // is the table of crowd::evaluation_table, stored with the job and listed like other jobs.
 #include <algorithm>
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <thread>
 
 #include "core/crowd/robot_evaluation.hpp"
 #include "core/crowd/robot_planners.hpp"
@@ -17,6 +21,10 @@ constexpr std::size_t kMaxEvaluationEpisodes = 1000;  // cards × seeds × plann
 constexpr std::size_t kMaxEvaluationCards = 100;
 constexpr std::size_t kMaxEvaluationSeeds = 100;
 constexpr const char* kEvaluationKind = "evaluation";
+// "client": "external": every card × seed becomes a lock-step /ws/cosim session, one after the
+// other, that the caller's own planner drives (docs/cosim.md "External clients").
+constexpr const char* kExternalClient = "external";
+constexpr auto kExternalPoll = std::chrono::milliseconds(200);
 
 // "builtin:<planner>" → the make_planner() name ("builtin:straight" stands for straight_line).
 std::optional<std::string> builtin_planner(const Json& label) {
@@ -72,13 +80,15 @@ Result<crowd::EvaluationPlan> evaluation_plan(RouteContext& ctx, const Json& bod
         plan.seeds.push_back(s.get<std::uint64_t>());
     }
   }
-  const std::string expected = "\"builtin:straight\", \"builtin:social_force\" or \"builtin:orca\"";
+  const std::string expected =
+      "\"builtin:straight\", \"builtin:social_force\", \"builtin:orca\" (or \"client\": \"external\")";
   const auto add_planner = [&](const Json& label, const std::string& at) {
     auto name = builtin_planner(label);
-    if (label == "external")
-      errors.push_back(
-          {at, "external clients drive /ws/cosim sessions; an evaluation runs built-in planners (" +
-                   expected + ")"});
+    if (label == kExternalClient && at == "/client") {
+      plan.planners.push_back(kExternalClient);
+      plan.planner_names.push_back(kExternalClient);
+    } else if (label == kExternalClient)
+      errors.push_back({at, "an external client is given as \"client\": \"external\", alone"});
     else if (!name)
       errors.push_back({at, "must be " + expected});
     else if (std::find(plan.planner_names.begin(), plan.planner_names.end(), *name) !=
@@ -149,66 +159,178 @@ Result<crowd::EvaluationPlan> evaluation_plan(RouteContext& ctx, const Json& bod
   return plan;
 }
 
-Json evaluation_view(Json job) {
-  job["links"] = {{"self", "/api/v1/evaluations/" + job["id"].get<std::string>()},
-                  {"job", "/api/v1/jobs/" + job["id"].get<std::string>()}};
+// The episodes of running external evaluations that wait for (or are driven by) the client: the
+// evaluation id → {episode, episodes, card, seed, cosim, ws_url}. GET /api/v1/evaluations/{id}
+// shows it as "current".
+class ExternalBoard {
+ public:
+  void set(const std::string& id, Json current) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    current_[id] = std::move(current);
+  }
+  void erase(const std::string& id) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    current_.erase(id);
+  }
+  std::optional<Json> get(const std::string& id) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto it = current_.find(id);
+    if (it == current_.end()) return std::nullopt;
+    return it->second;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, Json> current_;
+};
+
+Json episode_row(const crowd::EvaluationPlan& plan, const crowd::EvaluationEpisode& e) {
+  return {{"card", plan.scenarios[e.scenario].id},
+          {"planner", plan.planners[e.planner]},
+          {"seed", plan.seeds[e.seed]},
+          {"outcome", std::string(crowd::outcome_name(e.metrics.outcome))},
+          {"steps", e.steps}};
+}
+
+// An external evaluation as a job: one lock-step co-simulation per card × seed, opened when the
+// previous one has ended, waited for while the client drives it. A session nobody connects to
+// within idle_s stops the evaluation (a kConflict problem naming the session); cancelling the job ends the
+// session under way.
+Result<Json> run_external(const crowd::EvaluationPlan& plan, CosimSessions& sessions, ExternalBoard& board,
+                          const std::string& author, const JobContext& job) {
+  const std::size_t total = plan.scenarios.size() * plan.seeds.size();
+  std::vector<crowd::EvaluationEpisode> episodes;
+  Json rows = Json::array();
+  const auto cancelled = [&] { return fail(ErrorCode::kCancelled, "the evaluation was cancelled"); };
+  for (std::size_t s = 0; s < plan.scenarios.size(); ++s)
+    for (std::size_t k = 0; k < plan.seeds.size(); ++k) {
+      const crowd::EvaluationScenario& scenario = plan.scenarios[s];
+      const std::size_t index = s * plan.seeds.size() + k;
+      CosimRequest request;
+      request.world = scenario.world;
+      request.program = *scenario.program;
+      request.settings.seed = plan.seeds[k];
+      request.settings.mode = CosimMode::kLockStep;
+      request.settings.robots = plan.robots;
+      request.settings.episode = plan.episode;
+      request.author = author;
+      request.card_id = scenario.id;
+      std::shared_ptr<CosimSession> session;
+      while (!session) {  // every session slot busy: wait for one, as a queued job would
+        auto created = sessions.create(request);
+        if (created) {
+          session = *created;
+        } else if (created.error().code != ErrorCode::kRateLimited) {
+          return tl::unexpected(Error(created.error()).within("/cards/" + std::to_string(s)));
+        } else {
+          if (job.cancelled()) return cancelled();
+          std::this_thread::sleep_for(kExternalPoll);
+        }
+      }
+      const std::string ws_url = "/ws/cosim/" + session->id();
+      board.set(job.id(), {{"episode", index + 1},
+                           {"episodes", total},
+                           {"card", scenario.id},
+                           {"seed", plan.seeds[k]},
+                           {"cosim", session->id()},
+                           {"ws_url", ws_url}});
+      job.progress(static_cast<double>(index) / static_cast<double>(total),
+                   "episode " + std::to_string(index + 1) + " of " + std::to_string(total) + " (card " +
+                       scenario.id + ", seed " + std::to_string(plan.seeds[k]) + "): driven at " + ws_url);
+      while (!session->wait_ended(kExternalPoll))
+        if (job.cancelled()) {
+          session->stop("cancelled");
+          board.erase(job.id());
+          return cancelled();
+        }
+      const std::string reason = session->end_reason().value_or("");
+      if (reason == "no_client" || reason == "server_stopping") {
+        board.erase(job.id());
+        if (reason == "server_stopping") return cancelled();
+        return fail(ErrorCode::kConflict, "no client connected to " + ws_url + " within " +
+                                              std::to_string(static_cast<int>(sessions.limits().idle_s)) +
+                                              " s (episode " + std::to_string(index + 1) + " of " +
+                                              std::to_string(total) + ")");
+      }
+      const crowd::EpisodeMetrics m = session->metrics();
+      crowd::EvaluationEpisode e{s, 0, k, m.steps, m.robots.at(0)};
+      Json row = episode_row(plan, e);
+      row["end_reason"] = reason;
+      row["cosim"] = session->id();
+      rows.push_back(std::move(row));
+      episodes.push_back(std::move(e));
+    }
+  board.erase(job.id());
+  job.progress(1.0, std::to_string(total) + " of " + std::to_string(total) + " episodes");
+  return Json{{"table", crowd::evaluation_table(plan, episodes)}, {"episodes", rows}};
+}
+
+Json evaluation_view(Json job, ExternalBoard& board) {
+  const std::string id = job["id"];
+  job["links"] = {{"self", "/api/v1/evaluations/" + id}, {"job", "/api/v1/jobs/" + id}};
+  if (auto current = board.get(id)) job["current"] = std::move(*current);
   return job;
 }
 
 void evaluation_routes(Router& http, RouteContext& ctx) {
+  auto board = std::make_shared<ExternalBoard>();
   post_with_body(
       http, "/api/v1/evaluations", ctx.config.max_body_bytes,
-      [&ctx](const Request& req, Response& res, const std::string& text) {
+      [&ctx, board](const Request& req, Response& res, const std::string& text) {
         auto body = json_body(text);
         if (!body) return reply_problem(res, body.error(), req.path);
         Json normalised;
         auto plan = evaluation_plan(ctx, *body, normalised);
         if (!plan) return reply_problem(res, plan.error(), req.path);
         auto shared = std::make_shared<const crowd::EvaluationPlan>(std::move(*plan));
-        auto id = ctx.jobs.submit(
-            kEvaluationKind, normalised, ctx.author(req),
-            [shared](const JobContext& job) -> Result<Json> {
-              crowd::EvaluationHooks hooks;
-              hooks.progress = [&job](std::size_t done, std::size_t total) {
-                job.progress(static_cast<double>(done) / static_cast<double>(total),
-                             std::to_string(done) + " of " + std::to_string(total) + " episodes");
-              };
-              hooks.cancelled = [&job] { return job.cancelled(); };
-              auto episodes = crowd::run_evaluation(*shared, hooks);
-              if (!episodes) return tl::unexpected(episodes.error());
-              Json list = Json::array();
-              for (const crowd::EvaluationEpisode& e : *episodes)
-                list.push_back({{"card", shared->scenarios[e.scenario].id},
-                                {"planner", shared->planners[e.planner]},
-                                {"seed", shared->seeds[e.seed]},
-                                {"outcome", std::string(crowd::outcome_name(e.metrics.outcome))},
-                                {"steps", e.steps}});
-              return Json{{"table", crowd::evaluation_table(*shared, *episodes)}, {"episodes", list}};
-            },
-            ctx.client(req));
+        JobFn work;
+        if (shared->planner_names == std::vector<std::string>{kExternalClient}) {
+          normalised["client"] = kExternalClient;
+          normalised.erase("planners");
+          work = [shared, board, sessions = ctx.services.cosim.get(),
+                  author = ctx.author(req)](const JobContext& job) -> Result<Json> {
+            return run_external(*shared, *sessions, *board, author, job);
+          };
+        } else {
+          work = [shared](const JobContext& job) -> Result<Json> {
+            crowd::EvaluationHooks hooks;
+            hooks.progress = [&job](std::size_t done, std::size_t total) {
+              job.progress(static_cast<double>(done) / static_cast<double>(total),
+                           std::to_string(done) + " of " + std::to_string(total) + " episodes");
+            };
+            hooks.cancelled = [&job] { return job.cancelled(); };
+            auto episodes = crowd::run_evaluation(*shared, hooks);
+            if (!episodes) return tl::unexpected(episodes.error());
+            Json list = Json::array();
+            for (const crowd::EvaluationEpisode& e : *episodes) list.push_back(episode_row(*shared, e));
+            return Json{{"table", crowd::evaluation_table(*shared, *episodes)}, {"episodes", list}};
+          };
+        }
+        auto id =
+            ctx.jobs.submit(kEvaluationKind, normalised, ctx.author(req), std::move(work), ctx.client(req));
         ctx.reply_job_accepted(res, id, req.path);
       });
 
-  http.Get("/api/v1/evaluations", [&ctx](const Request& req, Response& res) {
+  http.Get("/api/v1/evaluations", [&ctx, board](const Request& req, Response& res) {
     auto page = ctx.page(req);
     if (!page) return reply_problem(res, page.error(), req.path);
     auto listed = ctx.jobs.list(page->page_size, page->cursor, std::string(kEvaluationKind), std::nullopt);
     if (!listed) return reply_problem(res, listed.error(), req.path);
     Json items = Json::array();
-    for (Json& j : listed->items) items.push_back(evaluation_view(std::move(j)));
+    for (Json& j : listed->items) items.push_back(evaluation_view(std::move(j), *board));
     reply_json(res, 200,
                {{"items", items},
                 {"next_cursor", listed->next_cursor ? Json(*listed->next_cursor) : Json(nullptr)}});
   });
 
-  http.Get(R"(/api/v1/evaluations/([^/]+))", [&ctx](const Request& req, Response& res) {
+  http.Get(R"(/api/v1/evaluations/([^/]+))", [&ctx, board](const Request& req, Response& res) {
     const std::string id = req.matches[1].str();
     auto job = ctx.jobs.get(id);
     if (!job || (*job)["kind"] != kEvaluationKind)
       return reply_problem(res, Error(ErrorCode::kNotFound, "no evaluation with id '" + id + "'"), req.path);
     const std::string status = (*job)["status"];
     if (status == "queued" || status == "running") res.set_header("Retry-After", "1");
-    reply_json(res, 200, evaluation_view(std::move(*job)));
+    reply_json(res, 200, evaluation_view(std::move(*job), *board));
   });
 }
 

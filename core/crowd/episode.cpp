@@ -219,7 +219,8 @@ void Episode::record() {
     });
     if (!near) continue;
     const PedestrianState s = sim.state(id);
-    f.people.push_back(LoggedBody{i, p, {s.twist.vx, s.twist.vy}, s.pose.yaw, s.twist.omega, sim.radius(id)});
+    f.people.push_back(
+        LoggedBody{i, p, {s.twist.vx, s.twist.vy}, s.pose.yaw, s.twist.omega, sim.radius(id), s.group_id});
   }
   log_.frames.push_back(std::move(f));
 }

@@ -47,6 +47,7 @@ struct LoggedBody {
   double yaw = 0.0;
   double omega = 0.0;
   double radius = 0.0;
+  std::int64_t group = -1;  // the person's group_id (-1 alone; robots -1)
   friend bool operator==(const LoggedBody&, const LoggedBody&) = default;
 };
 

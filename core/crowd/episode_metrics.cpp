@@ -4,12 +4,40 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "core/crowd/metrics.hpp"
 
 namespace socsim::crowd {
 
 namespace {
+
+constexpr double kGroupCentreAhead =
+    1.5;  // m: HuNavSim's interaction centre lies this far ahead of each member
+
+// Distance from the robot (centre, less its radius) to the nearest group's interaction centre: the
+// mean of the members' points kGroupCentreAhead ahead of them. Infinity when no group is logged.
+double closest_group_centre(const std::vector<LoggedBody>& people, const LoggedBody& robot) {
+  std::vector<std::pair<std::int64_t, std::size_t>> members;  // (group, index), sorted by group
+  for (std::size_t i = 0; i < people.size(); ++i)
+    if (people[i].group >= 0) members.emplace_back(people[i].group, i);
+  std::sort(members.begin(), members.end());
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t a = 0; a < members.size();) {
+    std::size_t b = a;
+    Vec2 centre{};
+    for (; b < members.size() && members[b].first == members[a].first; ++b) {
+      const LoggedBody& p = people[members[b].second];
+      centre.x += p.position.x + kGroupCentreAhead * std::cos(p.yaw);
+      centre.y += p.position.y + kGroupCentreAhead * std::sin(p.yaw);
+    }
+    const double n = static_cast<double>(b - a);
+    best = std::min(best,
+                    norm({centre.x / n - robot.position.x, centre.y / n - robot.position.y}) - robot.radius);
+    a = b;
+  }
+  return best;
+}
 
 RobotEpisodeMetrics evaluate_robot(const EpisodeLog& log, std::size_t k) {
   RobotEpisodeMetrics m;
@@ -29,6 +57,7 @@ RobotEpisodeMetrics evaluate_robot(const EpisodeLog& log, std::size_t k) {
       }
   double closest_sum = 0.0;
   std::uint64_t closest_frames = 0, intimate = 0, personal = 0, social = 0, still = 0;
+  std::uint64_t group_intimate = 0, group_personal = 0, group_social = 0;
   double min_people = kEpisodeLogRange;
   double speed_sum = 0.0, acc_sum = 0.0, jerk_sum = 0.0;
   std::uint64_t acc_samples = 0, jerk_samples = 0;
@@ -88,6 +117,13 @@ RobotEpisodeMetrics evaluate_robot(const EpisodeLog& log, std::size_t k) {
       ++personal;
     else if (closest_centre < 3.6)
       ++social;
+    const double group = closest_group_centre(frame.people, r);
+    if (group < 0.45)
+      ++group_intimate;
+    else if (group < 1.2)
+      ++group_personal;
+    else if (group < 3.6)
+      ++group_social;
   }
   const double frames = static_cast<double>(std::max<std::size_t>(last, 1));
   m.avg_distance_to_closest_person =
@@ -96,6 +132,9 @@ RobotEpisodeMetrics evaluate_robot(const EpisodeLog& log, std::size_t k) {
   m.intimate_space_intrusions = 100.0 * static_cast<double>(intimate) / frames;
   m.personal_space_intrusions = 100.0 * static_cast<double>(personal) / frames;
   m.social_space_intrusions = 100.0 * static_cast<double>(social) / frames;
+  m.group_intimate_space_intrusions = 100.0 * static_cast<double>(group_intimate) / frames;
+  m.group_personal_space_intrusions = 100.0 * static_cast<double>(group_personal) / frames;
+  m.group_social_space_intrusions = 100.0 * static_cast<double>(group_social) / frames;
   m.time_not_moving = static_cast<double>(still) * log.dt;
   m.avg_speed = speed_sum / frames;
   m.avg_acceleration = acc_samples > 0 ? acc_sum / static_cast<double>(acc_samples) : 0.0;
@@ -130,7 +169,10 @@ Json to_json(const RobotEpisodeMetrics& m) {
          {"avg_acceleration", m.avg_acceleration},
          {"avg_jerk", m.avg_jerk},
          {"path_efficiency", m.path_efficiency},
-         {"shortest_path_length", m.shortest_path_length}};
+         {"shortest_path_length", m.shortest_path_length},
+         {"group_intimate_space_intrusions", m.group_intimate_space_intrusions},
+         {"group_personal_space_intrusions", m.group_personal_space_intrusions},
+         {"group_social_space_intrusions", m.group_social_space_intrusions}};
   put_hunav_figures(j, m);
   return j;
 }

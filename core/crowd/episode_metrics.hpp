@@ -23,7 +23,12 @@ struct RobotEpisodeMetrics {
   double intimate_space_intrusions = 0.0;       // % of frames, closest person < 0.45 m
   double personal_space_intrusions = 0.0;       // % of frames, 0.45 .. 1.2 m
   double social_space_intrusions = 0.0;         // % of frames, 1.2 .. 3.6 m
-  std::uint64_t collisions = 0;                 // frame × person pairs, bodies < 0.02 m apart
+  // The same classes for the closest group's interaction centre (HuNavSim: the mean of its members'
+  // points 1.5 m ahead of them); 0 when no group is within range.
+  double group_intimate_space_intrusions = 0.0;
+  double group_personal_space_intrusions = 0.0;
+  double group_social_space_intrusions = 0.0;
+  std::uint64_t collisions = 0;  // frame × person pairs, bodies < 0.02 m apart
   std::uint64_t robot_on_person_collision = 0;
   std::uint64_t person_on_robot_collision = 0;
   double time_not_moving = 0.0;         // s, speed < 0.001 m/s and |ω| < 0.01 rad/s

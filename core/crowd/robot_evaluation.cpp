@@ -14,7 +14,7 @@ namespace {
 
 // The figures the table summarises, in its column order. Outcome rates are 0/1 per episode;
 // time_to_reach_goal counts successful episodes only.
-constexpr std::array<const char*, 25> kEvaluationMetrics = {
+constexpr std::array<const char*, 28> kEvaluationMetrics = {
     "success",
     "collision",
     "collision_person",
@@ -30,6 +30,9 @@ constexpr std::array<const char*, 25> kEvaluationMetrics = {
     "intimate_space_intrusions",
     "personal_space_intrusions",
     "social_space_intrusions",
+    "group_intimate_space_intrusions",
+    "group_personal_space_intrusions",
+    "group_social_space_intrusions",
     "collisions",
     "robot_on_person_collision",
     "person_on_robot_collision",
@@ -62,6 +65,9 @@ MetricRow evaluation_row(const RobotEpisodeMetrics& m) {
           m.intimate_space_intrusions,
           m.personal_space_intrusions,
           m.social_space_intrusions,
+          m.group_intimate_space_intrusions,
+          m.group_personal_space_intrusions,
+          m.group_social_space_intrusions,
           static_cast<double>(m.collisions),
           static_cast<double>(m.robot_on_person_collision),
           static_cast<double>(m.person_on_robot_collision),

@@ -5,13 +5,22 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
 
+#include "core/world/world_document.hpp"
+#include "core/world/world_yaml.hpp"
 #include "tests/server/live_daemon.hpp"
 
 namespace socsim::server {
 namespace {
 
 const char* kCorridor = "zones:\n  - {name: corridor, polygon: [[0, 0], [20, 0], [20, 3], [0, 3]]}\n";
+
+Json corridor_document() {
+  return world::world_to_document(world::world_from_yaml(kCorridor).value());
+}
 
 Json walker_program() {
   return {{"name", "encounter"},
@@ -42,10 +51,9 @@ struct CosimClient : Viewer {
   }
 };
 
-// Drives the robot at 0.8 m/s to the end; returns the report message's bytes.
-std::string drive_to_the_end(Daemon& d, const Json& body) {
-  const Json created = d.post("/api/v1/cosim", body, 201);
-  CosimClient c(d.ws_port, created["ws_url"].get<std::string>());
+// Drives the robot of the session at ws_url at 0.8 m/s to the end; the report message's bytes.
+std::string drive_session(Daemon& d, const std::string& ws_url) {
+  CosimClient c(d.ws_port, ws_url);
   EXPECT_EQ(c.protocol, "socsim.cosim.v1");
   auto hello = c.read();
   EXPECT_TRUE(hello && hello->type() == "hello");
@@ -64,6 +72,10 @@ std::string drive_to_the_end(Daemon& d, const Json& body) {
     }
   }
   return "did not end";
+}
+
+std::string drive_to_the_end(Daemon& d, const Json& body) {
+  return drive_session(d, d.post("/api/v1/cosim", body, 201)["ws_url"].get<std::string>());
 }
 
 TEST(Cosim, LockStepRunsToAReportThatIsTheSameEveryTime) {
@@ -275,6 +287,77 @@ TEST(Cosim, RealTimeHoldsTheLastCommandAndCountsLateness) {
   auto report = c.next("report");
   ASSERT_TRUE(report);
   EXPECT_GE(report->json()["late_ticks"].get<int>(), 8);
+}
+
+// An evaluation with "client": "external": each card × seed is a lock-step session that the test,
+// as the lab's client, finds in the evaluation's "current" and drives; the table then has them.
+TEST(Cosim, AnExternalEvaluationIsDrivenSessionBySessionIntoItsTable) {
+  Daemon d;
+  Json program = walker_program();
+  program["robot"] = {{"position", {2.0, 2.0}}, {"speed", 1.0}, {"goals", {{10.0, 2.0}}}};
+  const std::string card = d.post(
+      "/api/v1/cards",
+      {{"title", "encounter"}, {"world", corridor_document()}, {"program", program}, {"seed", 1}}, 201)["id"];
+  const std::string id =
+      d.post("/api/v1/evaluations",
+             {{"cards", {card}}, {"seeds", {1, 2}}, {"client", "external"}, {"time_limit_s", 30}}, 202)["id"];
+  std::vector<std::string> driven, reports;
+  for (int polls = 0; polls < 400 && driven.size() < 2; ++polls) {
+    const Json e = d.get("/api/v1/evaluations/" + id);
+    if (e.contains("current") && (driven.empty() || e["current"]["cosim"] != driven.back())) {
+      EXPECT_EQ(e["current"]["episodes"], 2);
+      EXPECT_EQ(e["current"]["card"], card);
+      driven.push_back(e["current"]["cosim"]);
+      reports.push_back(drive_session(d, e["current"]["ws_url"]));
+    } else {
+      std::this_thread::sleep_for(25ms);
+    }
+  }
+  ASSERT_EQ(driven.size(), 2u);
+  Json done;
+  for (int polls = 0; polls < 200; ++polls) {
+    done = d.get("/api/v1/evaluations/" + id);
+    if (done["status"] == "succeeded" || done["status"] == "failed") break;
+    std::this_thread::sleep_for(25ms);
+  }
+  ASSERT_EQ(done["status"], "succeeded") << done.dump();
+  EXPECT_FALSE(done.contains("current"));
+  EXPECT_EQ(done["request"]["client"], "external");
+  const Json& rows = done["result"]["episodes"];
+  ASSERT_EQ(rows.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(rows[k]["planner"], "external");
+    EXPECT_EQ(rows[k]["cosim"], driven[k]);
+    EXPECT_EQ(rows[k]["end_reason"], "episode_ended");
+    EXPECT_EQ(rows[k]["outcome"], Json::parse(reports[k])["metrics"]["robots"][0]["outcome"]);
+  }
+  EXPECT_EQ(done["result"]["table"]["planners"][0]["planner"], "external");
+}
+
+// Nobody connects: the evaluation fails naming the session, and does not hold its worker forever.
+TEST(Cosim, AnExternalEvaluationWithoutItsClientFailsNamingTheSession) {
+  ServerConfig config = quick_config();
+  config.sim_idle_s = 1;
+  Daemon d(config);
+  const std::string card = d.post(
+      "/api/v1/cards",
+      {{"title", "encounter"}, {"world", corridor_document()}, {"program", walker_program()}, {"seed", 1}},
+      201)["id"];
+  const Json body{{"cards", {card}},
+                  {"seeds", {1}},
+                  {"client", "external"},
+                  {"robot", {{"start", {{"x", 2}, {"y", 2}, {"yaw", 0}}}, {"goal", {{"x", 10}, {"y", 2}}}}}};
+  const std::string id = d.post("/api/v1/evaluations", body, 202)["id"];
+  Json done;
+  for (int polls = 0; polls < 200; ++polls) {
+    done = d.get("/api/v1/evaluations/" + id);
+    if (done["status"] == "failed" || done["status"] == "succeeded") break;
+    std::this_thread::sleep_for(25ms);
+  }
+  ASSERT_EQ(done["status"], "failed") << done.dump();
+  EXPECT_NE(done["error"]["detail"].get<std::string>().find("no client connected to /ws/cosim/"),
+            std::string::npos)
+      << done.dump();
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // strict step inputs, bit-identical logs; and the episode metrics on hand-made logs whose values
 // are worked out by hand in the comments.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -226,6 +227,26 @@ TEST(EpisodeMetrics, DistancesAndIntrusionsToAStandingPerson) {
   EXPECT_DOUBLE_EQ(m.social_space_intrusions, 0.0);
   EXPECT_EQ(m.collisions, 0u);
   EXPECT_GT(m.social_work, 0.0);
+}
+
+TEST(EpisodeMetrics, GroupSpaceIntrusionsUseTheInteractionCentre) {
+  // Two members at (1, ±1.5) facing the corridor's axis: their points 1.5 m ahead meet at (1, 0),
+  // the centre the robot drives through. Robot centre − 0.35 at x = 0, 0.5, 1, 1.5, 2: 0.65, 0.15,
+  // −0.35, 0.15, 0.65 → intimate in 3 frames, personal in 2.
+  EpisodeLog log = straight_log({9.0, 9.0});
+  for (EpisodeFrame& f : log.frames) {
+    f.people.clear();
+    f.people.push_back(LoggedBody{2, {1.0, 1.5}, {}, -std::numbers::pi / 2, 0.0, 0.25, 7});
+    f.people.push_back(LoggedBody{3, {1.0, -1.5}, {}, std::numbers::pi / 2, 0.0, 0.25, 7});
+  }
+  const RobotEpisodeMetrics m = evaluate_episode(log).robots[0];
+  EXPECT_DOUBLE_EQ(m.group_intimate_space_intrusions, 60.0);
+  EXPECT_DOUBLE_EQ(m.group_personal_space_intrusions, 40.0);
+  EXPECT_DOUBLE_EQ(m.group_social_space_intrusions, 0.0);
+  // The same people walking alone are no group: no group intrusion.
+  for (EpisodeFrame& f : log.frames)
+    for (LoggedBody& p : f.people) p.group = -1;
+  EXPECT_DOUBLE_EQ(evaluate_episode(log).robots[0].group_intimate_space_intrusions, 0.0);
 }
 
 TEST(EpisodeMetrics, CollisionsAreSplitByWhoMovedIn) {
