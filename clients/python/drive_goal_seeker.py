@@ -2,7 +2,7 @@
 """Drives a simple planner through a socsim scenario and prints the metrics report (docs/cosim.md).
 
     python3 drive_goal_seeker.py --base http://localhost:8080 --card CARD_ID \\
-        --start 2,1.5,0 --goal 18,1.5 [--invisible] [--seed 7] [--planner goal_seeker|stand_still]
+        --start 2,1.5,0 --goal 18,1.5 [--invisible] [--seed 7] [--planner goal_seeker|stand_still] [--binary]
     python3 drive_goal_seeker.py --program program.json --world world.yaml --start ... --goal ...
 
 The planner, a goal seeker, turns towards the goal and slows down when a person is close ahead
@@ -63,6 +63,7 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=7)
     ap.add_argument("--time-limit", type=float, default=60.0)
     ap.add_argument("--planner", choices=sorted(PLANNERS), default="goal_seeker")
+    ap.add_argument("--binary", action="store_true", help="compact binary observations (socsim.cosim.v1.binary)")
     args = ap.parse_args(argv)
 
     body = {"seed": args.seed, "time_limit": args.time_limit, "mode": "lockstep"}
@@ -82,7 +83,7 @@ def main(argv=None):
     try:
         session = open_session(args.base, body)
         planner = PLANNERS[args.planner]
-        with CosimClient.connect(session) as c:
+        with CosimClient.connect(session, binary=args.binary) as c:
             speeds = [r["limits"]["max_speed"] for r in c.hello["robots"]]
             while c.running:
                 c.step([planner(c.observation, k, speeds[k]) for k in range(len(speeds))])

@@ -48,6 +48,32 @@ print(f"  card {sys.argv[1]}: outcome {robot['outcome']}, {r['steps']} steps, "
 PY
 echo "ok - the example drove card $CARD twice in lock-step: byte-identical reports"
 
+# 1b. The same card with binary observations (float32): the same episode to within rounding.
+drive --card "$CARD" --start 2,1.4,0 --goal 18,1.5 --binary > "$WORK/binary.json" || fail "example, binary"
+python3 - "$WORK/a.json" "$WORK/binary.json" <<'PY' || fail "binary observations drive another episode"
+import json, sys
+a, b = (json.load(open(f))["metrics"]["robots"][0] for f in sys.argv[1:])
+assert a["outcome"] == b["outcome"], (a["outcome"], b["outcome"])
+assert abs(a["path_length"] - b["path_length"]) < 0.05, (a["path_length"], b["path_length"])
+print(f"  binary: outcome {b['outcome']}, path {b['path_length']:.3f} m (JSON {a['path_length']:.3f} m)")
+PY
+echo "ok - the example drives the card with binary observations to the same outcome"
+
+# 1c. The same planner as an external client of an evaluation: 1 card × 2 seeds, a table back.
+python3 "$CLIENT/evaluate_external.py" --base "http://127.0.0.1:$PORT" --cards "$CARD" --seeds 1,2 \
+  --start 2,1.4,0 --goal 18,1.5 --time-limit 30 --json > "$WORK/external.json" 2> "$WORK/external.log" ||
+  fail "external evaluation: $(cat "$WORK/external.log")"
+python3 - "$WORK/external.json" <<'PY' || fail "external evaluation record: $(head -c 600 "$WORK/external.json")"
+import json, sys
+e = json.load(open(sys.argv[1]))
+assert e["status"] == "succeeded" and e["request"]["client"] == "external", e["status"]
+rows = e["result"]["episodes"]
+assert [r["seed"] for r in rows] == [1, 2] and all(r["planner"] == "external" for r in rows), rows
+assert all(r["end_reason"] == "episode_ended" for r in rows), rows
+print("  " + e["result"]["table"]["summary"][0])
+PY
+echo "ok - an evaluation with an external client: the example drove both episodes, the table came back"
+
 # 2. Scripted corridor encounter: the robot stands 10 cm off the walker's line; visible or not.
 drive --program "$WORK/program.json" --world "$WORK/world.yaml" --start 7,1.4,0 --goal 18,1.5 \
   --planner stand_still > "$WORK/visible.json" || fail "visible run"
