@@ -7,6 +7,7 @@
 
 #include "core/common/ids.hpp"
 #include "core/crowd/episode_metrics.hpp"
+#include "core/world/world_document.hpp"
 
 namespace socsim::server {
 namespace {
@@ -554,6 +555,75 @@ std::optional<std::string> CosimSession::end_reason() const {
   return end_reason_;
 }
 
+namespace {
+double mm(double v) {
+  return std::round(v * 1000.0) / 1000.0;
+}
+// Bodies closer than this are in contact (the metrics' collision rule, docs/metrics.md).
+constexpr double kContactGap = 0.02;
+bool in_contact(const crowd::LoggedBody& r, const crowd::LoggedBody& p) {
+  return std::hypot(p.position.x - r.position.x, p.position.y - r.position.y) - r.radius - p.radius <
+         kContactGap;
+}
+}  // namespace
+
+Json CosimSession::view(std::size_t since, bool with_world) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const crowd::Episode& e = *episode_;
+  const crowd::EpisodeLog& log = e.log();
+  since = std::min(since, log.frames.size());
+  Json robots = Json::array();
+  for (std::size_t k = 0; k < e.robots().size(); ++k) {
+    const crowd::RobotSpec& spec = e.robots()[k];
+    const crowd::UnicycleState s = e.robot_state(k);
+    Json path = Json::array(), contacts = Json::array();
+    for (std::size_t f = since; f < log.frames.size(); ++f) {
+      const crowd::LoggedBody& r = log.frames[f].robots[k];
+      path.push_back({mm(r.position.x), mm(r.position.y)});
+      for (const crowd::LoggedBody& p : log.frames[f].people) {
+        if (!in_contact(r, p)) continue;
+        bool before = false;  // already in contact in the previous frame: the same contact
+        if (f > 0)
+          for (const crowd::LoggedBody& q : log.frames[f - 1].people)
+            if (q.id == p.id) before = in_contact(log.frames[f - 1].robots[k], q);
+        if (!before)
+          contacts.push_back({{"t", mm(log.frames[f].time)},
+                              {"x", mm(0.5 * (r.position.x + p.position.x))},
+                              {"y", mm(0.5 * (r.position.y + p.position.y))},
+                              {"person", p.id}});
+      }
+    }
+    Json robot = robot_json(spec);  // name, start, goal, radius, visible, limits
+    robot["pose"] = {{"x", mm(s.pose.x)}, {"y", mm(s.pose.y)}, {"yaw", mm(s.pose.yaw)}};
+    robot["outcome"] = std::string(crowd::outcome_name(e.results()[k].outcome));
+    robot["path"] = std::move(path);
+    robot["contacts"] = std::move(contacts);
+    robots.push_back(std::move(robot));
+  }
+  Json people = Json::array();
+  for (const crowd::PedestrianState& p : e.people())
+    people.push_back({{"id", p.id.value()},
+                      {"x", mm(p.pose.x)},
+                      {"y", mm(p.pose.y)},
+                      {"yaw", mm(p.pose.yaw)},
+                      {"state", std::string(crowd::activity_name(p.activity))},
+                      {"role", p.role},
+                      {"group_id", p.group_id}});
+  Json j{{"id", id_},
+         {"status", end_reason_ ? "ended" : (claimed_ ? "running" : "waiting")},
+         {"end_reason", end_reason_ ? Json(*end_reason_) : Json(nullptr)},
+         {"step", e.steps()},
+         {"t", e.time()},
+         {"card_id", card_id_ ? Json(*card_id_) : Json(nullptr)},
+         {"since", since},
+         {"frames", log.frames.size()},
+         {"robots", std::move(robots)},
+         {"people", std::move(people)}};
+  if (!report_.is_null()) j["report"] = report_;
+  if (with_world && world_) j["world"] = world::world_to_document(*world_);
+  return j;
+}
+
 crowd::EpisodeMetrics CosimSession::metrics() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return crowd::evaluate_episode(episode_->log());
@@ -614,6 +684,15 @@ void CosimSessions::purge_locked() {
       ++it;
     }
   }
+}
+
+std::vector<std::shared_ptr<CosimSession>> CosimSessions::list() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  purge_locked();
+  std::vector<std::shared_ptr<CosimSession>> out;
+  for (auto it = order_.rbegin(); it != order_.rend(); ++it)
+    if (auto s = sessions_.find(*it); s != sessions_.end()) out.push_back(s->second);
+  return out;
 }
 
 void CosimSessions::shutdown() {

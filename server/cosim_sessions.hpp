@@ -112,6 +112,11 @@ class CosimSession {
   // Why it ended (empty while it runs), and the metrics of its log as the report has them.
   [[nodiscard]] std::optional<std::string> end_reason() const;
   [[nodiscard]] crowd::EpisodeMetrics metrics() const;
+  // What a viewer draws (GET /api/v1/cosim/{id}/view): status, every person now, each robot's
+  // pose, goal, outcome, path since frame `since` and the contacts with people that began since
+  // then; the world document when with_world. Figures rounded to the millimetre.
+  [[nodiscard]] Json view(std::size_t since, bool with_world) const;
+  [[nodiscard]] std::optional<std::string> card_id() const { return card_id_; }
 
  private:
   CosimReply fail_locked(const Error& error, const std::string& code);
@@ -149,6 +154,8 @@ class CosimSessions {
   // 429 at the session limit; 422 (pointers under /) when the episode cannot be built.
   Result<std::shared_ptr<CosimSession>> create(CosimRequest request);
   Result<std::shared_ptr<CosimSession>> find(const std::string& id);
+  // The sessions kept (running, waiting and the last ended_kept ended ones), newest first.
+  std::vector<std::shared_ptr<CosimSession>> list();
   void shutdown();
 
  private:

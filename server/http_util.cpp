@@ -70,6 +70,14 @@ Result<std::int64_t> query_int(const Request& req, const std::string& name, std:
   return out;
 }
 
+Result<bool> query_bool(const Request& req, const std::string& name, bool fallback) {
+  auto v = query(req, name);
+  if (!v) return fallback;
+  if (*v == "true" || *v == "false") return *v == "true";
+  return fail(ErrorCode::kValidation, "query parameter '" + name + "' must be true or false",
+              {{"", "must be true or false, not '" + *v + "'", name, 0, 0}});
+}
+
 ErrorCode code_for_status(int status) {
   switch (status) {
     case 400:

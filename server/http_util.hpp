@@ -27,6 +27,8 @@ std::optional<std::string> query(const Request& req, const std::string& name);
 // An integer query parameter within [min, max]; 422 naming the parameter otherwise.
 Result<std::int64_t> query_int(const Request& req, const std::string& name, std::int64_t fallback,
                                std::int64_t min, std::int64_t max);
+// A boolean query parameter ("true" or "false"); 422 naming the parameter otherwise.
+Result<bool> query_bool(const Request& req, const std::string& name, bool fallback);
 ErrorCode code_for_status(int status);
 
 // One structured log line on stdout.

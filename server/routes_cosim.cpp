@@ -1,6 +1,9 @@
 // /api/v1/cosim: co-simulation sessions (issue 19, docs/cosim.md). A client opens an episode on a
 // card or a program with its robots; it then drives them over the WebSocket port at
 // /ws/cosim/{id} (subprotocol socsim.cosim.v1) and receives the metrics report at the end.
+#include <cstdint>
+#include <limits>
+
 #include "core/crowd/program.hpp"
 #include "server/cosim_sessions.hpp"
 #include "server/http_util.hpp"
@@ -87,6 +90,24 @@ void cosim_routes(Router& http, RouteContext& ctx) {
                    res.set_header("Location", "/api/v1/cosim/" + (*session)->id());
                    reply_json(res, 201, cosim_with_urls(ctx, req, (*session)->status()));
                  });
+
+  http.Get("/api/v1/cosim", [&ctx](const Request& req, Response& res) {
+    Json items = Json::array();
+    for (const auto& s : ctx.services.cosim->list()) items.push_back(cosim_with_urls(ctx, req, s->status()));
+    reply_json(res, 200, {{"items", std::move(items)}, {"next_cursor", nullptr}});
+  });
+
+  // What the co-simulation view (web/cosim.html) polls: people now, the robots' paths and contacts
+  // since frame ?since= (0: from the start), the world document with ?world=true.
+  http.Get(R"(/api/v1/cosim/([^/]+)/view)", [&ctx](const Request& req, Response& res) {
+    auto since = query_int(req, "since", 0, 0, std::numeric_limits<std::int32_t>::max());
+    if (!since) return reply_problem(res, since.error(), req.path);
+    auto world = query_bool(req, "world", false);
+    if (!world) return reply_problem(res, world.error(), req.path);
+    auto s = ctx.services.cosim->find(req.matches[1].str());
+    if (!s) return reply_problem(res, s.error(), req.path);
+    reply_json(res, 200, (*s)->view(static_cast<std::size_t>(*since), *world));
+  });
 
   http.Get(kCosimPath, [&ctx](const Request& req, Response& res) {
     auto s = ctx.services.cosim->find(req.matches[1].str());

@@ -79,6 +79,7 @@ const PAGES = [
   ['catalogue.html', 'Scenario cards'],
   ['household.html', 'Households'],
   ['navbench.html', 'Navigation benchmark'],
+  ['cosim.html', 'Robot in the loop'],
 ];
 
 // The one header: name, navigation with the current page marked, the page's status line, the
@@ -152,6 +153,8 @@ export const COLOURS = {
   plan: { wall: '#212529', door: '#f08c00', entity: '#343a40', label: '#212529', entityLabel: '#495057', furniture: '#d9d2c5', furnitureEdge: '#8d8577', window: '#4dabf7' },
   // Marks drawn over a plan: the navigation target, receptacles visited, the agent's path, the time cursor.
   mark: { target: '#e03131', visited: '#2b8a3e', path: '#1c7ed6', agent: '#0b3d91', free: '#c8c8c8', now: '#d6336c' },
+  // A co-simulated robot: its body, its path, its goal, a contact with a person.
+  robot: { body: '#f08c00', edge: '#7a4100', path: '#f08c00', goal: '#2b8a3e', contact: '#e03131' },
 };
 
 // ---------------------------------------------------------------- plan drawer

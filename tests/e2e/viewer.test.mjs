@@ -1,12 +1,14 @@
 // The catalogue viewer (catalogue.html) in headless Debian Chromium, served by the daemon itself:
 // cards listed, searched, opened; a card POSTed while the page is open appears live over the
 // WebSocket. Share links from before the catalogue moved off `/` (/#card=…) still open the card.
-// A screenshot per test lands in tests/e2e/artifacts/.
+// The co-simulation view (cosim.html) follows a robot driven over /ws/cosim/{id} live: the robot,
+// its path and its contact with a person. A screenshot per test lands in tests/e2e/artifacts/.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { startServer } from './server.mjs';
 import { artifacts, browserSkip as skip, inkedFraction, launchBrowser } from './browser.mjs';
+import WebSocket from 'ws';
 
 let server, browser;
 
@@ -100,5 +102,68 @@ test('a card created elsewhere appears live, and share links open it', { skip },
   await shared.waitForSelector('#detail h2');
   assert.equal(await shared.textContent('#detail h2'), 'Coffee break');
   await shared.close();
+  await page.close();
+});
+
+// A lab's client of a lock-step co-simulation: messages queued as they come, steps of 0.8 m/s
+// straight ahead; drive(n) takes n steps (or runs to the end) and returns the last message.
+function cosimClient(url) {
+  const ws = new WebSocket(url, ['socsim.cosim.v1']);
+  const queue = [], waiting = [];
+  ws.on('message', (data) => {
+    const m = JSON.parse(data.toString());
+    if (waiting.length) waiting.shift()(m); else queue.push(m);
+  });
+  const next = () => (queue.length ? Promise.resolve(queue.shift()) : new Promise((r) => waiting.push(r)));
+  let step = 0;
+  return {
+    ws,
+    async start() { assert.equal((await next()).type, 'hello'); return next(); },
+    async drive(n) {
+      for (let k = 0; k < n; k++) {
+        step += 1;
+        ws.send(JSON.stringify({ type: 'step', step, robots: [{ cmd: { v: 0.8, omega: 0 } }] }));
+        const m = await next();
+        if (m.type === 'error') throw new Error(m.detail);
+        if (m.status === 'ended') return next();  // the report
+      }
+      return null;
+    },
+  };
+}
+
+test('a co-simulation shows the robot, its path and its contact with a person, live', { skip }, async () => {
+  const world = { zones: [{ name: 'corridor', type: 'corridor', polygon: [[0, 0], [20, 0], [20, 3], [0, 3]] }] };
+  const program = { name: 'encounter', agents: [{ name: 'walker', position: [14, 1.5], speed: 1.2, goals: [[1, 1.5]], cyclic_goals: false }] };
+  const created = await server.post('/api/v1/cosim', {
+    program, world, seed: 3, time_limit: 30,
+    robot: { start: { x: 2, y: 1.45, yaw: 0 }, goal: { x: 18, y: 1.5 }, visible: false },
+  });
+  assert.equal(created.status, 201, JSON.stringify(created.body));
+  const client = cosimClient(`ws://127.0.0.1:${server.wsPort}${created.body.ws_url}`);
+  assert.equal((await client.start()).type, 'observation');
+  assert.equal(await client.drive(40), null);
+
+  const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
+  await page.goto(`${server.base}/cosim.html#${created.body.id}`);
+  await page.waitForSelector('#view[data-ready="1"]');
+  await page.waitForSelector(`#sessions li[data-id="${created.body.id}"]`);
+  assert.match(await page.textContent('#session-info'), /running/);
+  assert.ok(await inkedFraction(page, '#view') > 0.2, 'the corridor is drawn');
+
+  const report = await client.drive(2000);  // on to the end: the invisible robot is walked into
+  assert.equal(report?.type, 'report');
+  const outcome = report.metrics.robots[0].outcome;
+  assert.equal(outcome, 'collision_person', JSON.stringify(report.metrics.robots[0]));
+  await page.waitForSelector(`#robots dd[data-outcome="${outcome}"]`, { timeout: 10000 });
+  await page.waitForFunction(() => Number(document.querySelector('#view').dataset.contacts) >= 1);
+  assert.match(await page.textContent('#contacts'), /robot_0 and person 0 at t = /);
+  assert.match(await page.textContent('#report'), /collision_person/);
+  // The path drawn is the whole episode's: every frame once, though it was fetched in pieces.
+  const view = await (await fetch(`${server.base}/api/v1/cosim/${created.body.id}/view`)).json();
+  const drawn = await page.evaluate(() => window.__cosimPathLength?.());
+  assert.equal(drawn, view.robots[0].path.length);
+  await page.screenshot({ path: join(artifacts, 'cosim.png') });
+  client.ws.close();
   await page.close();
 });

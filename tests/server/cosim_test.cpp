@@ -289,6 +289,50 @@ TEST(Cosim, RealTimeHoldsTheLastCommandAndCountsLateness) {
   EXPECT_GE(report->json()["late_ticks"].get<int>(), 8);
 }
 
+// The view a browser polls: the robot's path from a frame on (each frame once over successive
+// polls), everyone now, the world on request; bad parameters are 422 naming them.
+TEST(Cosim, TheViewGivesThePathSinceAFrameAndTheWorldOnRequest) {
+  Daemon d;
+  const Json created = d.post("/api/v1/cosim", request(), 201);
+  const std::string id = created["id"];
+  CosimClient c(d.ws_port, created["ws_url"].get<std::string>());
+  c.read();
+  c.read();
+  for (std::uint64_t k = 1; k <= 10; ++k) {
+    c.send(step(k, 0.8));
+    ASSERT_TRUE(c.read());
+  }
+  const Json first = d.get("/api/v1/cosim/" + id + "/view?world=true");
+  EXPECT_EQ(first["status"], "running");
+  EXPECT_EQ(first["frames"], 11);
+  ASSERT_EQ(first["robots"].size(), 1u);
+  EXPECT_EQ(first["robots"][0]["path"].size(), 11u);
+  EXPECT_EQ(first["robots"][0]["path"][0], Json::parse("[2.0, 2.0]"));
+  EXPECT_EQ(first["people"].size(), 1u);
+  EXPECT_TRUE(first.contains("world"));
+  for (std::uint64_t k = 11; k <= 13; ++k) {
+    c.send(step(k, 0.8));
+    ASSERT_TRUE(c.read());
+  }
+  const Json next = d.get("/api/v1/cosim/" + id + "/view?since=11");
+  EXPECT_EQ(next["robots"][0]["path"].size(), 3u);
+  EXPECT_FALSE(next.contains("world"));
+  EXPECT_EQ(next["robots"][0]["path"][2][0], next["robots"][0]["pose"]["x"]);
+  const Json listed = d.get("/api/v1/cosim");
+  ASSERT_FALSE(listed["items"].empty());
+  EXPECT_EQ(listed["items"][0]["id"], id);
+  auto client = d.http.client();
+  for (const char* bad : {"?since=-1", "?since=x", "?world=yes"}) {
+    auto r = client.Get(("/api/v1/cosim/" + id + "/view" + bad).c_str());
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 422) << bad;
+    EXPECT_FALSE(Json::parse(r->body)["errors"][0]["parameter"].get<std::string>().empty()) << r->body;
+  }
+  auto missing = client.Get("/api/v1/cosim/cosim_nope/view");
+  ASSERT_TRUE(missing);
+  EXPECT_EQ(missing->status, 404);
+}
+
 // An evaluation with "client": "external": each card × seed is a lock-step session that the test,
 // as the lab's client, finds in the evaluation's "current" and drives; the table then has them.
 TEST(Cosim, AnExternalEvaluationIsDrivenSessionBySessionIntoItsTable) {
