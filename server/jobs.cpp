@@ -240,7 +240,7 @@ Result<JobPage> JobRunner::list(std::size_t page_size, const std::optional<std::
                   {{"", "use next_cursor from a previous page", "cursor", 0, 0}});
     before = std::stoll(digits);
   }
-  std::string sql = std::string("SELECT ") + kColumns + ", seq FROM jobs WHERE 1";
+  std::string sql = std::string("SELECT ") + kColumns + ", seq FROM jobs WHERE TRUE";
   if (before) sql += " AND seq < :before";
   if (kind) sql += " AND kind = :kind";
   if (status) sql += " AND status = :status";

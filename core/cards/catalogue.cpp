@@ -97,6 +97,12 @@ std::string fts_query(std::string_view text) {
   return out;
 }
 
+// The FTS5 query's words without their quotes, for plainto_tsquery.
+std::string plain_words(std::string match) {
+  std::erase(match, '"');
+  return match;
+}
+
 Result<Card> CardCatalogue::create(const CardContent& content, const std::string& author) {
   Card card;
   card.id = new_card_id();
@@ -156,9 +162,12 @@ Result<CardPage> CardCatalogue::list(const CardQuery& q) {
       return fail(ErrorCode::kBadRequest, "the search text has no words",
                   {{"", "no searchable words", "q", 0, 0}});
   }
-  std::string sql = "SELECT c.seq, c.body FROM cards c WHERE 1";
+  const bool postgres = store_.dialect() == store::Dialect::kPostgres;
+  std::string sql = "SELECT c.seq, c.body FROM cards c WHERE TRUE";
   if (before) sql += " AND c.seq < :before";
-  if (q.text) sql += " AND c.seq IN (SELECT rowid FROM cards_fts WHERE cards_fts MATCH :match)";
+  // Every word must match (FTS5's implicit AND; PostgreSQL: the stemmed words ANDed).
+  if (q.text && postgres) sql += " AND c.fts @@ plainto_tsquery('english', :match)";
+  if (q.text && !postgres) sql += " AND c.seq IN (SELECT rowid FROM cards_fts WHERE cards_fts MATCH :match)";
   if (q.tag) sql += " AND c.seq IN (SELECT card_seq FROM card_tags WHERE tag = :tag)";
   if (q.author) sql += " AND c.author = :author";
   if (q.domain) sql += " AND c.domain = :domain";
@@ -168,7 +177,7 @@ Result<CardPage> CardCatalogue::list(const CardQuery& q) {
     if (!st) return tl::unexpected(st.error());
     int i = 1;
     if (before) st->bind(i++, *before);
-    if (q.text) st->bind(i++, match);
+    if (q.text) st->bind(i++, postgres ? plain_words(match) : match);
     if (q.tag) st->bind(i++, *q.tag);
     if (q.author) st->bind(i++, *q.author);
     if (q.domain) st->bind(i++, *q.domain);

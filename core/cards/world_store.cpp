@@ -72,7 +72,7 @@ Result<StoredWorld> WorldStore::get(const std::string& id) {
 
 Result<WorldPage> WorldStore::list(std::size_t limit, std::optional<std::int64_t> before,
                                    const std::optional<std::string>& domain) {
-  std::string sql = std::string("SELECT ") + kColumns + ", seq FROM worlds WHERE 1";
+  std::string sql = std::string("SELECT ") + kColumns + ", seq FROM worlds WHERE TRUE";
   if (before) sql += " AND seq < :before";
   if (domain) sql += " AND domain = :domain";
   sql += " ORDER BY seq DESC LIMIT :limit";

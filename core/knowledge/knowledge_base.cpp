@@ -168,8 +168,54 @@ struct Ranked {
   double score = 0.0;
 };
 
+// SQL that is true when the JSON array of strings in `column` holds the parameter `param`.
+std::string alias_is(const Database& db, const std::string& column, const std::string& param) {
+  if (db.dialect() == store::Dialect::kPostgres)
+    return "EXISTS (SELECT 1 FROM jsonb_array_elements_text(" + column + "::jsonb) a WHERE a = " + param +
+           ")";
+  return "EXISTS (SELECT 1 FROM json_each(" + column + ") WHERE value = " + param + ")";
+}
+
+// PostgreSQL's counterpart of FTS5's bm25 ranking: the entries whose weighted tsvector (the
+// columns' weights in FTS5's order, migrations/postgresql/0010) matches any of the terms, by
+// ts_rank normalised by document length (bm25's length normalisation, roughly), ties by id.
+Result<std::vector<Ranked>> ts_ranking(Database& db, Kind kind, const std::string& match, std::size_t limit) {
+  // The FTS5 expression "a" OR "b" → the tsquery a | b (terms are letters and digits only).
+  std::string terms;
+  for (char c : match) {
+    if (c == '"') continue;
+    terms += c;
+  }
+  std::string query;
+  for (std::size_t at = 0;;) {
+    const auto next = terms.find(" OR ", at);
+    query += (query.empty() ? "" : " | ") +
+             terms.substr(at, next == std::string::npos ? std::string::npos : next - at);
+    if (next == std::string::npos) break;
+    at = next + 4;
+  }
+  const std::string sql =
+      kind == Kind::kBuildingCode
+          ? "SELECT ref_id, ts_rank(fts, q, 1) AS s FROM building_codes, to_tsquery('english', ?1) q "
+            "WHERE fts @@ q ORDER BY s DESC, ref_id LIMIT ?2"
+          : "SELECT name, ts_rank(fts, q, 1) AS s FROM behavior_nodes, to_tsquery('english', ?1) q "
+            "WHERE fts @@ q ORDER BY s DESC, name LIMIT ?2";
+  auto st = db.prepare(sql);
+  if (!st) return tl::unexpected(st.error());
+  st->bind(1, query).bind(2, static_cast<std::int64_t>(limit));
+  std::vector<Ranked> out;
+  for (;;) {
+    auto row = st->step();
+    if (!row) return tl::unexpected(row.error());
+    if (!*row) break;
+    out.push_back({st->text(0), st->real(1)});
+  }
+  return out;
+}
+
 Result<std::vector<Ranked>> bm25_ranking(Database& db, Kind kind, const std::string& match,
                                          std::size_t limit) {
+  if (db.dialect() == store::Dialect::kPostgres) return ts_ranking(db, kind, match, limit);
   const std::string sql =
       kind == Kind::kBuildingCode
           ? "SELECT b.ref_id, bm25(building_codes_fts, 4.0, 1.0, 2.0, 1.0, 0.5, 1.0, 1.5) AS s "
@@ -375,8 +421,7 @@ Result<std::vector<BuildingCode>> KnowledgeBase::building_codes(std::string_view
 
 Result<BehaviorNode> KnowledgeBase::behavior_node(const std::string& name_or_alias) const {
   auto nodes = store_.read([&](Database& db) {
-    return load_nodes(db, "WHERE name = ?1 OR EXISTS (SELECT 1 FROM json_each(aliases) WHERE value = ?1)",
-                      {name_or_alias});
+    return load_nodes(db, "WHERE name = ?1 OR " + alias_is(db, "aliases", "?1"), {name_or_alias});
   });
   if (!nodes) return tl::unexpected(nodes.error());
   if (nodes->empty()) return fail(ErrorCode::kNotFound, "no behaviour node named '" + name_or_alias + "'");
@@ -424,9 +469,8 @@ Status KnowledgeBase::upsert(const BehaviorNode& node) {
   for (const auto& p : checked->ports) ports.push_back(to_json(p));
   auto written = store_.write([&](Database& db) -> Status {
     // Every tag name (name or alias) must resolve to one node only.
-    auto others = db.prepare(
-        "SELECT n.name FROM behavior_nodes n WHERE n.name <> ?1 AND (n.name = ?2 OR EXISTS "
-        "(SELECT 1 FROM json_each(n.aliases) WHERE value = ?2))");
+    auto others = db.prepare("SELECT n.name FROM behavior_nodes n WHERE n.name <> ?1 AND (n.name = ?2 OR " +
+                             alias_is(db, "n.aliases", "?2") + ")");
     if (!others) return tl::unexpected(others.error());
     std::vector<std::string> tags = checked->aliases;
     tags.push_back(checked->name);
@@ -492,8 +536,9 @@ Result<std::size_t> KnowledgeBase::index_embeddings(Kind kind) const {
       return tl::unexpected(s.error());
     auto written = store_.write([&](Database& db) -> Status {
       auto st = db.prepare(
-          "INSERT OR REPLACE INTO knowledge_embeddings (kind, item_id, model, text_hash, dim, vector) "
-          "VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+          "INSERT INTO knowledge_embeddings (kind, item_id, model, text_hash, dim, vector) "
+          "VALUES (?1, ?2, ?3, ?4, ?5, ?6) ON CONFLICT (kind, model, item_id) DO UPDATE SET "
+          "text_hash = excluded.text_hash, dim = excluded.dim, vector = excluded.vector");
       if (!st) return tl::unexpected(st.error());
       for (std::size_t i = begin; i < end; ++i) {
         const Embedding& v = (*vectors)[i - begin];

@@ -31,8 +31,8 @@ Status cache_answers(store::Store& store, const std::vector<std::pair<CacheKey, 
   if (entries.empty()) return {};
   return store.write([&](store::Database& db) -> Status {
     auto st = db.prepare(
-        "INSERT OR IGNORE INTO llm_cache (model, request_hash, seed, temperature, response, finish_reason, "
-        "prompt_tokens, completion_tokens) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
+        "INSERT INTO llm_cache (model, request_hash, seed, temperature, response, finish_reason, "
+        "prompt_tokens, completion_tokens) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8) ON CONFLICT DO NOTHING");
     if (!st) return tl::unexpected(st.error());
     for (const auto& [key, answer] : entries) {
       st->reset();

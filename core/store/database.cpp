@@ -1,67 +1,87 @@
 #include "core/store/database.hpp"
 
-#include <sqlite3.h>
+#include <algorithm>
+#include <cctype>
+#include <utility>
 
 namespace socsim::store {
 
-Error sqlite_error(sqlite3* db, int rc, std::string_view context) {
-  const int primary = rc & 0xff;
-  std::string msg = std::string(context) + ": " + (db ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
-  switch (primary) {
-    case SQLITE_BUSY:
-    case SQLITE_LOCKED:
-      return Error(ErrorCode::kStoreBusy, msg);
-    case SQLITE_CONSTRAINT:
-      return Error(ErrorCode::kConflict, msg);
-    default:
-      return Error(ErrorCode::kStore, msg);
+bool is_postgres_url(std::string_view target) {
+  return target.starts_with("postgresql://") || target.starts_with("postgres://");
+}
+
+Status check_database_target(std::string_view target) {
+  if (is_postgres_url(target)) return {};
+  const auto colon = target.find("://");
+  if (colon == std::string_view::npos || colon == 0) return {};
+  for (char c : target.substr(0, colon))
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.') return {};
+  return fail(ErrorCode::kValidation,
+              "--db '" + std::string(target.substr(0, colon + 3)) +
+                  "…' is a URL socsim cannot open: give an SQLite file path or a postgresql:// URL",
+              {FieldError::query("db", "an SQLite file path or postgresql://user@host:port/database")});
+}
+
+namespace detail {
+
+std::string postgres_placeholders(std::string_view sql) {
+  std::string out;
+  out.reserve(sql.size() + 8);
+  std::vector<std::pair<std::string, int>> names;  // named parameters and their numbers
+  int next = 0;
+  const auto is_word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t i = 0; i < sql.size();) {
+    const char c = sql[i];
+    if (c == '\'' || c == '"') {  // a literal or a quoted identifier ('' and "" escape themselves)
+      const std::size_t start = i++;
+      while (i < sql.size()) {
+        if (sql[i] != c) {
+          ++i;
+        } else if (i + 1 < sql.size() && sql[i + 1] == c) {
+          i += 2;
+        } else {
+          ++i;
+          break;
+        }
+      }
+      out.append(sql.substr(start, i - start));
+    } else if (c == '-' && i + 1 < sql.size() && sql[i + 1] == '-') {
+      const std::size_t end = sql.find('\n', i);
+      const std::size_t stop = end == std::string_view::npos ? sql.size() : end;
+      out.append(sql.substr(i, stop - i));
+      i = stop;
+    } else if (c == '?') {
+      std::size_t j = i + 1;
+      while (j < sql.size() && std::isdigit(static_cast<unsigned char>(sql[j]))) ++j;
+      if (j > i + 1) {
+        const int n = std::stoi(std::string(sql.substr(i + 1, j - i - 1)));
+        next = std::max(next, n);
+        out += "$" + std::to_string(n);
+      } else {
+        out += "$" + std::to_string(++next);
+      }
+      i = j;
+    } else if ((c == ':' || c == '@') && i + 1 < sql.size() && is_word(sql[i + 1]) &&
+               !std::isdigit(static_cast<unsigned char>(sql[i + 1])) && (i == 0 || sql[i - 1] != ':') &&
+               !(c == ':' && i + 1 < sql.size() && sql[i + 1] == ':')) {
+      std::size_t j = i + 1;
+      while (j < sql.size() && is_word(sql[j])) ++j;
+      const std::string name(sql.substr(i + 1, j - i - 1));
+      // SQLite numbers a repeated name once: the number of its first appearance.
+      auto it = std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == name; });
+      const int number = it != names.end() ? it->second : ++next;
+      if (it == names.end()) names.emplace_back(name, number);
+      out += "$" + std::to_string(number);
+      i = j;
+    } else {
+      out += c;
+      ++i;
+    }
   }
+  return out;
 }
 
-Statement& Statement::operator=(Statement&& o) noexcept {
-  if (this != &o) {
-    if (stmt_) sqlite3_finalize(stmt_);
-    db_ = o.db_;
-    stmt_ = o.stmt_;
-    o.stmt_ = nullptr;
-  }
-  return *this;
-}
-
-Statement::~Statement() {
-  if (stmt_) sqlite3_finalize(stmt_);
-}
-
-Statement& Statement::bind(int idx, std::string_view text) {
-  sqlite3_bind_text64(stmt_, idx, text.data(), text.size(), SQLITE_TRANSIENT, SQLITE_UTF8);
-  return *this;
-}
-Statement& Statement::bind(int idx, std::int64_t value) {
-  sqlite3_bind_int64(stmt_, idx, value);
-  return *this;
-}
-Statement& Statement::bind(int idx, double value) {
-  sqlite3_bind_double(stmt_, idx, value);
-  return *this;
-}
-Statement& Statement::bind_blob(int idx, std::string_view bytes) {
-  sqlite3_bind_blob64(stmt_, idx, bytes.data(), bytes.size(), SQLITE_TRANSIENT);
-  return *this;
-}
-Statement& Statement::bind_null(int idx) {
-  sqlite3_bind_null(stmt_, idx);
-  return *this;
-}
-Statement& Statement::bind(int idx, const std::optional<std::string>& text) {
-  return text ? bind(idx, std::string_view(*text)) : bind_null(idx);
-}
-
-Result<bool> Statement::step() {
-  const int rc = sqlite3_step(stmt_);
-  if (rc == SQLITE_ROW) return true;
-  if (rc == SQLITE_DONE) return false;
-  return tl::unexpected(sqlite_error(db_, rc, "step"));
-}
+}  // namespace detail
 
 Status Statement::run() {
   for (;;) {
@@ -71,64 +91,29 @@ Status Statement::run() {
   }
 }
 
-void Statement::reset() {
-  sqlite3_reset(stmt_);
-  sqlite3_clear_bindings(stmt_);
-}
-
-bool Statement::is_null(int col) const {
-  return sqlite3_column_type(stmt_, col) == SQLITE_NULL;
-}
-std::string Statement::text(int col) const {
-  const auto* p = sqlite3_column_text(stmt_, col);
-  const int n = sqlite3_column_bytes(stmt_, col);
-  return p ? std::string(reinterpret_cast<const char*>(p), static_cast<std::size_t>(n)) : std::string();
-}
 std::optional<std::string> Statement::optional_text(int col) const {
   if (is_null(col)) return std::nullopt;
   return text(col);
 }
-std::int64_t Statement::int64(int col) const {
-  return sqlite3_column_int64(stmt_, col);
-}
-double Statement::real(int col) const {
-  return sqlite3_column_double(stmt_, col);
-}
-std::string Statement::blob(int col) const {
-  const void* p = sqlite3_column_blob(stmt_, col);
-  const int n = sqlite3_column_bytes(stmt_, col);
-  return p ? std::string(static_cast<const char*>(p), static_cast<std::size_t>(n)) : std::string();
-}
 
-Result<Database> Database::open(const std::string& path, const OpenOptions& options) {
-  sqlite3* db = nullptr;
-  int flags = SQLITE_OPEN_NOMUTEX | (options.read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE);
-  if (!options.read_only && options.create) flags |= SQLITE_OPEN_CREATE;
-  const int rc = sqlite3_open_v2(path.c_str(), &db, flags, nullptr);
-  if (rc != SQLITE_OK) {
-    Error e = sqlite_error(db, rc, "cannot open database '" + path + "'");
-    sqlite3_close(db);
-    return tl::unexpected(e);
+Result<Database> Database::open(const std::string& target, const OpenOptions& options) {
+  Error error;
+  std::unique_ptr<detail::ConnectionImpl> impl;
+  std::string shown = target;
+  if (is_postgres_url(target)) {
+    impl = detail::open_postgres(target, options, error);
+    // The URL as logs and errors show it: without a password.
+    const auto at = shown.find('@'), scheme = shown.find("://");
+    if (at != std::string::npos && scheme != std::string::npos) {
+      const auto colon = shown.find(':', scheme + 3);
+      if (colon != std::string::npos && colon < at) shown.replace(colon, at - colon, ":***");
+    }
+  } else {
+    if (auto ok = check_database_target(target); !ok) return tl::unexpected(ok.error());
+    impl = detail::open_sqlite(target, options, error);
   }
-  Database d(db, path);
-  sqlite3_busy_timeout(db, options.busy_timeout_ms);
-  sqlite3_extended_result_codes(db, 1);
-  // WAL lets readers proceed during a write; synchronous=NORMAL is durable across process
-  // crashes in WAL mode (a power loss may drop the last commits, never corrupt).
-  std::string pragmas = "PRAGMA foreign_keys=ON;";
-  if (!options.read_only) pragmas += "PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL;";
-  if (auto s = d.exec(pragmas); !s) return tl::unexpected(s.error());
-  return d;
-}
-
-Database& Database::operator=(Database&& o) noexcept {
-  if (this != &o) {
-    close();
-    db_ = o.db_;
-    path_ = std::move(o.path_);
-    o.db_ = nullptr;
-  }
-  return *this;
+  if (!impl) return tl::unexpected(error);
+  return Database(std::move(impl), shown);
 }
 
 Database::~Database() {
@@ -136,43 +121,17 @@ Database::~Database() {
 }
 
 void Database::close() {
-  if (db_) {
-    sqlite3_close_v2(db_);
-    db_ = nullptr;
-  }
-}
-
-Status Database::exec(std::string_view sql) {
-  std::string owned(sql);
-  char* err = nullptr;
-  const int rc = sqlite3_exec(db_, owned.c_str(), nullptr, nullptr, &err);
-  if (rc != SQLITE_OK) {
-    Error e = sqlite_error(db_, rc, "exec");
-    if (err) {
-      e.detail = std::string("exec: ") + err;
-      sqlite3_free(err);
-    }
-    return tl::unexpected(e);
-  }
-  return {};
+  if (impl_) impl_->close();
 }
 
 Result<Statement> Database::prepare(std::string_view sql) {
-  sqlite3_stmt* stmt = nullptr;
-  const int rc = sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &stmt, nullptr);
-  if (rc != SQLITE_OK) return tl::unexpected(sqlite_error(db_, rc, "prepare"));
-  return Statement(db_, stmt);
-}
-
-std::int64_t Database::last_insert_rowid() const {
-  return sqlite3_last_insert_rowid(db_);
-}
-int Database::changes() const {
-  return sqlite3_changes(db_);
+  auto st = impl_->prepare(sql);
+  if (!st) return tl::unexpected(st.error());
+  return Statement(std::move(*st));
 }
 
 Result<WriteTransaction> WriteTransaction::begin(Database& db) {
-  if (auto s = db.exec("BEGIN IMMEDIATE"); !s) return tl::unexpected(s.error());
+  if (auto s = db.impl_->begin_write(); !s) return tl::unexpected(s.error());
   return WriteTransaction(&db);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <string_view>
 
 #include "core/common/sha256.hpp"
 
@@ -10,15 +11,128 @@ namespace socsim::store {
 
 const std::map<std::string, std::string>& embedded_migration_files();  // generated from migrations/*.sql
 
-const std::vector<Migration>& embedded_migrations() {
-  static const std::vector<Migration> all = [] {
-    std::vector<Migration> v;
-    for (const auto& [name, sql] : embedded_migration_files()) v.push_back(migration_from_file(name, sql));
-    std::sort(v.begin(), v.end(),
-              [](const Migration& a, const Migration& b) { return a.version < b.version; });
-    return v;
-  }();
-  return all;
+namespace {
+
+constexpr std::string_view kPostgresDir = "postgresql/";
+
+std::string upper_word(std::string_view s, std::size_t at) {
+  std::string w;
+  while (at < s.size() && std::isalpha(static_cast<unsigned char>(s[at])))
+    w += static_cast<char>(std::toupper(static_cast<unsigned char>(s[at++])));
+  return w;
+}
+
+std::size_t skip_space_and_comments(std::string_view s, std::size_t i) {
+  for (;;) {
+    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    if (i + 1 < s.size() && s[i] == '-' && s[i + 1] == '-') {
+      const auto end = s.find('\n', i);
+      i = end == std::string_view::npos ? s.size() : end + 1;
+    } else {
+      return i;
+    }
+  }
+}
+
+std::vector<Migration> build(Dialect dialect) {
+  const auto& files = embedded_migration_files();
+  std::vector<Migration> v;
+  for (const auto& [name, sql] : files) {
+    if (name.find('/') != std::string::npos) continue;
+    if (dialect == Dialect::kPostgres) {
+      const auto own = files.find(std::string(kPostgresDir) + name);
+      if (own != files.end()) {
+        // "shared-data-skip: TABLE" in the PostgreSQL file leaves out the shared data statements
+        // that write TABLE (a table only SQLite's form of the change has).
+        std::vector<std::string> skip;
+        const std::string marker = "shared-data-skip:";
+        for (auto at = own->second.find(marker); at != std::string::npos;
+             at = own->second.find(marker, at + 1)) {
+          std::size_t i = at + marker.size();
+          while (i < own->second.size() && own->second[i] == ' ') ++i;
+          std::size_t j = i;
+          while (j < own->second.size() &&
+                 (std::isalnum(static_cast<unsigned char>(own->second[j])) || own->second[j] == '_'))
+            ++j;
+          skip.push_back(own->second.substr(i, j - i));
+        }
+        std::string data;
+        for (const std::string& st : split_sql_statements(data_statements(sql))) {
+          const bool skipped = std::any_of(skip.begin(), skip.end(), [&](const std::string& t) {
+            return !t.empty() && (st.find("INTO " + t + " ") != std::string::npos ||
+                                  st.find("INTO " + t + "(") != std::string::npos ||
+                                  st.find("UPDATE " + t + " ") != std::string::npos);
+          });
+          if (!skipped) data += st + "\n";
+        }
+        v.push_back(migration_from_file(name, own->second + "\n" + data));
+        continue;
+      }
+    }
+    v.push_back(migration_from_file(name, sql));
+  }
+  std::sort(v.begin(), v.end(), [](const Migration& a, const Migration& b) { return a.version < b.version; });
+  return v;
+}
+
+}  // namespace
+
+std::vector<std::string> split_sql_statements(std::string_view sql) {
+  std::vector<std::string> out;
+  std::size_t i = skip_space_and_comments(sql, 0);
+  while (i < sql.size()) {
+    const std::size_t start = i;
+    // CREATE [TEMP] TRIGGER … BEGIN … END; holds semicolons of its own.
+    bool trigger = false;
+    if (upper_word(sql, i) == "CREATE") {
+      const std::string_view head = sql.substr(i, std::min<std::size_t>(64, sql.size() - i));
+      std::string up;
+      for (char c : head) up += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      trigger = up.find("TRIGGER") != std::string::npos && up.find("TRIGGER") < up.find('(');
+    }
+    int depth = 0;  // BEGIN … END nesting inside a trigger
+    for (; i < sql.size(); ++i) {
+      const char c = sql[i];
+      if (c == '\'' || c == '"') {
+        for (++i; i < sql.size(); ++i)
+          if (sql[i] == c) {
+            if (i + 1 < sql.size() && sql[i + 1] == c)
+              ++i;
+            else
+              break;
+          }
+      } else if (c == '-' && i + 1 < sql.size() && sql[i + 1] == '-') {
+        const auto end = sql.find('\n', i);
+        i = (end == std::string_view::npos ? sql.size() : end) - 1;
+      } else if (trigger && std::isalpha(static_cast<unsigned char>(c)) &&
+                 (i == 0 || !std::isalnum(static_cast<unsigned char>(sql[i - 1])))) {
+        const std::string w = upper_word(sql, i);
+        if (w == "BEGIN") ++depth;
+        if (w == "END") --depth;
+        i += w.size() - 1;
+      } else if (c == ';' && depth <= 0) {
+        break;
+      }
+    }
+    out.emplace_back(sql.substr(start, std::min(i + 1, sql.size()) - start));
+    i = skip_space_and_comments(sql, i + 1);
+  }
+  return out;
+}
+
+std::string data_statements(std::string_view sql) {
+  std::string out;
+  for (const std::string& st : split_sql_statements(sql)) {
+    const std::string w = upper_word(st, 0);
+    if (w == "INSERT" || w == "UPDATE" || w == "DELETE" || w == "REPLACE") out += st + "\n";
+  }
+  return out;
+}
+
+const std::vector<Migration>& embedded_migrations(Dialect dialect) {
+  static const std::vector<Migration> sqlite = build(Dialect::kSqlite);
+  static const std::vector<Migration> postgres = build(Dialect::kPostgres);
+  return dialect == Dialect::kPostgres ? postgres : sqlite;
 }
 
 Migration migration_from_file(const std::string& file_name, std::string sql) {
@@ -35,7 +149,10 @@ Migration migration_from_file(const std::string& file_name, std::string sql) {
 }
 
 Result<int> schema_version(Database& db) {
-  auto st = db.prepare("SELECT name FROM sqlite_master WHERE type='table' AND name='schema_migrations'");
+  auto st =
+      db.prepare(db.dialect() == Dialect::kPostgres
+                     ? "SELECT 1 WHERE to_regclass('schema_migrations') IS NOT NULL"
+                     : "SELECT name FROM sqlite_master WHERE type='table' AND name='schema_migrations'");
   if (!st) return tl::unexpected(st.error());
   auto has = st->step();
   if (!has) return tl::unexpected(has.error());
@@ -47,11 +164,28 @@ Result<int> schema_version(Database& db) {
 }
 
 Result<MigrationReport> migrate(Database& db, const std::vector<Migration>& migrations) {
-  if (auto s = db.exec("CREATE TABLE IF NOT EXISTS schema_migrations ("
-                       " version INTEGER PRIMARY KEY, name TEXT NOT NULL, checksum TEXT NOT NULL,"
-                       " applied_at TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now'))) STRICT");
-      !s)
-    return tl::unexpected(s.error());
+  const char* create =
+      db.dialect() == Dialect::kPostgres
+          ? "CREATE TABLE IF NOT EXISTS schema_migrations ("
+            " version INTEGER PRIMARY KEY, name TEXT NOT NULL, checksum TEXT NOT NULL,"
+            " applied_at TEXT NOT NULL DEFAULT (to_char(now() AT TIME ZONE 'UTC', "
+            "'YYYY-MM-DD\"T\"HH24:MI:SS.MS\"Z\"')))"
+          : "CREATE TABLE IF NOT EXISTS schema_migrations ("
+            " version INTEGER PRIMARY KEY, name TEXT NOT NULL, checksum TEXT NOT NULL,"
+            " applied_at TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now'))) STRICT";
+  // Several daemons starting at once on one PostgreSQL database: one migrates, the others wait
+  // for it here and then find nothing left to do (released when this function returns).
+  struct AdvisoryLock {
+    Database* db = nullptr;
+    ~AdvisoryLock() {
+      if (db) (void)db->exec("SELECT pg_advisory_unlock(7418790621)");
+    }
+  } lock;
+  if (db.dialect() == Dialect::kPostgres) {
+    if (auto s = db.exec("SELECT pg_advisory_lock(7418790621)"); !s) return tl::unexpected(s.error());
+    lock.db = &db;
+  }
+  if (auto s = db.exec(create); !s) return tl::unexpected(s.error());
 
   MigrationReport report;
   auto current = schema_version(db);

@@ -14,8 +14,16 @@ struct Migration {
   std::string sql;
 };
 
-// The migrations compiled into this build, sorted by version.
-const std::vector<Migration>& embedded_migrations();
+// The migrations compiled into this build for a dialect, sorted by version. migrations/NNNN_*.sql
+// are SQLite's. PostgreSQL runs the same files, except where migrations/postgresql/ has a file of
+// the same name: that file gives the schema change in PostgreSQL's SQL, followed by the data
+// statements (INSERT, UPDATE, DELETE, REPLACE) of the shared file, so curated data is written once.
+const std::vector<Migration>& embedded_migrations(Dialect dialect = Dialect::kSqlite);
+
+// The statements of an SQL script (quotes, comments and trigger bodies respected), and of those
+// the ones that change data rather than the schema.
+std::vector<std::string> split_sql_statements(std::string_view sql);
+std::string data_statements(std::string_view sql);
 
 // Parses "NNNN_name.sql" into version and name; returns version 0 when the name does not match.
 Migration migration_from_file(const std::string& file_name, std::string sql);

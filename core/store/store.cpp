@@ -6,8 +6,9 @@
 namespace socsim::store {
 
 Result<std::unique_ptr<Store>> Store::open(const std::string& path, const StoreOptions& options) {
+  if (auto ok = check_database_target(path); !ok) return tl::unexpected(ok.error());
   std::unique_ptr<Store> s(new Store(path, options));
-  if (path != ":memory:" && !path.empty()) {
+  if (path != ":memory:" && !path.empty() && !is_postgres_url(path)) {
     std::error_code ec;
     const auto parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent, ec);
@@ -17,7 +18,10 @@ Result<std::unique_ptr<Store>> Store::open(const std::string& path, const StoreO
   auto db = Database::open(path, {false, options.busy_timeout_ms, true});
   if (!db) return tl::unexpected(db.error());
   s->writer_ = std::make_unique<Database>(std::move(*db));
-  const auto& migrations = options.migrations ? *options.migrations : embedded_migrations();
+  s->path_ = s->writer_->path();  // a URL without its password
+  s->target_ = path;
+  const auto& migrations =
+      options.migrations ? *options.migrations : embedded_migrations(s->writer_->dialect());
   auto report = migrate(*s->writer_, migrations);
   if (!report) return tl::unexpected(report.error());
   s->report_ = *report;
@@ -35,14 +39,15 @@ Store::Lease::Lease(Store& s) : store_(s) {
   }
   ++s.open_readers_;
   lock.unlock();
-  auto db = Database::open(s.path_, {false, s.options_.busy_timeout_ms, false});
+  const bool postgres = is_postgres_url(s.target_);
+  auto db = Database::open(s.target_, {postgres, s.options_.busy_timeout_ms, false});
   if (!db) {
     std::lock_guard<std::mutex> relock(s.pool_mutex_);
     --s.open_readers_;
     s.pool_cv_.notify_one();
     throw std::runtime_error("store: cannot open a reader connection: " + db.error().message());
   }
-  (void)db->exec("PRAGMA query_only=ON");
+  if (!postgres) (void)db->exec("PRAGMA query_only=ON");
   db_ = std::make_unique<Database>(std::move(*db));
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// The thread-safe face of the SQLite file: one serialised writer connection and a pool of
-// reader connections (WAL lets them read a consistent snapshot while a write is in progress).
+// The thread-safe face of the database — an SQLite file, or a PostgreSQL server (issue 21): one
+// serialised writer connection and a pool of reader connections (SQLite's WAL, PostgreSQL's MVCC
+// let them read a consistent snapshot while a write is in progress).
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -20,7 +21,8 @@ struct StoreOptions {
 
 class Store {
  public:
-  // Opens (creating the file and parent directory when missing) and migrates.
+  // Opens (an SQLite file: creating it and its parent directory when missing; a postgresql://
+  // URL: connecting) and migrates. Another URL scheme is kValidation naming it.
   static Result<std::unique_ptr<Store>> open(const std::string& path, const StoreOptions& options = {});
   Store(const Store&) = delete;
   Store& operator=(const Store&) = delete;
@@ -49,7 +51,9 @@ class Store {
     return result;
   }
 
+  // The file, or the URL without its password.
   [[nodiscard]] const std::string& path() const { return path_; }
+  [[nodiscard]] Dialect dialect() const { return writer_->dialect(); }
   [[nodiscard]] int schema_version() const { return schema_version_; }
   [[nodiscard]] const MigrationReport& migration_report() const { return report_; }
   // Closes every connection (the last close checkpoints the WAL). Must not race with read/write.
@@ -72,6 +76,7 @@ class Store {
   };
 
   std::string path_;
+  std::string target_;  // what open() was given (with a URL's password)
   StoreOptions options_;
   std::unique_ptr<Database> writer_;
   std::mutex writer_mutex_;
