@@ -479,6 +479,13 @@ void furnish_area(Placer& p, const std::string& type, const FurnishingRules& rul
       p.grid(shop ? "shelf" : "rack", numbered(shop ? "shelf" : "rack", row), 1.0, v, L - 1.0, v + shelf, 2.0,
              shelf, 20, 0, {shop ? "browse" : "store", "pick"});
     }
+  } else if (type == "assembly_seating") {
+    // A large community hall set out for an audience: a stage at the far wall, seat rows facing
+    // it in blocks between aisles, a cross aisle by the entrance.
+    double front = D - 2.6;
+    if (p.entity("stage", "stage", {{L / 2, D}}, kPi, {"perform"})) front = D - 3.2 - 1.5;
+    seat_rows(p, "seat", 0.3, 1.8, L - 0.3, front, 1.1, 14, std::max(1.1, rules.walkway_width),
+              {"sit", "watch"});
   } else if (type == "dining_area") {
     if (auto a = p.roi("seating_area", "seating", 0.8, 1.6, L - 0.8, D - 0.6))
       p.grid("table", "table", a->u0, a->v0, a->u1, a->v1, 2.0, 2.2, 40, 0, {"eat", "sit"});

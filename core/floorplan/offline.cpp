@@ -145,6 +145,10 @@ bool audience_type(std::string_view type) {
 // kAlwaysWingRooms on they always are.
 constexpr std::size_t kWingRooms = 16;
 constexpr std::size_t kAlwaysWingRooms = 24;
+// A community hall is large (its main hall set out as an auditorium) from this many people in
+// the scenario or a main hall given this many square metres.
+constexpr int kAssemblyOccupants = 200;
+constexpr double kAssemblyHallArea = 250.0;
 
 std::string material_of(std::string_view domain, std::string_view type) {
   if (is_toilet_type(type) || type == "kitchen" || type == "kitchenette") return "ceramic_tile";
@@ -946,7 +950,7 @@ class Layout {
 
   // The layout family, chosen from the building type (the hub's type), the room count and the seed
   // (streams of their own, so that plans of the other families keep their bytes).
-  void choose_family(std::uint64_t seed) {
+  void choose_family(std::uint64_t seed, const WorldRequirements& wants) {
     const std::string hub = canonical_room_type(graph_.rooms[*circ_].type);
     const std::size_t n = graph_.rooms.size();
     bool audience = false;  // a hall for an audience that opens onto the hub
@@ -959,6 +963,10 @@ class Layout {
       // A large building: wings joined at a junction, always from kAlwaysWingRooms rooms on.
       if (n >= kWingRooms && (n >= kAlwaysWingRooms || Rng(seed, fnv1a64("multi_wing")).chance(0.5)))
         family_ = Family::kMultiWing;
+    } else if (hub == "main_hall" && assembly(wants)) {
+      // A large community hall: its main hall, the hub, is set out for an audience (stage, seat rows).
+      family_ = Family::kAuditorium;
+      assembly_hub_ = true;
     } else if (audience && (n >= kAlwaysWingRooms || Rng(seed, fnv1a64("auditorium")).chance(0.6))) {
       // Theatres, cinemas, concert halls and arenas: the plan is laid out round their audience
       // halls (on 60 % of the seeds, every seed for a large venue; else a hall family, as before).
@@ -971,6 +979,18 @@ class Layout {
   }
   [[nodiscard]] Family family() const { return family_; }
   [[nodiscard]] const std::string& hub_name() const { return graph_.rooms[*circ_].name; }
+  // Whether a main hall is set out for an audience: many people (or a large hall given) and no
+  // counters, tables or desks asked for (a polling station, a meeting at tables, a dinner).
+  [[nodiscard]] bool assembly(const WorldRequirements& wants) const {
+    const bool large = (wants.occupants && *wants.occupants >= kAssemblyOccupants) ||
+                       graph_.rooms[*circ_].area.value_or(0.0) >= kAssemblyHallArea;
+    return large && std::none_of(wants.features.begin(), wants.features.end(), [](const auto& f) {
+             return f.feature == Feature::kCounter || f.feature == Feature::kTable ||
+                    f.feature == Feature::kDesk;
+           });
+  }
+  // Whether the hub itself is the audience hall (a large community hall's main hall).
+  [[nodiscard]] bool assembly_hub() const { return assembly_hub_; }
 
   // The zones of an open hall as WorldBuilder would see rooms (for furnish_areas), with the hall's
   // doors on their edges and an opening between neighbours; nothing for the other families.
@@ -1168,6 +1188,7 @@ class Layout {
   int grouped_band_ = 0;         // the band stout halls and platforms go to
   bool home_open_plan_ = false;  // the living room is the hub (no hallway in the graph)
   bool service_exit_ = false;    // a small program's second exit from a service room (this attempt)
+  bool assembly_hub_ = false;    // auditorium family: the hub is set out as the audience hall
   Family family_ = Family::kCorridorWithRooms;
   std::vector<std::pair<std::string, Rect>> areas_;  // open hall: its zones (type, rectangle)
   // Multi-wing plan: the hub's rect is the junction; these are its wing corridors, and hub_arms_
@@ -1357,11 +1378,11 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
                 {{"/rooms", "needs at least one room"}});
   Layout layout(graph, constraints);
   if (auto s = layout.prepare(); !s) return tl::unexpected(s.error());
-  layout.choose_family(options.seed);
-  const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
   const WorldRequirements& wants = options.requirements;
   const std::optional<double> occupants =
       wants.occupants ? std::optional<double>(*wants.occupants) : std::nullopt;
+  layout.choose_family(options.seed, wants);
+  const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
   const std::string& domain = layout.graph().domain;
   Rng rng(options.seed, fnv1a64("floorplan"));
   double scale = 1.0;
@@ -1398,8 +1419,19 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       std::vector<DoorSpec> area_doors;
       layout.emit_areas(doors, areas, area_doors);
       std::vector<std::string> open_halls;
-      if (!areas.empty()) open_halls.push_back(layout.hub_name());
+      if (!areas.empty() || layout.assembly_hub()) open_halls.push_back(layout.hub_name());
       Furnishing f = furnish(zones, doors, rules, furnishing, open_halls, furnishing_memo);
+      if (layout.assembly_hub()) {
+        // The hub set out for an audience: furnished as an area of its own kind (same zone name).
+        for (const auto& z : zones)
+          if (z.name == layout.hub_name()) {
+            const std::vector<Zone> hall{{z.name, "assembly_seating", "", z.polygon}};
+            Rng by_area = furnishing_rng.fork("assembly");
+            Furnishing a = furnish_areas(hall, doors, rules, by_area);
+            for (auto& r : a.rois) f.rois.push_back(std::move(r));
+            for (auto& e : a.entities) f.entities.push_back(std::move(e));
+          }
+      }
       if (!areas.empty()) {
         Rng by_area = furnishing_rng.fork("areas");
         Furnishing a = furnish_areas(areas, area_doors, rules, by_area);

@@ -268,13 +268,16 @@ std::vector<SceneGraph> large_programs() {
           room_program("care_home", {{"resident_room", 18}}), room_program("hotel")};
 }
 
-// An auditorium plan: every audience hall has seats in rows behind one another, every seat facing
-// the screen or stage at the far end, aisles (walkways) between the blocks, and its backstage (when
-// it has one) behind the stage end.
+// An auditorium plan: every audience hall (an auditorium, an arena floor, a large community hall's
+// main hall) has seats in rows behind one another, every seat facing the screen or stage at the
+// far end, and aisles (walkways) between the blocks.
 void expect_audience_halls(const World& w, const std::string& where) {
   int halls = 0;
   for (const auto& z : w.zones()) {
-    if (z.type != "auditorium" && z.type != "arena_floor") continue;
+    const bool seated = std::any_of(w.entities().begin(), w.entities().end(), [&](const Entity& e) {
+      return e.type == "seat" && e.name.rfind(z.name + "_seat_r", 0) == 0;
+    });
+    if (z.type != "auditorium" && z.type != "arena_floor" && !(z.type == "main_hall" && seated)) continue;
     ++halls;
     std::vector<const Entity*> seats;
     const Entity* front = nullptr;
@@ -396,15 +399,21 @@ TEST_F(Venues, EveryLayoutFamilyIsBuiltCleanAndKeepsTheSceneGraph) {
     EXPECT_GE(families[f], 4) << f;
 }
 
-// The two newest families, one plan each (the quick check run in CI; the tests above run them
-// over more seeds): a theatre laid out round its auditoria and a 26-room care home in wings, each
-// valid, compliant, clean and with the things its family promises.
+// The two newest families (the quick check run in CI; the tests above run them over more seeds):
+// a theatre laid out round its auditoria, a 26-room care home in wings and a community hall for
+// 300 people whose main hall is set out with seat rows, each valid, compliant, clean and with the
+// things its family promises.
 TEST_F(Venues, AnAuditoriumAndAMultiWingPlanAreClean) {
-  for (const auto& [g, family] :
-       {std::pair{room_program("theatre"), "auditorium"}, std::pair{large_programs()[2], "multi_wing"}}) {
+  for (const auto& [g, family, seed] :
+       {std::tuple{room_program("theatre"), "auditorium", 1},
+        std::tuple{large_programs()[2], "multi_wing", 1},
+        // A community hall for 300 people: its main hall set out as the audience hall.
+        std::tuple{room_program("community_hall"), "auditorium", 1},
+        std::tuple{room_program("community_hall"), "auditorium", 2}}) {
     OfflineOptions o;
-    o.seed = 1;
+    o.seed = static_cast<std::uint64_t>(seed);
     o.requirements = typical_request(g.domain);
+    if (g.domain == "community_hall") o.requirements.occupants = 300;
     auto plan = generate_floor_plan(g, constraints(g.domain), o);
     ASSERT_TRUE(plan) << g.domain << ": " << plan.error().message();
     EXPECT_EQ(plan->provenance.at("layout_family"), family);
