@@ -427,6 +427,27 @@ TEST_F(Venues, AnAuditoriumAndAMultiWingPlanAreClean) {
   }
 }
 
+// A community hall for 300 people × 10 seeds: the auditorium family with the main hall set out
+// with seat rows facing a stage (or a screen), clean, compliant, the scene graph kept (heavy).
+TEST_F(Venues, EveryLayoutFamilyHoldsALargeCommunityHall) {
+  const SceneGraph g = room_program("community_hall");
+  for (std::uint64_t seed = 0; seed < 10; ++seed) {
+    OfflineOptions o;
+    o.seed = seed;
+    o.requirements = typical_request("community_hall");
+    o.requirements.occupants = 300;
+    auto plan = generate_floor_plan(g, constraints("community_hall"), o);
+    ASSERT_TRUE(plan) << seed << ": " << plan.error().message();
+    EXPECT_EQ(plan->provenance.at("layout_family"), "auditorium") << seed;
+    EXPECT_TRUE(plan->compliance.passed) << seed;
+    const LayoutCheck check = check_layout(plan->world);
+    EXPECT_TRUE(check.ok()) << seed << ":\n" << check.summary();
+    EXPECT_EQ(plan->scene_graph.rooms, g.rooms);
+    EXPECT_EQ(plan->scene_graph.adjacency, g.adjacency);
+    expect_audience_halls(plan->world, "community hall seed " + std::to_string(seed));
+  }
+}
+
 // Every simulator and map format is produced for a plan of every family and reads back: SVG and
 // SDF are well-formed XML with their root, the ROS map is a P5 image of the size its header says
 // with metadata naming it, and the pedsim scenario re-imports with one obstacle per wall.
