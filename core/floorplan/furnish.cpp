@@ -479,6 +479,35 @@ void furnish_area(Placer& p, const std::string& type, const FurnishingRules& rul
       p.grid(shop ? "shelf" : "rack", numbered(shop ? "shelf" : "rack", row), 1.0, v, L - 1.0, v + shelf, 2.0,
              shelf, 20, 0, {shop ? "browse" : "store", "pick"});
     }
+  } else if (type == "assembly_seating") {
+    // A large community hall set out for an audience: a stage at a short wall (the rows run along
+    // the hall's length; the other short wall, then the wall facing the entrance, when a door
+    // leaves it no room), seat rows facing it in blocks between aisles, a cross aisle at the back.
+    std::vector<Placer> frames;
+    if (L > D) {
+      const int turn = rng.chance(0.5) ? 1 : 3;
+      frames.push_back(p.turned((p.side() + turn) % 4));
+      frames.push_back(p.turned((p.side() + 4 - turn) % 4));
+    }
+    frames.push_back(p);
+    const double aisle = std::max(1.1, rules.walkway_width);
+    // A stage where one fits, else a screen on the wall (a hall whose short walls are all doors).
+    std::optional<std::size_t> at;
+    double gap = 0.0;  // m kept between the last row and the far wall
+    for (const char* kind : {"stage", "screen"}) {
+      for (std::size_t k = 0; k < frames.size() && !at; ++k) {
+        Placer& q = frames[k];
+        const std::vector<std::string> use{std::string(kind) == "stage" ? "perform" : "watch"};
+        if (q.entity(kind, kind, {{q.len() / 2, q.depth()}}, kPi, use)) at = k;
+      }
+      if (at) {
+        gap = std::string(kind) == "stage" ? 3.2 + 1.5 : 2.6;
+        break;
+      }
+    }
+    Placer& q = frames[at.value_or(0)];
+    seat_rows(q, "seat", 0.3, 1.8, q.len() - 0.3, q.depth() - (at ? gap : 2.6), 1.1, 14, aisle,
+              {"sit", "watch"});
   } else if (type == "dining_area") {
     if (auto a = p.roi("seating_area", "seating", 0.8, 1.6, L - 0.8, D - 0.6))
       p.grid("table", "table", a->u0, a->v0, a->u1, a->v1, 2.0, 2.2, 40, 0, {"eat", "sit"});

@@ -1,6 +1,7 @@
 #include "core/floorplan/offline.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -135,6 +136,19 @@ bool stout_type(std::string_view type) {
 bool grouped_type(std::string_view type) {
   return stout_type(type) || type == "platform";
 }
+// Halls for an audience in rows facing a stage or screen: the auditorium family is laid out round them.
+bool audience_type(std::string_view type) {
+  return type == "auditorium" || type == "arena_floor";
+}
+
+// Corridor plans of this many rooms or more may be laid out in wings (half the seeds); from
+// kAlwaysWingRooms on they always are.
+constexpr std::size_t kWingRooms = 16;
+constexpr std::size_t kAlwaysWingRooms = 24;
+// A community hall is large (its main hall set out as an auditorium) from this many people in
+// the scenario or a main hall given this many square metres.
+constexpr int kAssemblyOccupants = 200;
+constexpr double kAssemblyHallArea = 250.0;
 
 std::string material_of(std::string_view domain, std::string_view type) {
   if (is_toilet_type(type) || type == "kitchen" || type == "kitchenette") return "ceramic_tile";
@@ -158,6 +172,8 @@ enum class Family {
   kHallWithRooms,      // a hall (concourse, sales floor …) with bands of rooms around it
   kOpenHall,      // one large hall divided into zones (check-outs, aisles, waiting …), rooms on one side
   kHomeOpenPlan,  // a home without a hallway: every room opens onto the living room (ProcTHOR-style)
+  kAuditorium,    // audience halls side by side, stage end against their backstage, foyer along their backs
+  kMultiWing,     // a large building: corridor wings with rooms on both sides, joined at a junction
 };
 
 std::string_view family_name(Family f) {
@@ -170,6 +186,10 @@ std::string_view family_name(Family f) {
       return "open_hall_zones";
     case Family::kHomeOpenPlan:
       return "home_open_plan";
+    case Family::kAuditorium:
+      return "auditorium";
+    case Family::kMultiWing:
+      return "multi_wing";
   }
   return "";
 }
@@ -347,6 +367,8 @@ class Layout {
             std::max(rooms_[i].area, dw.storage_area * 1.05 / static_cast<double>(stores.size()));
     }
 
+    if (family_ == Family::kMultiWing) return lay_out_wings(rng, style);
+
     // Caps at the ends of the circulation, bands of rooms along its sides.
     const bool corridor = is_corridor_type(rooms_[*circ_].type);
     // A hall entered from outside keeps one end free for its entrance, unless it is small (then
@@ -371,6 +393,14 @@ class Layout {
     // small program (a hall and up to five rooms), whose few rooms otherwise stand in few ways.
     if (home_open_plan_ || small)
       for (std::size_t i = 0; i < n; ++i) try_cap(i, 0.3);
+    // An auditorium's foyer may end in a service room (one that belongs to no hall).
+    if (family_ == Family::kAuditorium)
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto& chain = chains_[chain_of_[i]];
+        if (i != *circ_ && std::none_of(chain.begin(), chain.end(),
+                                        [&](std::size_t q) { return grouped_type(rooms_[q].type); }))
+          try_cap(i, 0.45);
+      }
     // Drawn from a stream of its own, so that larger programs keep their bytes.
     service_exit_ = small && rng.fork("service exit").chance(0.5);
     bool needs_two_bands = false;
@@ -394,7 +424,7 @@ class Layout {
     const bool single =
         family_ == Family::kOpenHall
             ? !needs_two_bands && band_rooms <= 8u
-            : !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) &&
+            : family_ != Family::kAuditorium && !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) &&
                   ((small && entrance_ == *circ_ && caps.size() == 2) || rng.chance(corridor ? 0.35 : 0.6));
     grouped_band_ = grouped ? static_cast<int>(rng.below(2)) : 0;
     std::vector<std::size_t> left[2], middle[2], right[2];
@@ -422,6 +452,7 @@ class Layout {
     for (std::size_t c = 0; c < order.size(); ++c) order[c] = c;
     rng.shuffle(order);
     double load[2] = {0, 0};
+    int halls_in[2] = {0, 0};  // auditorium: audience halls dealt to each band
     for (int b = 0; b < 2; ++b)
       for (auto* part : {&left[b], &right[b]})
         for (auto r : *part) load[b] += rooms_[r].area;
@@ -439,6 +470,15 @@ class Layout {
                         [&](std::size_t r) { return grouped_type(rooms_[r].type); })
                 ? grouped_band_
                 : 1 - grouped_band_;
+      if (family_ == Family::kAuditorium) {
+        const bool hall = std::any_of(chain.begin(), chain.end(),
+                                      [&](std::size_t r) { return grouped_type(rooms_[r].type); });
+        // A service room may stand beside the halls (shallower than they are), and a hall may
+        // face the others across the foyer (a multiplex).
+        if (!hall && rng.chance(0.5)) b = grouped_band_;
+        if (hall && halls_in[grouped_band_] > 0 && rng.chance(0.35)) b = 1 - grouped_band_;
+        if (hall) ++halls_in[b];
+      }
       if (single) b = 0;
       for (auto r : chain) {
         middle[b].push_back(r);
@@ -470,7 +510,9 @@ class Layout {
                                  std::none_of(behind.begin(), behind.end(), [&](const auto& bq) {
                                    return bq.first == q || bq.second == q;
                                  });
-          if (q_in_band && draw.chance(0.7)) {
+          // An audience hall's backstage always stands behind it, at its stage end.
+          if (q_in_band &&
+              ((family_ == Family::kAuditorium && audience_type(rooms_[q].type)) || draw.chance(0.7))) {
             behind.emplace_back(r, q);
           } else {
             kept.push_back(r);
@@ -483,11 +525,27 @@ class Layout {
       depth[b] = cm_up(rng.uniform(style.depth_lo, style.depth_hi));
       for (auto r : band[b]) depth[b] = std::max(depth[b], rooms_[r].min_dim);
     }
+    // A room beside an auditorium's halls that belongs to no hall keeps a depth of its own.
+    std::vector<int> own(n, 0);
+    bool hall_band[2] = {false, false};
+    auto of_hall = [&](std::size_t r) {
+      const auto& chain = chains_[chain_of_[r]];
+      return std::any_of(chain.begin(), chain.end(),
+                         [&](std::size_t q) { return grouped_type(rooms_[q].type); });
+    };
+    if (family_ == Family::kAuditorium)
+      for (int b = 0; b < 2; ++b) {
+        hall_band[b] = std::any_of(band[b].begin(), band[b].end(), of_hall);
+        if (!hall_band[b]) continue;
+        for (auto r : band[b])
+          if (!of_hall(r))
+            own[r] = std::max(cm_up(rng.uniform(style.depth_lo, style.depth_hi)), rooms_[r].min_dim);
+      }
     std::vector<int> width(n, 0);
     int length[2] = {0, 0};
     for (int b = 0; b < 2; ++b)
       for (auto r : band[b]) {
-        width[r] = cm_up(std::max(rooms_[r].area / m(depth[b]), m(rooms_[r].min_dim)));
+        width[r] = cm_up(std::max(rooms_[r].area / m(own[r] > 0 ? own[r] : depth[b]), m(rooms_[r].min_dim)));
         length[b] += width[r];
       }
 
@@ -564,8 +622,9 @@ class Layout {
     }
     for (int b = 0; b < 2; ++b)
       for (auto r : band[b]) {
-        rooms_[r].rect = b == 0 ? Rect{x_of[r], W, x_of[r] + width[r], W + depth[b]}
-                                : Rect{x_of[r], -depth[b], x_of[r] + width[r], 0};
+        const int d = own[r] > 0 ? own[r] : depth[b];
+        rooms_[r].rect =
+            b == 0 ? Rect{x_of[r], W, x_of[r] + width[r], W + d} : Rect{x_of[r], -d, x_of[r] + width[r], 0};
         rooms_[r].placed = true;
       }
     for (const auto& [r, q] : behind) {
@@ -577,8 +636,11 @@ class Layout {
       rooms_[r].placed = true;
     }
     for (auto cap : caps) {
-      const int y0 = band[1].empty() ? 0 : -depth[1];
-      const int y1 = W + (band[0].empty() ? 0 : depth[0]);
+      int y0 = band[1].empty() ? 0 : -depth[1];
+      int y1 = W + (band[0].empty() ? 0 : depth[0]);
+      // An auditorium's end room closes the foyer and the service band, not a band of halls.
+      if (hall_band[0]) y1 = W;
+      if (hall_band[1]) y0 = 0;
       // Public entrance rooms are not left as a sliver across the building's end.
       const std::string& t = rooms_[cap].type;
       const double stout = t == "lobby" || t == "reception" || t == "security" ? 0.4 * m(y1 - y0) : 0.0;
@@ -590,13 +652,124 @@ class Layout {
     for (const auto& r : rooms_)
       if (!r.placed) return "room '" + r.name + "' was not placed";
 
-    // Doors: one per edge on the shared wall, one to the outside.
-    std::vector<Rect> rects;
-    for (const auto& r : rooms_) rects.push_back(r.rect);
+    return doors_and_entrance(rng, dwelling);
+  }
+
+  // A multi-wing plan: two to four wings (an L, a T or a cross), each a corridor with a band of
+  // rooms on either side, joined at a square junction. The chains of rooms are dealt to the bands
+  // by area (some at random), each band set back from the junction by the deepest band so that
+  // neighbouring wings do not meet; the junction and the wing corridors are one zone, the hub.
+  std::optional<std::string> lay_out_wings(Rng& rng, const DomainStyle& style) {
+    const std::size_t n = rooms_.size();
+    hub_pieces_.clear();
+    hub_arms_ = {0, 0, 0, 0};
+    areas_.clear();
+    PlanRoom& c = rooms_[*circ_];
+    int W =
+        cm_up(std::max(plan_.corridor_width, m(std::max(door_w_, public_w_)) + 0.35) + rng.uniform(0.0, 0.3));
+    W = std::max(W, c.min_dim);
+    // Wings are long: as wide as a passing space all along.
+    for (const auto& k : constraints_)
+      if (k.constraint.name == "passing_space_width") W = std::max(W, cm_up(k.constraint.value + 0.02));
+    const std::size_t most = std::clamp<std::size_t>((n - 1) / 4, 2, 4);
+    const std::size_t wings = 2 + rng.below(static_cast<std::uint32_t>(most - 1));
+    const std::size_t bands = 2 * wings;
+    std::vector<std::vector<std::size_t>> band(bands);
+    std::vector<double> load(bands, 0.0);
+    std::vector<std::size_t> order(chains_.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    rng.shuffle(order);
+    for (auto ch : order) {
+      std::vector<std::size_t> chain = chains_[ch];
+      if (rng.chance(0.5)) std::reverse(chain.begin(), chain.end());
+      auto b = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+      if (rng.chance(0.25)) b = rng.below(static_cast<std::uint32_t>(bands));
+      for (auto r : chain) {
+        band[b].push_back(r);
+        load[b] += rooms_[r].area;
+      }
+    }
+    for (std::size_t w = 0; w < wings; ++w)
+      if (band[2 * w].empty() && band[2 * w + 1].empty()) return "a wing without rooms";
+    std::vector<int> depth(bands, 0);
+    std::vector<int> width(n, 0);
+    for (std::size_t b = 0; b < bands; ++b) {
+      depth[b] = cm_up(rng.uniform(style.depth_lo, style.depth_hi));
+      for (auto r : band[b]) depth[b] = std::max(depth[b], rooms_[r].min_dim);
+      for (auto r : band[b]) width[r] = cm_up(std::max(rooms_[r].area / m(depth[b]), m(rooms_[r].min_dim)));
+    }
+    const int off = *std::max_element(depth.begin(), depth.end());
+    // Laid out as a wing towards +x, then turned about the junction's centre to its side.
+    auto turn = [W](Rect r, std::size_t quarters) {
+      for (std::size_t k = 0; k < quarters; ++k) r = Rect{W - r.y1, r.x0, W - r.y0, r.x1};
+      return r;
+    };
+    c.rect = {0, 0, W, W};
+    c.placed = true;
+    for (std::size_t w = 0; w < wings; ++w) {
+      int length[2] = {0, 0};
+      for (int s = 0; s < 2; ++s)
+        for (auto r : band[2 * w + static_cast<std::size_t>(s)]) length[s] += width[r];
+      const int L = off + std::max({length[0], length[1], 300});
+      hub_arms_[w] = L;
+      hub_pieces_.push_back(turn(Rect{W, 0, W + L, W}, w));
+      for (int s = 0; s < 2; ++s) {
+        const std::size_t b = 2 * w + static_cast<std::size_t>(s);
+        int x = W + off;
+        for (auto r : band[b]) {
+          const Rect e =
+              s == 0 ? Rect{x, W, x + width[r], W + depth[b]} : Rect{x, -depth[b], x + width[r], 0};
+          rooms_[r].rect = turn(e, w);
+          rooms_[r].placed = true;
+          x += width[r];
+        }
+      }
+    }
+    for (const auto& r : rooms_)
+      if (!r.placed) return "room '" + r.name + "' was not placed";
+    return doors_and_entrance(rng, graph_.domain == "residential");
+  }
+
+  // The outline of a multi-wing hub (the junction and its wings), counter-clockwise from its
+  // lowest corner, in world coordinates.
+  [[nodiscard]] std::vector<Point> hub_ring() const {
+    const Rect& j = rooms_[*circ_].rect;
+    const auto& a = hub_arms_;
+    std::vector<std::pair<int, int>> corners{{j.x0, j.y0}};
+    if (a[3] > 0) corners.insert(corners.end(), {{j.x0, j.y0 - a[3]}, {j.x1, j.y0 - a[3]}});
+    corners.emplace_back(j.x1, j.y0);
+    if (a[0] > 0) corners.insert(corners.end(), {{j.x1 + a[0], j.y0}, {j.x1 + a[0], j.y1}});
+    corners.emplace_back(j.x1, j.y1);
+    if (a[1] > 0) corners.insert(corners.end(), {{j.x1, j.y1 + a[1]}, {j.x0, j.y1 + a[1]}});
+    corners.emplace_back(j.x0, j.y1);
+    if (a[2] > 0) corners.insert(corners.end(), {{j.x0 - a[2], j.y1}, {j.x0 - a[2], j.y0}});
+    std::vector<Point> ring;
+    const std::size_t k = corners.size();
+    for (std::size_t i = 0; i < k; ++i) {
+      const auto& p = corners[(i + k - 1) % k];
+      const auto& q = corners[i];
+      const auto& r = corners[(i + 1) % k];
+      const long cross = static_cast<long>(q.first - p.first) * (r.second - q.second) -
+                         static_cast<long>(q.second - p.second) * (r.first - q.first);
+      if (cross != 0) ring.push_back(point_of(q.first, q.second));  // a corner, not a point on a side
+    }
+    if (geometry::signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+    const auto first = std::min_element(ring.begin(), ring.end(), [](const Point& p, const Point& q) {
+      return p.y < q.y || (p.y == q.y && p.x < q.x);
+    });
+    std::rotate(ring.begin(), first, ring.end());
+    return ring;
+  }
+
+  // Doors: one per edge on the shared wall, one to the outside; then the orientation.
+  std::optional<std::string> doors_and_entrance(Rng& rng, bool dwelling) {
+    const std::vector<Rect> rects = all_rects();
     std::set<std::string> names;
     for (const auto& [an, bn] : graph_.adjacency) {
       const std::size_t a = index_.at(an), b = index_.at(bn);
-      const auto wall = shared_wall(rects[a], rects[b]);
+      const auto wall = a == *circ_   ? hub_wall(rects, b)
+                        : b == *circ_ ? hub_wall(rects, a)
+                                      : shared_wall(rects[a], rects[b]);
       if (!wall) return "rooms '" + an + "' and '" + bn + "' do not touch";
       const bool open = !dwelling && (is_public(a) || is_public(b));
       const int w = open ? public_w_ : door_w_;
@@ -607,7 +780,7 @@ class Layout {
         return "the wall between '" + an + "' and '" + bn + "' is too short";
     }
     {
-      auto walls = outside_walls(rects, entrance_);
+      auto walls = outside_of(rects, entrance_);
       std::vector<Wall> fit;
       for (const auto& wl : walls)
         if (wl.hi - wl.lo >= entrance_w_ + 60) fit.push_back(wl);
@@ -629,8 +802,10 @@ class Layout {
       auto [tx, ty] = turned(x, y);
       return Point{m(tx - min.first), m(ty - min.second)};
     };
-    for (const auto& r : rooms_) {
-      Zone z{r.name, r.type, material_of(graph_.domain, r.type), Polygon{ring_of(r.rect), {}}};
+    for (std::size_t i = 0; i < rooms_.size(); ++i) {
+      const PlanRoom& r = rooms_[i];
+      Zone z{r.name, r.type, material_of(graph_.domain, r.type),
+             Polygon{i == *circ_ && !hub_pieces_.empty() ? hub_ring() : ring_of(r.rect), {}}};
       zones.push_back(z);
       builder.add_zone(std::move(z));
     }
@@ -656,8 +831,7 @@ class Layout {
     for (const auto& d : doors_)
       if (d.connects.size() == 1) exits.push_back(&d);
     if (exits.empty()) return std::nullopt;
-    std::vector<Rect> rects;
-    for (const auto& r : rooms_) rects.push_back(r.rect);
+    const std::vector<Rect> rects = all_rects();
     double diagonal = 0.0;
     for (const Rect& a : rects)
       for (const Rect& b : rects)
@@ -670,11 +844,13 @@ class Layout {
     const int w = wide ? std::max(public_w_, entrance_w_) : public_w_;
     bool near_has_wall = false;
     for (std::size_t r = 0; r < rooms_.size(); ++r)
-      if (rooms_[r].name == near && !outside_walls(rects, r).empty()) near_has_wall = true;
+      if (rooms_[r].name == near && !outside_of(rects, r).empty()) near_has_wall = true;
     auto base_tier = [&](std::size_t r) {
       const std::string& t = rooms_[r].type;
       if (near_has_wall) return rooms_[r].name == near ? 0 : 3;
       if (is_circulation_type(t)) return 0;
+      // An audience hall is left straight from its side walls (IBC 1029: assembly seating).
+      if (family_ == Family::kAuditorium && audience_type(t)) return 0;
       if (is_public(r) || t == "dining_hall" || t == "sales_floor" || t == "concourse" ||
           t == "open_office" || t == "warehouse_floor" || t == "loading_bay")
         return 1;
@@ -698,7 +874,7 @@ class Layout {
     for (std::size_t r = 0; r < rooms_.size(); ++r) {
       const int t = tier(r);
       if (t == 3) continue;
-      for (const Wall& wall : outside_walls(rects, r)) {
+      for (const Wall& wall : outside_of(rects, r)) {
         const int lo = wall.lo + 15 + (w + 1) / 2, hi = wall.hi - 15 - (w + 1) / 2;
         if (lo > hi) continue;
         for (int at : {lo, (lo + hi) / 2 / 5 * 5, hi, (3 * lo + hi) / 4 / 5 * 5, (lo + 3 * hi) / 4 / 5 * 5}) {
@@ -747,8 +923,8 @@ class Layout {
   }
   [[nodiscard]] std::pair<int, int> origin() const {
     int min_x = INT32_MAX, min_y = INT32_MAX;
-    for (const auto& r : rooms_)
-      for (auto [x, y] : {turned(r.rect.x0, r.rect.y0), turned(r.rect.x1, r.rect.y1)}) {
+    for (const Rect& r : all_rects())
+      for (auto [x, y] : {turned(r.x0, r.y0), turned(r.x1, r.y1)}) {
         min_x = std::min(min_x, x);
         min_y = std::min(min_y, y);
       }
@@ -773,13 +949,28 @@ class Layout {
   }
 
   // The layout family, chosen from the building type (the hub's type), the room count and the seed
-  // (a stream of its own, so that plans of the other families keep their bytes).
-  void choose_family(std::uint64_t seed) {
+  // (streams of their own, so that plans of the other families keep their bytes).
+  void choose_family(std::uint64_t seed, const WorldRequirements& wants) {
     const std::string hub = canonical_room_type(graph_.rooms[*circ_].type);
+    const std::size_t n = graph_.rooms.size();
+    bool audience = false;  // a hall for an audience that opens onto the hub
+    for (std::size_t i = 0; i < n; ++i)
+      audience = audience || (on_hub_[i] && audience_type(graph_.rooms[i].type));
     if (home_open_plan_) {
       family_ = Family::kHomeOpenPlan;
     } else if (is_corridor_type(hub)) {
       family_ = Family::kCorridorWithRooms;
+      // A large building: wings joined at a junction, always from kAlwaysWingRooms rooms on.
+      if (n >= kWingRooms && (n >= kAlwaysWingRooms || Rng(seed, fnv1a64("multi_wing")).chance(0.5)))
+        family_ = Family::kMultiWing;
+    } else if (hub == "main_hall" && assembly(wants)) {
+      // A large community hall: its main hall, the hub, is set out for an audience (stage, seat rows).
+      family_ = Family::kAuditorium;
+      assembly_hub_ = true;
+    } else if (audience && (n >= kAlwaysWingRooms || Rng(seed, fnv1a64("auditorium")).chance(0.6))) {
+      // Theatres, cinemas, concert halls and arenas: the plan is laid out round their audience
+      // halls (on 60 % of the seeds, every seed for a large venue; else a hall family, as before).
+      family_ = Family::kAuditorium;
     } else {
       Rng pick(seed, fnv1a64("layout_family"));
       const bool open = !open_hall_areas(hub, graph_.domain).empty() && graph_.rooms.size() <= 24;
@@ -788,6 +979,18 @@ class Layout {
   }
   [[nodiscard]] Family family() const { return family_; }
   [[nodiscard]] const std::string& hub_name() const { return graph_.rooms[*circ_].name; }
+  // Whether a main hall is set out for an audience: many people (or a large hall given) and no
+  // counters, tables or desks asked for (a polling station, a meeting at tables, a dinner).
+  [[nodiscard]] bool assembly(const WorldRequirements& wants) const {
+    const bool large = (wants.occupants && *wants.occupants >= kAssemblyOccupants) ||
+                       graph_.rooms[*circ_].area.value_or(0.0) >= kAssemblyHallArea;
+    return large && std::none_of(wants.features.begin(), wants.features.end(), [](const auto& f) {
+             return f.feature == Feature::kCounter || f.feature == Feature::kTable ||
+                    f.feature == Feature::kDesk;
+           });
+  }
+  // Whether the hub itself is the audience hall (a large community hall's main hall).
+  [[nodiscard]] bool assembly_hub() const { return assembly_hub_; }
 
   // The zones of an open hall as WorldBuilder would see rooms (for furnish_areas), with the hall's
   // doors on their edges and an opening between neighbours; nothing for the other families.
@@ -850,8 +1053,7 @@ class Layout {
   // (15 cm from the wall's ends, 30 cm from the openings of doors near the wall's line). Returns
   // the exits' total width in cm; no randomness.
   int widen_exits(int each) {
-    std::vector<Rect> rects;
-    for (const auto& r : rooms_) rects.push_back(r.rect);
+    const std::vector<Rect> rects = all_rects();
     int total = 0;
     for (auto& d : doors_) {
       if (d.connects.size() != 1) continue;
@@ -860,7 +1062,7 @@ class Layout {
       int& at = d.vertical_wall ? d.y : d.x;
       std::optional<Wall> on;
       if (room != index_.end())
-        for (const Wall& wall : outside_walls(rects, room->second))
+        for (const Wall& wall : outside_of(rects, room->second))
           if (wall.vertical == d.vertical_wall && wall.c == c && at >= wall.lo && at <= wall.hi) on = wall;
       if (!on || d.width >= each) {
         total += d.width;
@@ -915,6 +1117,32 @@ class Layout {
   [[nodiscard]] const PlanRequirement& plan() const { return plan_; }
 
  private:
+  // The rooms' rectangles, then the hub's further pieces (the wing corridors of a multi-wing plan).
+  [[nodiscard]] std::vector<Rect> all_rects() const {
+    std::vector<Rect> rects;
+    rects.reserve(rooms_.size() + hub_pieces_.size());
+    for (const auto& r : rooms_) rects.push_back(r.rect);
+    rects.insert(rects.end(), hub_pieces_.begin(), hub_pieces_.end());
+    return rects;
+  }
+  // Room r's outside walls (every piece of the hub's).
+  [[nodiscard]] std::vector<Wall> outside_of(const std::vector<Rect>& rects, std::size_t r) const {
+    std::vector<Wall> walls = outside_walls(rects, r);
+    if (r == *circ_)
+      for (std::size_t p = 0; p < hub_pieces_.size(); ++p)
+        for (const Wall& w : outside_walls(rects, rooms_.size() + p)) walls.push_back(w);
+    return walls;
+  }
+  // The longest wall room r shares with any piece of the hub.
+  [[nodiscard]] std::optional<Wall> hub_wall(const std::vector<Rect>& rects, std::size_t r) const {
+    std::optional<Wall> best = shared_wall(rects[*circ_], rects[r]);
+    for (std::size_t p = 0; p < hub_pieces_.size(); ++p) {
+      const auto w = shared_wall(rects[rooms_.size() + p], rects[r]);
+      if (w && (!best || w->hi - w->lo > best->hi - best->lo)) best = w;
+    }
+    return best;
+  }
+
   bool is_public(std::size_t r) const {
     const std::string& t = rooms_[r].type;
     return is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room" ||
@@ -960,8 +1188,13 @@ class Layout {
   int grouped_band_ = 0;         // the band stout halls and platforms go to
   bool home_open_plan_ = false;  // the living room is the hub (no hallway in the graph)
   bool service_exit_ = false;    // a small program's second exit from a service room (this attempt)
+  bool assembly_hub_ = false;    // auditorium family: the hub is set out as the audience hall
   Family family_ = Family::kCorridorWithRooms;
   std::vector<std::pair<std::string, Rect>> areas_;  // open hall: its zones (type, rectangle)
+  // Multi-wing plan: the hub's rect is the junction; these are its wing corridors, and hub_arms_
+  // their lengths beyond the junction towards +x, +y, -x, -y (0: no wing there).
+  std::vector<Rect> hub_pieces_;
+  std::array<int, 4> hub_arms_{};
   int rotate_ = 0;
   bool mirror_ = false;
 };
@@ -1145,11 +1378,11 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
                 {{"/rooms", "needs at least one room"}});
   Layout layout(graph, constraints);
   if (auto s = layout.prepare(); !s) return tl::unexpected(s.error());
-  layout.choose_family(options.seed);
-  const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
   const WorldRequirements& wants = options.requirements;
   const std::optional<double> occupants =
       wants.occupants ? std::optional<double>(*wants.occupants) : std::nullopt;
+  layout.choose_family(options.seed, wants);
+  const FurnishingRules rules = furnishing_rules(constraints, layout.plan());
   const std::string& domain = layout.graph().domain;
   Rng rng(options.seed, fnv1a64("floorplan"));
   double scale = 1.0;
@@ -1186,8 +1419,19 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       std::vector<DoorSpec> area_doors;
       layout.emit_areas(doors, areas, area_doors);
       std::vector<std::string> open_halls;
-      if (!areas.empty()) open_halls.push_back(layout.hub_name());
+      if (!areas.empty() || layout.assembly_hub()) open_halls.push_back(layout.hub_name());
       Furnishing f = furnish(zones, doors, rules, furnishing, open_halls, furnishing_memo);
+      if (layout.assembly_hub()) {
+        // The hub set out for an audience: furnished as an area of its own kind (same zone name).
+        for (const auto& z : zones)
+          if (z.name == layout.hub_name()) {
+            const std::vector<Zone> hall{{z.name, "assembly_seating", "", z.polygon}};
+            Rng by_area = furnishing_rng.fork("assembly");
+            Furnishing a = furnish_areas(hall, doors, rules, by_area);
+            for (auto& r : a.rois) f.rois.push_back(std::move(r));
+            for (auto& e : a.entities) f.entities.push_back(std::move(e));
+          }
+      }
       if (!areas.empty()) {
         Rng by_area = furnishing_rng.fork("areas");
         Furnishing a = furnish_areas(areas, area_doors, rules, by_area);

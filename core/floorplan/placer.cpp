@@ -648,7 +648,7 @@ std::optional<Placer> placer_for(const Zone& z, std::span<const Zone> zones, std
   if (type == "sales_floor" || type == "dining_hall" || type == "lobby" || type == "reception" ||
       type == "security" || type == "concourse" || type == "ticket_hall" || type == "foyer" ||
       type == "main_hall" || type == "restaurant" || type == "mall_concourse" || type == "production_floor" ||
-      type == "reading_room")
+      type == "reading_room" || type == "assembly_seating")
     pick([](const DoorAt& d) { return d.exterior; });
   pick([](const DoorAt& d) { return !d.exterior && is_circulation_type(d.other_type); });
   pick([](const DoorAt&) { return true; });

@@ -179,6 +179,11 @@ int floor_plan(socsim::knowledge::KnowledgeBase& kb, const std::string& label, c
 SceneGraph big_mall() {
   return room_program("mall", {{"shop_unit", 50}, {"private_office", 2}, {"toilet", 6}});
 }
+// A 60-room hospital (corridor, lobby, 50 patient rooms, nurse station, 4 treatment rooms, 3
+// toilets): always laid out in wings (the multi_wing family).
+SceneGraph big_hospital() {
+  return room_program("hospital", {{"patient_room", 50}, {"treatment_room", 4}, {"toilet", 3}});
+}
 SceneGraph big_arena() {
   return room_program(
       "arena", {{"concession", 20}, {"locker_room", 10}, {"first_aid", 2}, {"storage", 6}, {"toilet", 20}});
@@ -187,7 +192,7 @@ SceneGraph big_arena() {
 // A 10-room hospital plan (lobby, corridor, 3 patient rooms, nurse station, 2 treatment rooms,
 // 2 toilets), a 60-room mall (concourse, 50 shops, food court, 2 offices, 6 toilets) and a
 // 60-room arena (concourse, arena floor, 20 concession stands, 10 locker rooms, 2 first-aid
-// rooms, 6 stores, 20 toilets).
+// rooms, 6 stores, 20 toilets; the auditorium family) and a 60-room hospital in wings.
 int floor_plans(int runs, const std::string& only) {
   const auto db =
       std::filesystem::temp_directory_path() / ("socsim-bench-world-" + std::to_string(::getpid()) + ".db");
@@ -207,7 +212,8 @@ int floor_plans(int runs, const std::string& only) {
          {std::tuple{"floor_plan_offline_10_rooms", "hospital",
                      room_program("hospital", {{"patient_room", 3}}), runs},
           std::tuple{"floor_plan_offline_60_room_mall", "mall", big_mall(), big_runs},
-          std::tuple{"floor_plan_offline_60_room_arena", "arena", big_arena(), big_runs}})
+          std::tuple{"floor_plan_offline_60_room_arena", "arena", big_arena(), big_runs},
+          std::tuple{"floor_plan_offline_60_room_hospital", "hospital", big_hospital(), big_runs}})
       if (status == 0 && wanted(label)) status = floor_plan(kb, label, domain, graph, n);
   }
   std::error_code ec;
@@ -304,5 +310,5 @@ SOCSIM_BENCH("world-digest",
 
 SOCSIM_BENCH("world",
              "world build+validate (10 rooms), 256x256 geodesic field, world.yaml round trip, offline "
-             "floor plans (10-room hospital, 60-room mall and arena)",
+             "floor plans (10-room hospital, 60-room mall, arena and hospital)",
              run_world);

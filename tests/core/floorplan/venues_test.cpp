@@ -17,6 +17,7 @@
 #include "core/floorplan/offline.hpp"
 #include "core/geometry/planar.hpp"
 #include "core/knowledge/types.hpp"
+#include "core/world/footprint.hpp"
 #include "core/world/layout_check.hpp"
 #include "core/world/pedsim_import.hpp"
 #include "core/world/world_export.hpp"
@@ -221,12 +222,15 @@ std::string arrangement(const World& w) {
 }
 
 TEST_F(Venues, TwentySeedsOfOnePromptGiveAtLeastFifteenArrangements) {
-  for (const char* prompt : {"a hospital ward with six patient rooms, a waiting room and two treatment rooms",
-                             "guests checking in at a small hotel", "visitors in a museum",
-                             "passengers in the station concourse", "a family at home in their small flat",
-                             // Programs of four or five rooms (a hall and three or four rooms).
-                             "shoppers at the supermarket check-outs", "lunch in the office canteen",
-                             "dinner at a busy restaurant", "voters at the polling station"}) {
+  for (const char* prompt :
+       {"a hospital ward with six patient rooms, a waiting room and two treatment rooms",
+        "guests checking in at a small hotel", "visitors in a museum", "passengers in the station concourse",
+        "a family at home in their small flat",
+        // Programs of four or five rooms (a hall and three or four rooms).
+        "shoppers at the supermarket check-outs", "lunch in the office canteen",
+        "dinner at a busy restaurant", "voters at the polling station",
+        // The auditorium family (a theatre) and the multi-wing family (26 rooms).
+        "an evening at the cinema", "residents of a care home with eighteen residents' rooms"}) {
     auto g = scene_graph_from_prompt(prompt);
     ASSERT_TRUE(g) << prompt;
     std::set<std::string> seen;
@@ -256,15 +260,89 @@ TEST_F(Venues, TheArrangementSignatureSeesOrderNotSize) {
   EXPECT_THAT(arrangement(a->world), ::testing::HasSubstr("gallery|gallery"));  // rooms en suite
 }
 
+// Programs large enough for wings: a 19-room hospital, a 20-room university and a 26-room care
+// home (always in wings), besides the 16-room hotel of the default program.
+std::vector<SceneGraph> large_programs() {
+  return {room_program("hospital", {{"patient_room", 12}}),
+          room_program("university", {{"seminar_room", 8}, {"private_office", 4}}),
+          room_program("care_home", {{"resident_room", 18}}), room_program("hotel")};
+}
+
+// An auditorium plan: every audience hall (an auditorium, an arena floor, a large community hall's
+// main hall) has seats in rows behind one another, every seat facing the screen or stage at the
+// far end, and aisles (walkways) between the blocks.
+void expect_audience_halls(const World& w, const std::string& where) {
+  int halls = 0;
+  for (const auto& z : w.zones()) {
+    const bool seated = std::any_of(w.entities().begin(), w.entities().end(), [&](const Entity& e) {
+      return e.type == "seat" && e.name.rfind(z.name + "_seat_r", 0) == 0;
+    });
+    if (z.type != "auditorium" && z.type != "arena_floor" && !(z.type == "main_hall" && seated)) continue;
+    ++halls;
+    std::vector<const Entity*> seats;
+    const Entity* front = nullptr;
+    for (const auto& e : w.entities()) {
+      if (e.name.rfind(z.name + "_", 0) != 0) continue;
+      if (e.type == "seat") seats.push_back(&e);
+      if (e.type == "stage" || (e.type == "screen" && !front)) front = &e;
+    }
+    ASSERT_NE(front, nullptr) << where << ": no screen or stage in " << z.name;
+    EXPECT_GE(seats.size(), 20u) << where << ": " << z.name;
+    std::set<long> rows;
+    for (const Entity* s : seats) {
+      const double dx = front->pose.x - s->pose.x, dy = front->pose.y - s->pose.y;
+      EXPECT_GT(std::cos(s->pose.yaw) * dx + std::sin(s->pose.yaw) * dy, 0.0)
+          << where << ": " << s->name << " faces away from " << front->name;
+      rows.insert(std::lround(std::cos(s->pose.yaw) * s->pose.x + std::sin(s->pose.yaw) * s->pose.y));
+    }
+    EXPECT_GE(rows.size(), 2u) << where << ": " << z.name << " has one row";
+    // Aisles a person 0.5 m wide walks along: at least that wide, no seat reaching into them.
+    int aisles = 0;
+    for (auto id : w.rois_of_kind("walkway")) {
+      const Roi& aisle = w.roi(id);
+      if (aisle.name.rfind(z.name + "_aisle", 0) != 0) continue;
+      ++aisles;
+      const auto b = geometry::bounds(aisle.polygon.outer);
+      EXPECT_GE(std::min(b.width(), b.height()), 0.5) << where << ": " << aisle.name;
+      for (const Entity* s : seats) {
+        const auto f = geometry::bounds(footprint_polygon(s->type, s->pose).outer);
+        EXPECT_FALSE(f.min.x < b.max.x - 0.01 && b.min.x < f.max.x - 0.01 && f.min.y < b.max.y - 0.01 &&
+                     b.min.y < f.max.y - 0.01)
+            << where << ": " << s->name << " in " << aisle.name;
+      }
+    }
+    EXPECT_GE(aisles, 2) << where << ": " << z.name;
+  }
+  EXPECT_GE(halls, 1) << where;
+}
+
+// A multi-wing plan: one corridor zone, not a rectangle (an L, T or cross: 6, 8 or 12 corners),
+// with rooms along at least two of its wings.
+void expect_wings(const World& w, const std::string& where) {
+  int corridors = 0;
+  for (const auto& z : w.zones()) {
+    if (z.type != "corridor") continue;
+    ++corridors;
+    std::size_t corners = z.polygon.outer.size();
+    if (corners > 1 && z.polygon.outer.front() == z.polygon.outer.back()) --corners;
+    EXPECT_TRUE(corners == 6 || corners == 8 || corners == 12) << where << ": " << corners << " corners";
+  }
+  EXPECT_EQ(corridors, 1) << where;
+}
+
 // Every layout family is built, and each plan of it is as clean as the others: valid, compliant,
 // every zone and thing reachable, doors on shared walls, the scene graph's rooms and adjacencies
 // kept exactly (a door for every edge, between the two rooms it names), the family recorded.
 TEST_F(Venues, EveryLayoutFamilyIsBuiltCleanAndKeepsTheSceneGraph) {
   std::map<std::string, int> families;
+  std::vector<SceneGraph> graphs;
   for (std::string_view type :
        {"supermarket", "retail", "canteen", "warehouse", "train_station", "airport", "residential",
-        "hospital", "museum", "theatre", "mall", "factory", "restaurant"}) {
-    const SceneGraph g = room_program(type);
+        "hospital", "museum", "theatre", "mall", "factory", "restaurant", "arena"})
+    graphs.push_back(room_program(type));
+  for (auto& g : large_programs()) graphs.push_back(std::move(g));
+  for (const SceneGraph& g : graphs) {
+    const std::string type = g.domain;
     const WorldRequirements wants = typical_request(type);
     for (std::uint64_t seed = 0; seed < 8; ++seed) {
       OfflineOptions o;
@@ -312,10 +390,62 @@ TEST_F(Venues, EveryLayoutFamilyIsBuiltCleanAndKeepsTheSceneGraph) {
         EXPECT_EQ(zones_of(plan->world, "hallway"), 0);
         EXPECT_EQ(zones_of(plan->world, "corridor"), 0);
       }
+      if (family == "auditorium") expect_audience_halls(plan->world, type + " seed " + std::to_string(seed));
+      if (family == "multi_wing") expect_wings(plan->world, type + " seed " + std::to_string(seed));
     }
   }
-  for (const char* f : {"corridor_with_rooms", "hall_with_rooms", "open_hall_zones", "home_open_plan"})
+  for (const char* f : {"corridor_with_rooms", "hall_with_rooms", "open_hall_zones", "home_open_plan",
+                        "auditorium", "multi_wing"})
     EXPECT_GE(families[f], 4) << f;
+}
+
+// The two newest families (the quick check run in CI; the tests above run them over more seeds):
+// a theatre laid out round its auditoria, a 26-room care home in wings and a community hall for
+// 300 people whose main hall is set out with seat rows, each valid, compliant, clean and with the
+// things its family promises.
+TEST_F(Venues, AnAuditoriumAndAMultiWingPlanAreClean) {
+  for (const auto& [g, family, seed] :
+       {std::tuple{room_program("theatre"), "auditorium", 1},
+        std::tuple{large_programs()[2], "multi_wing", 1},
+        // A community hall for 300 people: its main hall set out as the audience hall.
+        std::tuple{room_program("community_hall"), "auditorium", 1},
+        std::tuple{room_program("community_hall"), "auditorium", 2}}) {
+    OfflineOptions o;
+    o.seed = static_cast<std::uint64_t>(seed);
+    o.requirements = typical_request(g.domain);
+    if (g.domain == "community_hall") o.requirements.occupants = 300;
+    auto plan = generate_floor_plan(g, constraints(g.domain), o);
+    ASSERT_TRUE(plan) << g.domain << ": " << plan.error().message();
+    EXPECT_EQ(plan->provenance.at("layout_family"), family);
+    EXPECT_TRUE(plan->compliance.passed) << g.domain;
+    const LayoutCheck check = check_layout(plan->world);
+    EXPECT_TRUE(check.ok()) << g.domain << ":\n" << check.summary();
+    EXPECT_EQ(plan->scene_graph.rooms, g.rooms);
+    EXPECT_EQ(plan->scene_graph.adjacency, g.adjacency);
+    if (std::string(family) == "auditorium") expect_audience_halls(plan->world, g.domain);
+    if (std::string(family) == "multi_wing") expect_wings(plan->world, g.domain);
+  }
+}
+
+// A community hall for 300 people × 10 seeds: the auditorium family with the main hall set out
+// with seat rows facing a stage (or a screen), clean, compliant, the scene graph kept (heavy).
+TEST_F(Venues, EveryLayoutFamilyHoldsALargeCommunityHall) {
+  const SceneGraph g = room_program("community_hall");
+  for (std::uint64_t seed = 0; seed < 10; ++seed) {
+    OfflineOptions o;
+    o.seed = seed;
+    o.requirements = typical_request("community_hall");
+    o.requirements.occupants = 300;
+    auto plan = generate_floor_plan(g, constraints("community_hall"), o);
+    ASSERT_TRUE(plan) << seed << ": " << plan.error().message();
+    EXPECT_EQ(plan->provenance.at("layout_family"), "auditorium") << seed;
+    EXPECT_TRUE(plan->compliance.passed) << seed;
+    const LayoutCheck check = check_layout(plan->world);
+    EXPECT_TRUE(check.ok()) << seed << ":\n" << check.summary();
+    EXPECT_EQ(plan->scene_graph.rooms, g.rooms);
+    EXPECT_EQ(plan->scene_graph.adjacency, g.adjacency);
+    expect_audience_halls(plan->world, "community hall seed " + std::to_string(seed));
+  }
 }
 
 // Every simulator and map format is produced for a plan of every family and reads back: SVG and
@@ -323,13 +453,18 @@ TEST_F(Venues, EveryLayoutFamilyIsBuiltCleanAndKeepsTheSceneGraph) {
 // with metadata naming it, and the pedsim scenario re-imports with one obstacle per wall.
 TEST_F(Venues, EveryLayoutFamilyExportsToEveryFormat) {
   std::map<std::string, int> exported;
-  for (std::string_view type : {"supermarket", "train_station", "residential", "hospital", "museum"}) {
-    const SceneGraph g = room_program(type);
+  std::vector<SceneGraph> graphs;
+  for (std::string_view type :
+       {"supermarket", "train_station", "residential", "hospital", "museum", "theatre"})
+    graphs.push_back(room_program(type));
+  graphs.push_back(large_programs().front());
+  for (const SceneGraph& g : graphs) {
+    const std::string type = g.domain;
     for (std::uint64_t seed = 0; seed < 4; ++seed) {
       OfflineOptions o;
       o.seed = seed;
       o.requirements = typical_request(type);
-      auto plan = generate_floor_plan(g, constraints(std::string(type)), o);
+      auto plan = generate_floor_plan(g, constraints(type), o);
       ASSERT_TRUE(plan) << type << " seed " << seed << ": " << plan.error().message();
       const std::string family = plan->provenance.at("layout_family");
       if (exported[family] >= 2) continue;
@@ -372,7 +507,8 @@ TEST_F(Venues, EveryLayoutFamilyExportsToEveryFormat) {
       EXPECT_EQ(xml->children_named("obstacle").size(), plan->world.walls().size()) << where;
     }
   }
-  for (const char* f : {"corridor_with_rooms", "open_hall_zones", "home_open_plan"})
+  for (const char* f :
+       {"corridor_with_rooms", "open_hall_zones", "home_open_plan", "auditorium", "multi_wing"})
     EXPECT_GE(exported[f], 1) << f << " not exported";
 }
 
