@@ -289,10 +289,11 @@ std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestSce
   return tasks;
 }
 
-MethodSuite::MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts)
+MethodSuite::MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts,
+                         const household::HouseholdKnowledge& knowledge)
     : recent_(static_cast<double>(request.recent)),
       prior_(std::make_shared<const ScenePriorEstimator>(std::move(counts))),
-      hint_(prior_, request.hint_trust),
+      hint_(prior_, knowledge, request.hint_trust),
       osg_(request.alpha) {}
 
 std::vector<EpisodeResult> MethodSuite::run(const TestScene& t, const NavTask& task, int max_steps) const {
@@ -335,7 +336,7 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
       return fail(ErrorCode::kValidation,
                   "the scene prior was counted on a house that is not a training house");
   const auto t0 = std::chrono::steady_clock::now();
-  const MethodSuite suite(request, counts);
+  const MethodSuite suite(request, counts, knowledge);
   struct SceneOutcome {
     std::vector<NavTask> tasks;
     std::vector<std::vector<Outcome>> outcomes;
@@ -460,7 +461,7 @@ Result<Json> replay_task(const BenchmarkRequest& request, int index,
                          std::shared_ptr<const PlacementCounts> counts) {
   if (index < 0) return fail(ErrorCode::kNotFound, "no such episode");
   int seen = 0;
-  const MethodSuite suite(request, std::move(counts));
+  const MethodSuite suite(request, std::move(counts), knowledge);
   for (int s = 0; s < request.scenes; ++s) {
     auto scene = make_test_scene(request, s, knowledge, pool);
     if (!scene) return tl::unexpected(scene.error());

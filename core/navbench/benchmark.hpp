@@ -124,7 +124,8 @@ struct RunHooks {
 // The estimators and planners of every method, built once (the scene prior from `counts`).
 class MethodSuite {
  public:
-  MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts);
+  MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts,
+              const household::HouseholdKnowledge& knowledge);
   // The episodes of one task under every method, in methods() order.
   [[nodiscard]] std::vector<EpisodeResult> run(const TestScene& scene, const NavTask& task,
                                                int max_steps) const;
