@@ -10,6 +10,7 @@
 #include "core/common/json_check.hpp"
 #include "core/common/rng.hpp"
 #include "core/household/household_document.hpp"
+#include "core/household/procthor.hpp"
 
 namespace socsim::navbench {
 namespace {
@@ -140,6 +141,29 @@ Json to_json(const BenchmarkRequest& r) {
           {"alpha", r.alpha}};
 }
 
+Result<std::vector<std::shared_ptr<const household::House>>> read_procthor_houses(
+    std::string_view jsonl, const household::HouseholdKnowledge& knowledge) {
+  std::vector<std::shared_ptr<const household::House>> out;
+  std::size_t at = 0;
+  for (int line = 0; at <= jsonl.size(); ++line) {
+    const std::size_t end = std::min(jsonl.find('\n', at), jsonl.size());
+    const std::string_view text = jsonl.substr(at, end - at);
+    at = end + 1;
+    if (text.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+    const std::string pointer = "/houses/" + std::to_string(out.size());
+    auto json = parse_json_untrusted(std::string(text));
+    if (!json)
+      return fail(ErrorCode::kValidation, "line " + std::to_string(line + 1) + " is not JSON",
+                  {FieldError{pointer, json.error().message()}});
+    auto house = household::import_procthor(*json, knowledge, "procthor-" + std::to_string(out.size()));
+    if (!house) return tl::unexpected(house.error().under(pointer));
+    out.push_back(std::make_shared<const House>(std::move(*house)));
+  }
+  if (out.empty())
+    return fail(ErrorCode::kValidation, "no houses", {FieldError{"/houses", "holds no ProcTHOR house"}});
+  return out;
+}
+
 Result<ResidentPool> make_resident_pool(const household::HouseholdKnowledge& knowledge, std::uint64_t seed,
                                         int days) {
   ResidentPool pool;
@@ -197,11 +221,15 @@ Result<TestScene> make_test_scene(const BenchmarkRequest& request, int index,
     Rng rng(t.seed, fnv1a64("navbench/scene"));
     const int rooms = static_cast<int>(hard ? rng.between(8, 10) : rng.between(4, 7));
     const int wanted = static_cast<int>(hard ? rng.between(3, 4) : rng.between(1, 2));
-    auto house = household::generate_house({rooms, std::nullopt, t.seed}, knowledge);
-    if (!house) continue;
-    const int bedrooms = static_cast<int>(house->rooms_of(household::RoomType::kBedroom).size());
+    if (!request.houses.empty()) {
+      t.house = request.houses[static_cast<std::size_t>(index) % request.houses.size()];
+    } else {
+      auto house = household::generate_house({rooms, std::nullopt, t.seed}, knowledge);
+      if (!house) continue;
+      t.house = std::make_shared<const House>(std::move(*house));
+    }
+    const int bedrooms = static_cast<int>(t.house->rooms_of(household::RoomType::kBedroom).size());
     const int residents = std::max(1, std::min({wanted, bedrooms, static_cast<int>(pool.size())}));
-    t.house = std::make_shared<const House>(std::move(*house));
     auto scene = household::configure_scene(t.house, pool, {residents, t.seed}, knowledge);
     if (!scene) return tl::unexpected(scene.error());
     t.scene = std::make_shared<const household::DynamicScene>(std::move(*scene));
@@ -416,6 +444,7 @@ Json to_json(const BenchmarkResult& r, bool with_tasks) {
               {"max_steps", r.request.max_steps},
               {"training_houses", r.training_houses},
               {"methods", methods_json}};
+  if (!r.request.houses.empty()) out["given_houses"] = r.request.houses.size();
   if (with_tasks) {
     Json rows = Json::array();
     for (std::size_t i = 0; i < r.tasks.size(); ++i) {

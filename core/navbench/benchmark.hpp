@@ -37,7 +37,14 @@ struct BenchmarkRequest {
   double alpha = 0.5;               // OSG
   double hint_trust = 0.85;
   NavConfig nav;
+  // Test houses given instead of generated ones (e.g. ProcTHOR houses, read_procthor_houses):
+  // scene i uses houses[i % size]; residents, tasks and seeds are drawn as for generated houses.
+  std::vector<std::shared_ptr<const household::House>> houses;
 };
+// ProcTHOR house JSON, one house per line (as ProcTHOR-10k ships; blank lines skipped). A line
+// that is not JSON or not a house is kValidation with its pointer, e.g. "/houses/2/rooms/0".
+Result<std::vector<std::shared_ptr<const household::House>>> read_procthor_houses(
+    std::string_view jsonl, const household::HouseholdKnowledge& knowledge);
 // Reads {split, scenes, seed, tasks_per_scene?, max_steps?, training_houses?, alpha?}; every bad
 // field is named by JSON pointer.
 Result<BenchmarkRequest> benchmark_request_from_json(const Json& json);

@@ -8,7 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
+
+#include <unistd.h>
 
 #include "tests/core/navbench/navbench_fixture.hpp"
 
@@ -202,6 +207,59 @@ TEST(Benchmark, AnEpisodeReplaysWithItsPathAndVisits) {
       replay_task(request, static_cast<int>(r->tasks.size()), knowledge(), small_pool(), small_counts());
   ASSERT_FALSE(beyond);
   EXPECT_EQ(beyond.error().code, ErrorCode::kNotFound);
+}
+
+// `socsim navbench --houses FILE.jsonl`: the four ProcTHOR peer houses, one JSON per line in a
+// temporary file (read in place, never copied into the repository), are the test scenes.
+TEST(Benchmark, RunsOnProcthorHousesGivenAsJsonLines) {
+  const std::vector<std::string> names = {"zhiyuan_houses20_house_6.json", "zhiyuan_houses20_house_15.json",
+                                          "quinlan_hallway_houses_3.json", "quinlan_hallway_houses_4.json"};
+  const auto dir = std::filesystem::path(household::testing::shared_file("peers/procthor"));
+  if (!std::filesystem::exists(dir / names[0])) GTEST_SKIP() << "peer houses not present: " << dir;
+  const auto file =
+      std::filesystem::temp_directory_path() / ("socsim-procthor-" + std::to_string(::getpid()) + ".jsonl");
+  {
+    std::ofstream out(file);
+    for (const auto& n : names) {
+      std::ifstream in(dir / n);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      auto j = parse_json_untrusted(ss.str());
+      ASSERT_TRUE(j) << n;
+      out << j->dump() << "\n\n";  // blank lines are skipped
+    }
+  }
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::filesystem::remove(file);
+  auto houses = read_procthor_houses(text.str(), knowledge());
+  ASSERT_TRUE(houses) << houses.error().message();
+  ASSERT_EQ(houses->size(), 4u);
+  EXPECT_EQ((*houses)[2]->rooms.size(), 8u);
+
+  BenchmarkRequest request = small(Split::kNormal, 3, 4);
+  request.houses = *houses;
+  request.tasks_per_scene = 3;
+  auto t = make_test_scene(request, 2, knowledge(), small_pool());
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->house, (*houses)[2]) << "scene i is house i";
+  auto result = run_benchmark(request, knowledge(), small_pool(), small_counts(), {});
+  ASSERT_TRUE(result) << result.error().message();
+  const Json table = to_json(*result, false);
+  EXPECT_GT(table["tasks"].get<int>(), 0);
+  EXPECT_EQ(table["given_houses"].get<int>(), 4);
+  for (const auto& [key, row] : table["methods"].items()) {
+    EXPECT_GE(row["SR"].get<double>(), 0.0) << key;
+    EXPECT_LE(row["SPL"].get<double>(), row["SR"].get<double>() + 1e-9) << key;
+  }
+
+  auto bad = read_procthor_houses(text.str().substr(0, 40) + "\n", knowledge());
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error().code, ErrorCode::kValidation);
+  EXPECT_FALSE(read_procthor_houses("\n\n", knowledge()));
+  auto not_a_house = read_procthor_houses("{\"rooms\": 3}\n", knowledge());
+  ASSERT_FALSE(not_a_house);
 }
 
 }  // namespace
