@@ -1,8 +1,10 @@
 #include "core/navbench/benchmark.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <mutex>
 #include <thread>
@@ -413,6 +415,22 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
   BenchmarkResult result;
   result.request = request;
   result.training_houses = counts->houses;
+  // Per-scene means of each method's EL, SR and SPL, for the intervals over scenes.
+  std::vector<std::vector<std::array<double, 3>>> scene_means(methods().size());
+  for (const auto& s : per_scene) {
+    if (s.outcomes.empty()) continue;
+    const double k = static_cast<double>(s.outcomes.size());
+    for (std::size_t m = 0; m < methods().size(); ++m) {
+      std::array<double, 3> x{0.0, 0.0, 0.0};
+      for (const auto& row : s.outcomes) {
+        x[0] += row[m].steps;
+        x[1] += row[m].success ? 100.0 : 0.0;
+        x[2] += 100.0 * row[m].spl;
+      }
+      for (double& v : x) v /= k;
+      scene_means[m].push_back(x);
+    }
+  }
   for (auto& s : per_scene) {
     for (auto& t : s.tasks) result.tasks.push_back(std::move(t));
     for (auto& o : s.outcomes) result.outcomes.push_back(std::move(o));
@@ -428,6 +446,22 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
     score.el /= n;
     score.sr = 100.0 * score.sr / n;  // k·(100/n) can exceed 100 by an ulp when k = n
     score.spl = 100.0 * score.spl / n;
+    const auto& xs = scene_means[m];
+    score.scenes = static_cast<int>(xs.size());
+    if (xs.size() >= 2) {
+      const double c = static_cast<double>(xs.size());
+      std::array<double, 3> half{};
+      for (std::size_t j = 0; j < 3; ++j) {
+        double mean = 0.0, ss = 0.0;
+        for (const auto& x : xs) mean += x[j];
+        mean /= c;
+        for (const auto& x : xs) ss += (x[j] - mean) * (x[j] - mean);
+        half[j] = student_t_975(static_cast<int>(xs.size()) - 1) * std::sqrt(ss / (c - 1.0) / c);
+      }
+      score.el_ci = half[0];
+      score.sr_ci = half[1];
+      score.spl_ci = half[2];
+    }
     result.scores.push_back(score);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -436,7 +470,18 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
 
 Json to_json(const BenchmarkResult& r, bool with_tasks) {
   Json methods_json = Json::object();
-  for (const auto& s : r.scores) methods_json[s.key] = {{"EL", s.el}, {"SR", s.sr}, {"SPL", s.spl}};
+  for (const auto& s : r.scores) {
+    methods_json[s.key] = {{"EL", s.el},         {"SR", s.sr},         {"SPL", s.spl},
+                           {"EL_ci95", s.el_ci}, {"SR_ci95", s.sr_ci}, {"SPL_ci95", s.spl_ci},
+                           {"scenes", s.scenes}};
+    for (const auto& p : paper_table_i())
+      if (p.key == s.key) {
+        const bool hard = r.request.split == Split::kHard;
+        methods_json[s.key]["paper"] = {{"EL", hard ? p.el_hard : p.el_normal},
+                                        {"SR", hard ? p.sr_hard : p.sr_normal},
+                                        {"SPL", hard ? p.spl_hard : p.spl_normal}};
+      }
+  }
   Json out = {{"split", split_name(r.request.split)},
               {"tasks", r.tasks.size()},
               {"scenes", r.request.scenes},
@@ -461,6 +506,56 @@ Json to_json(const BenchmarkResult& r, bool with_tasks) {
                       {"outcomes", outcome}});
     }
     out["episodes"] = rows;
+  }
+  return out;
+}
+
+const std::vector<PaperRow>& paper_table_i() {
+  static const std::vector<PaperRow> rows = {
+      {"Uniform+Greedy", 161.5, 41.30, 16.02, 176.49, 22.69, 10.14},
+      {"SP+OSG", 139.5, 58.94, 27.73, 165.09, 32.53, 16.22},
+      {"SP+CEG", 129.2, 68.12, 34.56, 159.51, 36.35, 20.57},
+      {"Hint+OSG", 140.7, 59.42, 27.33, 165.25, 31.53, 16.14},
+      {"Hint+CEG", 107.4, 76.81, 46.13, 146.65, 46.59, 28.56},
+  };
+  return rows;
+}
+
+double student_t_975(int df) {
+  static constexpr double kTable[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                      2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                                      2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+  if (df < 1) return 0.0;
+  if (df <= 30) return kTable[df - 1];
+  // Cornish–Fisher expansion around the normal quantile (error < 1e-4 above 30 degrees of freedom).
+  const double z = 1.959963984540054, n = df;
+  return z + (z * z * z + z) / (4 * n) + (5 * std::pow(z, 5) + 16 * z * z * z + 3 * z) / (96 * n * n);
+}
+
+std::string format_markdown(const BenchmarkResult& r) {
+  const bool hard = r.request.split == Split::kHard;
+  std::string out = "Object-goal navigation, " + std::string(split_name(r.request.split)) +
+                    " split: " + std::to_string(r.request.scenes) + " scenes, " +
+                    std::to_string(r.tasks.size()) + " tasks, seed " + std::to_string(r.request.seed) +
+                    " (map-based, " + std::to_string(r.request.max_steps) +
+                    " steps; ± half-widths of 95 % t intervals over scenes)\n\n";
+  out += "| Method | Map | Hint | EL ↓ | SR (%) ↑ | SPL ↑ | paper EL | paper SR | paper SPL |\n";
+  out += "|---|---|---|---|---|---|---|---|---|\n";
+  char line[400];
+  for (std::size_t m = 0; m < methods().size(); ++m) {
+    const auto& s = r.scores[m];
+    std::string paper = "— | — | —";
+    for (const auto& p : paper_table_i())
+      if (p.key == s.key) {
+        char b[80];
+        std::snprintf(b, sizeof b, "%.1f | %.2f | %.2f", hard ? p.el_hard : p.el_normal,
+                      hard ? p.sr_hard : p.sr_normal, hard ? p.spl_hard : p.spl_normal);
+        paper = b;
+      }
+    std::snprintf(line, sizeof line, "| %s | ✓ | %s | %.1f ± %.1f | %.2f ± %.2f | %.2f ± %.2f | %s |\n",
+                  methods()[m].label.c_str(), methods()[m].uses_hint ? "✓" : "✗", s.el, s.el_ci, s.sr,
+                  s.sr_ci, s.spl, s.spl_ci, paper.c_str());
+    out += line;
   }
   return out;
 }

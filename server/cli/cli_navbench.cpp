@@ -15,6 +15,7 @@ constexpr const char* kNavbenchUsage =
     "(Table I shape)\n"
     "           [--tasks-per-scene 10] [--max-steps 200] [--training-houses 10000] [--threads 2] "
     "[--episodes]\n"
+    "           [--markdown FILE]   the Table I layout with 95 % intervals and the paper's figures\n"
     "           [--houses FILE.jsonl]   test houses from ProcTHOR house JSON, one per line (scenes "
     "default to their number)\n";
 
@@ -82,6 +83,9 @@ int navbench_command(const std::vector<std::string>& args) {
   std::cerr << "\n";
   if (!result) return cli_report(result.error());
   std::cout << navbench::format_table(*result);
+  if (auto md = a.opt("--markdown")) {
+    if (auto s = cli_write_file(*md, navbench::format_markdown(*result)); !s) return cli_report(s.error());
+  }
   if (auto out = a.opt("--out")) {
     if (auto s = cli_write_file(*out, navbench::to_json(*result, a.flag("--episodes")).dump(2) + "\n"); !s)
       return cli_report(s.error());

@@ -262,5 +262,33 @@ TEST(Benchmark, RunsOnProcthorHousesGivenAsJsonLines) {
   ASSERT_FALSE(not_a_house);
 }
 
+// Table I output: 95 % t intervals over scenes in the JSON and the Markdown, the paper's figures
+// beside ours for the five map-based rows.
+TEST(Benchmark, TableOneHasIntervalsOverScenesAndThePapersFigures) {
+  EXPECT_NEAR(student_t_975(1), 12.706, 1e-3);
+  EXPECT_NEAR(student_t_975(30), 2.042, 1e-3);
+  EXPECT_NEAR(student_t_975(31), 2.040, 2e-3);
+  EXPECT_NEAR(student_t_975(1000), 1.962, 1e-3);
+  auto result = run_benchmark(small(Split::kNormal, 5, 3), knowledge(), small_pool(), small_counts(), {});
+  ASSERT_TRUE(result) << result.error().message();
+  const Json j = to_json(*result, false);
+  for (const auto& s : result->scores) {
+    EXPECT_GE(s.sr_ci, 0.0) << s.key;
+    EXPECT_LE(s.scenes, 3);
+    if (s.scenes >= 2) {
+      EXPECT_GT(s.el_ci + s.sr_ci, 0.0) << s.key << ": scenes differ";
+    }
+    EXPECT_DOUBLE_EQ(j["methods"][s.key]["SR_ci95"].get<double>(), s.sr_ci);
+  }
+  EXPECT_DOUBLE_EQ(j["methods"]["SP+CEG"]["paper"]["SR"].get<double>(), 68.12);
+  EXPECT_FALSE(j["methods"]["Posterior+CEG"].contains("paper"));
+  const std::string md = format_markdown(*result);
+  EXPECT_NE(md.find("| Method | Map | Hint | EL ↓ | SR (%) ↑ | SPL ↑ | paper EL | paper SR | paper SPL |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| 129.2 | 68.12 | 34.56 |"), std::string::npos) << md;
+  EXPECT_NE(md.find(" ± "), std::string::npos);
+}
+
 }  // namespace
 }  // namespace socsim::navbench
