@@ -13,10 +13,15 @@ function renderTable(result) {
   const order = ['Uniform+Greedy', 'SP+OSG', 'SP+CEG', 'Hint+OSG', 'Hint+CEG', 'Posterior+OSG', 'Posterior+CEG'];
   const rank = (k) => (order.indexOf(k) < 0 ? order.length : order.indexOf(k));
   const entries = Object.entries(result.methods).sort((a, b) => rank(a[0]) - rank(b[0]));
+  // Ours with the half-width of the 95 % interval over scenes; paper 000 Table I beside (the
+  // server sends it per method as `paper`; its hint rows are LLM + OSG / LLM + CEG).
+  const ci = (v, h, d) => (h === undefined ? v.toFixed(d) : `${v.toFixed(d)} <small>± ${h.toFixed(d)}</small>`);
+  const paper = (m, k, d) => (m.paper ? m.paper[k].toFixed(d) : '—');
   const rows = entries.map(([key, m]) =>
-    `<tr><td>${key === 'Uniform+Greedy' ? 'Greedy (Uniform)' : key}</td><td>${m.EL.toFixed(1)}</td><td>${m.SR.toFixed(2)}</td><td>${m.SPL.toFixed(2)}</td></tr>`);
-  $('table').innerHTML = `<p>${result.split} split: ${result.scenes} scenes, ${result.tasks} tasks, seed ${result.seed}</p>` +
-    `<table class="data"><thead><tr><th>Method</th><th>EL ↓</th><th>SR (%) ↑</th><th>SPL ↑</th></tr></thead>` +
+    `<tr><td>${key === 'Uniform+Greedy' ? 'Greedy (Uniform)' : key}</td><td>${ci(m.EL, m.EL_ci95, 1)}</td><td>${ci(m.SR, m.SR_ci95, 2)}</td><td>${ci(m.SPL, m.SPL_ci95, 2)}</td>` +
+    `<td class="paper">${paper(m, 'EL', 1)}</td><td class="paper">${paper(m, 'SR', 2)}</td><td class="paper">${paper(m, 'SPL', 2)}</td></tr>`);
+  $('table').innerHTML = `<p>${result.split} split: ${result.scenes} scenes, ${result.tasks} tasks, seed ${result.seed} · ± is the 95 % interval over scenes</p>` +
+    `<table class="data"><thead><tr><th>Method</th><th>EL ↓</th><th>SR (%) ↑</th><th>SPL ↑</th><th>paper EL</th><th>paper SR</th><th>paper SPL</th></tr></thead>` +
     `<tbody>${rows.join('')}</tbody></table>`;
   const list = $('episodes');
   list.innerHTML = '';

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/common/rng.hpp"
+#include "core/household/hints.hpp"
 #include "core/household/llm_answers.hpp"
 
 namespace socsim::household {
@@ -248,30 +249,7 @@ Result<ActivityDatabase> LlmActivityDatabaseGenerator::generate(const Persona& p
 }
 
 std::string coarse_memory(const DynamicScene& scene, int resident, Seconds t, Seconds lookback) {
-  const House& h = scene.house();
-  std::map<Seconds, std::vector<std::string>> slots;
-  for (int idx : scene.events_of(resident)) {
-    const SceneEvent& e = scene.events()[static_cast<std::size_t>(idx)];
-    if (e.end <= t - lookback || e.start >= t) continue;
-    const ScheduleEntry& en = scene.entry(e);
-    std::string item = en.role == ActivityRole::kLeaveHome ? "leave home (away from home)"
-                       : e.room >= 0
-                           ? en.name + " (" + room_words(h.rooms[static_cast<std::size_t>(e.room)].type) + ")"
-                           : en.name;
-    const Seconds first = std::max(e.start, t - lookback) / 3600, last = (std::min(e.end, t) - 1) / 3600;
-    for (Seconds slot = first; slot <= last; ++slot) {
-      auto& v = slots[slot];
-      if (std::find(v.begin(), v.end(), item) == v.end()) v.push_back(item);
-    }
-  }
-  std::string out;
-  for (const auto& [slot, items] : slots) {
-    const std::string end = format_clock((slot + 1) * 3600, scene.first_day()).substr(4);
-    out += format_clock(slot * 3600, scene.first_day()) + "-" + (end == "00:00" ? "24:00" : end) + ": ";
-    for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + items[i];
-    out += "\n";
-  }
-  return out.empty() ? "(nothing remembered)\n" : out;
+  return memory_text(remember(scene, resident, t, lookback), scene.house());
 }
 
 Result<Hint> LlmHintGenerator::hint(const HintQuery& q) {
@@ -284,18 +262,17 @@ Result<Hint> LlmHintGenerator::hint(const HintQuery& q) {
   for (int o : h.objects)
     if (h.entities[static_cast<std::size_t>(o)].id == q.object)
       type = h.entities[static_cast<std::size_t>(o)].type;
+  // The same memory the offline resident answers from; the answer must name one of its activities.
+  const ResidentMemory memory = remember(scene, q.resident, q.time, q.lookback);
   std::vector<std::string> remembered;
-  for (int idx : scene.events_of(q.resident)) {
-    const SceneEvent& e = scene.events()[static_cast<std::size_t>(idx)];
-    if (e.end > q.time - q.lookback && e.start < q.time) remembered.push_back(scene.entry(e).name);
-  }
+  for (const RememberedActivity* a : memory.activities()) remembered.push_back(a->name);
   const Persona& persona = scene.residents()[static_cast<std::size_t>(q.resident)].profile->persona;
   auto answer = ask(
       settings_, "hint",
       {{"persona", persona_text(persona)},
        {"object", object_words(type)},
        {"current_time", format_clock(q.time, scene.first_day())},
-       {"memory", coarse_memory(scene, q.resident, q.time, q.lookback)}},
+       {"memory", memory_text(memory, h)}},
       [&](const Json& j) { return check_hint_answer(j, remembered); },
       mix(scene.seed(),
           "hint:" + std::to_string(q.resident) + ":" + q.object + ":" + std::to_string(q.time)));

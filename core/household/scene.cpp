@@ -6,18 +6,10 @@
 #include <numeric>
 
 #include "core/common/rng.hpp"
+#include "core/household/hints.hpp"
 
 namespace socsim::household {
 namespace {
-
-std::string time_phrase(Seconds when, Seconds now, Weekday first) {
-  const Seconds day_now = now / kSecondsPerDay, day_then = when / kSecondsPerDay;
-  const int hour = static_cast<int>((when % kSecondsPerDay) / 3600);
-  const char* part = hour < 5 ? "night" : hour < 12 ? "morning" : hour < 17 ? "afternoon" : "evening";
-  if (day_then == day_now) return std::string(hour < 5 ? "last night" : std::string("this ") + part);
-  if (day_then == day_now - 1) return hour < 5 ? "the night before last" : std::string("yesterday ") + part;
-  return "on " + std::string(weekday_name(weekday_after(first, static_cast<int>(day_then)))) + " " + part;
-}
 
 std::string spaced_lower(std::string_view camel) {
   std::string out;
@@ -94,39 +86,12 @@ std::span<const int> DynamicScene::events_of(int resident) const {
 }
 
 Hint DynamicScene::hint(int resident, std::string_view object, Seconds t, Seconds lookback) const {
-  Hint h;
-  const auto& mine = resident_events_[static_cast<std::size_t>(resident)];
-  const bool by_id = object.find('|') != std::string_view::npos;
-  // Newest first: events of this resident that ended by t, within the look-back window.
-  for (auto it = mine.rbegin(); it != mine.rend(); ++it) {
-    const SceneEvent& e = events_[static_cast<std::size_t>(*it)];
-    if (e.end > t) continue;
-    if (e.end < t - lookback) break;
-    for (std::uint32_t k = e.first_relocation; k < e.first_relocation + e.relocation_count; ++k) {
-      const Relocation& r = relocations_[event_relocations_[k]];
-      const Entity& obj =
-          house_->entities[static_cast<std::size_t>(house_->objects[static_cast<std::size_t>(r.object)])];
-      if (by_id ? obj.id != object : obj.type != object) continue;
-      const Entity& rec = house_->entities[static_cast<std::size_t>(r.to)];
-      h.used = true;
-      h.object = r.object;
-      h.event = *it;
-      h.activity = entry(e).name;
-      h.when = r.time;
-      h.room_id = house_->rooms[static_cast<std::size_t>(rec.room)].id;
-      h.receptacle_id = rec.id;
-      const std::string room_words =
-          object_words(room_type_name(house_->rooms[static_cast<std::size_t>(rec.room)].type));
-      h.text = "Yes, I used the " + object_words(obj.type) + " while " + h.activity + " " +
-               time_phrase(r.time, t, first_day_) + " and left it on the " + object_words(rec.type) +
-               " in the " + room_words + ".";
-      return h;
-    }
-  }
-  const std::string what =
-      by_id ? object_words(std::string(object.substr(0, object.find('|')))) : object_words(object);
-  h.text = "No, I don't think I've used the " + what + " recently.";
-  return h;
+  std::string type(object);
+  if (object.find('|') != std::string_view::npos)
+    for (int o : house_->objects)
+      if (house_->entities[static_cast<std::size_t>(o)].id == object)
+        type = house_->entities[static_cast<std::size_t>(o)].type;
+  return hint_from_memory(*this, remember(*this, resident, t, lookback), type);
 }
 
 Result<Hint> OfflineHintGenerator::hint(const HintQuery& q) {

@@ -1,8 +1,10 @@
 #include "core/navbench/benchmark.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <mutex>
 #include <thread>
@@ -10,6 +12,7 @@
 #include "core/common/json_check.hpp"
 #include "core/common/rng.hpp"
 #include "core/household/household_document.hpp"
+#include "core/household/procthor.hpp"
 
 namespace socsim::navbench {
 namespace {
@@ -140,6 +143,29 @@ Json to_json(const BenchmarkRequest& r) {
           {"alpha", r.alpha}};
 }
 
+Result<std::vector<std::shared_ptr<const household::House>>> read_procthor_houses(
+    std::string_view jsonl, const household::HouseholdKnowledge& knowledge) {
+  std::vector<std::shared_ptr<const household::House>> out;
+  std::size_t at = 0;
+  for (int line = 0; at <= jsonl.size(); ++line) {
+    const std::size_t end = std::min(jsonl.find('\n', at), jsonl.size());
+    const std::string_view text = jsonl.substr(at, end - at);
+    at = end + 1;
+    if (text.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+    const std::string pointer = "/houses/" + std::to_string(out.size());
+    auto json = parse_json_untrusted(std::string(text));
+    if (!json)
+      return fail(ErrorCode::kValidation, "line " + std::to_string(line + 1) + " is not JSON",
+                  {FieldError{pointer, json.error().message()}});
+    auto house = household::import_procthor(*json, knowledge, "procthor-" + std::to_string(out.size()));
+    if (!house) return tl::unexpected(house.error().under(pointer));
+    out.push_back(std::make_shared<const House>(std::move(*house)));
+  }
+  if (out.empty())
+    return fail(ErrorCode::kValidation, "no houses", {FieldError{"/houses", "holds no ProcTHOR house"}});
+  return out;
+}
+
 Result<ResidentPool> make_resident_pool(const household::HouseholdKnowledge& knowledge, std::uint64_t seed,
                                         int days) {
   ResidentPool pool;
@@ -197,11 +223,15 @@ Result<TestScene> make_test_scene(const BenchmarkRequest& request, int index,
     Rng rng(t.seed, fnv1a64("navbench/scene"));
     const int rooms = static_cast<int>(hard ? rng.between(8, 10) : rng.between(4, 7));
     const int wanted = static_cast<int>(hard ? rng.between(3, 4) : rng.between(1, 2));
-    auto house = household::generate_house({rooms, std::nullopt, t.seed}, knowledge);
-    if (!house) continue;
-    const int bedrooms = static_cast<int>(house->rooms_of(household::RoomType::kBedroom).size());
+    if (!request.houses.empty()) {
+      t.house = request.houses[static_cast<std::size_t>(index) % request.houses.size()];
+    } else {
+      auto house = household::generate_house({rooms, std::nullopt, t.seed}, knowledge);
+      if (!house) continue;
+      t.house = std::make_shared<const House>(std::move(*house));
+    }
+    const int bedrooms = static_cast<int>(t.house->rooms_of(household::RoomType::kBedroom).size());
     const int residents = std::max(1, std::min({wanted, bedrooms, static_cast<int>(pool.size())}));
-    t.house = std::make_shared<const House>(std::move(*house));
     auto scene = household::configure_scene(t.house, pool, {residents, t.seed}, knowledge);
     if (!scene) return tl::unexpected(scene.error());
     t.scene = std::make_shared<const household::DynamicScene>(std::move(*scene));
@@ -289,10 +319,11 @@ std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestSce
   return tasks;
 }
 
-MethodSuite::MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts)
+MethodSuite::MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts,
+                         const household::HouseholdKnowledge& knowledge)
     : recent_(static_cast<double>(request.recent)),
       prior_(std::make_shared<const ScenePriorEstimator>(std::move(counts))),
-      hint_(prior_, request.hint_trust),
+      hint_(prior_, knowledge, request.hint_trust),
       osg_(request.alpha) {}
 
 std::vector<EpisodeResult> MethodSuite::run(const TestScene& t, const NavTask& task, int max_steps) const {
@@ -335,7 +366,7 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
       return fail(ErrorCode::kValidation,
                   "the scene prior was counted on a house that is not a training house");
   const auto t0 = std::chrono::steady_clock::now();
-  const MethodSuite suite(request, counts);
+  const MethodSuite suite(request, counts, knowledge);
   struct SceneOutcome {
     std::vector<NavTask> tasks;
     std::vector<std::vector<Outcome>> outcomes;
@@ -384,6 +415,22 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
   BenchmarkResult result;
   result.request = request;
   result.training_houses = counts->houses;
+  // Per-scene means of each method's EL, SR and SPL, for the intervals over scenes.
+  std::vector<std::vector<std::array<double, 3>>> scene_means(methods().size());
+  for (const auto& s : per_scene) {
+    if (s.outcomes.empty()) continue;
+    const double k = static_cast<double>(s.outcomes.size());
+    for (std::size_t m = 0; m < methods().size(); ++m) {
+      std::array<double, 3> x{0.0, 0.0, 0.0};
+      for (const auto& row : s.outcomes) {
+        x[0] += row[m].steps;
+        x[1] += row[m].success ? 100.0 : 0.0;
+        x[2] += 100.0 * row[m].spl;
+      }
+      for (double& v : x) v /= k;
+      scene_means[m].push_back(x);
+    }
+  }
   for (auto& s : per_scene) {
     for (auto& t : s.tasks) result.tasks.push_back(std::move(t));
     for (auto& o : s.outcomes) result.outcomes.push_back(std::move(o));
@@ -399,6 +446,22 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
     score.el /= n;
     score.sr = 100.0 * score.sr / n;  // k·(100/n) can exceed 100 by an ulp when k = n
     score.spl = 100.0 * score.spl / n;
+    const auto& xs = scene_means[m];
+    score.scenes = static_cast<int>(xs.size());
+    if (xs.size() >= 2) {
+      const double c = static_cast<double>(xs.size());
+      std::array<double, 3> half{};
+      for (std::size_t j = 0; j < 3; ++j) {
+        double mean = 0.0, ss = 0.0;
+        for (const auto& x : xs) mean += x[j];
+        mean /= c;
+        for (const auto& x : xs) ss += (x[j] - mean) * (x[j] - mean);
+        half[j] = student_t_975(static_cast<int>(xs.size()) - 1) * std::sqrt(ss / (c - 1.0) / c);
+      }
+      score.el_ci = half[0];
+      score.sr_ci = half[1];
+      score.spl_ci = half[2];
+    }
     result.scores.push_back(score);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -407,7 +470,18 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
 
 Json to_json(const BenchmarkResult& r, bool with_tasks) {
   Json methods_json = Json::object();
-  for (const auto& s : r.scores) methods_json[s.key] = {{"EL", s.el}, {"SR", s.sr}, {"SPL", s.spl}};
+  for (const auto& s : r.scores) {
+    methods_json[s.key] = {{"EL", s.el},         {"SR", s.sr},         {"SPL", s.spl},
+                           {"EL_ci95", s.el_ci}, {"SR_ci95", s.sr_ci}, {"SPL_ci95", s.spl_ci},
+                           {"scenes", s.scenes}};
+    for (const auto& p : paper_table_i())
+      if (p.key == s.key) {
+        const bool hard = r.request.split == Split::kHard;
+        methods_json[s.key]["paper"] = {{"EL", hard ? p.el_hard : p.el_normal},
+                                        {"SR", hard ? p.sr_hard : p.sr_normal},
+                                        {"SPL", hard ? p.spl_hard : p.spl_normal}};
+      }
+  }
   Json out = {{"split", split_name(r.request.split)},
               {"tasks", r.tasks.size()},
               {"scenes", r.request.scenes},
@@ -415,6 +489,7 @@ Json to_json(const BenchmarkResult& r, bool with_tasks) {
               {"max_steps", r.request.max_steps},
               {"training_houses", r.training_houses},
               {"methods", methods_json}};
+  if (!r.request.houses.empty()) out["given_houses"] = r.request.houses.size();
   if (with_tasks) {
     Json rows = Json::array();
     for (std::size_t i = 0; i < r.tasks.size(); ++i) {
@@ -431,6 +506,56 @@ Json to_json(const BenchmarkResult& r, bool with_tasks) {
                       {"outcomes", outcome}});
     }
     out["episodes"] = rows;
+  }
+  return out;
+}
+
+const std::vector<PaperRow>& paper_table_i() {
+  static const std::vector<PaperRow> rows = {
+      {"Uniform+Greedy", 161.5, 41.30, 16.02, 176.49, 22.69, 10.14},
+      {"SP+OSG", 139.5, 58.94, 27.73, 165.09, 32.53, 16.22},
+      {"SP+CEG", 129.2, 68.12, 34.56, 159.51, 36.35, 20.57},
+      {"Hint+OSG", 140.7, 59.42, 27.33, 165.25, 31.53, 16.14},
+      {"Hint+CEG", 107.4, 76.81, 46.13, 146.65, 46.59, 28.56},
+  };
+  return rows;
+}
+
+double student_t_975(int df) {
+  static constexpr double kTable[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                      2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                                      2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+  if (df < 1) return 0.0;
+  if (df <= 30) return kTable[df - 1];
+  // Cornish–Fisher expansion around the normal quantile (error < 1e-4 above 30 degrees of freedom).
+  const double z = 1.959963984540054, n = df;
+  return z + (z * z * z + z) / (4 * n) + (5 * std::pow(z, 5) + 16 * z * z * z + 3 * z) / (96 * n * n);
+}
+
+std::string format_markdown(const BenchmarkResult& r) {
+  const bool hard = r.request.split == Split::kHard;
+  std::string out = "Object-goal navigation, " + std::string(split_name(r.request.split)) +
+                    " split: " + std::to_string(r.request.scenes) + " scenes, " +
+                    std::to_string(r.tasks.size()) + " tasks, seed " + std::to_string(r.request.seed) +
+                    " (map-based, " + std::to_string(r.request.max_steps) +
+                    " steps; ± half-widths of 95 % t intervals over scenes)\n\n";
+  out += "| Method | Map | Hint | EL ↓ | SR (%) ↑ | SPL ↑ | paper EL | paper SR | paper SPL |\n";
+  out += "|---|---|---|---|---|---|---|---|---|\n";
+  char line[400];
+  for (std::size_t m = 0; m < methods().size(); ++m) {
+    const auto& s = r.scores[m];
+    std::string paper = "— | — | —";
+    for (const auto& p : paper_table_i())
+      if (p.key == s.key) {
+        char b[80];
+        std::snprintf(b, sizeof b, "%.1f | %.2f | %.2f", hard ? p.el_hard : p.el_normal,
+                      hard ? p.sr_hard : p.sr_normal, hard ? p.spl_hard : p.spl_normal);
+        paper = b;
+      }
+    std::snprintf(line, sizeof line, "| %s | ✓ | %s | %.1f ± %.1f | %.2f ± %.2f | %.2f ± %.2f | %s |\n",
+                  methods()[m].label.c_str(), methods()[m].uses_hint ? "✓" : "✗", s.el, s.el_ci, s.sr,
+                  s.sr_ci, s.spl, s.spl_ci, paper.c_str());
+    out += line;
   }
   return out;
 }
@@ -460,7 +585,7 @@ Result<Json> replay_task(const BenchmarkRequest& request, int index,
                          std::shared_ptr<const PlacementCounts> counts) {
   if (index < 0) return fail(ErrorCode::kNotFound, "no such episode");
   int seen = 0;
-  const MethodSuite suite(request, std::move(counts));
+  const MethodSuite suite(request, std::move(counts), knowledge);
   for (int s = 0; s < request.scenes; ++s) {
     auto scene = make_test_scene(request, s, knowledge, pool);
     if (!scene) return tl::unexpected(scene.error());

@@ -37,7 +37,14 @@ struct BenchmarkRequest {
   double alpha = 0.5;               // OSG
   double hint_trust = 0.85;
   NavConfig nav;
+  // Test houses given instead of generated ones (e.g. ProcTHOR houses, read_procthor_houses):
+  // scene i uses houses[i % size]; residents, tasks and seeds are drawn as for generated houses.
+  std::vector<std::shared_ptr<const household::House>> houses;
 };
+// ProcTHOR house JSON, one house per line (as ProcTHOR-10k ships; blank lines skipped). A line
+// that is not JSON or not a house is kValidation with its pointer, e.g. "/houses/2/rooms/0".
+Result<std::vector<std::shared_ptr<const household::House>>> read_procthor_houses(
+    std::string_view jsonl, const household::HouseholdKnowledge& knowledge);
 // Reads {split, scenes, seed, tasks_per_scene?, max_steps?, training_houses?, alpha?}; every bad
 // field is named by JSON pointer.
 Result<BenchmarkRequest> benchmark_request_from_json(const Json& json);
@@ -104,8 +111,20 @@ struct Outcome {
 };
 struct MethodScore {
   std::string key;
-  double el = 0.0, sr = 0.0, spl = 0.0;  // SR and SPL in percent
+  double el = 0.0, sr = 0.0, spl = 0.0;  // SR and SPL in percent, over tasks
+  // Half-widths of 95 % Student-t intervals over scenes (each scene's mean over its tasks; scenes
+  // without tasks left out; 0 with fewer than two scenes).
+  double el_ci = 0.0, sr_ci = 0.0, spl_ci = 0.0;
+  int scenes = 0;  // scenes with tasks
 };
+// Paper 000 Table I, map-based rows (its hint rows are LLM + OSG / LLM + CEG), by method key.
+struct PaperRow {
+  std::string key;
+  double el_normal, sr_normal, spl_normal, el_hard, sr_hard, spl_hard;
+};
+const std::vector<PaperRow>& paper_table_i();
+// t_{0.975, df}: the two-sided 95 % quantile of Student's t distribution.
+double student_t_975(int df);
 struct BenchmarkResult {
   BenchmarkRequest request;
   std::vector<NavTask> tasks;
@@ -124,7 +143,8 @@ struct RunHooks {
 // The estimators and planners of every method, built once (the scene prior from `counts`).
 class MethodSuite {
  public:
-  MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts);
+  MethodSuite(const BenchmarkRequest& request, std::shared_ptr<const PlacementCounts> counts,
+              const household::HouseholdKnowledge& knowledge);
   // The episodes of one task under every method, in methods() order.
   [[nodiscard]] std::vector<EpisodeResult> run(const TestScene& scene, const NavTask& task,
                                                int max_steps) const;
@@ -150,6 +170,9 @@ Result<BenchmarkResult> run_benchmark(const BenchmarkRequest& request,
 Json to_json(const BenchmarkResult& result, bool with_tasks = false);
 // The table in the shape of paper 000 Table I (method × EL, SR, SPL).
 std::string format_table(const BenchmarkResult& result);
+// The Table I layout in Markdown: per method EL, SR and SPL with their 95 % intervals over scenes
+// and the paper's figures for the same split beside them.
+std::string format_markdown(const BenchmarkResult& result);
 
 // Task `index` of the benchmark replayed: the house, the target, the start, and every method's
 // path and visited receptacles. kNotFound when the benchmark has fewer tasks.

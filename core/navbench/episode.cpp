@@ -18,11 +18,11 @@ EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<
       spec.target_receptacle >= static_cast<int>(recs.size()) || probabilities.size() != recs.size())
     return out;
   std::vector<char> observed(recs.size(), 0);
-  // Rules out everything seen from `pose`; true when the target is among it.
+  // True when the target is seen from `pose`; rules out what is seen when the spec says so.
   auto observe = [&](int pose) {
     bool found = false;
     for (int r : map.visible_from(pose)) {
-      observed[static_cast<std::size_t>(r)] = 1;
+      if (spec.rule_out_on_the_way) observed[static_cast<std::size_t>(r)] = 1;
       found = found || r == spec.target_receptacle;
     }
     return found;
@@ -61,6 +61,7 @@ EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<
       if (out.success || out.steps >= spec.max_steps) break;
     }
     if (pose == view_of[k]) {
+      observed[static_cast<std::size_t>(candidates[k].receptacle)] = 1;
       out.visited.push_back(candidates[k].receptacle);
       out.visited_at.push_back(out.steps);
     }

@@ -15,6 +15,9 @@ struct EpisodeSpec {
   int start = -1;              // pose
   int target_receptacle = -1;  // index into NavMap::receptacles(); the target rests on it
   int max_steps = 200;         // paper 000 §VI-B for map-based methods
+  // The paper's planners route over receptacles' viewpoints and cross off the ones they reach;
+  // true also crosses off every receptacle seen on the way (a more thorough searcher).
+  bool rule_out_on_the_way = false;
 };
 
 struct EpisodeResult {

@@ -35,10 +35,6 @@ void normalise(std::vector<double>& p) {
   for (double& x : p) x /= total;
 }
 
-std::string lower_words(std::string_view camel) {
-  return household::object_words(camel);
-}
-
 }  // namespace
 
 GenerativeModel generative_model_of(const household::DynamicScene& scene) {
@@ -129,46 +125,13 @@ std::vector<double> ScenePriorEstimator::estimate(const EstimateQuery& q) const 
   return p;
 }
 
-HintReading read_hint(std::string_view hint, const NavMap& map) {
-  HintReading out;
-  if (hint.rfind("Yes", 0) != 0) return out;
-  out.used = true;
-  constexpr std::string_view kOn = "left it on the ", kIn = " in the ";
-  const auto on = hint.rfind(kOn);
-  if (on == std::string_view::npos) return out;
-  std::string_view rest = hint.substr(on + kOn.size());
-  if (!rest.empty() && rest.back() == '.') rest.remove_suffix(1);
-  const auto in = rest.rfind(kIn);
-  const std::string_view receptacle_words = in == std::string_view::npos ? rest : rest.substr(0, in);
-  if (in != std::string_view::npos) {
-    const std::string_view room_words = rest.substr(in + kIn.size());
-    for (RoomType t : household::kRoomTypes)
-      if (lower_words(household::room_type_name(t)) == room_words) out.room = t;
-  }
-  for (const auto& r : map.receptacles())
-    if (lower_words(r.type) == receptacle_words) {
-      out.receptacle_type = r.type;
-      break;
-    }
-  return out;
-}
-
 std::vector<double> HintEstimator::estimate(const EstimateQuery& q) const {
   std::vector<double> p = prior_->estimate(q);
-  const HintReading reading = read_hint(q.hint, *q.map);
-  if (!reading.used || reading.receptacle_type.empty()) return p;
-  const auto& recs = q.map->receptacles();
-  std::vector<int> named;
-  for (std::size_t i = 0; i < recs.size(); ++i)
-    if (recs[i].type == reading.receptacle_type && (!reading.room || recs[i].room_type == *reading.room))
-      named.push_back(static_cast<int>(i));
-  if (named.empty())  // the room words matched nothing with that receptacle: trust the type alone
-    for (std::size_t i = 0; i < recs.size(); ++i)
-      if (recs[i].type == reading.receptacle_type) named.push_back(static_cast<int>(i));
-  for (double& x : p) x *= 1.0 - trust_;
-  for (int i : named) p[static_cast<std::size_t>(i)] += trust_ / static_cast<double>(named.size());
-  normalise(p);
-  return p;
+  const household::HintReading reading = household::read_hint(q.hint, *knowledge_);
+  std::vector<household::ReceptacleView> views;
+  views.reserve(q.map->receptacles().size());
+  for (const auto& r : q.map->receptacles()) views.push_back({r.type, r.room_type});
+  return household::hint_distribution(reading, q.target_type, views, p, trust_);
 }
 
 std::vector<double> PosteriorEstimator::estimate(const EstimateQuery& q) const {

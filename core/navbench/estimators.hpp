@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/household/hints.hpp"
 #include "core/household/scene.hpp"
 #include "core/navbench/nav_map.hpp"
 
@@ -84,27 +85,22 @@ class ScenePriorEstimator final : public LocationEstimator {
   std::shared_ptr<const PlacementCounts> counts_;
 };
 
-// What a hint says: whether the resident used the object, and where they say they left it.
-struct HintReading {
-  bool used = false;
-  std::string receptacle_type;  // a type on the map, "" when not understood
-  std::optional<household::RoomType> room;
-};
-// Reads the offline hint's wording ("Yes, I used the mug while … and left it on the dining table
-// in the kitchen."); receptacle and room words are matched against the types on the map.
-HintReading read_hint(std::string_view hint, const NavMap& map);
-
-// `trust` of the mass on the receptacles the hint names (uniform over matching instances), the
-// rest from the scene prior; the scene prior alone when the hint says no or names nothing known.
+// The resident's answer read by household::read_hint (room, receptacle and activity words of the
+// curated knowledge) and turned into a distribution by household::hint_distribution with the scene
+// prior as the base: `trust` of the mass on a named receptacle, or on the named room reweighted by
+// the named activity's curated p(l|a) and p(r|o,a,l) (half when the answer is hedged); the scene
+// prior alone when the hint says no or names nothing known.
 class HintEstimator final : public LocationEstimator {
  public:
-  HintEstimator(std::shared_ptr<const ScenePriorEstimator> prior, double trust = 0.85)
-      : prior_(std::move(prior)), trust_(trust) {}
+  HintEstimator(std::shared_ptr<const ScenePriorEstimator> prior,
+                const household::HouseholdKnowledge& knowledge, double trust = 0.85)
+      : prior_(std::move(prior)), knowledge_(&knowledge), trust_(trust) {}
   [[nodiscard]] std::string_view name() const override { return "Hint"; }
   [[nodiscard]] std::vector<double> estimate(const EstimateQuery& query) const override;
 
  private:
   std::shared_ptr<const ScenePriorEstimator> prior_;
+  const household::HouseholdKnowledge* knowledge_;
   double trust_;
 };
 

@@ -216,12 +216,14 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
   struct Box {
     double x0, z0, x1, z1;
     household::Footprint corners;
+    int entity = -1;
+    double height = 0.0;
   };
   std::vector<Box> furniture;
   for (int idx : house.receptacles) {
     const auto& e = house.entities[static_cast<std::size_t>(idx)];
     if (e.synthetic) continue;
-    Box b{1e18, 1e18, -1e18, -1e18, household::footprint(e)};
+    Box b{1e18, 1e18, -1e18, -1e18, household::footprint(e), idx, std::max(0.0, 2.0 * e.position.y)};
     for (const auto& c : b.corners)
       b.x0 = std::min(b.x0, c.x), b.z0 = std::min(b.z0, c.z), b.x1 = std::max(b.x1, c.x),
       b.z1 = std::max(b.z1, c.z);
@@ -263,6 +265,41 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
           static_cast<std::uint8_t>(m.moves_[static_cast<std::size_t>(c)] | (1u << h));
     }
   }
+  // Whether another piece rises above the sight line from the camera at `from` to a point at
+  // height `top` over `to`: the segment is clipped to each footprint (Cyrus–Beck); the line is
+  // lowest where it leaves the footprint on the target's side.
+  auto occluded = [&](FloorPoint from, FloorPoint to, double top, int self,
+                      const std::vector<const Box*>& near) {
+    const double dx = to.x - from.x, dz = to.z - from.z;
+    for (const Box* b : near) {
+      if (b->entity == self || b->height <= top) continue;
+      if (std::max(from.x, to.x) < b->x0 || std::min(from.x, to.x) > b->x1 ||
+          std::max(from.z, to.z) < b->z0 || std::min(from.z, to.z) > b->z1)
+        continue;
+      double t0 = 0.0, t1 = 1.0;
+      const auto& c = b->corners;
+      const double orient = cross(c[0], c[1], c[2]) > 0 ? 1.0 : -1.0;
+      bool out = false;
+      for (std::size_t i = 0; i < 4 && !out; ++i) {
+        const FloorPoint a = c[i], e = c[(i + 1) % 4];
+        // Inside means orient · cross(a, e, p) ≥ 0; along the segment that is num + t · den ≥ 0.
+        const double num = orient * ((e.x - a.x) * (from.z - a.z) - (e.z - a.z) * (from.x - a.x));
+        const double den = orient * ((e.x - a.x) * dz - (e.z - a.z) * dx);
+        if (std::abs(den) < kEps) {
+          out = num < 0;
+        } else if (den > 0) {
+          t0 = std::max(t0, -num / den);
+        } else {
+          t1 = std::min(t1, -num / den);
+        }
+        out = out || t0 > t1;
+      }
+      if (out || t1 - t0 < 1e-6) continue;
+      const double line = config.eye_height + (top - config.eye_height) * t1;
+      if (b->height > line + 1e-9) return true;
+    }
+    return false;
+  };
   // Receptacles and the poses that see them.
   std::vector<std::vector<int>> seen_by(static_cast<std::size_t>(m.poses()));
   const int reach = static_cast<int>(std::ceil(config.view_distance / config.cell)) + 1;
@@ -279,12 +316,27 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
     const int cx = static_cast<int>(std::floor((r.x - x0) / config.cell)),
               cz = static_cast<int>(std::floor((r.z - z0) / config.cell));
     const auto index = static_cast<int>(m.receptacles_.size());
+    const double top = (e.synthetic ? 0.0 : std::max(0.0, 2.0 * e.position.y)) + 0.05;
+    const double drop = config.eye_height - top;
+    const double reach_2d = !config.view_distance_from_camera ? config.view_distance
+                            : std::abs(drop) >= config.view_distance
+                                ? 0.0
+                                : std::sqrt(config.view_distance * config.view_distance - drop * drop);
+    auto within = [&](FloorPoint p) { return std::hypot(p.x - r.x, p.z - r.z) <= reach_2d + 1e-9; };
+    std::vector<const Box*> near;
+    if (config.furniture_occludes) {
+      const double span = config.view_distance + config.cell;
+      for (const auto& b : furniture)
+        if (b.x1 >= r.x - span && b.x0 <= r.x + span && b.z1 >= r.z - span && b.z0 <= r.z + span)
+          near.push_back(&b);
+    }
     for (int iz = std::max(0, cz - reach); iz <= std::min(m.depth_ - 1, cz + reach); ++iz)
       for (int ix = std::max(0, cx - reach); ix <= std::min(m.width_ - 1, cx + reach); ++ix) {
         const int c = iz * m.width_ + ix;
         if (!m.free(c)) continue;
         for (int h = 0; h < kHeadings; ++h)
-          if (m.sees(pose_of(c, h), {r.x, r.z})) {
+          if (m.sees(pose_of(c, h), {r.x, r.z}) && within(m.center(c)) &&
+              !occluded(m.center(c), {r.x, r.z}, top, idx, near)) {
             r.views.push_back(pose_of(c, h));
             seen_by[static_cast<std::size_t>(pose_of(c, h))].push_back(index);
           }

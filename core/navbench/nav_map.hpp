@@ -18,6 +18,15 @@ struct NavConfig {
   double wall_clearance = 0.1;      // a reachable point keeps this far from walls (agent radius)
   double view_distance = 1.5;       // success and observation radius (paper 000 §VI-B)
   double field_of_view_deg = 90.0;  // AI2-THOR's default horizontal field of view
+  // Furniture hides what lies behind it: a receptacle is seen only when no other piece's body
+  // rises above the sight line from the camera (eye_height) to the top of the receptacle
+  // (twice its centre height, as generated and ProcTHOR houses give centres), plus 5 cm for the
+  // object lying there.
+  bool furniture_occludes = true;
+  double eye_height = 1.5;
+  // The view distance counts from the camera to the object in 3D, as AI2-THOR's visibility
+  // distance does, so a low top is seen from nearer than a high one.
+  bool view_distance_from_camera = true;
 };
 
 // Headings in steps of 90°: 0 = +x, 1 = +z, 2 = −x, 3 = −z. A pose is cell · 4 + heading.

@@ -30,11 +30,10 @@ std::size_t GreedyPlanner::choose(std::span<const Candidate> cs) const {
 }
 
 std::size_t OsgPlanner::choose(std::span<const Candidate> cs) const {
-  double p_max = 0.0;
   int d_max = 0;
-  for (const auto& c : cs) p_max = std::max(p_max, c.p), d_max = std::max(d_max, c.steps);
-  const double pm = p_max > 0 ? p_max : 1.0, dm = d_max > 0 ? d_max : 1.0;
-  return argmax(cs, [&](const Candidate& c) { return alpha_ * c.p / pm - (1.0 - alpha_) * c.steps / dm; });
+  for (const auto& c : cs) d_max = std::max(d_max, c.steps);
+  const double dm = d_max > 0 ? d_max : 1.0;
+  return argmax(cs, [&](const Candidate& c) { return alpha_ * c.p - (1.0 - alpha_) * c.steps / dm; });
 }
 
 std::size_t CegPlanner::choose(std::span<const Candidate> cs) const {

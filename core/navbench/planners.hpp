@@ -30,8 +30,9 @@ class GreedyPlanner final : public Planner {
   [[nodiscard]] std::size_t choose(std::span<const Candidate> candidates) const override;
 };
 
-// One-step greedy: the candidate maximising α·p/p_max − (1 − α)·d/d_max, trading how likely the
-// target is there against how far it is, each scaled to [0, 1] over the current candidates.
+// One-step greedy: the candidate maximising α·p − (1 − α)·d/d_max, trading how likely the target
+// is there (p renormalised over the candidates) against how far it is (scaled by the farthest).
+// p is not rescaled by its maximum: the paper's OSG stays well below CEG (docs/navbench.md).
 class OsgPlanner final : public Planner {
  public:
   explicit OsgPlanner(double alpha = 0.5) : alpha_(alpha) {}

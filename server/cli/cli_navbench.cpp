@@ -14,7 +14,10 @@ constexpr const char* kNavbenchUsage =
     "  navbench --split normal|hard --scenes 50 --seed S [--out FILE]   object-goal navigation benchmark "
     "(Table I shape)\n"
     "           [--tasks-per-scene 10] [--max-steps 200] [--training-houses 10000] [--threads 2] "
-    "[--episodes]\n";
+    "[--episodes]\n"
+    "           [--markdown FILE]   the Table I layout with 95 % intervals and the paper's figures\n"
+    "           [--houses FILE.jsonl]   test houses from ProcTHOR house JSON, one per line (scenes "
+    "default to their number)\n";
 
 // An integer option within [lo, hi]; prints the problem and returns nullopt when it is not one.
 std::optional<std::int64_t> int_option(const CliArgs& a, const std::string& key, std::int64_t fallback,
@@ -61,6 +64,14 @@ int navbench_command(const std::vector<std::string>& args) {
   if (!store) return cli_report(store.error());
   auto knowledge = navbench::load_benchmark_knowledge(**store);
   if (!knowledge) return cli_report(knowledge.error());
+  if (auto file = a.opt("--houses")) {
+    auto text = cli_read_file(*file);
+    if (!text) return cli_report(text.error());
+    auto houses = navbench::read_procthor_houses(*text, *knowledge);
+    if (!houses) return cli_report(houses.error());
+    request.houses = std::move(*houses);
+    if (!a.opt("--scenes")) request.scenes = static_cast<int>(request.houses.size());
+  }
   auto inputs = navbench::prepare_inputs(*knowledge, request, static_cast<int>(*threads));
   if (!inputs) return cli_report(inputs.error());
   navbench::RunHooks hooks;
@@ -72,6 +83,9 @@ int navbench_command(const std::vector<std::string>& args) {
   std::cerr << "\n";
   if (!result) return cli_report(result.error());
   std::cout << navbench::format_table(*result);
+  if (auto md = a.opt("--markdown")) {
+    if (auto s = cli_write_file(*md, navbench::format_markdown(*result)); !s) return cli_report(s.error());
+  }
   if (auto out = a.opt("--out")) {
     if (auto s = cli_write_file(*out, navbench::to_json(*result, a.flag("--episodes")).dump(2) + "\n"); !s)
       return cli_report(s.error());

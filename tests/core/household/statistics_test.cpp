@@ -61,6 +61,8 @@ TEST(Statistics, LiesNearThePapersFigures) {
   const double ratio = r["activities"]["primaries"].get<double>() / r["activities"]["names"].get<double>();
   EXPECT_GT(ratio, 0.25);
   EXPECT_LT(ratio, 0.9);
+  // Issue 18: a vocabulary of primaries on the paper's scale (448), at least 300 over 50 personas.
+  EXPECT_GE(r["activities"]["primaries"].get<int>(), 300);
 }
 
 // DynamicTHOR's 50 characters: compare ages and activities per persona over the same 5 days.

@@ -8,7 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
+
+#include <unistd.h>
 
 #include "tests/core/navbench/navbench_fixture.hpp"
 
@@ -93,7 +98,9 @@ TEST(Benchmark, TasksTargetRecentlyMovedSingleObjectsOutOfSight) {
 
 TEST(Benchmark, ScoresArePercentagesWithSplNoAboveSr) {
   for (Split split : {Split::kNormal, Split::kHard}) {
-    auto r = run_benchmark(small(split, 8), knowledge(), small_pool(), small_counts(), {});
+    BenchmarkRequest request = small(split, 8, 3);
+    request.tasks_per_scene = 5;  // ProcTHOR-sized houses make each episode longer: keep the test cheap
+    auto r = run_benchmark(request, knowledge(), small_pool(), small_counts(), {});
     ASSERT_TRUE(r) << r.error().message();
     ASSERT_FALSE(r->tasks.empty());
     ASSERT_EQ(r->scores.size(), methods().size());
@@ -123,9 +130,11 @@ TEST(Benchmark, ScoresArePercentagesWithSplNoAboveSr) {
 TEST(Benchmark, TheSeedFixesTheTableWhateverTheThreads) {
   RunHooks one;
   one.threads = 1;
-  auto a = run_benchmark(small(Split::kNormal, 21), knowledge(), small_pool(), small_counts(), one);
-  auto b = run_benchmark(small(Split::kNormal, 21), knowledge(), small_pool(), small_counts(), {});
-  auto c = run_benchmark(small(Split::kNormal, 22), knowledge(), small_pool(), small_counts(), {});
+  BenchmarkRequest r21 = small(Split::kNormal, 21, 3), r22 = small(Split::kNormal, 22, 3);
+  r21.tasks_per_scene = r22.tasks_per_scene = 4;
+  auto a = run_benchmark(r21, knowledge(), small_pool(), small_counts(), one);
+  auto b = run_benchmark(r21, knowledge(), small_pool(), small_counts(), {});
+  auto c = run_benchmark(r22, knowledge(), small_pool(), small_counts(), {});
   ASSERT_TRUE(a && b && c);
   EXPECT_EQ(to_json(*a, true).dump(), to_json(*b, true).dump());
   EXPECT_NE(to_json(*a, true).dump(), to_json(*c, true).dump());
@@ -202,6 +211,87 @@ TEST(Benchmark, AnEpisodeReplaysWithItsPathAndVisits) {
       replay_task(request, static_cast<int>(r->tasks.size()), knowledge(), small_pool(), small_counts());
   ASSERT_FALSE(beyond);
   EXPECT_EQ(beyond.error().code, ErrorCode::kNotFound);
+}
+
+// `socsim navbench --houses FILE.jsonl`: the four ProcTHOR peer houses, one JSON per line in a
+// temporary file (read in place, never copied into the repository), are the test scenes.
+TEST(Benchmark, RunsOnProcthorHousesGivenAsJsonLines) {
+  const std::vector<std::string> names = {"zhiyuan_houses20_house_6.json", "zhiyuan_houses20_house_15.json",
+                                          "quinlan_hallway_houses_3.json", "quinlan_hallway_houses_4.json"};
+  const auto dir = std::filesystem::path(household::testing::shared_file("peers/procthor"));
+  if (!std::filesystem::exists(dir / names[0])) GTEST_SKIP() << "peer houses not present: " << dir;
+  const auto file =
+      std::filesystem::temp_directory_path() / ("socsim-procthor-" + std::to_string(::getpid()) + ".jsonl");
+  {
+    std::ofstream out(file);
+    for (const auto& n : names) {
+      std::ifstream in(dir / n);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      auto j = parse_json_untrusted(ss.str());
+      ASSERT_TRUE(j) << n;
+      out << j->dump() << "\n\n";  // blank lines are skipped
+    }
+  }
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::filesystem::remove(file);
+  auto houses = read_procthor_houses(text.str(), knowledge());
+  ASSERT_TRUE(houses) << houses.error().message();
+  ASSERT_EQ(houses->size(), 4u);
+  EXPECT_EQ((*houses)[2]->rooms.size(), 8u);
+
+  BenchmarkRequest request = small(Split::kNormal, 3, 4);
+  request.houses = *houses;
+  request.tasks_per_scene = 3;
+  auto t = make_test_scene(request, 2, knowledge(), small_pool());
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->house, (*houses)[2]) << "scene i is house i";
+  auto result = run_benchmark(request, knowledge(), small_pool(), small_counts(), {});
+  ASSERT_TRUE(result) << result.error().message();
+  const Json table = to_json(*result, false);
+  EXPECT_GT(table["tasks"].get<int>(), 0);
+  EXPECT_EQ(table["given_houses"].get<int>(), 4);
+  for (const auto& [key, row] : table["methods"].items()) {
+    EXPECT_GE(row["SR"].get<double>(), 0.0) << key;
+    EXPECT_LE(row["SPL"].get<double>(), row["SR"].get<double>() + 1e-9) << key;
+  }
+
+  auto bad = read_procthor_houses(text.str().substr(0, 40) + "\n", knowledge());
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error().code, ErrorCode::kValidation);
+  EXPECT_FALSE(read_procthor_houses("\n\n", knowledge()));
+  auto not_a_house = read_procthor_houses("{\"rooms\": 3}\n", knowledge());
+  ASSERT_FALSE(not_a_house);
+}
+
+// Table I output: 95 % t intervals over scenes in the JSON and the Markdown, the paper's figures
+// beside ours for the five map-based rows.
+TEST(Benchmark, TableOneHasIntervalsOverScenesAndThePapersFigures) {
+  EXPECT_NEAR(student_t_975(1), 12.706, 1e-3);
+  EXPECT_NEAR(student_t_975(30), 2.042, 1e-3);
+  EXPECT_NEAR(student_t_975(31), 2.040, 2e-3);
+  EXPECT_NEAR(student_t_975(1000), 1.962, 1e-3);
+  auto result = run_benchmark(small(Split::kNormal, 5, 3), knowledge(), small_pool(), small_counts(), {});
+  ASSERT_TRUE(result) << result.error().message();
+  const Json j = to_json(*result, false);
+  for (const auto& s : result->scores) {
+    EXPECT_GE(s.sr_ci, 0.0) << s.key;
+    EXPECT_LE(s.scenes, 3);
+    if (s.scenes >= 2) {
+      EXPECT_GT(s.el_ci + s.sr_ci, 0.0) << s.key << ": scenes differ";
+    }
+    EXPECT_DOUBLE_EQ(j["methods"][s.key]["SR_ci95"].get<double>(), s.sr_ci);
+  }
+  EXPECT_DOUBLE_EQ(j["methods"]["SP+CEG"]["paper"]["SR"].get<double>(), 68.12);
+  EXPECT_FALSE(j["methods"]["Posterior+CEG"].contains("paper"));
+  const std::string md = format_markdown(*result);
+  EXPECT_NE(md.find("| Method | Map | Hint | EL ↓ | SR (%) ↑ | SPL ↑ | paper EL | paper SR | paper SPL |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| 129.2 | 68.12 | 34.56 |"), std::string::npos) << md;
+  EXPECT_NE(md.find(" ± "), std::string::npos);
 }
 
 }  // namespace

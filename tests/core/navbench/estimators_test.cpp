@@ -125,23 +125,30 @@ TEST(Estimators, ScenePriorIgnoresTheTestScene) {
 
 TEST(Estimators, HintsAreReadFromTheResidentsWords) {
   const NavMap map = map_of(kitchen_and_bedroom());
-  auto r = read_hint(
+  auto r = household::read_hint(
       "Yes, I used the mug while having breakfast this morning and left it on the dining table in the "
       "kitchen.",
-      map);
+      knowledge());
   EXPECT_TRUE(r.used);
   EXPECT_EQ(r.receptacle_type, "DiningTable");
   ASSERT_TRUE(r.room);
   EXPECT_EQ(*r.room, RoomType::kKitchen);
-  r = read_hint("No, I don't think I've used the mug recently.", map);
+  ASSERT_NE(r.activity, nullptr);
+  EXPECT_EQ(r.activity->name, "having breakfast");
+  r = household::read_hint("No, I don't think I've used the mug recently.", knowledge());
   EXPECT_FALSE(r.used);
-  r = read_hint("Yes, I used it and left it on the piano in the hall.", map);
+  r = household::read_hint("Yes, I used it and left it on the piano in the hall.", knowledge());
   EXPECT_TRUE(r.used);
   EXPECT_TRUE(r.receptacle_type.empty());
   EXPECT_FALSE(r.room);
+  r = household::read_hint("I'm not sure. Maybe I had the mug in the kitchen?", knowledge());
+  EXPECT_TRUE(r.used);
+  EXPECT_TRUE(r.vague);
+  ASSERT_TRUE(r.room);
+  EXPECT_EQ(*r.room, RoomType::kKitchen);
 
   auto prior = std::make_shared<const ScenePriorEstimator>(small_counts());
-  const HintEstimator hint(prior, 0.85);
+  const HintEstimator hint(prior, knowledge(), 0.85);
   EstimateQuery q;
   q.map = &map;
   q.target_type = "Mug";
@@ -152,6 +159,19 @@ TEST(Estimators, HintsAreReadFromTheResidentsWords) {
   EXPECT_GE(p[2], 0.85);
   q.hint = "No, I don't think I've used the mug recently.";
   EXPECT_EQ(hint.estimate(q), prior->estimate(q));
+  // A room without a receptacle: the mass moves into that room, less when hedged.
+  q.hint = "I think I had the mug while having breakfast this morning, in the kitchen.";
+  const auto sure = hint.estimate(q);
+  q.hint = "I'm not sure. Maybe I had the mug in the kitchen?";
+  const auto hedged = hint.estimate(q);
+  const auto before = prior->estimate(q);
+  double in_kitchen = 0, hedged_kitchen = 0, prior_kitchen = 0;
+  for (std::size_t i = 0; i < map.receptacles().size(); ++i)
+    if (map.receptacles()[i].room_type == RoomType::kKitchen)
+      in_kitchen += sure[i], hedged_kitchen += hedged[i], prior_kitchen += before[i];
+  EXPECT_GT(in_kitchen, hedged_kitchen);
+  EXPECT_GE(hedged_kitchen, prior_kitchen);
+  EXPECT_NEAR(sum(sure), 1.0, 1e-12);
 }
 
 TEST(Estimators, PosteriorNeverRulesOutTheTruthAndIsCalibrated) {

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "tests/core/navbench/navbench_fixture.hpp"
 
 namespace socsim::navbench {
@@ -82,11 +85,22 @@ TEST(NavMap, SeeingNeedsRangeFieldOfViewAndLineOfSight) {
   EXPECT_FALSE(map.sees(pose_of(cell, 0), {2.0, 1.5}));  // 95° to the side: outside a 90° view
   EXPECT_FALSE(map.sees(pose_of(cell_near(map, 0.1, 0.1), 0), {2.0, 1.5}));  // 2.4 m away
   EXPECT_FALSE(map.sees(pose_of(cell_near(map, 3.6, 2.6), 0), {4.5, 2.6}));  // 0.9 m, but through the wall
-  // The table is on the map with the poses that see it; the one above is among them.
-  const auto& table = map.receptacles()[0];
+  // The table is on the map with the poses that see it; the one above is among them when the
+  // distance is taken on the floor, not when it is taken from a camera 1.5 m up to the table's
+  // top at 0.85 m (1.35 m on the floor at most).
+  NavConfig flat;
+  flat.view_distance_from_camera = false;
+  const NavMap flat_map = map_of(two_rooms(), flat);
+  const auto& table = flat_map.receptacles()[0];
   EXPECT_EQ(table.type, "DiningTable");
   EXPECT_TRUE(std::binary_search(table.views.begin(), table.views.end(), pose_of(cell, 1)));
   for (int v : table.views) EXPECT_TRUE(map.sees(v, {table.x, table.z}));
+  const auto& views = map.receptacles()[0].views;
+  EXPECT_FALSE(std::binary_search(views.begin(), views.end(), pose_of(cell, 1)));
+  for (int v : views) {
+    const auto c = map.center(cell_of(v));
+    EXPECT_LE(std::hypot(c.x - table.x, c.z - table.z), std::sqrt(1.5 * 1.5 - 0.65 * 0.65) + 1e-9);
+  }
 }
 
 int turns(int from, int to) {
@@ -151,6 +165,32 @@ TEST(NavMap, AHouseWithoutRoomsIsRefused) {
   ASSERT_FALSE(m);
   EXPECT_EQ(m.error().code, ErrorCode::kValidation);
   EXPECT_EQ(m.error().errors.at(0).pointer, "/rooms");
+}
+
+//  z=4 +--------------+
+//      |  [side table]|   top at 0.65 m
+//      |  [shelf]     |   1.8 m tall, between the table and the agent
+//      |     agent ^  |
+//  z=0 +--------------+
+TEST(NavMap, TallFurnitureHidesWhatIsBehindIt) {
+  auto house =
+      hand_built_house({{RoomType::kLivingRoom, 0, 0, 4, 4}}, {},
+                       {{"SideTable", 0, 2.0, 3.0, 0.5, 0.5}, {"ShelvingUnit", 0, 2.0, 2.2, 1.2, 0.4}});
+  house.entities[0].position.y = 0.3;  // top at 0.6 m
+  house.entities[1].position.y = 0.9;  // 1.8 m tall
+  const int agent = pose_of(cell_near(map_of(house), 2.1, 1.85), 1);
+  NavConfig open;
+  open.furniture_occludes = false;
+  const NavMap blind = map_of(house), clear = map_of(house, open);
+  auto sees_table = [&](const NavMap& m) {
+    const auto v = m.visible_from(agent);
+    return std::find(v.begin(), v.end(), 0) != v.end();
+  };
+  EXPECT_TRUE(sees_table(clear));
+  EXPECT_FALSE(sees_table(blind));
+  // A low piece in between (a 0.45 m seat) does not hide a 0.6 m top.
+  house.entities[1].position.y = 0.225;
+  EXPECT_TRUE(sees_table(map_of(house)));
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // The planners on candidates and on hand-built houses where the right visiting order is known:
 // Greedy takes the nearest, CEG the best probability per step, OSG the best α-weighted trade of
-// scaled probability against scaled distance.
+// probability against distance scaled by the farthest candidate.
 #include "core/navbench/planners.hpp"
 
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@ TEST(Planners, EachPicksByItsOwnRule) {
   const std::vector<Candidate> a = {{0, 0.10, 2}, {1, 0.60, 30}, {2, 0.30, 40}};
   EXPECT_EQ(GreedyPlanner().choose(a), 0u);
   EXPECT_EQ(CegPlanner().choose(a), 0u);     // 0.05 per step beats 0.02 and 0.0075
-  EXPECT_EQ(OsgPlanner(0.5).choose(a), 1u);  // 0.5·1 − 0.5·0.75 = 0.125 beats 0.058 and −0.25
+  EXPECT_EQ(OsgPlanner(0.5).choose(a), 0u);  // 0.5·0.1 − 0.5·2/40 = 0.025 beats −0.075 and −0.35
   const std::vector<Candidate> b = {{0, 0.05, 2}, {1, 0.60, 10}, {2, 0.35, 40}};
   EXPECT_EQ(GreedyPlanner().choose(b), 0u);
   EXPECT_EQ(CegPlanner().choose(b), 1u);  // 0.06 per step beats 0.025
@@ -77,9 +77,11 @@ TEST(Planners, CegAndOsgGoStraightToTheLikelyFarEnd) {
   EXPECT_LT(ceg.spl, greedy.spl);
 }
 
-//  Three rooms in a row: a fairly likely receptacle in a corner behind the start (0), the likeliest one in
-//  the next room (1) and an unlikely one two rooms away (2). CEG compares probability per step and takes the
-//  near one; OSG scales distances by the farthest candidate and takes the likeliest.
+//  Three rooms in a row: a receptacle in a corner behind the start (0), one in the next room (1)
+//  and one two rooms away (2). CEG compares probability per step; OSG trades probability against
+//  distance scaled by the farthest candidate, so a likelier but farther receptacle needs a larger
+//  lead with OSG than with CEG. Where the two rules pick differently, each episode goes first to
+//  its own rule's choice.
 TEST(Planners, CegAndOsgDisagreeWhereTheTradeIsClose) {
   const auto house =
       hand_built_house({{RoomType::kKitchen, 0, 0, 4, 3},
@@ -93,24 +95,31 @@ TEST(Planners, CegAndOsgDisagreeWhereTheTradeIsClose) {
                d2 = shortest_steps(map, start, 2);
   ASSERT_LT(d0, d1);
   ASSERT_LT(d1, d2);
-  const std::vector<double> p = {0.4, 0.6, 0.0};
-  // The rules applied by hand to the measured distances.
-  ASSERT_GT(0.4 / d0, 0.6 / d1);                                          // CEG: the corner first
-  ASSERT_GT(0.5 * 1.0 - 0.5 * d1 / d2, 0.5 * 0.4 / 0.6 - 0.5 * d0 / d2);  // OSG: the likeliest first
+  // The bed keeps 0.2. The likelier sofa: CEG takes it once p1/d1 beats p0/d0; OSG once
+  // 0.5·(p1 − p0) beats 0.5·(d1 − d0)/d2. Find a split where CEG goes to the sofa, OSG to the corner.
+  double p0 = -1.0;
+  for (double q = 0.05; q < 0.4; q += 0.002) {
+    const double q1 = 0.8 - q;
+    const bool ceg_sofa = q1 / d1 > q / d0;
+    const bool osg_sofa = 0.5 * q1 - 0.5 * d1 / d2 > 0.5 * q - 0.5 * d0 / d2;
+    if (ceg_sofa && !osg_sofa) p0 = q;
+  }
+  if (p0 < 0) GTEST_SKIP() << "no close trade at these distances: " << d0 << ", " << d1 << ", " << d2;
+  const std::vector<double> p = {p0, 0.8 - p0, 0.2};
   // The target is where the estimate says it most likely is: on the sofa.
   const auto ceg = run_episode(map, {start, 1, 200}, p, CegPlanner());
   const auto osg = run_episode(map, {start, 1, 200}, p, OsgPlanner(0.5));
   const auto greedy = run_episode(map, {start, 1, 200}, p, GreedyPlanner());
-  EXPECT_EQ(ceg.visited, (std::vector<int>{0, 1}));
-  EXPECT_EQ(osg.visited, (std::vector<int>{1}));
+  EXPECT_EQ(ceg.visited, (std::vector<int>{1}));
+  EXPECT_EQ(osg.visited, (std::vector<int>{0, 1}));
   EXPECT_EQ(greedy.visited, (std::vector<int>{0, 1}));
-  EXPECT_EQ(osg.steps, osg.shortest);
+  EXPECT_EQ(ceg.steps, ceg.shortest);
   for (const auto* e : {&ceg, &osg, &greedy}) {
     EXPECT_TRUE(e->success);
     EXPECT_GE(e->steps, e->shortest);
     EXPECT_DOUBLE_EQ(e->spl, static_cast<double>(e->shortest) / e->steps);
   }
-  EXPECT_LT(osg.steps, ceg.steps);
+  EXPECT_LT(ceg.steps, osg.steps);
 }
 
 }  // namespace
