@@ -7,7 +7,7 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 packages=(
   build-essential cmake ninja-build pkg-config git curl python3
   libcpp-httplib-dev nlohmann-json3-dev libcurl4-openssl-dev libeigen3-dev
-  libsqlite3-dev sqlite3 libyaml-cpp-dev libgtest-dev libgmock-dev libgeos-dev
+  libsqlite3-dev sqlite3 libpq-dev libyaml-cpp-dev libgtest-dev libgmock-dev libgeos-dev
   libboost-dev libexpected-dev libssl-dev zlib1g-dev clang-format ccache
   libzstd-dev  # MCAP chunk compression (core/interop/mcap_writer)
   libxml2-utils  # xmllint: the shell e2e tests check XML exports
@@ -16,7 +16,9 @@ packages=(
 )
 if [ "${1:-}" = "--with-browser" ]; then
   # Test-only: Chromium for the viewer tests, nginx for the reverse-proxy fault tests.
-  packages+=(chromium nginx)
+  # PostgreSQL's server: the store, catalogue, jobs and API tests run against a scratch cluster
+  # too (tests/pg/postgres.sh); the daemon itself only needs libpq.
+  packages+=(chromium nginx postgresql)
   # Node.js for the browser tests; a machine that already has node (e.g. from NodeSource) keeps it.
   command -v node >/dev/null 2>&1 || packages+=(nodejs)
   command -v npm >/dev/null 2>&1 || packages+=(npm)

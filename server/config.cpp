@@ -156,7 +156,7 @@ const std::vector<FlagSpec>& serve_flags() {
       {"--ws-port", "SOCSIM_WS_PORT", "WebSocket port (default 8081)"},
       {"--public-host", "SOCSIM_PUBLIC_HOST",
        "host name clients use to reach this server (for URLs in /info)"},
-      {"--db", "SOCSIM_DB", "SQLite file (default ./var/socsim.db)"},
+      {"--db", "SOCSIM_DB", "SQLite file (default ./var/socsim.db) or postgresql:// URL"},
       {"--web-root", "SOCSIM_WEB_ROOT", "static viewer files served at / (default ./web)"},
       {"--threads", "SOCSIM_THREADS", "HTTP worker threads (default 8)"},
       {"--max-body", "SOCSIM_MAX_BODY", "largest request body in bytes (default 2097152)"},

@@ -86,7 +86,7 @@ int serve_command(const std::vector<std::string>& args) {
             {"version", build::kVersion},
             {"http", "http://" + config->host + ":" + std::to_string(*http_port)},
             {"websocket", "ws://" + config->host + ":" + std::to_string(*ws_port) + "/ws"},
-            {"db", config->db},
+            {"db", (*store)->path()},  // a URL without its password
             {"schema_version", (*store)->schema_version()},
             {"migrations_applied", (*store)->migration_report().applied},
             {"writes_require_key", !config->api_keys.empty()},

@@ -11,6 +11,8 @@
 # Developers: `cmake --preset dev && cmake --build --preset dev && ctest --preset dev` runs the
 # suite without sanitizers; `ctest --preset ci` does so on the CI's GCC build.
 # tests/fuzz/run.sh is for longer local libFuzzer runs (preset fuzz, build/fuzz).
+# The store and API tests also run against a scratch PostgreSQL server (tests/pg/postgres.sh,
+# SOCSIM_TEST_POSTGRES); without one they skip, saying so.
 # Used by README and by .ci/run. Each phase prints its wall time (docs/PERFORMANCE.md, CI time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,6 +32,12 @@ phase "asan: configure and build"
 cmake --preset asan -DSOCSIM_FUZZ_SECONDS="${SOCSIM_FUZZ_SECONDS:-10}" >/dev/null
 cmake --build --preset asan -j "$jobs"
 phase "asan: test"
+# A scratch PostgreSQL server for the store tests and the pg.* entries (the API, jobs and catalogue
+# tests on PostgreSQL; issue 21), stopped however the tests end.
+pgdir=$(mktemp -d /tmp/socsim-pg.XXXXXX)
+trap 'bash tests/pg/postgres.sh stop "$pgdir"; rm -rf "$pgdir"' EXIT
+SOCSIM_TEST_POSTGRES=$(bash tests/pg/postgres.sh start "$pgdir")
+export SOCSIM_TEST_POSTGRES
 ctest --preset asan -j "$jobs"
 phase "done"
 command -v ccache >/dev/null && ccache -s | grep -E 'Hits|Misses' || true

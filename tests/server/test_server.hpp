@@ -1,10 +1,13 @@
 #pragma once
 // A real socsim API server on a free 127.0.0.1 port with its own SQLite file, for tests that
-// speak HTTP to it.
+// speak HTTP to it — or its own PostgreSQL database when SOCSIM_TEST_BACKEND=postgres (the ctest
+// entries pg.* run the API, jobs and catalogue tests so; tests/support/test_database.hpp).
 #include <httplib.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -13,6 +16,7 @@
 #include "core/common/json_io.hpp"
 #include "server/api_server.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/test_database.hpp"
 
 namespace socsim::testing {
 
@@ -35,7 +39,15 @@ class TestServer {
   explicit TestServer(server::ServerConfig config = {}) {
     config.host = "127.0.0.1";
     config.port = 0;
-    config.db = dir_.file("socsim.db");
+    const char* backend = std::getenv("SOCSIM_TEST_BACKEND");
+    if (backend && std::string(backend) == "postgres") {
+      db_ = std::make_unique<TestDatabase>(Backend::kPostgres);
+      if (db_->target().empty())
+        throw std::runtime_error("SOCSIM_TEST_BACKEND=postgres: " + db_->skip_reason());
+      config.db = db_->target();
+    } else {
+      config.db = dir_.file("socsim.db");
+    }
     config.web_root = dir_.file("web");
     std::filesystem::create_directories(config.web_root);
     std::ofstream(config.web_root + "/index.html") << "<!doctype html><title>socsim</title>";
@@ -69,6 +81,7 @@ class TestServer {
 
  private:
   TempDir dir_;
+  std::unique_ptr<TestDatabase> db_;  // PostgreSQL runs only; outlives the store
   std::unique_ptr<store::Store> store_;
   std::unique_ptr<server::Services> services_;
   std::unique_ptr<server::ApiServer> api_;

@@ -7,7 +7,7 @@
 #include <set>
 #include <thread>
 
-#include "tests/support/temp_dir.hpp"
+#include "tests/support/test_database.hpp"
 
 namespace socsim::cards {
 namespace {
@@ -23,20 +23,22 @@ CardContent content(const std::string& title, const std::string& prompt, std::ve
   return c;
 }
 
-class CatalogueTest : public ::testing::Test {
+class CatalogueTest : public ::testing::TestWithParam<testing::Backend> {
  protected:
   void SetUp() override {
-    auto s = store::Store::open(dir_.file("cards.db"));
+    db_ = std::make_unique<testing::TestDatabase>(GetParam());
+    SOCSIM_REQUIRE_DATABASE(*db_);
+    auto s = store::Store::open(db_->target());
     ASSERT_TRUE(s) << s.error().message();
     store_ = std::move(*s);
     catalogue_ = std::make_unique<CardCatalogue>(*store_);
   }
-  testing::TempDir dir_;
+  std::unique_ptr<testing::TestDatabase> db_;
   std::unique_ptr<store::Store> store_;
   std::unique_ptr<CardCatalogue> catalogue_;
 };
 
-TEST_F(CatalogueTest, CreatedCardReadsBackIdentically) {
+TEST_P(CatalogueTest, CreatedCardReadsBackIdentically) {
   auto c =
       catalogue_->create(content("Coffee break", "staff chat near the coffee machine", {"social"}), "alice");
   ASSERT_TRUE(c) << c.error().message();
@@ -47,7 +49,7 @@ TEST_F(CatalogueTest, CreatedCardReadsBackIdentically) {
   EXPECT_EQ(catalogue_->get("crd_00000000000000000000").error().code, ErrorCode::kNotFound);
 }
 
-TEST_F(CatalogueTest, NewVersionPointsToItsParentAndInheritsFields) {
+TEST_P(CatalogueTest, NewVersionPointsToItsParentAndInheritsFields) {
   auto v1 = catalogue_->create(content("Queue", "patients queue", {"queue"}, "hospital"), "alice").value();
   auto v2 = catalogue_->create_version(v1.id, Json{{"title", "Queue, longer"}}, "bob");
   ASSERT_TRUE(v2) << v2.error().message();
@@ -62,7 +64,7 @@ TEST_F(CatalogueTest, NewVersionPointsToItsParentAndInheritsFields) {
   EXPECT_EQ(bad.error().errors.at(0).pointer, "/seed");
 }
 
-TEST_F(CatalogueTest, PageWalkVisitsEveryCardExactlyOnce) {
+TEST_P(CatalogueTest, PageWalkVisitsEveryCardExactlyOnce) {
   std::set<std::string> ids;
   for (int i = 0; i < 23; ++i)
     ids.insert(catalogue_->create(content("Card " + std::to_string(i), "p", {}), "alice").value().id);
@@ -84,7 +86,7 @@ TEST_F(CatalogueTest, PageWalkVisitsEveryCardExactlyOnce) {
   EXPECT_EQ(catalogue_->list(q).error().code, ErrorCode::kBadRequest);
 }
 
-TEST_F(CatalogueTest, SearchAndFiltersFindTheRightCards) {
+TEST_P(CatalogueTest, SearchAndFiltersFindTheRightCards) {
   auto evac =
       catalogue_
           ->create(content("Fire drill", "everyone evacuates to the exits", {"emergency"}, "office"), "alice")
@@ -120,7 +122,7 @@ TEST_F(CatalogueTest, SearchAndFiltersFindTheRightCards) {
   EXPECT_EQ(ids(q), std::vector<std::string>{evac.id});
 }
 
-TEST_F(CatalogueTest, OnlyTheAuthorDeletesAndSearchForgetsDeletedCards) {
+TEST_P(CatalogueTest, OnlyTheAuthorDeletesAndSearchForgetsDeletedCards) {
   auto c = catalogue_->create(content("Mine", "unique wombat prompt", {"x"}), "alice").value();
   auto r = catalogue_->remove(c.id, "bob", false);
   ASSERT_FALSE(r);
@@ -135,12 +137,12 @@ TEST_F(CatalogueTest, OnlyTheAuthorDeletesAndSearchForgetsDeletedCards) {
   EXPECT_TRUE(catalogue_->list(q).value().items.empty());
 }
 
-TEST_F(CatalogueTest, ExportImportIntoAnotherDatabaseKeepsHashAndBytes) {
+TEST_P(CatalogueTest, ExportImportIntoAnotherDatabaseKeepsHashAndBytes) {
   auto c = catalogue_->create(content("Bottleneck", "crowd squeezes through a door", {"bottleneck"}), "alice")
                .value();
   const std::string doc = catalogue_->export_card(c.id).value();
-  testing::TempDir other_dir;
-  auto other_store = store::Store::open(other_dir.file("other.db")).value();
+  testing::TestDatabase other_db(GetParam());
+  auto other_store = store::Store::open(other_db.target()).value();
   CardCatalogue other(*other_store);
   auto imported = other.import_card(doc, "alice");
   ASSERT_TRUE(imported) << imported.error().message();
@@ -152,11 +154,11 @@ TEST_F(CatalogueTest, ExportImportIntoAnotherDatabaseKeepsHashAndBytes) {
   EXPECT_FALSE(again->created) << "importing the same card twice is a no-op";
 }
 
-TEST_F(CatalogueTest, ImportRecordsTheImporterAsAuthorNotTheFile) {
+TEST_P(CatalogueTest, ImportRecordsTheImporterAsAuthorNotTheFile) {
   auto c = catalogue_->create(content("Queue", "a queue", {}), "alice").value();
   const std::string doc = catalogue_->export_card(c.id).value();
-  testing::TempDir other_dir;
-  auto other_store = store::Store::open(other_dir.file("other.db")).value();
+  testing::TestDatabase other_db(GetParam());
+  auto other_store = store::Store::open(other_db.target()).value();
   CardCatalogue other(*other_store);
   auto imported = other.import_card(doc, "bob");
   ASSERT_TRUE(imported) << imported.error().message();
@@ -165,7 +167,7 @@ TEST_F(CatalogueTest, ImportRecordsTheImporterAsAuthorNotTheFile) {
   EXPECT_EQ(other.get(c.id)->author, "bob");
 }
 
-TEST_F(CatalogueTest, ImportOfADifferentCardUnderAnExistingIdConflicts) {
+TEST_P(CatalogueTest, ImportOfADifferentCardUnderAnExistingIdConflicts) {
   auto c = catalogue_->create(content("A", "a", {}), "alice").value();
   Card forged = c;
   forged.content.title = "B";
@@ -176,7 +178,7 @@ TEST_F(CatalogueTest, ImportOfADifferentCardUnderAnExistingIdConflicts) {
   EXPECT_EQ(catalogue_->get(c.id)->content.title, "A");
 }
 
-TEST_F(CatalogueTest, ConcurrentCreatesAreAllKept) {
+TEST_P(CatalogueTest, ConcurrentCreatesAreAllKept) {
   std::vector<std::thread> threads;
   for (int t = 0; t < 4; ++t)
     threads.emplace_back([&, t] {
@@ -186,6 +188,10 @@ TEST_F(CatalogueTest, ConcurrentCreatesAreAllKept) {
   for (auto& th : threads) th.join();
   EXPECT_EQ(catalogue_->count().value(), 100);
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, CatalogueTest,
+                         ::testing::Values(testing::Backend::kSqlite, testing::Backend::kPostgres),
+                         testing::backend_name);
 
 }  // namespace
 }  // namespace socsim::cards

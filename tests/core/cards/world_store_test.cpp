@@ -6,7 +6,7 @@
 
 #include <set>
 
-#include "tests/support/temp_dir.hpp"
+#include "tests/support/test_database.hpp"
 
 namespace socsim::cards {
 namespace {
@@ -26,18 +26,20 @@ StoredWorld world(const std::string& name, const std::string& domain) {
   return w;
 }
 
-class WorldStoreTest : public ::testing::Test {
+class WorldStoreTest : public ::testing::TestWithParam<testing::Backend> {
  protected:
   void SetUp() override {
-    auto s = store::Store::open(dir_.file("worlds.db"));
+    db_ = std::make_unique<testing::TestDatabase>(GetParam());
+    SOCSIM_REQUIRE_DATABASE(*db_);
+    auto s = store::Store::open(db_->target());
     ASSERT_TRUE(s) << s.error().message();
     store_ = std::move(*s);
   }
-  testing::TempDir dir_;
+  std::unique_ptr<testing::TestDatabase> db_;
   std::unique_ptr<store::Store> store_;
 };
 
-TEST_F(WorldStoreTest, AddedWorldReadsBackIdentically) {
+TEST_P(WorldStoreTest, AddedWorldReadsBackIdentically) {
   WorldStore worlds(*store_);
   auto added = worlds.add(world("clinic_a", "clinic"));
   ASSERT_TRUE(added) << added.error().message();
@@ -55,14 +57,14 @@ TEST_F(WorldStoreTest, AddedWorldReadsBackIdentically) {
   EXPECT_EQ(got->content_hash, added->content_hash);
 }
 
-TEST_F(WorldStoreTest, MissingWorldIsNotFoundNamingTheId) {
+TEST_P(WorldStoreTest, MissingWorldIsNotFoundNamingTheId) {
   auto got = WorldStore(*store_).get("wld_00000000000000000000");
   ASSERT_FALSE(got);
   EXPECT_EQ(got.error().code, ErrorCode::kNotFound);
   EXPECT_NE(got.error().detail.find("wld_00000000000000000000"), std::string::npos);
 }
 
-TEST_F(WorldStoreTest, PagesAreNewestFirstWithoutRepeatsAndFilterByDomain) {
+TEST_P(WorldStoreTest, PagesAreNewestFirstWithoutRepeatsAndFilterByDomain) {
   WorldStore worlds(*store_);
   std::vector<std::string> ids;
   for (int i = 0; i < 7; ++i) {
@@ -90,6 +92,10 @@ TEST_F(WorldStoreTest, PagesAreNewestFirstWithoutRepeatsAndFilterByDomain) {
   EXPECT_FALSE(offices->next_before);
   for (const auto& w : offices->items) EXPECT_EQ(w.domain, "office");
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, WorldStoreTest,
+                         ::testing::Values(testing::Backend::kSqlite, testing::Backend::kPostgres),
+                         testing::backend_name);
 
 }  // namespace
 }  // namespace socsim::cards
