@@ -9,6 +9,7 @@
 
 #include "core/store/migrations.hpp"
 #include "core/store/store.hpp"
+#include "tests/core/store/ledger.hpp"
 #include "tests/support/test_database.hpp"
 
 namespace socsim::store {
@@ -124,22 +125,8 @@ const std::vector<Migration>& pg_ledger() {
   return m;
 }
 
-Result<std::int64_t> scalar(Database& db, const std::string& sql) {
-  auto st = db.prepare(sql);
-  if (!st) return tl::unexpected(st.error());
-  if (auto r = st->step(); !r) return tl::unexpected(r.error());
-  return st->int64(0);
-}
-
-Status transfer(Database& db, std::int64_t amount) {
-  for (auto [acct, delta] : {std::pair{1, -amount}, std::pair{2, amount}}) {
-    auto st = db.prepare("UPDATE account SET balance = balance + ? WHERE id = ?");
-    if (!st) return tl::unexpected(st.error());
-    st->bind(1, delta).bind(2, acct);
-    if (auto s = st->run(); !s) return s;
-  }
-  return {};
-}
+using ledger::scalar;
+using ledger::transfer;
 
 TEST(PostgresStore, AFailedWriteLeavesTheStoreAsItWasAndConstraintsAreConflicts) {
   TestDatabase pg(Backend::kPostgres, false);

@@ -1,6 +1,7 @@
 // The thread-safe store: WAL + busy_timeout + foreign keys, writes that fail change nothing,
 // concurrent writers lose nothing and readers never see half a write.
 #include "core/store/store.hpp"
+#include "tests/core/store/ledger.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,22 +22,8 @@ const std::vector<Migration>& ledger_schema() {
   return m;
 }
 
-Result<std::int64_t> scalar(Database& db, const std::string& sql) {
-  auto st = db.prepare(sql);
-  if (!st) return tl::unexpected(st.error());
-  if (auto r = st->step(); !r) return tl::unexpected(r.error());
-  return st->int64(0);
-}
-
-Status transfer(Database& db, std::int64_t amount) {
-  for (auto [acct, delta] : {std::pair{1, -amount}, std::pair{2, amount}}) {
-    auto st = db.prepare("UPDATE account SET balance = balance + ? WHERE id = ?");
-    if (!st) return tl::unexpected(st.error());
-    st->bind(1, delta).bind(2, acct);
-    if (auto s = st->run(); !s) return s;
-  }
-  return {};
-}
+using ledger::scalar;
+using ledger::transfer;
 
 TEST(Store, OpensWithWalAndForeignKeysAndCreatesTheDirectory) {
   testing::TempDir dir;
