@@ -206,6 +206,12 @@ Result<BenchmarkInputs> prepare_inputs(const household::HouseholdKnowledge& know
   return in;
 }
 
+std::vector<Seconds> paper_instants() {
+  constexpr Seconds kHour = 3600;
+  return {2 * household::kSecondsPerDay + 17 * kHour + kHour / 2,
+          4 * household::kSecondsPerDay + 23 * kHour + kHour / 2};
+}
+
 std::uint64_t test_scene_seed(std::uint64_t seed, Split split, int index) {
   std::uint64_t state = seed ^
                         fnv1a64(split == Split::kNormal ? "navbench/test/normal" : "navbench/test/hard") ^
@@ -268,11 +274,8 @@ std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestSce
     int receptacle;
   };
   std::vector<Option> candidates;
-  const auto minutes = static_cast<std::int64_t>(scene.end() / 60);
-  for (int k = 0; k < request.instants; ++k) {
-    const Seconds t0 = rng.between(household::kMinutesPerDay,
-                                   std::max<std::int64_t>(household::kMinutesPerDay, minutes - 1)) *
-                       60;
+  for (const Seconds t0 : request.instants) {
+    if (t0 < 0 || t0 >= scene.end()) continue;
     for (std::size_t s = 0; s < singles.size(); ++s) {
       const int object = singles[s].second;
       bool moved = false;
