@@ -88,11 +88,13 @@ std::optional<Split> parse_split(std::string_view name) {
 }
 
 const std::vector<std::string>& target_types() {
-  // Five of them are ProcTHOR ObjectNav targets, six are not (as in the paper, whose targets are
-  // "not fully covered" by the visual models' types); all are often moved and often alone.
-  static const std::vector<std::string> types = {"AlarmClock", "Apple",         "Bowl",   "CellPhone",
-                                                 "Cloth",      "KeyChain",      "Laptop", "Mug",
-                                                 "Newspaper",  "RemoteControl", "Watch"};
+  // The paper names no list. Its released tasks (DynamicTHOR sampled_scenes_normal/hard data_0)
+  // target eight types: Book, CellPhone, Laptop, Mug, Newspaper, Pen, Pencil, RemoteControl. The
+  // other three are our choice: of our earlier eleven we keep the carried personal items closest
+  // in kind to those (Cloth, KeyChain, Watch) and drop AlarmClock, Apple and Bowl.
+  static const std::vector<std::string> types = {"Book",   "CellPhone",     "Cloth",     "KeyChain",
+                                                 "Laptop", "Mug",           "Newspaper", "Pen",
+                                                 "Pencil", "RemoteControl", "Watch"};
   return types;
 }
 
@@ -505,6 +507,8 @@ Json to_json(const BenchmarkResult& r, bool with_tasks) {
                       {"scene", t.scene},
                       {"time", t.time},
                       {"target", t.target_type},
+                      {"receptacle", t.receptacle_id},
+                      {"hint", t.hint},
                       {"shortest", t.shortest},
                       {"outcomes", outcome}});
     }
