@@ -1,6 +1,6 @@
 #pragma once
 // The object-goal navigation benchmark of paper 000 §VI on dynamic household scenes: test scenes
-// per split, tasks at two instants (recently moved, single-instance targets of 11 types), the
+// per split, tasks at two fixed instants (recently moved, single-instance targets of 11 types), the
 // methods of Table I plus the schedule-aware posterior, and EL / SR / SPL. The seed fixes every
 // scene, task, episode and number; the thread count does not change them.
 #include <cstdint>
@@ -24,12 +24,18 @@ std::optional<Split> parse_split(std::string_view name);
 // The 11 target object types (things people carry around and then look for).
 const std::vector<std::string>& target_types();
 
+// Friday 17:30 and Sunday 23:30 of a scene starting Wednesday 00:00 (see BenchmarkRequest).
+std::vector<household::Seconds> paper_instants();
+
 struct BenchmarkRequest {
   Split split = Split::kNormal;
   int scenes = 50;
   std::uint64_t seed = 0;
   int tasks_per_scene = 10;  // "up to 10 tasks per scene at two instants"
-  int instants = 2;
+  // When the tasks are set, from 00:00 of the first day (Wednesday): the paper's released scenes
+  // (DynamicTHOR sampled_scenes_normal and _hard) put both at Friday 17:30 and Sunday 23:30.
+  // An instant at or after the scene's end is skipped.
+  std::vector<household::Seconds> instants = paper_instants();
   int max_steps = 200;
   household::Seconds recent = household::kSecondsPerDay;  // "recently moved": within this before the instant
   int training_houses = 10000;      // static houses the scene prior is counted on (as ProcTHOR-10k)
@@ -98,7 +104,7 @@ struct NavTask {
   int hint_resident = -1;
   std::string hint;
 };
-// Up to tasks_per_scene tasks: instants drawn after the first day, targets of the 11 types with
+// Up to tasks_per_scene tasks: at the request's instants, targets of the 11 types with
 // one instance in the house that moved within `recent` before the instant and can be seen from
 // the start's part of the grid; the start pose drawn uniformly from that part, not already seeing
 // the target; one resident asked for a hint.

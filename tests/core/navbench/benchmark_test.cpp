@@ -85,7 +85,8 @@ TEST(Benchmark, TasksTargetRecentlyMovedSingleObjectsOutOfSight) {
       EXPECT_TRUE(moved);
       EXPECT_EQ(t->map->receptacles()[static_cast<std::size_t>(task.target_receptacle)].entity,
                 t->scene->receptacle_at(object, task.time));
-      EXPECT_GE(task.time, household::kSecondsPerDay);
+      EXPECT_NE(std::find(request.instants.begin(), request.instants.end(), task.time),
+                request.instants.end());
       EXPECT_GT(task.shortest, 0);
       EXPECT_EQ(task.shortest, shortest_steps(*t->map, task.start, task.target_receptacle));
       EXPECT_FALSE(task.hint.empty());
@@ -94,6 +95,13 @@ TEST(Benchmark, TasksTargetRecentlyMovedSingleObjectsOutOfSight) {
     EXPECT_LE(instants.size(), 2u);
   }
   EXPECT_GT(total, 20);
+}
+
+TEST(Benchmark, InstantsAreThePapersFridayAfternoonAndSundayNight) {
+  // Days from Wednesday 00:00: Friday 17:30 and Sunday 23:30, as in the paper's released scenes.
+  EXPECT_EQ(paper_instants(),
+            (std::vector<household::Seconds>{2 * 86400 + 17 * 3600 + 1800, 4 * 86400 + 23 * 3600 + 1800}));
+  EXPECT_EQ(BenchmarkRequest{}.instants, paper_instants());
 }
 
 TEST(Benchmark, ScoresArePercentagesWithSplNoAboveSr) {
