@@ -12,6 +12,7 @@
 
 #include "server/api_server.hpp"
 #include "server/cli/cli.hpp"
+#include "server/pg_event_relay.hpp"
 #include "server/registry.hpp"
 #include "server/routes.hpp"
 #include "server/ws_server.hpp"
@@ -58,6 +59,16 @@ int serve_command(const std::vector<std::string>& args) {
     std::cerr << "socsim serve: " << services.error().message() << "\n";
     return 2;
   }
+  // Daemons sharing a PostgreSQL database pass their catalogue events to one another.
+  std::unique_ptr<PgEventRelay> relay;
+  if ((*store)->dialect() == store::Dialect::kPostgres) {
+    relay = std::make_unique<PgEventRelay>((*store)->target(), (*services)->events);
+    std::string why;
+    if (!relay->start(why)) {
+      std::cerr << "socsim serve: cannot listen for other daemons' events: " << why << "\n";
+      return 1;
+    }
+  }
   ApiServer api(**services);
   auto http_port = api.bind();
   if (!http_port) {
@@ -95,6 +106,7 @@ int serve_command(const std::vector<std::string>& args) {
   if (running.exchange(false)) ::kill(::getpid(), SIGTERM);  // run() ended on its own: wake the waiter
   waiter.join();
   ws.stop();
+  if (relay) relay->stop();
   (*services)->shutdown();
   (*store)->close();
   log_line({{"level", "info"}, {"event", "stopped"}});

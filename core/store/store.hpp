@@ -54,6 +54,8 @@ class Store {
   // The file, or the URL without its password.
   [[nodiscard]] const std::string& path() const { return path_; }
   [[nodiscard]] Dialect dialect() const { return writer_->dialect(); }
+  // What open() was given (a URL with its password): for other connections of this process.
+  [[nodiscard]] const std::string& target() const { return target_; }
   [[nodiscard]] int schema_version() const { return schema_version_; }
   [[nodiscard]] const MigrationReport& migration_report() const { return report_; }
   // Closes every connection (the last close checkpoints the WAL). Must not race with read/write.

@@ -26,7 +26,7 @@ test('what was understood, then exactly the people asked for on the canvas', { s
   assert.equal(await page.locator('#examples button[data-prompt]').count(), 6);
   // Every page of the navigation is served (the catalogue moved to catalogue.html).
   const links = await page.$$eval('header nav a', (as) => as.map((a) => a.href));
-  assert.equal(links.length, 4);
+  assert.equal(links.length, 5);
   for (const href of links) assert.equal((await fetch(href)).status, 200, href);
   // The prompt already in the box is read on arrival.
   await page.waitForSelector('#understood[data-state=shown] #understood-groups li');
