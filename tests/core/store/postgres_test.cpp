@@ -1,15 +1,10 @@
 // The PostgreSQL backend (issue 21): placeholders, URL handling, the migrations of both dialects
-// (same curated rows), and the store's guarantees — a failed write changes nothing, concurrent
-// writers lose nothing, readers see whole transactions — on a real server (SOCSIM_TEST_POSTGRES;
-// skipped without one, saying so).
+// (same curated rows), bytea and doubles, on a real server (SOCSIM_TEST_POSTGRES; skipped without
+// one, saying so). The store's guarantees on both backends: store_test.cpp, StoreOnBoth.
 #include <gtest/gtest.h>
-
-#include <atomic>
-#include <thread>
 
 #include "core/store/migrations.hpp"
 #include "core/store/store.hpp"
-#include "tests/core/store/ledger.hpp"
 #include "tests/support/test_database.hpp"
 
 namespace socsim::store {
@@ -114,88 +109,6 @@ TEST(PostgresStore, MigratesToTheSameCuratedRowsAsSqliteAndOnlyOnce) {
   auto again = Store::open(pg.target());
   ASSERT_TRUE(again) << again.error().message();
   EXPECT_TRUE((*again)->migration_report().applied.empty());
-}
-
-const std::vector<Migration>& pg_ledger() {
-  static const std::vector<Migration> m = {migration_from_file(
-      "0001_ledger.sql",
-      "CREATE TABLE account(id INTEGER PRIMARY KEY, balance INTEGER NOT NULL CHECK (balance >= 0));"
-      "CREATE TABLE entry(account INTEGER NOT NULL REFERENCES account(id), amount INTEGER NOT NULL);"
-      "INSERT INTO account(id, balance) VALUES (1, 100), (2, 100);")};
-  return m;
-}
-
-using ledger::scalar;
-using ledger::transfer;
-
-TEST(PostgresStore, AFailedWriteLeavesTheStoreAsItWasAndConstraintsAreConflicts) {
-  TestDatabase pg(Backend::kPostgres, false);
-  SOCSIM_REQUIRE_DATABASE(pg);
-  StoreOptions opts;
-  opts.migrations = &pg_ledger();
-  auto s = Store::open(pg.target(), opts);
-  ASSERT_TRUE(s) << s.error().message();
-  auto r = (*s)->write([](Database& db) -> Result<bool> {
-    if (auto t = transfer(db, 150); !t) return tl::unexpected(t.error());
-    return true;
-  });
-  ASSERT_FALSE(r);
-  EXPECT_EQ(r.error().code, ErrorCode::kConflict) << r.error().message();
-  EXPECT_EQ(
-      (*s)->read([](Database& db) { return scalar(db, "SELECT balance FROM account WHERE id = 2"); }).value(),
-      100);
-  auto fk = (*s)->write([](Database& db) -> Result<bool> {
-    auto st = db.prepare("INSERT INTO entry(account, amount) VALUES (99, 1)");
-    if (!st) return tl::unexpected(st.error());
-    if (auto x = st->run(); !x) return tl::unexpected(x.error());
-    return true;
-  });
-  ASSERT_FALSE(fk);
-  EXPECT_EQ(fk.error().code, ErrorCode::kConflict);
-  // Readers refuse writes.
-  auto sneaky = (*s)->read([](Database& db) -> Result<bool> {
-    if (auto x = db.exec("UPDATE account SET balance = 0"); !x) return tl::unexpected(x.error());
-    return true;
-  });
-  EXPECT_FALSE(sneaky);
-}
-
-TEST(PostgresStore, ConcurrentWritersLoseNothingAndReadersSeeWholeTransactions) {
-  TestDatabase pg(Backend::kPostgres, false);
-  SOCSIM_REQUIRE_DATABASE(pg);
-  StoreOptions opts;
-  opts.migrations = &pg_ledger();
-  auto s = Store::open(pg.target(), opts);
-  ASSERT_TRUE(s) << s.error().message();
-  Store& store = **s;
-  std::atomic<bool> done{false};
-  std::atomic<int> torn{0};
-  std::thread reader([&] {
-    while (!done) {
-      auto sum = store.read([](Database& db) { return scalar(db, "SELECT SUM(balance) FROM account"); });
-      if (!sum || *sum != 200) ++torn;
-    }
-  });
-  std::vector<std::thread> writers;
-  for (int w = 0; w < 4; ++w)
-    writers.emplace_back([&] {
-      for (int i = 0; i < 25; ++i) {
-        auto r = store.write([](Database& db) -> Result<bool> {
-          auto st = db.prepare("INSERT INTO entry(account, amount) VALUES (1, 1)");
-          if (!st) return tl::unexpected(st.error());
-          if (auto x = st->run(); !x) return tl::unexpected(x.error());
-          if (auto t = transfer(db, 1); !t) return tl::unexpected(t.error());
-          if (auto t = transfer(db, -1); !t) return tl::unexpected(t.error());
-          return true;
-        });
-        EXPECT_TRUE(r);
-      }
-    });
-  for (auto& t : writers) t.join();
-  done = true;
-  reader.join();
-  EXPECT_EQ(torn.load(), 0);
-  EXPECT_EQ(store.read([](Database& db) { return scalar(db, "SELECT COUNT(*) FROM entry"); }).value(), 100);
 }
 
 TEST(PostgresStore, BlobsAndRealsRoundTripExactly) {

@@ -9,17 +9,13 @@
 #include <thread>
 
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/test_database.hpp"
 
 namespace socsim::store {
 namespace {
 
 const std::vector<Migration>& ledger_schema() {
-  static const std::vector<Migration> m = {migration_from_file(
-      "0001_ledger.sql",
-      "CREATE TABLE account(id INTEGER PRIMARY KEY, balance INTEGER NOT NULL CHECK (balance >= 0)) STRICT;"
-      "CREATE TABLE entry(account INTEGER NOT NULL REFERENCES account(id), amount INTEGER NOT NULL) STRICT;"
-      "INSERT INTO account(id, balance) VALUES (1, 100), (2, 100);")};
-  return m;
+  return ledger::schema();
 }
 
 using ledger::scalar;
@@ -48,29 +44,48 @@ TEST(Store, OpensWithWalAndForeignKeysAndCreatesTheDirectory) {
   EXPECT_EQ(fk.error().code, ErrorCode::kConflict);
 }
 
-TEST(Store, AFailedWriteLeavesTheStoreAsItWas) {
-  testing::TempDir dir;
+// On either backend (issue 21): SQLite's file, PostgreSQL's scratch server (skipped without one).
+class StoreOnBoth : public ::testing::TestWithParam<testing::Backend> {};
+
+TEST_P(StoreOnBoth, AFailedWriteLeavesTheStoreAsItWasAndReadersCannotWrite) {
+  testing::TestDatabase target(GetParam(), false);
+  SOCSIM_REQUIRE_DATABASE(target);
   StoreOptions opts;
   opts.migrations = &ledger_schema();
-  auto s = Store::open(dir.file("x.db"), opts);
-  ASSERT_TRUE(s);
+  auto s = Store::open(target.target(), opts);
+  ASSERT_TRUE(s) << s.error().message();
   // The first update succeeds inside the transaction, the second violates the CHECK.
   auto r = (*s)->write([](Database& db) -> Result<bool> {
     if (auto t = transfer(db, 150); !t) return tl::unexpected(t.error());
     return true;
   });
   ASSERT_FALSE(r);
+  EXPECT_EQ(r.error().code, ErrorCode::kConflict) << r.error().message();
   auto total =
       (*s)->read([](Database& db) { return scalar(db, "SELECT balance FROM account WHERE id = 2"); });
   EXPECT_EQ(total.value(), 100) << "half of the failed transfer leaked into the store";
+  auto fk = (*s)->write([](Database& d) -> Result<bool> {
+    auto st = d.prepare("INSERT INTO entry(account, amount) VALUES (99, 1)");
+    if (!st) return tl::unexpected(st.error());
+    if (auto x = st->run(); !x) return tl::unexpected(x.error());
+    return true;
+  });
+  ASSERT_FALSE(fk) << "a dangling foreign key must be refused";
+  EXPECT_EQ(fk.error().code, ErrorCode::kConflict);
+  auto sneaky = (*s)->read([](Database& d) -> Result<bool> {
+    if (auto x = d.exec("UPDATE account SET balance = 0"); !x) return tl::unexpected(x.error());
+    return true;
+  });
+  EXPECT_FALSE(sneaky) << "a reader connection wrote";
 }
 
-TEST(Store, ConcurrentWritersLoseNothingAndReadersSeeWholeTransactions) {
-  testing::TempDir dir;
+TEST_P(StoreOnBoth, ConcurrentWritersLoseNothingAndReadersSeeWholeTransactions) {
+  testing::TestDatabase target(GetParam(), false);
+  SOCSIM_REQUIRE_DATABASE(target);
   StoreOptions opts;
   opts.migrations = &ledger_schema();
-  auto s = Store::open(dir.file("x.db"), opts);
-  ASSERT_TRUE(s);
+  auto s = Store::open(target.target(), opts);
+  ASSERT_TRUE(s) << s.error().message();
   Store& store = **s;
   std::atomic<bool> done{false};
   std::atomic<int> torn{0};
@@ -83,7 +98,7 @@ TEST(Store, ConcurrentWritersLoseNothingAndReadersSeeWholeTransactions) {
   std::vector<std::thread> writers;
   for (int w = 0; w < 4; ++w) {
     writers.emplace_back([&] {
-      for (int i = 0; i < 50; ++i) {
+      for (int i = 0; i < 25; ++i) {
         auto r = store.write([](Database& db) -> Result<bool> {
           auto st = db.prepare("INSERT INTO entry(account, amount) VALUES (1, 1)");
           if (!st) return tl::unexpected(st.error());
@@ -100,8 +115,12 @@ TEST(Store, ConcurrentWritersLoseNothingAndReadersSeeWholeTransactions) {
   done = true;
   reader.join();
   EXPECT_EQ(torn.load(), 0);
-  EXPECT_EQ(store.read([](Database& db) { return scalar(db, "SELECT COUNT(*) FROM entry"); }).value(), 200);
+  EXPECT_EQ(store.read([](Database& db) { return scalar(db, "SELECT COUNT(*) FROM entry"); }).value(), 100);
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, StoreOnBoth,
+                         ::testing::Values(testing::Backend::kSqlite, testing::Backend::kPostgres),
+                         testing::backend_name);
 
 TEST(Store, ASecondProcessStyleConnectionWaitsInsteadOfFailing) {
   testing::TempDir dir;
