@@ -71,7 +71,8 @@ function showMethod() {
   const m = e.methods[state.method];
   $('episode-info').innerHTML =
     `<b>${e.target.type}</b> on <code>${e.target.receptacle}</code> at ${e.clock} · scene ${e.scene} · shortest ${e.shortest} steps<br>` +
-    `<i>hint:</i> “${e.hint}”<br>` +
+    // Every resident answers, one a line ("<name>: <answer>").
+    `<i>hints:</i><br>${e.hint.split('\n').map((a) => `“${a}”`).join('<br>')}<br>` +
     `<b>${state.method}</b>: ${m.success ? 'found' : 'not found'} in ${m.steps} steps, SPL ${(m.spl * 100).toFixed(1)}`;
   const slider = $('step');
   slider.max = String(m.path.length - 1);

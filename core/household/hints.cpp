@@ -49,6 +49,18 @@ double involvement(const ActivityDatabase& db, const RememberedActivity& a, Room
   return 0.0;
 }
 
+// Whether event `idx` moved an object of this type (when it ended).
+bool moved_type(const DynamicScene& scene, int idx, std::string_view type) {
+  const SceneEvent& e = scene.events()[static_cast<std::size_t>(idx)];
+  const House& house = scene.house();
+  for (const auto& r : scene.relocations_between(e.end, e.end + 1))
+    if (r.event == idx &&
+        house.entities[static_cast<std::size_t>(house.objects[static_cast<std::size_t>(r.object)])].type ==
+            type)
+      return true;
+  return false;
+}
+
 // Finds `words` as whole words in `text` at or after `from`; npos when absent.
 std::size_t find_words(std::string_view text, std::string_view words, std::size_t from = 0) {
   for (std::size_t at = text.find(words, from); at != std::string_view::npos; at = text.find(words, at + 1)) {
@@ -127,29 +139,33 @@ Hint hint_from_memory(const DynamicScene& scene, const ResidentMemory& m, std::s
   Hint h;
   const House& house = scene.house();
   const ActivityDatabase& db = scene.residents()[static_cast<std::size_t>(m.resident)].profile->activity_db;
-  const auto items = m.activities();
-  std::vector<double> w;
-  w.reserve(items.size());
-  for (const RememberedActivity* a : items) {
-    if (a->room < 0 || a->role == ActivityRole::kLeaveHome) {
-      w.push_back(0.0);
-      continue;
-    }
-    const RoomType room = house.rooms[static_cast<std::size_t>(a->room)].type;
-    const double age_h = static_cast<double>(m.time - std::min(a->end, m.time)) / 3600.0;
-    w.push_back(involvement(db, *a, room, type) * std::exp2(-age_h / 4.0));
-  }
+  // Newest first: asked "have you used it recently?", a person goes back from now to the last
+  // time they remember using it.
+  auto items = m.activities();
+  std::stable_sort(items.begin(), items.end(),
+                   [](const RememberedActivity* x, const RememberedActivity* y) { return x->end > y->end; });
   const std::string what = object_words(type);
-  double total = 0.0;
-  for (double x : w) total += x;
-  if (total <= 1e-9) {
-    h.text = "No, I don't think I've used the " + what + " recently.";
-    return h;
-  }
   Rng rng = Rng(scene.seed(), 0x68696e74)
                 .fork("hint|" + std::to_string(m.resident) + "|" + std::string(type) + "|" +
                       std::to_string(m.time));
-  const RememberedActivity& a = *items[rng.weighted(w)];
+  const RememberedActivity* last_use = nullptr;
+  for (const RememberedActivity* a : items) {
+    if (a->room < 0 || a->role == ActivityRole::kLeaveHome) continue;
+    const RoomType room = house.rooms[static_cast<std::size_t>(a->room)].type;
+    // Judged from the activity database, p(o|a,l); an activity in which the resident really moved
+    // such an object is recalled as a use with probability `recall` besides.
+    double q = involvement(db, *a, room, type);
+    if (a->end <= m.time && moved_type(scene, a->event, type)) q = style.recall + (1.0 - style.recall) * q;
+    if (q > 0.0 && rng.chance(q)) {
+      last_use = a;
+      break;
+    }
+  }
+  if (!last_use) {
+    h.text = "No, I don't think I've used the " + what + " recently.";
+    return h;
+  }
+  const RememberedActivity& a = *last_use;
   const Room& room = house.rooms[static_cast<std::size_t>(a.room)];
   h.used = true;
   h.event = a.event;
@@ -222,6 +238,40 @@ HintReading read_hint(std::string_view hint, const HouseholdKnowledge& k) {
     }
   }
   return out;
+}
+
+std::vector<HintReading> read_hints(std::string_view answers, const HouseholdKnowledge& k) {
+  std::vector<HintReading> out;
+  while (!answers.empty()) {
+    const std::size_t nl = answers.find('\n');
+    std::string_view line = answers.substr(0, nl);
+    answers = nl == std::string_view::npos ? std::string_view{} : answers.substr(nl + 1);
+    // "<name>: answer" — a name holds no sentence punctuation.
+    if (const std::size_t colon = line.find(": ");
+        colon != std::string_view::npos &&
+        line.substr(0, colon).find_first_of(".,?!") == std::string_view::npos)
+      line = line.substr(colon + 2);
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.front()))) line.remove_prefix(1);
+    if (!line.empty()) out.push_back(read_hint(line, k));
+  }
+  return out;
+}
+
+std::vector<double> hint_distribution(std::span<const HintReading> readings, std::string_view object_type,
+                                      std::span<const ReceptacleView> recs, std::span<const double> base,
+                                      double trust) {
+  std::vector<double> sum;
+  int used = 0;
+  for (const HintReading& r : readings) {
+    if (!r.used) continue;
+    const std::vector<double> p = hint_distribution(r, object_type, recs, base, trust);
+    if (sum.empty()) sum.assign(p.size(), 0.0);
+    for (std::size_t i = 0; i < p.size(); ++i) sum[i] += p[i];
+    ++used;
+  }
+  if (used == 0) return hint_distribution(HintReading{}, object_type, recs, base, trust);
+  for (double& x : sum) x /= used;
+  return sum;
 }
 
 std::vector<double> hint_distribution(const HintReading& reading, std::string_view object_type,

@@ -45,16 +45,18 @@ std::string memory_text(const ResidentMemory& memory, const House& house);
 
 // Documented shares of the offline resident's answers (docs/household.md, "Hints").
 struct HintStyle {
-  double vague = 0.2;                   // answers "not sure, maybe in the <room>" though it could say more
-  double memorable_p = 0.5;             // p(o|a,l) at or above which the object is central to the activity…
+  double vague = 0.2;        // answers "not sure, maybe in the <room>" though it could say more
+  double recall = 0.75;      // remembers an activity in which it really moved such an object as a use
+  double memorable_p = 0.5;  // p(o|a,l) at or above which the object is central to the activity…
   Seconds memorable_within = 3 * 3600;  // …and recent enough that the resident remembers where it went
 };
 
-// The offline resident: which remembered activity involved an object of this type is judged from
-// the resident's own activity database (p(o|a,l) at the remembered room, decaying with age, half
-// every 4 h); one is drawn in proportion (seeded by scene, resident, type and time). A memorable
-// activity that did move such an object names its receptacle; otherwise the answer names the
-// activity, the time of day and the room, or (share `vague`) only a room, hedged.
+// The offline resident recalls its last use: going back from the newest remembered activity, each
+// counts as a use with its judged p(o|a,l) (the resident's own activity database at the remembered
+// room), or with `recall` besides when that activity really moved such an object (seeded by scene,
+// resident, type and time); none: "No". A memorable activity that did move such an object names
+// its receptacle; otherwise the answer names the activity, the time of day and the room, or (share
+// `vague`) only a room, hedged.
 Hint hint_from_memory(const DynamicScene& scene, const ResidentMemory& memory, std::string_view object_type,
                       const HintStyle& style = {});
 
@@ -67,6 +69,9 @@ struct HintReading {
   const ActivitySpec* activity = nullptr;  // the curated activity named, by name or synonym
 };
 HintReading read_hint(std::string_view hint, const HouseholdKnowledge& knowledge);
+// Several residents' answers, one a line, each optionally after "<name>: " (as the navigation
+// benchmark asks every resident); one reading per non-empty line.
+std::vector<HintReading> read_hints(std::string_view answers, const HouseholdKnowledge& knowledge);
 
 // A receptacle as the reader sees it: its type and its room's type.
 struct ReceptacleView {
@@ -79,6 +84,11 @@ struct ReceptacleView {
 // and, for the room, keep `trust` (half of it when the answer is vague) inside rooms of that type.
 // "No" or nothing understood gives `base` normalised.
 std::vector<double> hint_distribution(const HintReading& reading, std::string_view object_type,
+                                      std::span<const ReceptacleView> receptacles,
+                                      std::span<const double> base, double trust = 0.85);
+// The answers of several residents combined: the mean of hint_distribution over the answers that
+// say the object was used (the others know nothing of where it is); none such gives `base`.
+std::vector<double> hint_distribution(std::span<const HintReading> readings, std::string_view object_type,
                                       std::span<const ReceptacleView> receptacles,
                                       std::span<const double> base, double trust = 0.85);
 

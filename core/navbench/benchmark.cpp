@@ -317,8 +317,15 @@ std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestSce
       if (steps > 0) task.start = pose, task.shortest = steps;
     }
     if (task.start < 0) continue;
-    task.hint_resident = static_cast<int>(rng.below(static_cast<std::uint32_t>(scene.residents().size())));
-    task.hint = scene.hint(task.hint_resident, task.target_type, task.time, request.recent).text;
+    // Every resident is asked (paper 000 §VI-A: "asking the simulated humans whether they have
+    // recently used the target object"), starting from one drawn at random; one answer a line.
+    const int n = static_cast<int>(scene.residents().size());
+    task.hint_resident = static_cast<int>(rng.below(static_cast<std::uint32_t>(n)));
+    for (int k = 0; k < n; ++k) {
+      const int who = (task.hint_resident + k) % n;
+      task.hint += (k ? "\n" : "") + scene.residents()[static_cast<std::size_t>(who)].profile->persona.name +
+                   ": " + scene.hint(who, task.target_type, task.time, request.recent).text;
+    }
     tasks.push_back(std::move(task));
   }
   return tasks;

@@ -99,10 +99,10 @@ struct NavTask {
   std::string target_type, target_id;
   int target_receptacle = -1;  // map index
   std::string receptacle_id;
-  int start = -1;    // pose
-  int shortest = 0;  // steps
-  int hint_resident = -1;
-  std::string hint;
+  int start = -1;          // pose
+  int shortest = 0;        // steps
+  int hint_resident = -1;  // the resident asked first; every resident answers
+  std::string hint;        // one answer a line, "<name>: <answer>"
 };
 // Up to tasks_per_scene tasks: at the request's instants, targets of the 11 types with
 // one instance in the house that moved within `recent` before the instant and can be seen from

@@ -127,11 +127,11 @@ std::vector<double> ScenePriorEstimator::estimate(const EstimateQuery& q) const 
 
 std::vector<double> HintEstimator::estimate(const EstimateQuery& q) const {
   std::vector<double> p = prior_->estimate(q);
-  const household::HintReading reading = household::read_hint(q.hint, *knowledge_);
+  const std::vector<household::HintReading> readings = household::read_hints(q.hint, *knowledge_);
   std::vector<household::ReceptacleView> views;
   views.reserve(q.map->receptacles().size());
   for (const auto& r : q.map->receptacles()) views.push_back({r.type, r.room_type});
-  return household::hint_distribution(reading, q.target_type, views, p, trust_);
+  return household::hint_distribution(readings, q.target_type, views, p, trust_);
 }
 
 std::vector<double> PosteriorEstimator::estimate(const EstimateQuery& q) const {

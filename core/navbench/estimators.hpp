@@ -32,7 +32,7 @@ struct EstimateQuery {
   household::Seconds time = 0;
   // The task's promise: the target was moved within (time − recent, time]; ≤ 0: no promise.
   household::Seconds recent = household::kSecondsPerDay;
-  std::string hint;                        // the asked resident's answer, "" when none
+  std::string hint;                        // the residents' answers, one a line; "" when none
   const GenerativeModel* model = nullptr;  // only the posterior reads it
 };
 
@@ -85,11 +85,12 @@ class ScenePriorEstimator final : public LocationEstimator {
   std::shared_ptr<const PlacementCounts> counts_;
 };
 
-// The resident's answer read by household::read_hint (room, receptacle and activity words of the
-// curated knowledge) and turned into a distribution by household::hint_distribution with the scene
-// prior as the base: `trust` of the mass on a named receptacle, or on the named room reweighted by
-// the named activity's curated p(l|a) and p(r|o,a,l) (half when the answer is hedged); the scene
-// prior alone when the hint says no or names nothing known.
+// The residents' answers (one a line) read by household::read_hints (room, receptacle and activity
+// words of the curated knowledge), each turned into a distribution by household::hint_distribution
+// with the scene prior as the base: `trust` of the mass on a named receptacle, or on the named room
+// reweighted by the named activity's curated p(l|a) and p(r|o,a,l) (half when the answer is
+// hedged); the mean over the answers that say "used"; the scene prior alone when every answer says
+// no or names nothing known.
 class HintEstimator final : public LocationEstimator {
  public:
   HintEstimator(std::shared_ptr<const ScenePriorEstimator> prior,

@@ -154,7 +154,8 @@ TEST(Scene, EventsOfAResidentAndInAWindow) {
 
 TEST(Scene, HintsComeFromTheResidentsOwnRecentEvents) {
   const auto s = scene(7, 2, 8);
-  int used = 0;
+  // Just after moving an object, the resident mostly remembers using it (HintStyle::recall).
+  int asked = 0, used = 0;
   for (const auto& r : s.relocations()) {
     const auto& e = s.events()[static_cast<std::size_t>(r.event)];
     const auto& type =
@@ -162,12 +163,15 @@ TEST(Scene, HintsComeFromTheResidentsOwnRecentEvents) {
             .entities[static_cast<std::size_t>(s.house().objects[static_cast<std::size_t>(r.object)])]
             .type;
     const Hint h = s.hint(e.resident, type, r.time + 60);
-    ASSERT_TRUE(h.used) << type;
-    EXPECT_EQ(s.events()[static_cast<std::size_t>(h.event)].resident, e.resident);
-    EXPECT_LE(h.when, r.time + 60);
     EXPECT_NE(h.text.find(object_words(type)), std::string::npos) << h.text;
-    if (++used > 40) break;
+    if (h.used) {
+      ++used;
+      EXPECT_EQ(s.events()[static_cast<std::size_t>(h.event)].resident, e.resident);
+      EXPECT_LE(h.when, r.time + 60);
+    }
+    if (++asked > 40) break;
   }
+  EXPECT_GE(used * 10, asked * 7) << used << " of " << asked;
   const Hint none = s.hint(0, "TennisRacket", 3600);
   EXPECT_FALSE(none.used);
   EXPECT_NE(none.text.find("tennis racket"), std::string::npos);

@@ -172,6 +172,24 @@ TEST(Estimators, HintsAreReadFromTheResidentsWords) {
   EXPECT_GT(in_kitchen, hedged_kitchen);
   EXPECT_GE(hedged_kitchen, prior_kitchen);
   EXPECT_NEAR(sum(sure), 1.0, 1e-12);
+
+  // Every resident answers, one a line after the name: "No" says nothing of where the mug is, and
+  // the answers that say "used" are averaged.
+  q.hint =
+      "Ann Lee: No, I don't think I've used the mug recently.\n"
+      "Bo Chen: I think I had the mug while having breakfast this morning, in the kitchen.";
+  EXPECT_EQ(hint.estimate(q), sure);
+  q.hint =
+      "Ann Lee: I think I had the mug while having breakfast this morning, in the kitchen.\n"
+      "Bo Chen: Yes, I used the mug while getting dressed this morning and left it on the dresser in "
+      "the bedroom.";
+  const auto both = hint.estimate(q);
+  for (std::size_t i = 0; i < both.size(); ++i) EXPECT_NEAR(both[i], (sure[i] + p[i]) / 2.0, 1e-12);
+  const auto readings = household::read_hints(q.hint, knowledge());
+  ASSERT_EQ(readings.size(), 2u);
+  EXPECT_EQ(readings[1].receptacle_type, "Dresser");
+  q.hint = "Ann Lee: No, I don't think I've used the mug recently.\nBo Chen: No, not the mug.";
+  EXPECT_EQ(hint.estimate(q), prior->estimate(q));
 }
 
 TEST(Estimators, PosteriorNeverRulesOutTheTruthAndIsCalibrated) {
