@@ -1,4 +1,5 @@
-// Robot in the loop: watches a co-simulation (issue 19, docs/cosim.md) by polling
+// Robot in the loop: lists the evaluations with their tables (means with 95 % intervals over the
+// cards), and watches a co-simulation (issue 19, docs/cosim.md) by polling
 // GET /api/v1/cosim/{id}/view — people as they are now, the robot drawn apart from them (an orange
 // body with its heading, its radius to scale), the path it has driven, its goal, and every contact
 // with a person (bodies within 2 cm, the metrics' collision rule) marked where it began.
@@ -143,6 +144,54 @@ function draw() {
   canvas.dataset.ready = '1';
 }
 
+// ---------------------------------------------------------------- evaluations
+
+// The columns of an evaluation's table: metric, heading, digits (means with their 95 % interval).
+const EVAL_COLUMNS = [
+  ['success', 'success', 2], ['collision', 'collision', 2], ['time_to_reach_goal', 'time to goal (s)', 1],
+  ['path_length', 'path (m)', 1], ['path_efficiency', 'path efficiency', 2],
+  ['minimum_distance_to_people', 'min distance (m)', 2], ['intimate_space_intrusions', 'intimate (%)', 1],
+  ['group_personal_space_intrusions', 'group personal (%)', 1], ['social_work', 'social work', 1],
+];
+
+function figure(f, digits) {
+  if (!f || typeof f.mean !== 'number') return 'n/a';
+  const ci = Array.isArray(f.ci95) ? ` [${f.ci95[0].toFixed(digits)}, ${f.ci95[1].toFixed(digits)}]` : '';
+  return f.mean.toFixed(digits) + ci;
+}
+
+async function listEvaluations() {
+  try {
+    const page = await getJson('/evaluations?page_size=20');
+    $('evaluations').replaceChildren(...page.items.map((e) => {
+      const what = `${e.request.cards.length} card${e.request.cards.length === 1 ? '' : 's'} × ${e.request.seeds.length} seed${e.request.seeds.length === 1 ? '' : 's'}`;
+      const who = e.request.client || (e.request.planners || []).join(', ');
+      const li = el('li', { 'data-id': e.id, tabindex: '0' }, el('b', {}, e.status), ` · ${what} · ${who}`);
+      li.addEventListener('click', () => showEvaluation(e.id));
+      li.addEventListener('keydown', (ev) => { if (ev.key === 'Enter') showEvaluation(e.id); });
+      return li;
+    }));
+    if (!page.items.length) $('evaluations').append(el('li', { class: 'muted' }, 'None yet.'));
+  } catch (e) {
+    setStatus(`evaluations: ${e.message}`);
+  }
+}
+
+async function showEvaluation(id) {
+  for (const li of $('evaluations').children) li.classList.toggle('current', li.dataset.id === id);
+  const e = await getJson(`/evaluations/${encodeURIComponent(id)}`);
+  $('evaluation').hidden = false;
+  $('evaluation-title').textContent = `Evaluation ${e.id} · ${e.status}` + (e.current ? ` · episode ${e.current.episode} of ${e.current.episodes}` : '');
+  const table = e.result?.table;
+  $('evaluation-interval').textContent = table ? `Means over the cards, ${table.interval}.` : (e.message || e.error?.detail || '');
+  $('evaluation-table').tHead.replaceChildren(el('tr', {}, el('th', {}, 'planner'), el('th', {}, 'episodes'),
+    ...EVAL_COLUMNS.map(([, head]) => el('th', {}, head))));
+  $('evaluation-table').tBodies[0].replaceChildren(...(table?.planners || []).map((p) =>
+    el('tr', { 'data-planner': p.planner }, el('td', {}, p.planner), el('td', {}, String(p.episodes)),
+      ...EVAL_COLUMNS.map(([name, , digits]) => el('td', {}, figure(p.metrics[name], digits))))));
+  $('evaluation').dataset.ready = '1';
+}
+
 // For tests: how many points of robot 0's path the page holds (fetched in pieces, each frame once).
 window.__cosimPathLength = () => (view.paths[0] || []).length;
 
@@ -151,7 +200,8 @@ showLegend($('legend'), [
   ['contact with a person', COLOURS.robot.contact], ...Object.entries(COLOURS.state).slice(0, 5),
 ]);
 window.addEventListener('hashchange', () => { if (location.hash.length > 1) watch(location.hash.slice(1)); });
-await listSessions();
+await Promise.all([listSessions(), listEvaluations()]);
 setInterval(listSessions, 3000);
+setInterval(listEvaluations, 5000);
 if (location.hash.length > 1) watch(location.hash.slice(1));
 else setStatus('Choose a co-simulation.');

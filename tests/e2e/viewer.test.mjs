@@ -132,7 +132,7 @@ function cosimClient(url) {
   };
 }
 
-test('a co-simulation shows the robot, its path and its contact with a person, live', { skip }, async () => {
+test('a co-simulation shows the robot, its path and its contact with a person, live; an evaluation its table', { skip }, async () => {
   const world = { zones: [{ name: 'corridor', type: 'corridor', polygon: [[0, 0], [20, 0], [20, 3], [0, 3]] }] };
   const program = { name: 'encounter', agents: [{ name: 'walker', position: [14, 1.5], speed: 1.2, goals: [[1, 1.5]], cyclic_goals: false }] };
   const created = await server.post('/api/v1/cosim', {
@@ -165,5 +165,31 @@ test('a co-simulation shows the robot, its path and its contact with a person, l
   assert.equal(drawn, view.robots[0].path.length);
   await page.screenshot({ path: join(artifacts, 'cosim.png') });
   client.ws.close();
+
+  // An evaluation of two built-in planners on a card of this corridor: its table on the page.
+  const card = await server.post('/api/v1/cards', {
+    title: 'Corridor encounter', prompt: 'a robot meets a walker in a corridor', seed: 1, world,
+    program: { ...program, robot: { position: [2, 1.45], speed: 1.0, goals: [[18, 1.5]] } },
+  });
+  assert.equal(card.status, 201, JSON.stringify(card.body));
+  const queued = await server.post('/api/v1/evaluations', {
+    cards: [card.body.id], seeds: [1], planners: ['builtin:straight', 'builtin:orca'], time_limit_s: 20,
+  });
+  assert.equal(queued.status, 202, JSON.stringify(queued.body));
+  let job;
+  for (let i = 0; i < 200; i++) {
+    job = await (await fetch(`${server.base}/api/v1/evaluations/${queued.body.id}`)).json();
+    if (job.status === 'succeeded' || job.status === 'failed') break;
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  assert.equal(job.status, 'succeeded', JSON.stringify(job.error));
+  await page.reload();
+  await page.locator(`#evaluations li[data-id="${queued.body.id}"]`).click();
+  await page.waitForSelector('#evaluation[data-ready="1"]');
+  assert.deepEqual(await page.$$eval('#evaluation-table tbody tr', (rows) => rows.map((r) => r.dataset.planner)),
+    ['builtin:straight', 'builtin:orca']);
+  const success = job.result.table.planners[1].metrics.success.mean.toFixed(2);
+  assert.equal(await page.textContent('#evaluation-table tbody tr[data-planner="builtin:orca"] td:nth-child(3)'), success);
+  await page.locator('#evaluation').screenshot({ path: join(artifacts, 'cosim-evaluation.png') });
   await page.close();
 });
