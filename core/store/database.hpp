@@ -64,7 +64,7 @@ std::unique_ptr<ConnectionImpl> open_sqlite(const std::string& path, const OpenO
                                             Error& error);
 std::unique_ptr<ConnectionImpl> open_postgres(const std::string& url, const OpenOptions& options,
                                               Error& error);
-// SQLite placeholders (?, ?N, :name, @name, $name) → PostgreSQL's $N, outside quotes and comments.
+// SQLite parameters (?, ?N, :name, @name) → PostgreSQL's $N, outside quotes and comments.
 std::string postgres_placeholders(std::string_view sql);
 }  // namespace detail
 
