@@ -193,9 +193,11 @@ SceneGraph big_arena() {
 // 2 toilets), a 60-room mall (concourse, 50 shops, food court, 2 offices, 6 toilets) and a
 // 60-room arena (concourse, arena floor, 20 concession stands, 10 locker rooms, 2 first-aid
 // rooms, 6 stores, 20 toilets; the auditorium family) and a 60-room hospital in wings.
-int floor_plans(int runs, const std::string& only) {
-  const auto db =
-      std::filesystem::temp_directory_path() / ("socsim-bench-world-" + std::to_string(::getpid()) + ".db");
+// Runs fn(kb) on a knowledge base in a scratch SQLite file (the embedded knowledge, migrated), removed
+// afterwards; fn's status, or 1 when the store cannot be opened.
+template <class F>
+int with_scratch_knowledge(const std::string& name, F&& fn) {
+  const auto db = std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()) + ".db");
   int status = 0;
   {
     auto store = socsim::store::Store::open(db.string());
@@ -204,10 +206,20 @@ int floor_plans(int runs, const std::string& only) {
       return 1;
     }
     socsim::knowledge::KnowledgeBase kb(**store);
+    status = fn(kb);
+  }
+  std::error_code ec;
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix, ec);
+  return status;
+}
+
+int floor_plans(int runs, const std::string& only) {
+  return with_scratch_knowledge("socsim-bench-world", [&](socsim::knowledge::KnowledgeBase& kb) {
     auto wanted = [&only](const std::string& label) {
       return only.empty() || label.find(only) != std::string::npos;
     };
     const int big_runs = std::max(1, runs / 5);
+    int status = 0;
     for (const auto& [label, domain, graph, n] :
          {std::tuple{"floor_plan_offline_10_rooms", "hospital",
                      room_program("hospital", {{"patient_room", 3}}), runs},
@@ -215,10 +227,8 @@ int floor_plans(int runs, const std::string& only) {
           std::tuple{"floor_plan_offline_60_room_arena", "arena", big_arena(), big_runs},
           std::tuple{"floor_plan_offline_60_room_hospital", "hospital", big_hospital(), big_runs}})
       if (status == 0 && wanted(label)) status = floor_plan(kb, label, domain, graph, n);
-  }
-  std::error_code ec;
-  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix, ec);
-  return status;
+    return status;
+  });
 }
 
 // FNV-1a of a text: a short digest to compare plans across commits.
@@ -255,16 +265,8 @@ int run_world_digest(const socsim::bench::Args& a) {
       "students at the university lecture halls",
       "lunch in the office canteen",
   };
-  const auto db =
-      std::filesystem::temp_directory_path() / ("socsim-bench-digest-" + std::to_string(::getpid()) + ".db");
-  int status = 0;
-  {
-    auto store = socsim::store::Store::open(db.string());
-    if (!store) {
-      std::cerr << store.error().message() << "\n";
-      return 1;
-    }
-    socsim::knowledge::KnowledgeBase kb(**store);
+  return with_scratch_knowledge("socsim-bench-digest", [&](socsim::knowledge::KnowledgeBase& kb) {
+    int status = 0;
     for (const auto& prompt : prompts) {
       auto g = scene_graph_from_prompt(prompt);
       if (!g) {
@@ -295,10 +297,8 @@ int run_world_digest(const socsim::bench::Args& a) {
         if (plan) emit_digest(label, seed, *plan);
       }
     }
-  }
-  std::error_code ec;
-  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db.string() + suffix, ec);
-  return status;
+    return status;
+  });
 }
 
 }  // namespace
