@@ -136,7 +136,13 @@ Status apply(ServerConfig& c, const std::string& flag, const std::string& value,
     return size(c.viewer_queue, 1);
   else if (flag == "--max-jobs-per-client")
     return size(c.max_jobs_per_client, 1);
-  else if (flag == "--llm-deadline") {
+  else if (flag == "--worker-id") {
+    if (value.empty() || value.size() > 100) return bad("must be 1-100 characters");
+    c.worker_id = value;
+  } else if (flag == "--job-lease") {
+    if (auto s = real(c.job_lease_s); !s) return s;
+    if (c.job_lease_s < 1 || c.job_lease_s > 3600) return bad("must be between 1 and 3600 seconds");
+  } else if (flag == "--llm-deadline") {
     double s = 0;
     if (auto st = real(s); !st) return st;
     if (s < 1 || s > 86400) return bad("must be between 1 and 86400 seconds");
@@ -166,6 +172,10 @@ const std::vector<FlagSpec>& serve_flags() {
       {"--rate-burst", "SOCSIM_RATE_BURST", "burst size of the per-client rate limit (default 100)"},
       {"--api-keys", "SOCSIM_API_KEYS", "name:secret[,name:secret…]; when set, writes need a Bearer key"},
       {"--job-workers", "SOCSIM_JOB_WORKERS", "threads running generation jobs (default 2)"},
+      {"--worker-id", "SOCSIM_WORKER_ID",
+       "this process's name among the workers sharing one database's job queue (default host-pid-random)"},
+      {"--job-lease", "SOCSIM_JOB_LEASE",
+       "seconds a job stays its worker's without a heartbeat; then another worker takes it (default 30)"},
       {"--max-scenario-agents", "SOCSIM_MAX_SCENARIO_AGENTS",
        "people in one generated scenario (default 2000)"},
       {"--max-scenario-seconds", "SOCSIM_MAX_SCENARIO_SECONDS",

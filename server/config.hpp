@@ -42,6 +42,10 @@ struct ServerConfig {
   std::vector<ApiKey> api_keys;              // empty: writes are open (local use)
   int job_workers = 2;
   std::size_t max_jobs_per_client = 8;  // queued + running per key (or address, without keys)
+  // The shared job queue (issue 21): this process's name among the workers on one database (empty:
+  // host-pid-random) and how long a claimed job stays its own without a heartbeat.
+  std::string worker_id;
+  double job_lease_s = 30.0;
   // Text to scenario (/api/v1/scenarios): bounds on what one request may ask for.
   std::size_t max_scenario_agents = 2000;  // people in one scenario (spotlight + ambient)
   double max_scenario_seconds = 600.0;     // simulated seconds logged into a card

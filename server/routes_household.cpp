@@ -98,6 +98,71 @@ hh::LlmSettings llm_settings(RouteContext& ctx, llm::StructuredGenerator& gen, c
   return s;
 }
 
+constexpr const char* kHouseholdJobKind = "household";
+
+// What POST /api/v1/households checks (the house imports, the personas exist, they fit the
+// bedrooms), then the work; any worker rebuilds it from the stored request. The household's id is
+// derived from the job's, and storing it again is a no-op, so a second run adds nothing.
+Result<JobFn> household_job(RouteContext& ctx, const std::shared_ptr<HouseholdState>& state, const Json& body,
+                            const std::string& author) {
+  auto request = hh::household_request_from_json(body);
+  if (!request) return tl::unexpected(request.error());
+  if (auto s = ctx.check_model(request->model); !s) return tl::unexpected(s.error());
+  if (request->generator == "llm")
+    if (auto s = ctx.llm_available(); !s) return tl::unexpected(s.error());
+  auto k = state->knowledge();
+  if (!k) return tl::unexpected(k.error());
+  auto house = hh::household_house(*request, **k);
+  if (!house) return tl::unexpected(house.error());
+  auto personas = all_personas(ctx.store);
+  if (!personas) return tl::unexpected(personas.error());
+  Error problems(ErrorCode::kValidation, "invalid household request");
+  for (std::size_t i = 0; i < request->resident_ids.size(); ++i)
+    if (std::none_of(personas->begin(), personas->end(),
+                     [&](const hh::Persona& p) { return hh::persona_id(p) == request->resident_ids[i]; }))
+      problems.errors.push_back(
+          {"/residents/" + std::to_string(i), "no persona '" + request->resident_ids[i] + "'"});
+  const int bedrooms = std::min<int>(4, static_cast<int>(house->rooms_of(hh::RoomType::kBedroom).size()));
+  if (request->resident_count > bedrooms)
+    problems.errors.push_back({"/residents", "this house has room for " + std::to_string(bedrooms) +
+                                                 " residents (one bedroom each)"});
+  if (!problems.errors.empty()) return tl::unexpected(problems);
+  return JobFn([&ctx, state, r = std::move(*request), author,
+                personas = std::move(*personas)](const JobContext& job) -> Result<Json> {
+    auto knowledge = state->knowledge();
+    if (!knowledge) return tl::unexpected(knowledge.error());
+    std::unique_ptr<llm::StructuredGenerator> gen;
+    std::unique_ptr<hh::LlmDayPlanner> planner;
+    std::unique_ptr<hh::LlmDecomposer> decomposer;
+    std::unique_ptr<hh::LlmActivityDatabaseGenerator> dbgen;
+    hh::ProfileGenerators gens;
+    if (r.generator == "llm") {
+      gen = std::make_unique<llm::StructuredGenerator>(*ctx.llm, &ctx.store);
+      const auto settings = llm_settings(ctx, *gen, job, r.model);
+      planner = std::make_unique<hh::LlmDayPlanner>(**knowledge, settings);
+      decomposer = std::make_unique<hh::LlmDecomposer>(**knowledge, settings);
+      dbgen = std::make_unique<hh::LlmActivityDatabaseGenerator>(**knowledge, settings);
+      gens = {planner.get(), decomposer.get(), dbgen.get()};
+    }
+    const std::string household = hh::household_id(r, job.id());
+    auto doc = hh::generate_household(
+        r, **knowledge, personas, gens, [&job](double f, const std::string& m) { job.progress(f * 0.95, m); },
+        household);
+    if (!doc) return tl::unexpected(doc.error());
+    if (job.cancelled()) return fail(ErrorCode::kCancelled, "cancelled");
+    auto scene = hh::instantiate_household(*doc, **knowledge);
+    if (!scene) return tl::unexpected(scene.error());
+    Json summary = hh::household_summary_json(*doc, *scene);
+    summary.erase("schedules");
+    if (auto s = hh::store_household(ctx.store, *doc, summary, author, job.id()); !s)
+      return tl::unexpected(s.error());
+    job.progress(1.0, "stored as " + household);
+    return Json{{"household_id", household},
+                {"summary", summary},
+                {"links", {{"household", "/api/v1/households/" + household}}}};
+  });
+}
+
 void household_routes(Router& http, RouteContext& ctx) {
   auto state = std::make_shared<HouseholdState>(ctx.store);
   const std::size_t max_body = ctx.config.max_body_bytes;
@@ -204,80 +269,24 @@ void household_routes(Router& http, RouteContext& ctx) {
       });
 
   // ---- households ----
-  post_with_body(
-      http, "/api/v1/households", max_body,
-      [&ctx, state](const Request& req, Response& res, const std::string& text) {
-        auto body = json_body(text);
-        if (!body) return reply_problem(res, body.error(), req.path);
-        auto request = hh::household_request_from_json(*body);
-        if (!request) return reply_problem(res, request.error(), req.path);
-        if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
-        if (request->generator == "llm")
-          if (auto s = ctx.llm_available(); !s) return reply_problem(res, s.error(), req.path);
-        auto k = state->knowledge();
-        if (!k) return reply_problem(res, k.error(), req.path);
-        // What can be checked at once is: the house imports, the personas exist, they fit the bedrooms.
-        auto house = hh::household_house(*request, **k);
-        if (!house) return reply_problem(res, house.error(), req.path);
-        auto personas = all_personas(ctx.store);
-        if (!personas) return reply_problem(res, personas.error(), req.path);
-        Error problems(ErrorCode::kValidation, "invalid household request");
-        for (std::size_t i = 0; i < request->resident_ids.size(); ++i)
-          if (std::none_of(personas->begin(), personas->end(), [&](const hh::Persona& p) {
-                return hh::persona_id(p) == request->resident_ids[i];
-              }))
-            problems.errors.push_back(
-                {"/residents/" + std::to_string(i), "no persona '" + request->resident_ids[i] + "'"});
-        const int bedrooms =
-            std::min<int>(4, static_cast<int>(house->rooms_of(hh::RoomType::kBedroom).size()));
-        if (request->resident_count > bedrooms)
-          problems.errors.push_back({"/residents", "this house has room for " + std::to_string(bedrooms) +
-                                                       " residents (one bedroom each)"});
-        if (!problems.errors.empty()) return reply_problem(res, problems, req.path);
-
-        const hh::HouseholdRequest r = *request;
-        const std::string author = ctx.author(req);
-        Json job_request = *body;
-        if (job_request.contains("house"))
-          job_request["house"] = "(ProcTHOR house, " + std::to_string(house->rooms.size()) + " rooms)";
-        auto id = ctx.jobs.submit(
-            "household", job_request, author,
-            [&ctx, state, r, author, personas = *personas](const JobContext& job) -> Result<Json> {
-              auto knowledge = state->knowledge();
-              if (!knowledge) return tl::unexpected(knowledge.error());
-              std::unique_ptr<llm::StructuredGenerator> gen;
-              std::unique_ptr<hh::LlmDayPlanner> planner;
-              std::unique_ptr<hh::LlmDecomposer> decomposer;
-              std::unique_ptr<hh::LlmActivityDatabaseGenerator> dbgen;
-              hh::ProfileGenerators gens;
-              if (r.generator == "llm") {
-                gen = std::make_unique<llm::StructuredGenerator>(*ctx.llm, &ctx.store);
-                const auto settings = llm_settings(ctx, *gen, job, r.model);
-                planner = std::make_unique<hh::LlmDayPlanner>(**knowledge, settings);
-                decomposer = std::make_unique<hh::LlmDecomposer>(**knowledge, settings);
-                dbgen = std::make_unique<hh::LlmActivityDatabaseGenerator>(**knowledge, settings);
-                gens = {planner.get(), decomposer.get(), dbgen.get()};
-              }
-              const std::string household = hh::household_id(r, job.id());
-              auto doc = hh::generate_household(
-                  r, **knowledge, personas, gens,
-                  [&job](double f, const std::string& m) { job.progress(f * 0.95, m); }, household);
-              if (!doc) return tl::unexpected(doc.error());
-              if (job.cancelled()) return fail(ErrorCode::kCancelled, "cancelled");
-              auto scene = hh::instantiate_household(*doc, **knowledge);
-              if (!scene) return tl::unexpected(scene.error());
-              Json summary = hh::household_summary_json(*doc, *scene);
-              summary.erase("schedules");
-              if (auto s = hh::store_household(ctx.store, *doc, summary, author, job.id()); !s)
-                return tl::unexpected(s.error());
-              job.progress(1.0, "stored as " + household);
-              return Json{{"household_id", household},
-                          {"summary", summary},
-                          {"links", {{"household", "/api/v1/households/" + household}}}};
-            },
-            ctx.client(req));
-        ctx.reply_job_accepted(res, id, req.path);
-      });
+  ctx.jobs.define(kHouseholdJobKind, [&ctx, state](const Json& spec, const std::string& author) {
+    return household_job(ctx, state, spec, author);
+  });
+  post_with_body(http, "/api/v1/households", max_body,
+                 [&ctx, state](const Request& req, Response& res, const std::string& text) {
+                   auto body = json_body(text);
+                   if (!body) return reply_problem(res, body.error(), req.path);
+                   const std::string author = ctx.author(req);
+                   auto checked = household_job(ctx, state, *body, author);
+                   if (!checked) return reply_problem(res, checked.error(), req.path);
+                   Json shown = *body;
+                   if (shown.contains("house") && shown["house"].is_object())
+                     shown["house"] = "(ProcTHOR house, " +
+                                      std::to_string(shown["house"].value("rooms", Json::array()).size()) +
+                                      " rooms)";
+                   auto id = ctx.jobs.submit_spec(kHouseholdJobKind, shown, *body, author, ctx.client(req));
+                   ctx.reply_job_accepted(res, id, req.path);
+                 });
 
   http.Get("/api/v1/households", [&ctx](const Request& req, Response& res) {
     auto page = ctx.page(req);

@@ -56,31 +56,37 @@ class NavbenchInputs {
 void navbench_routes(Router& http, RouteContext& ctx) {
   auto inputs = std::make_shared<NavbenchInputs>(ctx.store);
 
+  // Any worker runs a benchmark from its stored (normalised) request.
+  const auto navbench_job = [inputs](const Json& spec, const std::string&) -> Result<JobFn> {
+    auto request = navbench::benchmark_request_from_json(spec);
+    if (!request) return tl::unexpected(request.error());
+    return JobFn([r = *request, inputs](const JobContext& job) -> Result<Json> {
+      job.progress(0.0, "preparing residents and the scene prior");
+      auto k = inputs->knowledge();
+      if (!k) return tl::unexpected(k.error());
+      auto in = inputs->inputs(r);
+      if (!in) return tl::unexpected(in.error());
+      navbench::RunHooks hooks;
+      hooks.progress = [&job](double f, const std::string& m) { job.progress(f, m); };
+      hooks.cancelled = [&job] { return job.cancelled(); };
+      auto result = navbench::run_benchmark(r, **k, (*in)->pool, (*in)->counts, hooks);
+      if (!result) return tl::unexpected(result.error());
+      Json out = navbench::to_json(*result, true);
+      out["table"] = navbench::format_table(*result);
+      return out;
+    });
+  };
+  ctx.jobs.define("navbench", navbench_job);
+
   post_with_body(http, "/api/v1/navbench", ctx.config.max_body_bytes,
-                 [&ctx, inputs](const Request& req, Response& res, const std::string& text) {
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
                    auto body = json_body(text);
                    if (!body) return reply_problem(res, body.error(), req.path);
                    auto request = navbench::benchmark_request_from_json(*body);
                    if (!request) return reply_problem(res, request.error(), req.path);
-                   const navbench::BenchmarkRequest r = *request;
-                   auto id = ctx.jobs.submit(
-                       "navbench", navbench::to_json(r), ctx.author(req),
-                       [r, inputs](const JobContext& job) -> Result<Json> {
-                         job.progress(0.0, "preparing residents and the scene prior");
-                         auto k = inputs->knowledge();
-                         if (!k) return tl::unexpected(k.error());
-                         auto in = inputs->inputs(r);
-                         if (!in) return tl::unexpected(in.error());
-                         navbench::RunHooks hooks;
-                         hooks.progress = [&job](double f, const std::string& m) { job.progress(f, m); };
-                         hooks.cancelled = [&job] { return job.cancelled(); };
-                         auto result = navbench::run_benchmark(r, **k, (*in)->pool, (*in)->counts, hooks);
-                         if (!result) return tl::unexpected(result.error());
-                         Json out = navbench::to_json(*result, true);
-                         out["table"] = navbench::format_table(*result);
-                         return out;
-                       },
-                       ctx.client(req));
+                   const Json normalised = navbench::to_json(*request);
+                   auto id = ctx.jobs.submit_spec("navbench", normalised, normalised, ctx.author(req),
+                                                  ctx.client(req));
                    ctx.reply_job_accepted(res, id, req.path);
                  });
 

@@ -20,6 +20,7 @@ namespace socsim::server {
 namespace {
 
 constexpr const char* kTrajectoryPath = R"(/api/v1/trajectories/([0-9a-f]{64}|[^/]+))";
+constexpr const char* kScenarioJobKind = "scenario.generate";
 constexpr const char* kReplayPath = R"(/api/v1/cards/(crd_[0-9a-z]{20}|[^/]+)/replay)";
 
 scenario::ScenarioConfig scenario_config(const ServerConfig& config) {
@@ -66,56 +67,60 @@ Result<std::optional<scenario::ScenarioWorld>> given_world(RouteContext& ctx,
   return std::optional<scenario::ScenarioWorld>{};
 }
 
+// Everything POST /api/v1/scenarios checks, then the work. The queue runs it again from the stored
+// request on whichever worker takes the job (a batch item, or a job whose worker died), so the
+// card's id is the job's: a second run finds the card instead of making another.
+Result<JobFn> scenario_job(RouteContext& ctx, const Json& body, const std::string& author) {
+  const auto config = scenario_config(ctx.config);
+  auto request = scenario::scenario_request_from_json(body, config);
+  if (!request) return tl::unexpected(request.error());
+  if (auto intent = checked_prompt(request->prompt, ctx.config.max_prompt_bytes); !intent)
+    return tl::unexpected(intent.error());
+  if (auto s = ctx.check_model(request->model); !s) return tl::unexpected(s.error());
+  if (request->generator == "llm" && !ctx.llm)
+    return fail(ErrorCode::kValidation,
+                "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the offline generator is "
+                "available",
+                {{"/generator", "must be offline on this server"}});
+  auto world = given_world(ctx, *request);
+  if (!world) return tl::unexpected(world.error());
+  return JobFn([&ctx, request = std::move(*request), world = std::move(*world), config,
+                author](const JobContext& job) -> Result<Json> {
+    std::optional<llm::StructuredGenerator> gen;
+    if (ctx.llm) gen.emplace(*ctx.llm, &ctx.store);
+    scenario::ScenarioServices s{
+        ctx.knowledge, gen ? &*gen : nullptr, config,
+        job.id(),      job.cancel_token(),    [&job](double f, const std::string& m) { job.progress(f, m); }};
+    auto outcome = scenario::run_scenario(request, world, s);
+    if (!outcome) return tl::unexpected(outcome.error());
+    if (auto saved = scenario::save_trajectory_log(ctx.store, outcome->log); !saved)
+      return tl::unexpected(saved.error());
+    auto card = ctx.catalogue.create_once("crd_" + job.id().substr(4), outcome->card, author);
+    if (!card) return tl::unexpected(card.error());
+    ctx.events.publish("cards", {{"type", "card.created"}, {"card", cards::summary_json(*card)}});
+    return Json{{"card_id", card->id},
+                {"location", "/api/v1/cards/" + card->id},
+                {"title", card->content.title},
+                {"categories", outcome->card.provenance.value("categories", Json::array())},
+                {"trajectory_log", outcome->card.trajectory_log}};
+  });
+}
+
 void scenario_routes(Router& http, RouteContext& ctx) {
-  post_with_body(
-      http, "/api/v1/scenarios", ctx.config.max_body_bytes,
-      [&ctx](const Request& req, Response& res, const std::string& text) {
-        auto body = json_body(text);
-        if (!body) return reply_problem(res, body.error(), req.path);
-        const auto config = scenario_config(ctx.config);
-        auto request = scenario::scenario_request_from_json(*body, config);
-        if (!request) return reply_problem(res, request.error(), req.path);
-        if (auto intent = checked_prompt(request->prompt, ctx.config.max_prompt_bytes); !intent)
-          return reply_problem(res, intent.error(), req.path);
-        if (auto s = ctx.check_model(request->model); !s) return reply_problem(res, s.error(), req.path);
-        if (request->generator == "llm" && !ctx.llm)
-          return reply_problem(res,
-                               Error(ErrorCode::kValidation,
-                                     "no LLM endpoint is configured (set SOCSIM_LLM_URL), so only the "
-                                     "offline generator is available",
-                                     {{"/generator", "must be offline on this server"}}),
-                               req.path);
-        auto world = given_world(ctx, *request);
-        if (!world) return reply_problem(res, world.error(), req.path);
-        const std::string author = ctx.author(req);
-        auto id = ctx.jobs.submit(
-            "scenario.generate", *body, author,
-            [&ctx, request = *request, world = std::move(*world), config,
-             author](const JobContext& job) -> Result<Json> {
-              std::optional<llm::StructuredGenerator> gen;
-              if (ctx.llm) gen.emplace(*ctx.llm, &ctx.store);
-              scenario::ScenarioServices s{ctx.knowledge,
-                                           gen ? &*gen : nullptr,
-                                           config,
-                                           job.id(),
-                                           job.cancel_token(),
-                                           [&job](double f, const std::string& m) { job.progress(f, m); }};
-              auto outcome = scenario::run_scenario(request, world, s);
-              if (!outcome) return tl::unexpected(outcome.error());
-              if (auto saved = scenario::save_trajectory_log(ctx.store, outcome->log); !saved)
-                return tl::unexpected(saved.error());
-              auto card = ctx.catalogue.create(outcome->card, author);
-              if (!card) return tl::unexpected(card.error());
-              ctx.events.publish("cards", {{"type", "card.created"}, {"card", cards::summary_json(*card)}});
-              return Json{{"card_id", card->id},
-                          {"location", "/api/v1/cards/" + card->id},
-                          {"title", card->content.title},
-                          {"categories", outcome->card.provenance.value("categories", Json::array())},
-                          {"trajectory_log", outcome->card.trajectory_log}};
-            },
-            ctx.client(req));
-        ctx.reply_job_accepted(res, id, req.path);
-      });
+  ctx.jobs.define(kScenarioJobKind, [&ctx](const Json& spec, const std::string& author) {
+    return scenario_job(ctx, spec, author);
+  });
+  post_with_body(http, "/api/v1/scenarios", ctx.config.max_body_bytes,
+                 [&ctx](const Request& req, Response& res, const std::string& text) {
+                   auto body = json_body(text);
+                   if (!body) return reply_problem(res, body.error(), req.path);
+                   const std::string author = ctx.author(req);
+                   // Checked here, so that a bad request is a 4xx now rather than a failed job.
+                   if (auto checked = scenario_job(ctx, *body, author); !checked)
+                     return reply_problem(res, checked.error(), req.path);
+                   auto id = ctx.jobs.submit_spec(kScenarioJobKind, *body, *body, author, ctx.client(req));
+                   ctx.reply_job_accepted(res, id, req.path);
+                 });
 
   post_with_body(http, "/api/v1/scenarios/interpret", ctx.config.max_body_bytes,
                  [&ctx](const Request& req, Response& res, const std::string& text) {

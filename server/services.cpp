@@ -25,8 +25,14 @@ Result<std::unique_ptr<Services>> Services::create(ServerConfig config, store::S
     }
   }
   s->knowledge = std::make_unique<knowledge::KnowledgeBase>(store, std::move(embeddings));
-  s->jobs =
-      std::make_unique<JobRunner>(store, s->events, s->config.job_workers, 64, s->config.max_jobs_per_client);
+  JobRunnerOptions jobs;
+  jobs.workers = s->config.job_workers;
+  jobs.max_per_client = s->config.max_jobs_per_client;
+  jobs.worker_id = s->config.worker_id;
+  jobs.lease = std::chrono::milliseconds(static_cast<std::int64_t>(s->config.job_lease_s * 1000));
+  jobs.public_url = "http://" + (s->config.public_host.empty() ? s->config.host : s->config.public_host) +
+                    ":" + std::to_string(s->config.port);
+  s->jobs = std::make_unique<JobRunner>(store, s->events, std::move(jobs));
   SimulationLimits limits;
   limits.max_sessions = s->config.max_simulations;
   limits.max_viewers = s->config.max_viewers;

@@ -116,6 +116,22 @@ Result<Card> CardCatalogue::create(const CardContent& content, const std::string
   });
 }
 
+Result<Card> CardCatalogue::create_once(const std::string& id, const CardContent& content,
+                                        const std::string& author) {
+  if (!is_card_id(id)) return fail(ErrorCode::kInternal, "'" + id + "' is not a card id");
+  if (auto existing = get(id); existing) return existing;
+  Card card;
+  card.id = id;
+  card.content = content;
+  card.author = author;
+  card.created_at = utc_now_rfc3339();
+  card.content_hash = content_hash(card.content, card.version, card.parent_id);
+  return store_.write([&](Database& db) -> Result<Card> {
+    if (auto s = insert_card(db, card); !s) return tl::unexpected(s.error());
+    return card;
+  });
+}
+
 Result<Card> CardCatalogue::create_version(const std::string& parent_id, const Json& patch,
                                            const std::string& author) {
   return store_.write([&](Database& db) -> Result<Card> {

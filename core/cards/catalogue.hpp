@@ -35,6 +35,9 @@ class CardCatalogue {
 
   [[nodiscard]] const CardLimits& limits() const { return limits_; }
   Result<Card> create(const CardContent& content, const std::string& author);
+  // Creates the card under `id` (a job's card, derived from the job's id), or returns the card
+  // already stored under it: a job that runs again after its worker died makes no second card.
+  Result<Card> create_once(const std::string& id, const CardContent& content, const std::string& author);
   Result<Card> create_version(const std::string& parent_id, const Json& patch, const std::string& author);
   Result<Card> get(const std::string& id);
   Result<CardPage> list(const CardQuery& query);
