@@ -77,6 +77,7 @@ std::optional<std::pair<int, int>> read_range(JsonChecker& c, const Json& body, 
 // An item's problem, pointed into the batch request.
 Error item_error(Error e, const std::string& prompt_ptr) {
   for (auto& f : e.errors) {
+    if (f.pointer.rfind("/splits/", 0) == 0) continue;  // already the batch's
     if (f.pointer.rfind("/prompt", 0) == 0 && !prompt_ptr.empty())
       f.pointer = prompt_ptr;
     else if (f.pointer == "/seed" || f.pointer == "/split" || f.pointer == "/rooms" ||

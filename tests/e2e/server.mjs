@@ -44,7 +44,16 @@ export async function startServer(extraArgs = []) {
       const r = await fetch(base + path, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) });
       return { status: r.status, body: await r.json() };
     },
+    // The way a machine dies: no shutdown, no chance to hand jobs back.
+    async kill9() {
+      proc.kill('SIGKILL');
+      await new Promise((r) => proc.once('exit', r));
+    },
     async stop() {
+      if (proc.exitCode !== null || proc.signalCode !== null) {
+        rmSync(dir, { recursive: true, force: true });
+        return;
+      }
       proc.kill('SIGTERM');
       await new Promise((r) => proc.once('exit', r));
       rmSync(dir, { recursive: true, force: true });

@@ -48,6 +48,7 @@ class TestServer {
     } else {
       config.db = dir_.file("socsim.db");
     }
+    target_ = config.db;
     config.web_root = dir_.file("web");
     std::filesystem::create_directories(config.web_root);
     std::ofstream(config.web_root + "/index.html") << "<!doctype html><title>socsim</title>";
@@ -78,6 +79,8 @@ class TestServer {
   [[nodiscard]] int port() const { return port_; }
   server::Services& services() { return *services_; }
   store::Store& store() { return *store_; }
+  // The database the server uses (an SQLite file or a postgresql:// URL), for a second worker.
+  [[nodiscard]] const std::string& db_target() const { return target_; }
 
  private:
   TempDir dir_;
@@ -87,6 +90,7 @@ class TestServer {
   std::unique_ptr<server::ApiServer> api_;
   std::thread thread_;
   int port_ = 0;
+  std::string target_;
 };
 
 }  // namespace socsim::testing
