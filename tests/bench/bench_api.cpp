@@ -9,13 +9,15 @@
 
 #include "server/api_server.hpp"
 #include "tests/bench/bench.hpp"
+#include "tests/bench/bench_pg.hpp"
 
 namespace {
 using socsim::bench::Args;
 using socsim::bench::emit;
 using socsim::bench::percentile;
 
-int run_api(const Args& a) {
+// The phases against one database (a scratch SQLite file, or an empty PostgreSQL database).
+int run_api_on(const Args& a, const std::string& backend, const std::string& pg_url) {
   const int clients = static_cast<int>(a.integer("clients", 8));
   const int requests = static_cast<int>(a.integer("requests", 2000));
   const auto dir =
@@ -25,7 +27,7 @@ int run_api(const Args& a) {
   socsim::server::ServerConfig cfg;
   cfg.host = "127.0.0.1";
   cfg.port = 0;
-  cfg.db = (dir / "bench.db").string();
+  cfg.db = pg_url.empty() ? (dir / "bench.db").string() : pg_url;
   cfg.web_root = dir.string();
   cfg.rate_limit_rps = 0;
   cfg.threads = static_cast<int>(a.integer("threads", 8));
@@ -99,6 +101,7 @@ int run_api(const Args& a) {
   std::cout.clear();
   for (const auto& p : phases) {
     emit({{"bench", "api"},
+          {"backend", backend},
           {"request", p.name},
           {"clients", clients},
           {"requests", p.ms.size()},
@@ -115,8 +118,22 @@ int run_api(const Args& a) {
   return 0;
 }
 
+// SQLite, then (with --postgres URL or $SOCSIM_BENCH_POSTGRES) PostgreSQL, in one run.
+int run_api(const Args& a) {
+  if (int rc = run_api_on(a, "sqlite", ""); rc != 0) return rc;
+  const std::string admin = socsim::bench::postgres_admin_url(a);
+  if (admin.empty()) {
+    std::cerr << "(PostgreSQL skipped: give --postgres URL or $SOCSIM_BENCH_POSTGRES)\n";
+    return 0;
+  }
+  socsim::bench::ScratchPostgres pg(admin, "api");
+  if (pg.url().empty()) return 1;
+  return run_api_on(a, "postgresql", pg.url());
+}
+
 SOCSIM_BENCH("api",
-             "request latency percentiles over loopback HTTP [--clients 8] [--requests 2000] [--threads 8]",
+             "request latency percentiles over loopback HTTP, SQLite then PostgreSQL [--clients 8] "
+             "[--requests 2000] [--threads 8] [--postgres URL]",
              run_api);
 
 }  // namespace
