@@ -58,6 +58,12 @@ Result<Reply> call(const Remote& r, const std::string& method, const std::string
   return Reply{res->status, res->body};
 }
 
+// The server could not be reached (no problem document to show).
+int unreachable(const Error& e) {
+  std::cerr << "socsim: " << e.detail << "\n";
+  return 1;
+}
+
 // A problem document from the server, printed as the CLI prints errors.
 int report_reply(const Reply& rep) {
   try {
@@ -153,7 +159,7 @@ void print_status(const Json& b) {
 
 int export_to(const Remote& r, const std::string& id, const std::string& out) {
   auto rep = call(r, "GET", "/api/v1/batches/" + id + "/export");
-  if (!rep) return cli_report(rep.error());
+  if (!rep) return unreachable(rep.error());
   if (rep->status != 200) return report_reply(*rep);
   if (auto s = cli_write_file(out, rep->body); !s) return cli_report(s.error());
   std::cout << out << " (" << rep->body.size() << " bytes)\n";
@@ -163,7 +169,7 @@ int export_to(const Remote& r, const std::string& id, const std::string& out) {
 int wait_for(const Remote& r, const std::string& id, const std::optional<std::string>& out) {
   for (;;) {
     auto rep = call(r, "GET", "/api/v1/batches/" + id);
-    if (!rep) return cli_report(rep.error());
+    if (!rep) return unreachable(rep.error());
     if (rep->status != 200) return report_reply(*rep);
     const Json b = Json::parse(rep->body);
     print_status(b);
@@ -185,7 +191,7 @@ int submit(const std::vector<std::string>& args) {
   }
   const Remote r = remote(a);
   auto rep = call(r, "POST", "/api/v1/batches", request->dump());
-  if (!rep) return cli_report(rep.error());
+  if (!rep) return unreachable(rep.error());
   if (rep->status != 202) return report_reply(*rep);
   const Json b = Json::parse(rep->body);
   std::cout << b["id"].get<std::string>() << "\n" << std::flush;
@@ -205,7 +211,7 @@ int with_id(const std::vector<std::string>& args, const std::string& verb) {
   if (verb == "wait") return wait_for(r, id, a.opt("--out"));
   if (verb == "export") return export_to(r, id, *a.opt("--out"));
   auto rep = call(r, verb == "cancel" ? "DELETE" : "GET", "/api/v1/batches/" + id);
-  if (!rep) return cli_report(rep.error());
+  if (!rep) return unreachable(rep.error());
   if (rep->status != 200 && rep->status != 202) return report_reply(*rep);
   std::cout << Json::parse(rep->body).dump(2) << "\n";
   return 0;
