@@ -432,6 +432,9 @@ class Layout {
             : family_ != Family::kAuditorium && !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) &&
                   ((small && entrance_ == *circ_ && caps.size() == 2) || rng.chance(corridor ? 0.35 : 0.6));
     grouped_band_ = grouped ? static_cast<int>(rng.below(2)) : 0;
+    // A large hall's rooms are dealt to both bands by area, a stout hall's band too (there they
+    // keep a depth of their own): a food court does not leave fifty shops in one band.
+    const bool spread = grouped && family_ == Family::kHallWithRooms && n >= kAlwaysWingRooms;
     std::vector<std::size_t> left[2], middle[2], right[2];
     const bool first_cap_left = rng.chance(0.5);
     std::vector<bool> used(n, false);
@@ -470,11 +473,11 @@ class Layout {
       int b = load[0] <= load[1] ? 0 : 1;
       if (rng.chance(0.2)) b = 1 - b;
       // Stout halls and platforms on one side, the small rooms on the other (bands share a depth).
-      if (grouped)
-        b = std::any_of(chain.begin(), chain.end(),
-                        [&](std::size_t r) { return grouped_type(rooms_[r].type); })
-                ? grouped_band_
-                : 1 - grouped_band_;
+      if (grouped) {
+        const bool stout = std::any_of(chain.begin(), chain.end(),
+                                       [&](std::size_t r) { return grouped_type(rooms_[r].type); });
+        if (stout || !spread) b = stout ? grouped_band_ : 1 - grouped_band_;
+      }
       if (family_ == Family::kAuditorium) {
         const bool hall = std::any_of(chain.begin(), chain.end(),
                                       [&](std::size_t r) { return grouped_type(rooms_[r].type); });
@@ -538,7 +541,7 @@ class Layout {
       return std::any_of(chain.begin(), chain.end(),
                          [&](std::size_t q) { return grouped_type(rooms_[q].type); });
     };
-    if (family_ == Family::kAuditorium)
+    if (family_ == Family::kAuditorium || spread)
       for (int b = 0; b < 2; ++b) {
         hall_band[b] = std::any_of(band[b].begin(), band[b].end(), of_hall);
         if (!hall_band[b]) continue;
