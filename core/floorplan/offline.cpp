@@ -1005,12 +1005,16 @@ class Layout {
       if (d.connects.size() == 1) exits.push_back(&d);
     if (exits.empty()) return std::nullopt;
     const std::vector<Rect> rects = all_rects();
-    double diagonal = 0.0;
+    // Squared distances in whole cm² (exact), one square root at the end: a large plan has
+    // thousands of corner pairs and spots × doors, and hypot was a few ms of every exit round.
+    auto square = [](long long dx, long long dy) { return dx * dx + dy * dy; };
+    long long widest = 0;
     for (const Rect& a : rects)
       for (const Rect& b : rects)
         for (auto [ax, ay] : {std::pair{a.x0, a.y0}, {a.x1, a.y0}, {a.x1, a.y1}, {a.x0, a.y1}})
           for (auto [bx, by] : {std::pair{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}})
-            diagonal = std::max(diagonal, std::hypot(ax - bx, ay - by));
+            widest = std::max(widest, square(ax - bx, ay - by));
+    const double diagonal = std::sqrt(static_cast<double>(widest));
     // The second exit half the diagonal from the first (IBC 1007.1.1); further exits spread out.
     const double apart =
         exits.size() == 1 ? diagonal / 2.0 : diagonal / (2.0 * static_cast<double>(exits.size()));
@@ -1053,11 +1057,14 @@ class Layout {
         for (int at : {lo, (lo + hi) / 2 / 5 * 5, hi, (3 * lo + hi) / 4 / 5 * 5, (lo + 3 * hi) / 4 / 5 * 5}) {
           const int x = wall.vertical ? wall.c : at, y = wall.vertical ? at : wall.c;
           bool clear = true;
-          for (const DoorDraft& d : doors_)
-            if (std::hypot(d.x - x, d.y - y) < (d.width + w) / 2.0 + 30.0) clear = false;
+          for (const DoorDraft& d : doors_) {
+            const double reach = (d.width + w) / 2.0 + 30.0;
+            if (static_cast<double>(square(d.x - x, d.y - y)) < reach * reach) clear = false;
+          }
           if (!clear) continue;
-          double distance = std::numeric_limits<double>::infinity();
-          for (const DoorDraft* e : exits) distance = std::min(distance, std::hypot(e->x - x, e->y - y));
+          long long nearest = std::numeric_limits<long long>::max();
+          for (const DoorDraft* e : exits) nearest = std::min(nearest, square(e->x - x, e->y - y));
+          const double distance = std::sqrt(static_cast<double>(nearest));
           // A spot far enough apart in a better tier wins; within a tier, the farthest.
           const bool enough = distance >= apart;
           const int rank = enough ? t : t + 4;
