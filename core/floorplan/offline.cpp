@@ -1608,6 +1608,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     const Rng furnishing_rng = rng.fork("furnish");
     ComplianceCache travel_cache;    // the worlds of this attempt share their travel-distance grid
     FurnishingMemo furnishing_memo;  // and the furnishing of rooms whose doors did not change
+    BuildCache build_cache;          // and the geometry WorldBuilder works out from the zones alone
     std::set<std::string> dropped;   // furniture the layout check found in the way, left out
     FeatureOutcome outcome;
     // Worlds built again for more exits or with furniture left out are validated without the
@@ -1655,7 +1656,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       BuildOptions build_options = options.build;
       build_options.check_reachability = build_options.check_reachability && reachability;
       if (!reachability) last = builder;
-      return builder.build(build_options);
+      return builder.build(build_options, nullptr, &build_cache);
     };
     // A large plan is almost always built again (more exits for its occupant load): its first
     // world is validated in full only if it turns out to be the last.
@@ -1781,7 +1782,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       continue;
     }
     if (!validated) {
-      world = last.build(options.build);
+      world = last.build(options.build, nullptr, &build_cache);
       if (!world) {
         tried.push_back("the world did not validate: " + world.error().message());
         last_error = world.error();
