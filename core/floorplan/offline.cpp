@@ -708,12 +708,23 @@ class Layout {
     enum Variant { kTwoRows, kU, kRing };
     Variant variant = kTwoRows;
     if (closed_chain_ && k >= 3) variant = static_cast<Variant>(rng.below(chains.empty() ? 2 : 3));
-    // The band's depth and its rooms' widths; a ring's core takes the first chain and, on half the
-    // draws each, the ones after it.
+    // The band's depth and its rooms' widths. A ring's core is as deep as the galleries beside it:
+    // it takes the largest chain and, on half the draws each, the others of rooms of 12 m² or more
+    // (a café, a shop; toilets and stores would be slivers that deep).
     int band_depth = cm_up(rng.uniform(style.depth_lo, style.depth_hi));
     std::vector<std::size_t> core, band;
+    std::size_t largest = 0;
+    double largest_area = -1.0;
     for (std::size_t ch = 0; ch < chains.size(); ++ch) {
-      const bool in_core = variant == kRing && (ch == 0 || (core.size() < 4 && rng.chance(0.5)));
+      double area = 0.0;
+      for (auto r : chains[ch]) area += rooms_[r].area;
+      if (area > largest_area) largest = ch, largest_area = area;
+    }
+    for (std::size_t ch = 0; ch < chains.size(); ++ch) {
+      const bool roomy = std::all_of(chains[ch].begin(), chains[ch].end(),
+                                     [&](std::size_t r) { return rooms_[r].area >= 12.0; });
+      const bool in_core =
+          variant == kRing && (ch == largest || (roomy && core.size() < 4 && rng.chance(0.5)));
       for (auto r : chains[ch]) (in_core ? core : band).push_back(r);
     }
     for (auto r : band) band_depth = std::max(band_depth, rooms_[r].min_dim);
