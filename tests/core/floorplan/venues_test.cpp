@@ -460,6 +460,42 @@ TEST_F(Venues, MuseumGalleriesEnSuiteAreTheCirculation) {
   EXPECT_EQ(shapes.size(), 3u) << "the enfilade's shapes over 12 seeds";
 }
 
+// A caller's graph keeps its galleries en suite exactly: an open chain (only the first gallery
+// on the foyer) is a single enfilade, two galleries that both open onto the foyer a short circuit,
+// and a large museum's twelve galleries a long one.
+TEST_F(Venues, GalleriesEnSuiteOfACallersGraphAreKeptExactly) {
+  SceneGraph open{
+      "museum",
+      {{"foyer", "foyer", std::nullopt},
+       {"gallery_a", "gallery", std::nullopt},
+       {"gallery_b", "gallery", std::nullopt},
+       {"gallery_c", "gallery", std::nullopt},
+       {"toilet", "toilet", std::nullopt}},
+      {{"foyer", "gallery_a"}, {"gallery_a", "gallery_b"}, {"gallery_b", "gallery_c"}, {"foyer", "toilet"}},
+      "foyer"};
+  SceneGraph pair = open;
+  pair.rooms.erase(pair.rooms.begin() + 3);
+  pair.adjacency = {
+      {"foyer", "gallery_a"}, {"gallery_a", "gallery_b"}, {"foyer", "gallery_b"}, {"foyer", "toilet"}};
+  for (const SceneGraph& g : {open, pair, room_program("museum", {{"gallery", 12}})}) {
+    for (std::uint64_t seed = 0; seed < 4; ++seed) {
+      OfflineOptions o;
+      o.seed = seed;
+      auto plan = generate_floor_plan(g, constraints("museum"), o);
+      ASSERT_TRUE(plan) << g.rooms.size() << " rooms, seed " << seed << ": " << plan.error().message();
+      EXPECT_EQ(plan->provenance.at("layout_family"), "rooms_en_suite");
+      EXPECT_TRUE(plan->compliance.passed) << g.rooms.size() << " rooms, seed " << seed;
+      const LayoutCheck check = check_layout(plan->world);
+      EXPECT_TRUE(check.ok()) << g.rooms.size() << " rooms, seed " << seed << ":\n" << check.summary();
+      EXPECT_EQ(plan->scene_graph.rooms, g.rooms);
+      EXPECT_EQ(plan->scene_graph.adjacency, g.adjacency);
+      int inner = 0;
+      for (const auto& d : plan->world.doors()) inner += d.other ? 1 : 0;
+      EXPECT_EQ(inner, static_cast<int>(g.adjacency.size())) << "one door per edge, no other";
+    }
+  }
+}
+
 // The two newest families (the quick check run in CI; the tests above run them over more seeds):
 // a theatre laid out round its auditoria, a 26-room care home in wings and a community hall for
 // 300 people whose main hall is set out with seat rows, each valid, compliant, clean and with the
