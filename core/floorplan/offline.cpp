@@ -174,6 +174,8 @@ enum class Family {
   kHomeOpenPlan,  // a home without a hallway: every room opens onto the living room (ProcTHOR-style)
   kAuditorium,    // audience halls side by side, stage end against their backstage, foyer along their backs
   kMultiWing,     // a large building: corridor wings with rooms on both sides, joined at a junction
+  kEnSuite,       // galleries en suite are the circulation: an enfilade (two rows, a U or a ring)
+                  // entered from the foyer, the other rooms in a band on the foyer's far side
 };
 
 std::string_view family_name(Family f) {
@@ -190,6 +192,8 @@ std::string_view family_name(Family f) {
       return "auditorium";
     case Family::kMultiWing:
       return "multi_wing";
+    case Family::kEnSuite:
+      return "rooms_en_suite";
   }
   return "";
 }
@@ -368,6 +372,7 @@ class Layout {
     }
 
     if (family_ == Family::kMultiWing) return lay_out_wings(rng, style);
+    if (family_ == Family::kEnSuite) return lay_out_en_suite(rng, style, scale);
 
     // Caps at the ends of the circulation, bands of rooms along its sides.
     const bool corridor = is_corridor_type(rooms_[*circ_].type);
@@ -427,6 +432,9 @@ class Layout {
             : family_ != Family::kAuditorium && !needs_two_bands && band_rooms <= (corridor ? 3u : 5u) &&
                   ((small && entrance_ == *circ_ && caps.size() == 2) || rng.chance(corridor ? 0.35 : 0.6));
     grouped_band_ = grouped ? static_cast<int>(rng.below(2)) : 0;
+    // A large hall's rooms are dealt to both bands by area, a stout hall's band too (there they
+    // keep a depth of their own): a food court does not leave fifty shops in one band.
+    const bool spread = grouped && family_ == Family::kHallWithRooms && n >= kAlwaysWingRooms;
     std::vector<std::size_t> left[2], middle[2], right[2];
     const bool first_cap_left = rng.chance(0.5);
     std::vector<bool> used(n, false);
@@ -465,11 +473,11 @@ class Layout {
       int b = load[0] <= load[1] ? 0 : 1;
       if (rng.chance(0.2)) b = 1 - b;
       // Stout halls and platforms on one side, the small rooms on the other (bands share a depth).
-      if (grouped)
-        b = std::any_of(chain.begin(), chain.end(),
-                        [&](std::size_t r) { return grouped_type(rooms_[r].type); })
-                ? grouped_band_
-                : 1 - grouped_band_;
+      if (grouped) {
+        const bool stout = std::any_of(chain.begin(), chain.end(),
+                                       [&](std::size_t r) { return grouped_type(rooms_[r].type); });
+        if (stout || !spread) b = stout ? grouped_band_ : 1 - grouped_band_;
+      }
       if (family_ == Family::kAuditorium) {
         const bool hall = std::any_of(chain.begin(), chain.end(),
                                       [&](std::size_t r) { return grouped_type(rooms_[r].type); });
@@ -533,7 +541,7 @@ class Layout {
       return std::any_of(chain.begin(), chain.end(),
                          [&](std::size_t q) { return grouped_type(rooms_[q].type); });
     };
-    if (family_ == Family::kAuditorium)
+    if (family_ == Family::kAuditorium || spread)
       for (int b = 0; b < 2; ++b) {
         hall_band[b] = std::any_of(band[b].begin(), band[b].end(), of_hall);
         if (!hall_band[b]) continue;
@@ -653,6 +661,180 @@ class Layout {
       if (!r.placed) return "room '" + r.name + "' was not placed";
 
     return doors_and_entrance(rng, dwelling);
+  }
+
+  // Widths (cm) of `rooms` stretched to `target` in all: the extra shared out by width (in 5 cm
+  // steps), the last room taking the rest. Nothing changes when they are as long already.
+  static void stretch(std::vector<int>& width, const std::vector<std::size_t>& rooms, int target) {
+    int total = 0;
+    for (auto r : rooms) total += width[r];
+    const int gap = target - total;
+    if (gap <= 0 || rooms.empty()) return;
+    int given = 0;
+    for (std::size_t k = 0; k < rooms.size(); ++k) {
+      const auto r = rooms[k];
+      const int extra = k + 1 == rooms.size() ? gap - given : gap * width[r] / total / 5 * 5;
+      width[r] += extra;
+      given += extra;
+    }
+  }
+  static int total_of(const std::vector<int>& width, const std::vector<std::size_t>& rooms) {
+    int total = 0;
+    for (auto r : rooms) total += width[r];
+    return total;
+  }
+
+  // Rooms en suite: the galleries are the circulation, each opening into the next, the first (and,
+  // for a circuit, the last) onto the foyer. Laid out with the foyer along y = 0 .. W and one of
+  //  - two rows: the galleries in an enfilade going out from the foyer and (a circuit) a second one
+  //    beside it coming back, the two joined at their far end;
+  //  - a U: the first and last gallery flank the foyer, the others a row across its back;
+  //  - a ring: the first and last gallery rise from the foyer at its ends, the others a row across
+  //    their tops, the space between them a core of service rooms that open onto the foyer.
+  // The other rooms (chains of them) stand in a band along the foyer's other long side, leaving
+  // room for its entrance. A chain without a way back to the foyer is a single enfilade.
+  std::optional<std::string> lay_out_en_suite(Rng& rng, const DomainStyle& style, double scale) {
+    const std::size_t n = rooms_.size();
+    hub_pieces_.clear();
+    areas_.clear();
+    const std::vector<std::size_t>& gal = gallery_chain_;
+    const std::size_t k = gal.size();
+    std::vector<std::vector<std::size_t>> chains;
+    for (std::size_t ch = 0; ch < chains_.size(); ++ch)
+      if (ch != chain_of_[gal.front()]) chains.push_back(chains_[ch]);
+    rng.shuffle(chains);
+    for (auto& ch : chains)
+      if (rng.chance(0.5)) std::reverse(ch.begin(), ch.end());
+    enum Variant { kTwoRows, kU, kRing };
+    Variant variant = kTwoRows;
+    if (closed_chain_ && k >= 3) variant = static_cast<Variant>(rng.below(chains.empty() ? 2 : 3));
+    // The band's depth and its rooms' widths. A ring's core is as deep as the galleries beside it:
+    // it takes the largest chain and, on half the draws each, the others of rooms of 12 m² or more
+    // (a café, a shop; toilets and stores would be slivers that deep).
+    int band_depth = cm_up(rng.uniform(style.depth_lo, style.depth_hi));
+    std::vector<std::size_t> core, band;
+    std::size_t largest = 0;
+    double largest_area = -1.0;
+    for (std::size_t ch = 0; ch < chains.size(); ++ch) {
+      double area = 0.0;
+      for (auto r : chains[ch]) area += rooms_[r].area;
+      if (area > largest_area) largest = ch, largest_area = area;
+    }
+    for (std::size_t ch = 0; ch < chains.size(); ++ch) {
+      const bool roomy = std::all_of(chains[ch].begin(), chains[ch].end(),
+                                     [&](std::size_t r) { return rooms_[r].area >= 12.0; });
+      const bool in_core =
+          variant == kRing && (ch == largest || (roomy && core.size() < 4 && rng.chance(0.5)));
+      for (auto r : chains[ch]) (in_core ? core : band).push_back(r);
+    }
+    for (auto r : band) band_depth = std::max(band_depth, rooms_[r].min_dim);
+    std::vector<int> width(n, 0);
+    for (auto r : band) width[r] = cm_up(std::max(rooms_[r].area / m(band_depth), m(rooms_[r].min_dim)));
+    const int band_length = total_of(width, band);
+    // A row of galleries: its depth (their narrowest dimension at least) and their widths along it.
+    auto row = [&](const std::vector<std::size_t>& rs, int extra_min = 0) {
+      int d = std::max(cm_up(rng.uniform(style.depth_lo, style.depth_hi)), extra_min);
+      for (auto r : rs) d = std::max(d, rooms_[r].min_dim);
+      for (auto r : rs) width[r] = cm_up(std::max(rooms_[r].area / m(d), m(rooms_[r].min_dim)));
+      return d;
+    };
+    PlanRoom& c = rooms_[*circ_];
+    const RoomType* rt = find_room_type(c.type);
+    const double drawn = graph_.rooms[*circ_].area ? *graph_.rooms[*circ_].area
+                         : rt && rt->area_hi > 0   ? rng.uniform(rt->area_lo, rt->area_hi)
+                                                   : rng.uniform(40.0, 80.0);
+    c.area = std::max(c.area, drawn * scale);
+    const int long_side = cm_up(std::sqrt(c.area * rng.uniform(0.9, 1.7)));
+    int L = 0, W = 0;
+    auto foyer_depth = [&](int length) { return cm_up(std::max({c.area / m(length), 4.0, m(c.min_dim)})); };
+    auto place = [&](std::size_t r, int x0, int y0, int x1, int y1) {
+      rooms_[r].rect = {x0, y0, x1, y1};
+      rooms_[r].placed = true;
+    };
+    if (variant == kTwoRows) {
+      // Out along one row, back along the other (a circuit); a single row when there is no way back.
+      const std::size_t out = closed_chain_ ? std::clamp<std::size_t>((k + rng.below(2)) / 2, 1, k - 1) : k;
+      std::vector<std::size_t> col[2];
+      col[0].assign(gal.begin(), gal.begin() + static_cast<std::ptrdiff_t>(out));
+      col[1].assign(gal.rbegin(), gal.rend() - static_cast<std::ptrdiff_t>(out));
+      int d[2] = {0, 0}, h[2] = {0, 0};
+      for (int s = 0; s < 2; ++s)
+        if (!col[s].empty()) {
+          d[s] = row(col[s]);
+          // Along a column its rooms' widths are their lengths: swap the roles (depth across).
+          h[s] = total_of(width, col[s]);
+        }
+      const int H = std::max(h[0], h[1]);
+      for (int s = 0; s < 2; ++s) stretch(width, col[s], H);
+      const int span = d[0] + d[1];
+      L = std::max({span, band_length, long_side});
+      W = foyer_depth(L);
+      const int xg = L > span && rng.chance(0.5) ? (L - span) / 5 * 5 : 0;
+      for (int s = 0; s < 2; ++s) {
+        const int x0 = xg + (s == 0 ? 0 : d[0]);
+        int y = W;
+        for (auto r : col[s]) {
+          place(r, x0, y, x0 + d[s], y + width[r]);
+          y += width[r];
+        }
+      }
+    } else {
+      const std::size_t first = gal.front(), last = gal.back();
+      std::vector<std::size_t> top(gal.begin() + 1, gal.end() - 1);
+      const int top_depth = row(top);
+      if (variant == kU) {
+        // The foyer between the first and the last gallery, the others across its back.
+        const int H = std::max({foyer_depth(long_side), rooms_[first].min_dim, rooms_[last].min_dim});
+        const int c1 = cm_up(std::max(rooms_[first].area / m(H), m(rooms_[first].min_dim)));
+        const int c2 = cm_up(std::max(rooms_[last].area / m(H), m(rooms_[last].min_dim)));
+        L = std::max(
+            {total_of(width, top) - c1 - c2, band_length + entrance_w_ + 90, cm_up(c.area / m(H)), 400});
+        W = H;
+        stretch(width, top, c1 + L + c2);
+        place(first, -c1, 0, 0, H);
+        place(last, L, 0, L + c2, H);
+        int x = -c1;
+        for (auto r : top) {
+          place(r, x, H, x + width[r], H + top_depth);
+          x += width[r];
+        }
+      } else {
+        // A ring: the first and last gallery rise from the foyer's ends, a core of rooms between.
+        int d = cm_up(rng.uniform(style.depth_lo, style.depth_hi));
+        for (auto r : core) d = std::max(d, rooms_[r].min_dim);
+        d = std::max({d, rooms_[first].min_dim, rooms_[last].min_dim});
+        for (auto r : core) width[r] = cm_up(std::max(rooms_[r].area / m(d), m(rooms_[r].min_dim)));
+        const int c1 = cm_up(std::max(rooms_[first].area / m(d), m(rooms_[first].min_dim)));
+        const int c2 = cm_up(std::max(rooms_[last].area / m(d), m(rooms_[last].min_dim)));
+        L = std::max({total_of(width, top), c1 + c2 + total_of(width, core), band_length, long_side});
+        W = foyer_depth(L);
+        stretch(width, top, L);
+        stretch(width, core, L - c1 - c2);
+        place(first, 0, W, c1, W + d);
+        place(last, L - c2, W, L, W + d);
+        int x = c1;
+        for (auto r : core) {
+          place(r, x, W, x + width[r], W + d);
+          x += width[r];
+        }
+        x = 0;
+        for (auto r : top) {
+          place(r, x, W + d, x + width[r], W + d + top_depth);
+          x += width[r];
+        }
+      }
+    }
+    c.rect = {0, 0, L, W};
+    c.placed = true;
+    // The band below the foyer, at one of its ends (the rest of that side outside).
+    int x = rng.chance(0.5) ? 0 : L - band_length;
+    for (auto r : band) {
+      place(r, x, -band_depth, x + width[r], 0);
+      x += width[r];
+    }
+    for (const auto& r : rooms_)
+      if (!r.placed) return "room '" + r.name + "' was not placed";
+    return doors_and_entrance(rng, false);
   }
 
   // A multi-wing plan: two to four wings (an L, a T or a cross), each a corridor with a band of
@@ -776,7 +958,9 @@ class Layout {
       std::string name = "door_" + an + "_" + bn;
       for (int k = 2; names.count(name); ++k) name = "door_" + an + "_" + bn + "_" + std::to_string(k);
       names.insert(name);
-      if (!place_door(rng, name, *wall, w, {an, bn}))
+      // Galleries en suite open into each other on their axis (an enfilade).
+      const bool centred = family_ == Family::kEnSuite && (in_gallery_chain(a) || in_gallery_chain(b));
+      if (!place_door(rng, name, *wall, w, {an, bn}, centred))
         return "the wall between '" + an + "' and '" + bn + "' is too short";
     }
     {
@@ -832,12 +1016,16 @@ class Layout {
       if (d.connects.size() == 1) exits.push_back(&d);
     if (exits.empty()) return std::nullopt;
     const std::vector<Rect> rects = all_rects();
-    double diagonal = 0.0;
+    // Squared distances in whole cm² (exact), one square root at the end: a large plan has
+    // thousands of corner pairs and spots × doors, and hypot was a few ms of every exit round.
+    auto square = [](long long dx, long long dy) { return dx * dx + dy * dy; };
+    long long widest = 0;
     for (const Rect& a : rects)
       for (const Rect& b : rects)
         for (auto [ax, ay] : {std::pair{a.x0, a.y0}, {a.x1, a.y0}, {a.x1, a.y1}, {a.x0, a.y1}})
           for (auto [bx, by] : {std::pair{b.x0, b.y0}, {b.x1, b.y0}, {b.x1, b.y1}, {b.x0, b.y1}})
-            diagonal = std::max(diagonal, std::hypot(ax - bx, ay - by));
+            widest = std::max(widest, square(ax - bx, ay - by));
+    const double diagonal = std::sqrt(static_cast<double>(widest));
     // The second exit half the diagonal from the first (IBC 1007.1.1); further exits spread out.
     const double apart =
         exits.size() == 1 ? diagonal / 2.0 : diagonal / (2.0 * static_cast<double>(exits.size()));
@@ -880,11 +1068,14 @@ class Layout {
         for (int at : {lo, (lo + hi) / 2 / 5 * 5, hi, (3 * lo + hi) / 4 / 5 * 5, (lo + 3 * hi) / 4 / 5 * 5}) {
           const int x = wall.vertical ? wall.c : at, y = wall.vertical ? at : wall.c;
           bool clear = true;
-          for (const DoorDraft& d : doors_)
-            if (std::hypot(d.x - x, d.y - y) < (d.width + w) / 2.0 + 30.0) clear = false;
+          for (const DoorDraft& d : doors_) {
+            const double reach = (d.width + w) / 2.0 + 30.0;
+            if (static_cast<double>(square(d.x - x, d.y - y)) < reach * reach) clear = false;
+          }
           if (!clear) continue;
-          double distance = std::numeric_limits<double>::infinity();
-          for (const DoorDraft* e : exits) distance = std::min(distance, std::hypot(e->x - x, e->y - y));
+          long long nearest = std::numeric_limits<long long>::max();
+          for (const DoorDraft* e : exits) nearest = std::min(nearest, square(e->x - x, e->y - y));
+          const double distance = std::sqrt(static_cast<double>(nearest));
           // A spot far enough apart in a better tier wins; within a tier, the farthest.
           const bool enough = distance >= apart;
           const int rank = enough ? t : t + 4;
@@ -963,6 +1154,9 @@ class Layout {
       // A large building: wings joined at a junction, always from kAlwaysWingRooms rooms on.
       if (n >= kWingRooms && (n >= kAlwaysWingRooms || Rng(seed, fnv1a64("multi_wing")).chance(0.5)))
         family_ = Family::kMultiWing;
+    } else if (entrance_ == *circ_ && find_gallery_chain()) {
+      // A museum: its galleries en suite are the way through it (every seed).
+      family_ = Family::kEnSuite;
     } else if (hub == "main_hall" && assembly(wants)) {
       // A large community hall: its main hall, the hub, is set out for an audience (stage, seat rows).
       family_ = Family::kAuditorium;
@@ -1143,6 +1337,29 @@ class Layout {
     return best;
   }
 
+  // The chain of two or more galleries en suite that the en-suite family is laid out round: its
+  // first room (and its last, for a circuit) opens onto the hub, no room between does. Oriented
+  // from the hub; false when the graph has none.
+  bool find_gallery_chain() {
+    for (const auto& chain : chains_) {
+      if (chain.size() < 2) continue;
+      const bool galleries = std::all_of(chain.begin(), chain.end(), [&](std::size_t r) {
+        return canonical_room_type(graph_.rooms[r].type) == "gallery";
+      });
+      const bool inner_on_hub =
+          std::any_of(chain.begin() + 1, chain.end() - 1, [&](std::size_t r) { return on_hub_[r]; });
+      if (!galleries || inner_on_hub || (!on_hub_[chain.front()] && !on_hub_[chain.back()])) continue;
+      gallery_chain_ = chain;
+      if (!on_hub_[chain.front()]) std::reverse(gallery_chain_.begin(), gallery_chain_.end());
+      closed_chain_ = on_hub_[chain.front()] && on_hub_[chain.back()];
+      return true;
+    }
+    return false;
+  }
+  [[nodiscard]] bool in_gallery_chain(std::size_t r) const {
+    return std::find(gallery_chain_.begin(), gallery_chain_.end(), r) != gallery_chain_.end();
+  }
+
   bool is_public(std::size_t r) const {
     const std::string& t = rooms_[r].type;
     return is_circulation_type(t) || t == "lobby" || t == "reception" || t == "waiting_room" ||
@@ -1150,13 +1367,14 @@ class Layout {
   }
 
   bool place_door(Rng& rng, const std::string& name, const Wall& wall, int width,
-                  std::vector<std::string> connects) {
+                  std::vector<std::string> connects, bool centred = false) {
     const int margin = 15;
     const int lo = wall.lo + margin + (width + 1) / 2, hi = wall.hi - margin - (width + 1) / 2;
     if (lo > hi) return false;
-    // Near one end or in the middle, as doors usually are.
+    // Near one end or in the middle, as doors usually are (centred: in the middle).
     static constexpr double kAt[3] = {0.1, 0.5, 0.9};
-    const int at = lo + static_cast<int>(std::lround((hi - lo) * kAt[rng.below(3)]));
+    const double along = kAt[rng.below(3)];
+    const int at = lo + static_cast<int>(std::lround((hi - lo) * (centred ? 0.5 : along)));
     DoorDraft d;
     d.name = name;
     d.vertical_wall = wall.vertical;
@@ -1190,6 +1408,8 @@ class Layout {
   bool service_exit_ = false;    // a small program's second exit from a service room (this attempt)
   bool assembly_hub_ = false;    // auditorium family: the hub is set out as the audience hall
   Family family_ = Family::kCorridorWithRooms;
+  std::vector<std::size_t> gallery_chain_;           // en-suite family: the galleries, from the hub
+  bool closed_chain_ = false;                        // its last gallery opens back onto the hub (a circuit)
   std::vector<std::pair<std::string, Rect>> areas_;  // open hall: its zones (type, rectangle)
   // Multi-wing plan: the hub's rect is the junction; these are its wing corridors, and hub_arms_
   // their lengths beyond the junction towards +x, +y, -x, -y (0: no wing there).
@@ -1399,6 +1619,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
     const Rng furnishing_rng = rng.fork("furnish");
     ComplianceCache travel_cache;    // the worlds of this attempt share their travel-distance grid
     FurnishingMemo furnishing_memo;  // and the furnishing of rooms whose doors did not change
+    BuildCache build_cache;          // and the geometry WorldBuilder works out from the zones alone
     std::set<std::string> dropped;   // furniture the layout check found in the way, left out
     FeatureOutcome outcome;
     // Worlds built again for more exits or with furniture left out are validated without the
@@ -1446,7 +1667,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       BuildOptions build_options = options.build;
       build_options.check_reachability = build_options.check_reachability && reachability;
       if (!reachability) last = builder;
-      return builder.build(build_options);
+      return builder.build(build_options, nullptr, &build_cache);
     };
     // A large plan is almost always built again (more exits for its occupant load): its first
     // world is validated in full only if it turns out to be the last.
@@ -1572,7 +1793,7 @@ Result<FloorPlan> generate_floor_plan(const SceneGraph& graph, std::span<const M
       continue;
     }
     if (!validated) {
-      world = last.build(options.build);
+      world = last.build(options.build, nullptr, &build_cache);
       if (!world) {
         tried.push_back("the world did not validate: " + world.error().message());
         last_error = world.error();

@@ -387,17 +387,22 @@ WorldBuilder& WorldBuilder::add_entity(EntitySpec entity) {
 }
 
 std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector<Door>& doors,
-                               const BuildOptions& options) {
+                               const BuildOptions& options, const std::vector<Segment>* lines) {
   Geos geos;
-  MultiPolygon polys;
-  for (const auto& z : zones) polys.push_back(z.polygon);
+  std::vector<Segment> own;
+  if (lines == nullptr) {
+    MultiPolygon polys;
+    for (const auto& z : zones) polys.push_back(z.polygon);
+    own = geos.boundary_segments(polys);
+    lines = &own;
+  }
   const double tol = options.boundary_tolerance;
   const ZoneBoundaries boundaries(zones);
   std::vector<Segment> openings;
   for (const auto& d : doors) openings.push_back(d.opening);
   const SegmentIndex door_index(std::move(openings));
   std::vector<Wall> walls;
-  for (const Segment& s : geos.boundary_segments(polys)) {
+  for (const Segment& s : *lines) {
     const double len = geometry::length(s);
     if (len <= tol) continue;
     const Point u{(s.b.x - s.a.x) / len, (s.b.y - s.a.y) / len};
@@ -439,7 +444,8 @@ std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector
   return walls;
 }
 
-Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldError>* warnings) const {
+Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldError>* warnings,
+                                  BuildCache* cache) const {
   Validator v;
   if (!(opt.agent_radius >= 0 && std::isfinite(opt.agent_radius)) || !(opt.boundary_tolerance > 0) ||
       !(opt.door_snap_distance >= 0) || !(opt.overlap_tolerance >= 0) || !(opt.grid_resolution > 0) ||
@@ -547,23 +553,36 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
     const double tol = opt.boundary_tolerance;
     std::vector<geometry::Box> boxes;
     for (const auto& z : zones) boxes.push_back(geometry::bounds(z.polygon.outer));
-    for (std::size_t j = 0; j < zones.size(); ++j) {
-      for (std::size_t i = 0; i < j; ++i) {
-        const auto& a = boxes[i];
-        const auto& b = boxes[j];
-        if (a.max.x <= b.min.x || b.max.x <= a.min.x || a.max.y <= b.min.y || b.max.y <= a.min.y) continue;
-        const double overlap =
-            geos.area(geos.intersection(MultiPolygon{zones[i].polygon}, MultiPolygon{zones[j].polygon}));
-        if (overlap > opt.overlap_tolerance) {
-          v.add(zone_ptr(j) + "/polygon", "zone '" + zones[j].name + "' overlaps zone '" + zones[i].name +
-                                              "' (" + zone_ptr(i) + ") by " + num(overlap) + " m²");
+    const bool cached = cache != nullptr && cache->boundary_tolerance == tol &&
+                        cache->overlap_tolerance == opt.overlap_tolerance && cache->zones == zones;
+    BuildCache fresh;
+    BuildCache& known = cache != nullptr ? *cache : fresh;
+    if (!cached) {
+      known = BuildCache{};
+      for (std::size_t j = 0; j < zones.size(); ++j) {
+        for (std::size_t i = 0; i < j; ++i) {
+          const auto& a = boxes[i];
+          const auto& b = boxes[j];
+          if (a.max.x <= b.min.x || b.max.x <= a.min.x || a.max.y <= b.min.y || b.max.y <= a.min.y) continue;
+          const double overlap =
+              geos.area(geos.intersection(MultiPolygon{zones[i].polygon}, MultiPolygon{zones[j].polygon}));
+          if (overlap > opt.overlap_tolerance) known.overlaps.emplace_back(i, j, overlap);
         }
       }
+      MultiPolygon all;
+      for (const auto& z : zones) all.push_back(z.polygon);
+      known.plan = geos.unite(all);
+      known.outline = geos.boundary_segments(known.plan);
+      // The key last: a build that throws above leaves a cache that matches nothing.
+      known.zones = zones;
+      known.boundary_tolerance = tol;
+      known.overlap_tolerance = opt.overlap_tolerance;
     }
-    MultiPolygon all;
-    for (const auto& z : zones) all.push_back(z.polygon);
-    const MultiPolygon plan = geos.unite(all);
-    std::vector<Segment> outline = geos.boundary_segments(plan);
+    for (const auto& [i, j, overlap] : known.overlaps)
+      v.add(zone_ptr(j) + "/polygon", "zone '" + zones[j].name + "' overlaps zone '" + zones[i].name + "' (" +
+                                          zone_ptr(i) + ") by " + num(overlap) + " m²");
+    const MultiPolygon& plan = known.plan;
+    std::vector<Segment> outline = known.outline;
 
     // 3. Doors: find their zones and their opening on the shared (or outside) boundary.
     // Boundaries are computed once per zone pair (or zone and outside) and indexed, so each door
@@ -596,6 +615,8 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
           b == kOutside ? std::make_pair(a, b) : std::make_pair(std::min(a, b), std::max(a, b));
       auto it = host_cache.find(key);
       if (it == host_cache.end()) {
+        if (auto seen = known.boundaries.find(key); seen != known.boundaries.end())
+          return host_cache.emplace(key, SegmentIndex(seen->second)).first->second;
         std::vector<Segment> segs;
         if (b == kOutside && vertices(zones[a].polygon) + plan_vertices <= kExactBoundaryVertices) {
           for (const auto& part : plan) {
@@ -614,6 +635,7 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
           segs = geometry::pieces_near(rings(zones[key.first].polygon), SegmentIndex(std::move(other_edges)),
                                        tol);
         }
+        known.boundaries.emplace(key, segs);
         it = host_cache.emplace(key, SegmentIndex(std::move(segs))).first;
       }
       return it->second;
@@ -722,7 +744,12 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
     // 4. Walls: as written, or derived from the zone boundaries minus the door openings.
     std::vector<Wall> walls = walls_;
     if (walls.empty()) {
-      walls = derive_walls(zones, doors, opt);
+      if (known.wall_lines.empty()) {
+        MultiPolygon polys;
+        for (const auto& z : zones) polys.push_back(z.polygon);
+        known.wall_lines = geos.boundary_segments(polys);
+      }
+      walls = derive_walls(zones, doors, opt, &known.wall_lines);
     } else {
       std::vector<Segment> inner_openings;
       for (const auto& d : doors) {
@@ -773,9 +800,29 @@ Result<World> WorldBuilder::build(const BuildOptions& opt, std::vector<FieldErro
       }
     }
 
-    // 5. ROIs inside the zones; entities standing in a zone.
+    // 5. ROIs inside the zones; entities standing in a zone. A ROI whose bounds lie in a zone that
+    // is an axis-aligned rectangle has nothing outside (no GEOS difference with the whole plan).
+    std::vector<bool> rectangle(zones.size(), false);
+    for (std::size_t z = 0; z < zones.size(); ++z) {
+      const auto& ring = zones[z].polygon.outer;
+      bool axis =
+          zones[z].polygon.holes.empty() && (ring.size() == 4 || (ring.size() == 5 && ring[0] == ring[4]));
+      for (std::size_t k = 0; axis && k < 4; ++k) {
+        const Point a = ring[k], b = ring[(k + 1) % 4];
+        axis = a.x == b.x || a.y == b.y;
+      }
+      rectangle[z] = axis;
+    }
     for (std::size_t i = 0; i < rois_.size(); ++i) {
       if (!roi_ok[i]) continue;
+      const geometry::Box rb = geometry::bounds(rois_[i].polygon.outer);
+      bool inside = false;
+      for (std::size_t z = 0; z < zones.size() && !inside; ++z) {
+        const auto& b = boxes[z];
+        inside = rectangle[z] && rb.min.x >= b.min.x && rb.max.x <= b.max.x && rb.min.y >= b.min.y &&
+                 rb.max.y <= b.max.y;
+      }
+      if (inside) continue;
       const MultiPolygon roi{rois_[i].polygon};
       const double outside = geos.area(geos.difference(roi, plan));
       if (outside > opt.overlap_tolerance) {

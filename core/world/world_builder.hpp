@@ -2,8 +2,11 @@
 // Collects zones, walls, doors, ROIs and entities (from a file, an import or a floor-plan
 // generator), validates them once and produces an immutable World. Errors carry JSON
 // pointers into the world document (/zones/3/polygon), so a parser can add line numbers.
+#include <map>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/common/error.hpp"
@@ -44,6 +47,21 @@ struct EntitySpec {
   std::vector<std::string> affordances;
 };
 
+// What build() works out from the zones alone — their overlaps, the plan's union and outline, the
+// boundaries doors were found on, the dissolved boundaries walls are cut from — kept for the next
+// build of the same zones (a floor plan built again with more exits or furniture left out). Read
+// only when that build's zones and tolerances are equal to the ones it was filled from, so a
+// world built with it is the world built without it.
+struct BuildCache {
+  std::vector<Zone> zones;
+  double boundary_tolerance = -1.0, overlap_tolerance = -1.0;
+  std::vector<std::tuple<std::size_t, std::size_t, double>> overlaps;  // (i, j, m²) over the tolerance
+  geometry::MultiPolygon plan;
+  std::vector<Segment> outline;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<Segment>> boundaries;
+  std::vector<Segment> wall_lines;  // the zones' dissolved boundaries
+};
+
 class WorldBuilder {
  public:
   WorldBuilder& set_name(std::string name);
@@ -65,8 +83,10 @@ class WorldBuilder {
   // problem found (each with a JSON pointer and a message naming the elements involved).
   // What build() assumed (a zone region inferred, walls added to close it) is appended to
   // `warnings`, when given, with the pointer of the element concerned.
+  // `cache`: what an earlier build of the same zones worked out (filled or refilled here).
   [[nodiscard]] Result<World> build(const BuildOptions& options = {},
-                                    std::vector<FieldError>* warnings = nullptr) const;
+                                    std::vector<FieldError>* warnings = nullptr,
+                                    BuildCache* cache = nullptr) const;
 
  private:
   std::string name_;
@@ -81,7 +101,8 @@ class WorldBuilder {
 
 // Walls derived as the paper does: the dissolved zone boundaries minus the door openings.
 // Each wall takes its style from the material of the first zone it bounds.
+// `lines`: the zones' dissolved boundaries when already known (BuildCache::wall_lines).
 std::vector<Wall> derive_walls(const std::vector<Zone>& zones, const std::vector<Door>& doors,
-                               const BuildOptions& options);
+                               const BuildOptions& options, const std::vector<Segment>* lines = nullptr);
 
 }  // namespace socsim::world

@@ -1,5 +1,5 @@
 // One world of each layout family (corridor with rooms, hall with rooms, open hall with zones,
-// ProcTHOR-style open-plan home, auditorium, multi-wing), generated offline by POST /api/v1/worlds, shown on the floor-plan
+// ProcTHOR-style open-plan home, auditorium, multi-wing, galleries en suite), generated offline by POST /api/v1/worlds, shown on the floor-plan
 // view of a card in headless Chromium: the plan covers the canvas, and a screenshot per family
 // lands in tests/e2e/artifacts/world-<family>.png to be looked at.
 import { test } from 'node:test';
@@ -22,11 +22,12 @@ async function worldOfFamily(prompt, family) {
 
 const families = [
   ['corridor_with_rooms', 'a hospital ward with six patient rooms'],
-  ['hall_with_rooms', 'a museum'],
+  ['hall_with_rooms', 'an airport departure hall'],
   ['open_hall_zones', 'a supermarket'],
   ['home_open_plan', 'a small flat with one bedroom'],
   ['auditorium', 'an evening at the cinema'],
   ['multi_wing', "residents of a care home with eighteen residents' rooms"],
+  ['rooms_en_suite', 'a museum'],
 ];
 
 for (const [family, prompt] of families) {

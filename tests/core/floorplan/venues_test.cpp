@@ -176,32 +176,34 @@ INSTANTIATE_TEST_SUITE_P(Shards, ThousandPlans, ::testing::Range(0, 10));
 // multiset of type pairs, and which room types have doors to the outside. Rotation, mirroring
 // and room sizes do not change it; a different order of rooms along a corridor, other rooms at
 // its ends or on its other side, do.
-std::string arrangement(const World& w) {
-  auto shared = [](const Zone& a, const Zone& b) {
-    double total = 0;
-    const auto& pa = a.polygon.outer;
-    const auto& pb = b.polygon.outer;
-    for (std::size_t i = 0; i < pa.size(); ++i) {
-      const Point p = pa[i], q = pa[(i + 1) % pa.size()];
-      const double len = std::hypot(q.x - p.x, q.y - p.y);
-      if (len < 1e-9) continue;
-      const double ux = (q.x - p.x) / len, uy = (q.y - p.y) / len;
-      for (std::size_t j = 0; j < pb.size(); ++j) {
-        const Point r = pb[j], s = pb[(j + 1) % pb.size()];
-        // Collinear: both ends of the other edge on this edge's line.
-        const double d1 = (r.x - p.x) * uy - (r.y - p.y) * ux, d2 = (s.x - p.x) * uy - (s.y - p.y) * ux;
-        if (std::abs(d1) > 1e-6 || std::abs(d2) > 1e-6) continue;
-        const double t1 = (r.x - p.x) * ux + (r.y - p.y) * uy, t2 = (s.x - p.x) * ux + (s.y - p.y) * uy;
-        total += std::max(0.0, std::min(len, std::max(t1, t2)) - std::max(0.0, std::min(t1, t2)));
-      }
+// The length of wall two zones share (collinear edges' overlap), m.
+double shared_wall(const Zone& a, const Zone& b) {
+  double total = 0;
+  const auto& pa = a.polygon.outer;
+  const auto& pb = b.polygon.outer;
+  for (std::size_t i = 0; i < pa.size(); ++i) {
+    const Point p = pa[i], q = pa[(i + 1) % pa.size()];
+    const double len = std::hypot(q.x - p.x, q.y - p.y);
+    if (len < 1e-9) continue;
+    const double ux = (q.x - p.x) / len, uy = (q.y - p.y) / len;
+    for (std::size_t j = 0; j < pb.size(); ++j) {
+      const Point r = pb[j], s = pb[(j + 1) % pb.size()];
+      // Collinear: both ends of the other edge on this edge's line.
+      const double d1 = (r.x - p.x) * uy - (r.y - p.y) * ux, d2 = (s.x - p.x) * uy - (s.y - p.y) * ux;
+      if (std::abs(d1) > 1e-6 || std::abs(d2) > 1e-6) continue;
+      const double t1 = (r.x - p.x) * ux + (r.y - p.y) * uy, t2 = (s.x - p.x) * ux + (s.y - p.y) * uy;
+      total += std::max(0.0, std::min(len, std::max(t1, t2)) - std::max(0.0, std::min(t1, t2)));
     }
-    return total;
-  };
+  }
+  return total;
+}
+
+std::string arrangement(const World& w) {
   std::vector<std::string> pairs;
   const auto& zs = w.zones();
   for (std::size_t a = 0; a < zs.size(); ++a)
     for (std::size_t b = a + 1; b < zs.size(); ++b)
-      if (shared(zs[a], zs[b]) > 0.3)
+      if (shared_wall(zs[a], zs[b]) > 0.3)
         pairs.push_back(std::min(zs[a].type, zs[b].type) + "|" + std::max(zs[a].type, zs[b].type));
   for (const auto& d : w.doors())
     if (!d.other) pairs.push_back("exit:" + w.zone(d.zone).type);
@@ -210,7 +212,8 @@ std::string arrangement(const World& w) {
     const Roi& r = w.roi(id);
     const Zone as_zone{r.name, r.name, "", r.polygon};
     for (const auto& z : zs)
-      if (geometry::area(z.polygon) > 0 && shared(as_zone, z) > 0.3) pairs.push_back(r.name + "|" + z.type);
+      if (geometry::area(z.polygon) > 0 && shared_wall(as_zone, z) > 0.3)
+        pairs.push_back(r.name + "|" + z.type);
     for (const auto& d : w.doors())
       if (!d.other && geometry::contains(r.polygon, d.pose.position(), 0.05))
         pairs.push_back("exit:" + r.name);
@@ -395,8 +398,102 @@ TEST_F(Venues, EveryLayoutFamilyIsBuiltCleanAndKeepsTheSceneGraph) {
     }
   }
   for (const char* f : {"corridor_with_rooms", "hall_with_rooms", "open_hall_zones", "home_open_plan",
-                        "auditorium", "multi_wing"})
+                        "auditorium", "multi_wing", "rooms_en_suite"})
     EXPECT_GE(families[f], 4) << f;
+}
+
+// A museum's galleries en suite are the way through it: the foyer opens into the first, each
+// gallery into the next (its doors on the axis of the enfilade) and the last back into the foyer,
+// no gallery has a door to any other room, and the seeds draw the enfilade in two rows, as a U
+// round the foyer and as a ring round a core of service rooms. Valid, compliant and clean.
+TEST_F(Venues, MuseumGalleriesEnSuiteAreTheCirculation) {
+  const SceneGraph g = room_program("museum");
+  std::set<std::string> shapes;
+  for (std::uint64_t seed = 0; seed < 12; ++seed) {
+    OfflineOptions o;
+    o.seed = seed;
+    o.requirements = typical_request("museum");
+    auto plan = generate_floor_plan(g, constraints("museum"), o);
+    ASSERT_TRUE(plan) << seed << ": " << plan.error().message();
+    EXPECT_EQ(plan->provenance.at("layout_family"), "rooms_en_suite") << seed;
+    EXPECT_TRUE(plan->compliance.passed) << seed;
+    const LayoutCheck check = check_layout(plan->world);
+    EXPECT_TRUE(check.ok()) << seed << ":\n" << check.summary();
+    EXPECT_EQ(plan->scene_graph.adjacency, g.adjacency);
+    const World& w = plan->world;
+    // The circuit: foyer, the five galleries in the program's order, foyer, each step through a door.
+    std::vector<std::string> circuit{"foyer"};
+    for (const auto& r : g.rooms)
+      if (r.type == "gallery") circuit.push_back(r.name);
+    circuit.push_back("foyer");
+    for (std::size_t k = 0; k + 1 < circuit.size(); ++k) {
+      const auto a = w.find_zone(circuit[k]), b = w.find_zone(circuit[k + 1]);
+      ASSERT_TRUE(a && b) << circuit[k] << " " << circuit[k + 1];
+      EXPECT_TRUE(std::any_of(w.doors().begin(), w.doors().end(),
+                              [&](const Door& d) {
+                                return d.other &&
+                                       ((d.zone == *a && *d.other == *b) || (d.zone == *b && *d.other == *a));
+                              }))
+          << seed << ": no door from " << circuit[k] << " into " << circuit[k + 1];
+    }
+    int touching_foyer = 0;
+    bool core = false;
+    const Zone& foyer = w.zone(*w.find_zone("foyer"));
+    for (const auto& z : w.zones()) {
+      if (z.type != "gallery") continue;
+      // Inside, a gallery opens only onto galleries and the foyer.
+      for (const auto& d : w.doors()) {
+        if (!d.other) continue;
+        const bool mine = w.zone(d.zone).name == z.name || w.zone(*d.other).name == z.name;
+        const std::string& there =
+            w.zone(d.zone).name == z.name ? w.zone(*d.other).type : w.zone(d.zone).type;
+        if (mine) {
+          EXPECT_TRUE(there == "gallery" || there == "foyer") << seed << ": " << d.name;
+        }
+      }
+      if (shared_wall(z, foyer) > 0.3) ++touching_foyer;
+      for (const auto& other : w.zones())
+        if (other.type != "gallery" && other.type != "foyer" && shared_wall(z, other) > 0.3) core = true;
+    }
+    shapes.insert(touching_foyer == 5 ? "u" : core ? "ring" : "two_rows");
+  }
+  EXPECT_EQ(shapes.size(), 3u) << "the enfilade's shapes over 12 seeds";
+}
+
+// A caller's graph keeps its galleries en suite exactly: an open chain (only the first gallery
+// on the foyer) is a single enfilade, two galleries that both open onto the foyer a short circuit,
+// and a large museum's twelve galleries a long one.
+TEST_F(Venues, GalleriesEnSuiteOfACallersGraphAreKeptExactly) {
+  SceneGraph open{
+      "museum",
+      {{"foyer", "foyer", std::nullopt},
+       {"gallery_a", "gallery", std::nullopt},
+       {"gallery_b", "gallery", std::nullopt},
+       {"gallery_c", "gallery", std::nullopt},
+       {"toilet", "toilet", std::nullopt}},
+      {{"foyer", "gallery_a"}, {"gallery_a", "gallery_b"}, {"gallery_b", "gallery_c"}, {"foyer", "toilet"}},
+      "foyer"};
+  SceneGraph pair = open;
+  pair.rooms.erase(pair.rooms.begin() + 3);
+  pair.adjacency = {
+      {"foyer", "gallery_a"}, {"gallery_a", "gallery_b"}, {"foyer", "gallery_b"}, {"foyer", "toilet"}};
+  for (const SceneGraph& g : {open, pair, room_program("museum", {{"gallery", 12}})}) {
+    for (std::uint64_t seed = 0; seed < 4; ++seed) {
+      OfflineOptions o;
+      o.seed = seed;
+      auto plan = generate_floor_plan(g, constraints("museum"), o);
+      ASSERT_TRUE(plan) << g.rooms.size() << " rooms, seed " << seed << ": " << plan.error().message();
+      EXPECT_EQ(plan->provenance.at("layout_family"), "rooms_en_suite");
+      EXPECT_TRUE(plan->compliance.passed) << g.rooms.size() << " rooms, seed " << seed;
+      const LayoutCheck check = check_layout(plan->world);
+      EXPECT_TRUE(check.ok()) << g.rooms.size() << " rooms, seed " << seed << ":\n" << check.summary();
+      EXPECT_EQ(plan->scene_graph.rooms, g.rooms);
+      EXPECT_EQ(plan->scene_graph.adjacency, g.adjacency);
+      int inner = 0;
+      for (const auto& d : plan->world.doors()) inner += d.other ? 1 : 0;
+      EXPECT_EQ(inner, static_cast<int>(g.adjacency.size())) << "one door per edge, no other";
+    }
+  }
 }
 
 // The two newest families (the quick check run in CI; the tests above run them over more seeds):
