@@ -259,24 +259,24 @@ std::vector<HintReading> read_hints(std::string_view answers, const HouseholdKno
 
 std::vector<double> hint_distribution(std::span<const HintReading> readings, std::string_view object_type,
                                       std::span<const ReceptacleView> recs, std::span<const double> base,
-                                      double trust) {
+                                      double trust, bool activity_tables) {
   std::vector<double> sum;
   int used = 0;
   for (const HintReading& r : readings) {
     if (!r.used) continue;
-    const std::vector<double> p = hint_distribution(r, object_type, recs, base, trust);
+    const std::vector<double> p = hint_distribution(r, object_type, recs, base, trust, activity_tables);
     if (sum.empty()) sum.assign(p.size(), 0.0);
     for (std::size_t i = 0; i < p.size(); ++i) sum[i] += p[i];
     ++used;
   }
-  if (used == 0) return hint_distribution(HintReading{}, object_type, recs, base, trust);
+  if (used == 0) return hint_distribution(HintReading{}, object_type, recs, base, trust, activity_tables);
   for (double& x : sum) x /= used;
   return sum;
 }
 
 std::vector<double> hint_distribution(const HintReading& reading, std::string_view object_type,
                                       std::span<const ReceptacleView> recs, std::span<const double> base_in,
-                                      double trust) {
+                                      double trust, bool activity_tables) {
   const std::size_t n = recs.size();
   std::vector<double> base(n, 1.0);
   if (base_in.size() == n)
@@ -300,8 +300,9 @@ std::vector<double> hint_distribution(const HintReading& reading, std::string_vi
   } else {
     const ObjectEffect* effect = nullptr;
     double rec_total = 0.0;
-    if (reading.activity)
-      for (const auto& o : reading.activity->effects.objects)
+    const ActivitySpec* activity = activity_tables ? reading.activity : nullptr;
+    if (activity)
+      for (const auto& o : activity->effects.objects)
         if (o.type == object_type) {
           effect = &o;
           for (const auto& [r, x] : o.receptacles) rec_total += x;
@@ -309,8 +310,8 @@ std::vector<double> hint_distribution(const HintReading& reading, std::string_vi
     for (std::size_t i = 0; i < n; ++i) {
       double x = base[i];
       if (reading.room) x *= recs[i].room_type == *reading.room ? 1.0 : 0.0;
-      if (reading.activity) {
-        x *= reading.activity->effects.rooms[index_of(recs[i].room_type)] + 0.05;
+      if (activity) {
+        x *= activity->effects.rooms[index_of(recs[i].room_type)] + 0.05;
         if (effect) {
           double r = 0.0;
           for (const auto& [type, weight] : effect->receptacles)
@@ -320,7 +321,7 @@ std::vector<double> hint_distribution(const HintReading& reading, std::string_vi
       }
       focus[i] = x;
     }
-    if (!reading.room && !reading.activity) return base;
+    if (!reading.room && !activity) return base;
   }
   if (!normalise(focus)) return base;
   const double t = reading.vague ? trust / 2.0 : trust;

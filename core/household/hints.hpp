@@ -82,15 +82,19 @@ struct ReceptacleView {
 // uniform when empty): a named receptacle (in the named room) gets `trust` of the mass; else a
 // named room and activity reweight `base` by the curated p(l|a) and p(r|o,a,l) of that activity
 // and, for the room, keep `trust` (half of it when the answer is vague) inside rooms of that type.
-// "No" or nothing understood gives `base` normalised.
+// "No" or nothing understood gives `base` normalised. `activity_tables` false: the curated
+// activity's p(l|a) and p(r|o,a,l) are not read (they are the scene generator's own tables); the
+// named room (or receptacle) alone focuses `base`, and an answer naming only an activity gives `base`.
 std::vector<double> hint_distribution(const HintReading& reading, std::string_view object_type,
                                       std::span<const ReceptacleView> receptacles,
-                                      std::span<const double> base, double trust = 0.85);
+                                      std::span<const double> base, double trust = 0.85,
+                                      bool activity_tables = true);
 // The answers of several residents combined: the mean of hint_distribution over the answers that
 // say the object was used (the others know nothing of where it is); none such gives `base`.
 std::vector<double> hint_distribution(std::span<const HintReading> readings, std::string_view object_type,
                                       std::span<const ReceptacleView> receptacles,
-                                      std::span<const double> base, double trust = 0.85);
+                                      std::span<const double> base, double trust = 0.85,
+                                      bool activity_tables = true);
 
 // The offline hint interpreter: read_hint + hint_distribution over the house's receptacles with
 // the tidy-house contents as the base.

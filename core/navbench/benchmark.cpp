@@ -251,6 +251,29 @@ Result<TestScene> make_test_scene(const BenchmarkRequest& request, int index,
   return fail(ErrorCode::kInternal, "could not generate test scene " + std::to_string(index));
 }
 
+// Where on its receptacle the target lies: a point drawn uniformly on the receptacle's top, kept
+// 0.1 m inside its edges (an object rests wholly on the surface), as AI2-THOR spawns objects
+// anywhere on a receptacle (the paper's released houses put objects a median 0.3–0.4 m from their
+// receptacle's centre, up to 1 m). A point seen from no pose of the start's part of the grid
+// (e.g. the far side of a bed against a wall) is drawn again, up to 16 times; then the centre.
+namespace {
+void place_on_top(const NavMap& map, NavTask& task, const std::vector<char>& in_part, Rng rng) {
+  const MapReceptacle& r = map.receptacles()[static_cast<std::size_t>(task.target_receptacle)];
+  task.target_x = r.x, task.target_z = r.z;
+  task.target_views = r.views;
+  std::vector<std::size_t> spots;  // those seen from the start's part
+  for (std::size_t j = 0; j < r.spots.size(); ++j) {
+    bool seen_from_part = false;
+    for (int v : r.spots[j]) seen_from_part = seen_from_part || in_part[static_cast<std::size_t>(cell_of(v))];
+    if (seen_from_part) spots.push_back(j);
+  }
+  if (spots.empty()) return;
+  const std::size_t j = spots[rng.below(static_cast<std::uint32_t>(spots.size()))];
+  task.target_x = r.spot_points[j].x, task.target_z = r.spot_points[j].z;
+  task.target_views = r.spots[j];
+}
+}  // namespace
+
 std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestScene& t, int index) {
   const House& house = *t.house;
   const auto& scene = *t.scene;
@@ -310,10 +333,14 @@ std::vector<NavTask> sample_tasks(const BenchmarkRequest& request, const TestSce
                          .id;
     task.target_receptacle = c.receptacle;
     task.receptacle_id = map.receptacles()[static_cast<std::size_t>(c.receptacle)].id;
+    place_on_top(map, task, in_part,
+                 Rng(t.seed, fnv1a64("navbench/spot")).fork(task.target_id + "|" + std::to_string(c.time)));
     for (int attempt = 0; attempt < 64 && task.start < 0; ++attempt) {
       const int cell = part[rng.below(static_cast<std::uint32_t>(part.size()))];
       const int pose = pose_of(cell, static_cast<int>(rng.below(kHeadings)));
-      const int steps = shortest_steps(map, pose, c.receptacle);
+      const StepField f = map.steps_from(pose);
+      const int goal = f.nearest(task.target_views);
+      const int steps = goal < 0 ? -1 : f.distance[static_cast<std::size_t>(goal)];
       if (steps > 0) task.start = pose, task.shortest = steps;
     }
     if (task.start < 0) continue;
@@ -352,7 +379,7 @@ std::vector<EpisodeResult> MethodSuite::run(const TestScene& t, const NavTask& t
   q.hint = task.hint;
   const std::vector<double> hinted = hint_.estimate(q);
   std::vector<EpisodeResult> out;
-  const EpisodeSpec spec{task.start, task.target_receptacle, max_steps};
+  const EpisodeSpec spec{task.start, task.target_receptacle, max_steps, false, task.target_views};
   for (const auto& parts : kParts) {
     const std::vector<double>& p = parts.estimator == EstimatorKind::kUniform ? uniform
                                    : parts.estimator == EstimatorKind::kPrior ? prior
@@ -634,8 +661,10 @@ Result<Json> replay_task(const BenchmarkRequest& request, int index,
                  {{"type", task.target_type},
                   {"id", task.target_id},
                   {"receptacle", task.receptacle_id},
-                  {"x", rec.x},
-                  {"z", rec.z}}},
+                  {"x", task.target_x},
+                  {"z", task.target_z},
+                  {"receptacle_x", rec.x},
+                  {"receptacle_z", rec.z}}},
                 {"start", pose_json(map, task.start)},
                 {"shortest", task.shortest},
                 {"hint", task.hint},

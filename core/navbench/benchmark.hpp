@@ -99,6 +99,10 @@ struct NavTask {
   std::string target_type, target_id;
   int target_receptacle = -1;  // map index
   std::string receptacle_id;
+  // Where on the receptacle's top the target lies (drawn uniformly, as AI2-THOR spawns objects
+  // anywhere on a surface) and the poses that see it there (NavMap::views_of_point), sorted.
+  double target_x = 0.0, target_z = 0.0;
+  std::vector<int> target_views;
   int start = -1;          // pose
   int shortest = 0;        // steps
   int hint_resident = -1;  // the resident asked first; every resident answers

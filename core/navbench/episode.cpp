@@ -18,22 +18,30 @@ EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<
       spec.target_receptacle >= static_cast<int>(recs.size()) || probabilities.size() != recs.size())
     return out;
   std::vector<char> observed(recs.size(), 0);
+  const std::vector<int>& target_views = spec.target_views.empty()
+                                             ? recs[static_cast<std::size_t>(spec.target_receptacle)].views
+                                             : spec.target_views;
   // True when the target is seen from `pose`; rules out what is seen when the spec says so.
   auto observe = [&](int pose) {
-    bool found = false;
-    for (int r : map.visible_from(pose)) {
-      if (spec.rule_out_on_the_way) observed[static_cast<std::size_t>(r)] = 1;
-      found = found || r == spec.target_receptacle;
-    }
-    return found;
+    if (spec.rule_out_on_the_way)
+      for (int r : map.visible_from(pose)) observed[static_cast<std::size_t>(r)] = 1;
+    return std::binary_search(target_views.begin(), target_views.end(), pose);
   };
   StepField field = map.steps_from(spec.start);
-  const int goal = field.nearest(recs[static_cast<std::size_t>(spec.target_receptacle)].views);
+  const int goal = field.nearest(target_views);
   out.shortest = goal < 0 ? -1 : field.distance[static_cast<std::size_t>(goal)];
   out.success = observe(spec.start);
   int pose = spec.start;
   std::vector<Candidate> candidates;
   std::vector<int> view_of;
+  // Spots of each receptacle's top already seen; a receptacle is crossed off once all are.
+  std::vector<std::vector<char>> spot_seen(recs.size());
+  for (std::size_t r = 0; r < recs.size(); ++r) spot_seen[r].assign(recs[r].spots.size(), 0);
+  auto look_at = [&](std::size_t r, int at) {
+    for (std::size_t j = 0; j < recs[r].spots.size(); ++j)
+      if (!spot_seen[r][j] && std::binary_search(recs[r].spots[j].begin(), recs[r].spots[j].end(), at))
+        spot_seen[r][j] = 1;
+  };
   while (!out.success && out.steps < spec.max_steps) {
     if (pose != spec.start || out.steps > 0) field = map.steps_from(pose);
     candidates.clear();
@@ -41,7 +49,16 @@ EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<
     double total = 0.0;
     for (std::size_t r = 0; r < recs.size(); ++r) {
       if (observed[r]) continue;
-      const int v = field.nearest(recs[r].views);
+      // The nearest pose that sees a spot of its top not seen yet (ties: the smaller pose).
+      int v = -1;
+      for (std::size_t j = 0; j < recs[r].spots.size(); ++j) {
+        if (spot_seen[r][j]) continue;
+        const int w = field.nearest(recs[r].spots[j]);
+        if (w < 0) continue;
+        const int dw = field.distance[static_cast<std::size_t>(w)];
+        const int dv = v < 0 ? -1 : field.distance[static_cast<std::size_t>(v)];
+        if (v < 0 || dw < dv || (dw == dv && w < v)) v = w;
+      }
       if (v < 0) continue;
       const double p = std::max(0.0, probabilities[r]);
       candidates.push_back({static_cast<int>(r), p, field.distance[static_cast<std::size_t>(v)]});
@@ -52,18 +69,26 @@ EpisodeResult run_episode(const NavMap& map, const EpisodeSpec& spec, std::span<
     if (total > 0)
       for (auto& c : candidates) c.p /= total;
     const std::size_t k = planner.choose(candidates);
+    const auto chosen = static_cast<std::size_t>(candidates[k].receptacle);
     const std::vector<int> path = field.path_to(view_of[k]);
     for (int next : path) {
       pose = next;
       ++out.steps;
       out.path.push_back(pose);
+      look_at(chosen, pose);
       out.success = observe(pose);
       if (out.success || out.steps >= spec.max_steps) break;
     }
     if (pose == view_of[k]) {
-      observed[static_cast<std::size_t>(candidates[k].receptacle)] = 1;
-      out.visited.push_back(candidates[k].receptacle);
-      out.visited_at.push_back(out.steps);
+      look_at(chosen, pose);
+      bool done = true;
+      for (std::size_t j = 0; j < spot_seen[chosen].size(); ++j)
+        done = done && (spot_seen[chosen][j] || field.nearest(recs[chosen].spots[j]) < 0);
+      if (done) {
+        observed[chosen] = 1;
+        out.visited.push_back(candidates[k].receptacle);
+        out.visited_at.push_back(out.steps);
+      }
     }
   }
   if (out.success && out.shortest >= 0) {

@@ -18,6 +18,9 @@ struct EpisodeSpec {
   // The paper's planners route over receptacles' viewpoints and cross off the ones they reach;
   // true also crosses off every receptacle seen on the way (a more thorough searcher).
   bool rule_out_on_the_way = false;
+  // Poses that see the target object where it lies on its receptacle (NavMap::views_of_point),
+  // sorted; empty: the receptacle's own views (the object at its centre).
+  std::vector<int> target_views = {};
 };
 
 struct EpisodeResult {

@@ -131,7 +131,8 @@ std::vector<double> HintEstimator::estimate(const EstimateQuery& q) const {
   std::vector<household::ReceptacleView> views;
   views.reserve(q.map->receptacles().size());
   for (const auto& r : q.map->receptacles()) views.push_back({r.type, r.room_type});
-  return household::hint_distribution(readings, q.target_type, views, p, trust_);
+  // The generator's curated activity tables are not read (see the header).
+  return household::hint_distribution(readings, q.target_type, views, p, trust_, /*activity_tables=*/false);
 }
 
 std::vector<double> PosteriorEstimator::estimate(const EstimateQuery& q) const {

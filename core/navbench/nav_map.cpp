@@ -185,6 +185,96 @@ StepField NavMap::steps_from(int pose) const {
   return f;
 }
 
+std::vector<household::FloorPoint> top_grid(const household::Footprint& c, double spacing) {
+  const double ux = c[1].x - c[0].x, uz = c[1].z - c[0].z, vx = c[3].x - c[0].x, vz = c[3].z - c[0].z;
+  const double lu = std::hypot(ux, uz), lv = std::hypot(vx, vz);
+  if (!(lu > 0.0) || !(lv > 0.0)) return {};
+  const double mu = std::min(0.5, kTopMargin / lu), mv = std::min(0.5, kTopMargin / lv);
+  const int nu = std::max(1, static_cast<int>(std::ceil((1.0 - 2.0 * mu) * lu / spacing - 1e-9)));
+  const int nv = std::max(1, static_cast<int>(std::ceil((1.0 - 2.0 * mv) * lv / spacing - 1e-9)));
+  std::vector<household::FloorPoint> out;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double a = mu + (1.0 - 2.0 * mu) * (i + 0.5) / nu, b = mv + (1.0 - 2.0 * mv) * (j + 0.5) / nv;
+      out.push_back({c[0].x + a * ux + b * vx, c[0].z + a * uz + b * vz});
+    }
+  return out;
+}
+
+// Whether another piece rises above the sight line from the camera at `from` to a point at height
+// `top` over `to`: the segment is clipped to each footprint (Cyrus–Beck); the line is lowest where
+// it leaves the footprint on the target's side.
+bool NavMap::occluded(FloorPoint from, FloorPoint to, double top, int self,
+                      std::span<const FurnitureBox* const> near) const {
+  const double dx = to.x - from.x, dz = to.z - from.z;
+  for (const FurnitureBox* b : near) {
+    if (b->entity == self || b->height <= top) continue;
+    if (std::max(from.x, to.x) < b->x0 || std::min(from.x, to.x) > b->x1 || std::max(from.z, to.z) < b->z0 ||
+        std::min(from.z, to.z) > b->z1)
+      continue;
+    double t0 = 0.0, t1 = 1.0;
+    const auto& c = b->corners;
+    const double orient = cross(c[0], c[1], c[2]) > 0 ? 1.0 : -1.0;
+    bool out = false;
+    for (std::size_t i = 0; i < 4 && !out; ++i) {
+      const FloorPoint a = c[i], e = c[(i + 1) % 4];
+      // Inside means orient · cross(a, e, p) ≥ 0; along the segment that is num + t · den ≥ 0.
+      const double num = orient * ((e.x - a.x) * (from.z - a.z) - (e.z - a.z) * (from.x - a.x));
+      const double den = orient * ((e.x - a.x) * dz - (e.z - a.z) * dx);
+      if (std::abs(den) < kEps) {
+        out = num < 0;
+      } else if (den > 0) {
+        t0 = std::max(t0, -num / den);
+      } else {
+        t1 = std::min(t1, -num / den);
+      }
+      out = out || t0 > t1;
+    }
+    if (out || t1 - t0 < 1e-6) continue;
+    const double line = config_.eye_height + (top - config_.eye_height) * t1;
+    if (b->height > line + 1e-9) return true;
+  }
+  return false;
+}
+
+std::vector<int> NavMap::point_views(FloorPoint point, double top, int self) const {
+  const NavConfig& config = config_;
+  const double drop = config.eye_height - top;
+  const double reach_2d = !config.view_distance_from_camera ? config.view_distance
+                          : std::abs(drop) >= config.view_distance
+                              ? 0.0
+                              : std::sqrt(config.view_distance * config.view_distance - drop * drop);
+  auto within = [&](FloorPoint p) { return std::hypot(p.x - point.x, p.z - point.z) <= reach_2d + 1e-9; };
+  std::vector<const FurnitureBox*> near;
+  if (config.furniture_occludes) {
+    const double span = config.view_distance + config.cell;
+    for (const auto& b : furniture_)
+      if (b.x1 >= point.x - span && b.x0 <= point.x + span && b.z1 >= point.z - span &&
+          b.z0 <= point.z + span)
+        near.push_back(&b);
+  }
+  const int reach = static_cast<int>(std::ceil(config.view_distance / config.cell)) + 1;
+  const int cx = static_cast<int>(std::floor((point.x - origin_x_) / config.cell)),
+            cz = static_cast<int>(std::floor((point.z - origin_z_) / config.cell));
+  std::vector<int> views;
+  for (int iz = std::max(0, cz - reach); iz <= std::min(depth_ - 1, cz + reach); ++iz)
+    for (int ix = std::max(0, cx - reach); ix <= std::min(width_ - 1, cx + reach); ++ix) {
+      const int c = iz * width_ + ix;
+      if (!free(c)) continue;
+      for (int h = 0; h < kHeadings; ++h)
+        if (sees(pose_of(c, h), point) && within(center(c)) && !occluded(center(c), point, top, self, near))
+          views.push_back(pose_of(c, h));
+    }
+  std::sort(views.begin(), views.end());
+  return views;
+}
+
+std::vector<int> NavMap::views_of_point(int receptacle, FloorPoint point) const {
+  if (receptacle < 0 || receptacle >= static_cast<int>(receptacles_.size())) return {};
+  const MapReceptacle& r = receptacles_[static_cast<std::size_t>(receptacle)];
+  return point_views(point, r.top, r.entity);
+}
+
 Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
   if (house.rooms.empty())
     return fail(ErrorCode::kValidation, "a navigation map needs a house with rooms",
@@ -213,13 +303,8 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
   m.walls_ = solid_walls(house);
   // Receptacle footprints as oriented rectangles (size in the piece's own frame, turned by yaw),
   // with their bounding boxes to skip most cells quickly.
-  struct Box {
-    double x0, z0, x1, z1;
-    household::Footprint corners;
-    int entity = -1;
-    double height = 0.0;
-  };
-  std::vector<Box> furniture;
+  using Box = FurnitureBox;
+  std::vector<Box>& furniture = m.furniture_;
   for (int idx : house.receptacles) {
     const auto& e = house.entities[static_cast<std::size_t>(idx)];
     if (e.synthetic) continue;
@@ -265,44 +350,8 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
           static_cast<std::uint8_t>(m.moves_[static_cast<std::size_t>(c)] | (1u << h));
     }
   }
-  // Whether another piece rises above the sight line from the camera at `from` to a point at
-  // height `top` over `to`: the segment is clipped to each footprint (Cyrus–Beck); the line is
-  // lowest where it leaves the footprint on the target's side.
-  auto occluded = [&](FloorPoint from, FloorPoint to, double top, int self,
-                      const std::vector<const Box*>& near) {
-    const double dx = to.x - from.x, dz = to.z - from.z;
-    for (const Box* b : near) {
-      if (b->entity == self || b->height <= top) continue;
-      if (std::max(from.x, to.x) < b->x0 || std::min(from.x, to.x) > b->x1 ||
-          std::max(from.z, to.z) < b->z0 || std::min(from.z, to.z) > b->z1)
-        continue;
-      double t0 = 0.0, t1 = 1.0;
-      const auto& c = b->corners;
-      const double orient = cross(c[0], c[1], c[2]) > 0 ? 1.0 : -1.0;
-      bool out = false;
-      for (std::size_t i = 0; i < 4 && !out; ++i) {
-        const FloorPoint a = c[i], e = c[(i + 1) % 4];
-        // Inside means orient · cross(a, e, p) ≥ 0; along the segment that is num + t · den ≥ 0.
-        const double num = orient * ((e.x - a.x) * (from.z - a.z) - (e.z - a.z) * (from.x - a.x));
-        const double den = orient * ((e.x - a.x) * dz - (e.z - a.z) * dx);
-        if (std::abs(den) < kEps) {
-          out = num < 0;
-        } else if (den > 0) {
-          t0 = std::max(t0, -num / den);
-        } else {
-          t1 = std::min(t1, -num / den);
-        }
-        out = out || t0 > t1;
-      }
-      if (out || t1 - t0 < 1e-6) continue;
-      const double line = config.eye_height + (top - config.eye_height) * t1;
-      if (b->height > line + 1e-9) return true;
-    }
-    return false;
-  };
   // Receptacles and the poses that see them.
   std::vector<std::vector<int>> seen_by(static_cast<std::size_t>(m.poses()));
-  const int reach = static_cast<int>(std::ceil(config.view_distance / config.cell)) + 1;
   for (int idx : house.receptacles) {
     const auto& e = house.entities[static_cast<std::size_t>(idx)];
     MapReceptacle r;
@@ -313,35 +362,20 @@ Result<NavMap> build_nav_map(const House& house, const NavConfig& config) {
     if (e.room >= 0) r.room_type = house.rooms[static_cast<std::size_t>(e.room)].type;
     r.x = e.position.x;
     r.z = e.position.z;
-    const int cx = static_cast<int>(std::floor((r.x - x0) / config.cell)),
-              cz = static_cast<int>(std::floor((r.z - z0) / config.cell));
     const auto index = static_cast<int>(m.receptacles_.size());
-    const double top = (e.synthetic ? 0.0 : std::max(0.0, 2.0 * e.position.y)) + 0.05;
-    const double drop = config.eye_height - top;
-    const double reach_2d = !config.view_distance_from_camera ? config.view_distance
-                            : std::abs(drop) >= config.view_distance
-                                ? 0.0
-                                : std::sqrt(config.view_distance * config.view_distance - drop * drop);
-    auto within = [&](FloorPoint p) { return std::hypot(p.x - r.x, p.z - r.z) <= reach_2d + 1e-9; };
-    std::vector<const Box*> near;
-    if (config.furniture_occludes) {
-      const double span = config.view_distance + config.cell;
-      for (const auto& b : furniture)
-        if (b.x1 >= r.x - span && b.x0 <= r.x + span && b.z1 >= r.z - span && b.z0 <= r.z + span)
-          near.push_back(&b);
-    }
-    for (int iz = std::max(0, cz - reach); iz <= std::min(m.depth_ - 1, cz + reach); ++iz)
-      for (int ix = std::max(0, cx - reach); ix <= std::min(m.width_ - 1, cx + reach); ++ix) {
-        const int c = iz * m.width_ + ix;
-        if (!m.free(c)) continue;
-        for (int h = 0; h < kHeadings; ++h)
-          if (m.sees(pose_of(c, h), {r.x, r.z}) && within(m.center(c)) &&
-              !occluded(m.center(c), {r.x, r.z}, top, idx, near)) {
-            r.views.push_back(pose_of(c, h));
-            seen_by[static_cast<std::size_t>(pose_of(c, h))].push_back(index);
-          }
+    r.top = (e.synthetic ? 0.0 : std::max(0.0, 2.0 * e.position.y)) + 0.05;
+    r.footprint = household::footprint(e);
+    r.views = m.point_views({r.x, r.z}, r.top, idx);
+    for (const household::FloorPoint& spot : top_grid(r.footprint, MapReceptacle::kSpotSpacing))
+      if (auto v = m.point_views(spot, r.top, idx); !v.empty()) {
+        r.spots.push_back(std::move(v));
+        r.spot_points.push_back(spot);
       }
-    std::sort(r.views.begin(), r.views.end());
+    if (r.spots.empty() && !r.views.empty()) {
+      r.spots.push_back(r.views);
+      r.spot_points.push_back({r.x, r.z});
+    }
+    for (int v : r.views) seen_by[static_cast<std::size_t>(v)].push_back(index);
     m.receptacles_.push_back(std::move(r));
   }
   m.visible_offsets_.assign(static_cast<std::size_t>(m.poses()) + 1, 0);

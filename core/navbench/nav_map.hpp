@@ -49,7 +49,23 @@ struct MapReceptacle {
   int room = -1;
   household::RoomType room_type = household::RoomType::kLivingRoom;
   double x = 0.0, z = 0.0;
-  std::vector<int> views;  // poses that see it, sorted
+  double top = 0.05;                 // height of an object lying on it (its top plus 5 cm), metres
+  household::Footprint footprint{};  // its top as an oriented rectangle (corners one way round)
+  std::vector<int> views;            // poses that see its centre, sorted
+  // Inspecting it means seeing all of its top: the views (sorted) of each spot of a grid of at most
+  // kSpotSpacing over its top (inside kTopMargin of its edges); spots no pose sees are left out,
+  // and a receptacle whose spots all go unseen keeps its centre's views as its one spot.
+  std::vector<std::vector<int>> spots;
+  std::vector<household::FloorPoint> spot_points;  // where each spot lies
+  static constexpr double kSpotSpacing = 0.5;
+};
+
+// A piece of furniture as an obstacle to sight: footprint, bounding box and height.
+struct FurnitureBox {
+  double x0 = 0.0, z0 = 0.0, x1 = 0.0, z1 = 0.0;
+  household::Footprint corners{};
+  int entity = -1;
+  double height = 0.0;
 };
 
 // A wall piece that blocks movement and sight (door openings and open walls removed).
@@ -95,6 +111,10 @@ class NavMap {
   // Map index of a receptacle entity, −1 when it is not on the map.
   [[nodiscard]] int receptacle_of_entity(int entity) const;
   [[nodiscard]] const std::vector<WallPiece>& walls() const { return walls_; }
+  // Poses that see a point lying on a receptacle (an object put somewhere on its top), by the
+  // same rules as the receptacle's own views (distance from the camera, field of view, walls,
+  // other furniture); sorted. The receptacle's `views` are those of its centre.
+  [[nodiscard]] std::vector<int> views_of_point(int receptacle, household::FloorPoint point) const;
 
   [[nodiscard]] StepField steps_from(int pose) const;
 
@@ -107,9 +127,19 @@ class NavMap {
   std::vector<std::uint8_t> moves_;  // bit h: the move ahead in heading h is open
   std::vector<WallPiece> walls_;
   std::vector<MapReceptacle> receptacles_;
+  std::vector<FurnitureBox> furniture_;
+  [[nodiscard]] bool occluded(household::FloorPoint from, household::FloorPoint to, double top, int self,
+                              std::span<const FurnitureBox* const> near) const;
+  [[nodiscard]] std::vector<int> point_views(household::FloorPoint point, double top, int self) const;
   std::vector<std::uint32_t> visible_offsets_;  // CSR over poses
   std::vector<int> visible_;
 };
+
+// An object lies wholly on its receptacle's top: its centre keeps this far inside the edges.
+inline constexpr double kTopMargin = 0.1;
+// Centres of an n × m grid of cells of at most `spacing` over a top (corners one way round), kept
+// kTopMargin inside its edges; empty for a degenerate footprint.
+std::vector<household::FloorPoint> top_grid(const household::Footprint& corners, double spacing);
 
 // Builds the grid (cell centres inside a room, clear of walls and furniture footprints; moves that
 // cross no wall) and every receptacle's viewing poses. kValidation when the house has no rooms or

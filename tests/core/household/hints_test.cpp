@@ -146,5 +146,32 @@ TEST(Hints, TheInterpreterGivesADistributionOverTheHousesReceptacles) {
   EXPECT_FALSE(interpreter.interpret({nullptr, "Mug", "", 0, Weekday::kWednesday}));
 }
 
+TEST(Hints, WithoutTheActivityTablesTheNamedRoomIsSpreadByTheBase) {
+  // Kitchen: counter, table, sink; living room: sofa. Base 0.4, 0.3, 0.1, 0.2.
+  const std::vector<ReceptacleView> recs = {{"CounterTop", RoomType::kKitchen},
+                                            {"DiningTable", RoomType::kKitchen},
+                                            {"Sink", RoomType::kKitchen},
+                                            {"Sofa", RoomType::kLivingRoom}};
+  const std::vector<double> base = {0.4, 0.3, 0.1, 0.2};
+  const HintReading with_activity =
+      read_hint("I think I had the mug while having breakfast this morning, in the kitchen.", knowledge());
+  ASSERT_TRUE(with_activity.activity);
+  ASSERT_TRUE(with_activity.room);
+  HintReading room_only = with_activity;
+  room_only.activity = nullptr;
+  const auto p = hint_distribution(with_activity, "Mug", recs, base, 0.85, false);
+  const auto q = hint_distribution(room_only, "Mug", recs, base, 0.85, true);
+  ASSERT_EQ(p.size(), 4u);
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], q[i], 1e-12) << i;
+  // 0.85 inside the kitchen in the base's proportions, 0.15 of the base everywhere.
+  EXPECT_NEAR(p[0], 0.15 * 0.4 + 0.85 * 0.5, 1e-12);
+  EXPECT_NEAR(p[3], 0.15 * 0.2, 1e-12);
+  // An answer naming only an activity says nothing without the tables.
+  HintReading activity_only = with_activity;
+  activity_only.room.reset();
+  const auto r = hint_distribution(activity_only, "Mug", recs, base, 0.85, false);
+  for (std::size_t i = 0; i < r.size(); ++i) EXPECT_NEAR(r[i], base[i], 1e-12) << i;
+}
+
 }  // namespace
 }  // namespace socsim::household

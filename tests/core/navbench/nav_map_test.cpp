@@ -193,5 +193,31 @@ TEST(NavMap, TallFurnitureHidesWhatIsBehindIt) {
   EXPECT_TRUE(sees_table(map_of(house)));
 }
 
+TEST(NavMap, ATopIsInspectedSpotBySpot) {
+  // The 1 m × 1 m table: 0.8 m inside the 0.1 m margins, two spots of at most 0.5 m each way; the
+  // 1.6 m × 0.6 m sofa: three along its length, one across.
+  const NavMap map = map_of(two_rooms());
+  const auto& table = map.receptacles()[0];
+  const auto& sofa = map.receptacles()[1];
+  const auto table_grid = top_grid(table.footprint, MapReceptacle::kSpotSpacing);
+  ASSERT_EQ(table_grid.size(), 4u);
+  for (const auto& p : table_grid) {
+    EXPECT_NEAR(std::abs(p.x - 2.0), 0.2, 1e-9);
+    EXPECT_NEAR(std::abs(p.z - 1.5), 0.2, 1e-9);
+  }
+  EXPECT_EQ(top_grid(sofa.footprint, MapReceptacle::kSpotSpacing).size(), 3u);
+  // Every spot kept is seen from its views, which are sorted; the spots of one top differ.
+  for (const auto* r : {&table, &sofa}) {
+    ASSERT_FALSE(r->spots.empty());
+    ASSERT_EQ(r->spots.size(), r->spot_points.size());
+    for (std::size_t j = 0; j < r->spots.size(); ++j) {
+      EXPECT_TRUE(std::is_sorted(r->spots[j].begin(), r->spots[j].end()));
+      for (int v : r->spots[j]) EXPECT_TRUE(map.sees(v, r->spot_points[j]));
+      EXPECT_EQ(map.views_of_point(static_cast<int>(r == &table ? 0 : 1), r->spot_points[j]), r->spots[j]);
+    }
+  }
+  EXPECT_NE(table.spots[0], table.spots[3]);
+}
+
 }  // namespace
 }  // namespace socsim::navbench

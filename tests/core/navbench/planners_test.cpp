@@ -122,5 +122,41 @@ TEST(Planners, CegAndOsgDisagreeWhereTheTradeIsClose) {
   EXPECT_LT(ceg.steps, osg.steps);
 }
 
+// One 3 m counter along a 4 m × 3 m room; the agent starts at its west end.
+TEST(Planners, ALongTopIsSearchedUntilEverySpotIsSeen) {
+  const NavMap map =
+      map_of(hand_built_house({{RoomType::kKitchen, 0, 0, 4, 3}}, {},
+                              {{"CounterTop", 0, 2.0, 2.6, 3.0, 0.6}, {"SideTable", 0, 0.4, 0.4}}));
+  const auto& counter = map.receptacles()[0];
+  ASSERT_GE(counter.spots.size(), 5u);  // 2.8 m inside the margins, 0.5 m spots: six along it
+  // The target at the east end's spot: seen only from near that end.
+  std::size_t east = 0;
+  for (std::size_t j = 0; j < counter.spot_points.size(); ++j)
+    if (counter.spot_points[j].x > counter.spot_points[east].x) east = j;
+  EpisodeSpec spec{pose_of(cell_near(map, 0.6, 1.5), 0), 0, 200};
+  spec.target_views = counter.spots[east];
+  const int west_view = map.steps_from(spec.start).nearest(counter.views);
+  ASSERT_GE(west_view, 0);
+  // Certain it is on the counter, CEG walks along it to the east end and finds it there.
+  const auto e = run_episode(map, spec, std::vector<double>{0.99, 0.01}, CegPlanner());
+  EXPECT_TRUE(e.success);
+  // Seen at last with the counter's last spot, at the step it is found.
+  ASSERT_LE(e.visited.size(), 1u);
+  if (!e.visited.empty()) {
+    EXPECT_EQ(e.visited_at[0], e.steps);
+  }
+  EXPECT_GE(e.steps, e.shortest);
+  EXPECT_FALSE(std::binary_search(counter.spots[east].begin(), counter.spots[east].end(), spec.start));
+  // With the target elsewhere, the counter is crossed off only once every spot has been seen.
+  EpisodeSpec other = spec;
+  other.target_receptacle = 1;
+  other.target_views = {};
+  const auto o = run_episode(map, other, std::vector<double>{0.99, 0.01}, CegPlanner());
+  EXPECT_TRUE(o.success);
+  ASSERT_FALSE(o.visited.empty());
+  EXPECT_EQ(o.visited[0], 0);
+  EXPECT_GT(o.visited_at[0], 6);
+}
+
 }  // namespace
 }  // namespace socsim::navbench
