@@ -54,7 +54,7 @@ Result<Reply> call(const Remote& r, const std::string& method, const std::string
                                              : c.Get(path.c_str(), h);
   if (!res)
     return fail(ErrorCode::kUpstream, "cannot reach " + r.server + " (" + httplib::to_string(res.error()) +
-                                             "); is `socsim serve` running?");
+                                          "); is `socsim serve` running?");
   return Reply{res->status, res->body};
 }
 
