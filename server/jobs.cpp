@@ -165,12 +165,14 @@ void JobRunner::shutdown() {
   }
   const std::string problem = problem_text(ErrorCode::kCancelled, "the server shut down");
   (void)store_.write([&](Database& db) -> Result<bool> {
-    for (const auto& [id, fn] : left)
-      if (auto s = exec_bound(
-              db,
-              "UPDATE jobs SET status = 'cancelled', error = ?, finished_at = ? WHERE id = ? AND "
-              "status = 'queued'",
-              [&](store::Statement& st) { st.bind(1, problem).bind(2, utc_now_rfc3339()).bind(3, id); });
+    for (const auto& entry : left)
+      if (auto s =
+              exec_bound(db,
+                         "UPDATE jobs SET status = 'cancelled', error = ?, finished_at = ? WHERE id = ? AND "
+                         "status = 'queued'",
+                         [&](store::Statement& st) {
+                           st.bind(1, problem).bind(2, utc_now_rfc3339()).bind(3, entry.first);
+                         });
           !s)
         return tl::unexpected(s.error());
     if (auto s = exec_bound(db, "DELETE FROM workers WHERE id = ?",
