@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -62,6 +63,10 @@ namespace {
 constexpr std::uint32_t kNoCell = UINT32_MAX;
 constexpr double kMaxCoordinate = 1.0e6;  // m; keeps every product far from overflow
 constexpr double kTiny2 = 1e-18;          // squared lengths below this count as zero
+// How far the crowd may press a body into a wall (m): people squeezed against a wall or past a
+// door jamb turn their shoulders; a body turned sideways is about 0.26 m deep, 0.1 m less than an
+// adult's radius (0.23 m) on each side.
+constexpr double kWallSqueeze = 0.10;
 
 bool finite_in_range(double v, double limit) {
   return std::isfinite(v) && std::abs(v) <= limit;
@@ -157,6 +162,47 @@ Vec2 guard_move(Vec2 p, Vec2 q, std::span<const std::uint32_t> near, const std::
   }
   double unused = 0.0;
   return first_blocking_wall(p, target, near, walls, &unused) < 0 ? target : safe;
+}
+
+// The nearest point of wall s to p; *interior: whether it lies strictly between the wall's ends.
+Vec2 nearest_on_wall(Vec2 p, const WallSegment& s, bool* interior) {
+  const double ux = s.b.x - s.a.x;
+  const double uy = s.b.y - s.a.y;
+  const double len2 = ux * ux + uy * uy;
+  double t = 0.0;
+  if (len2 > 0.0) t = std::clamp(((p.x - s.a.x) * ux + (p.y - s.a.y) * uy) / len2, 0.0, 1.0);
+  *interior = t > 0.0 && t < 1.0;
+  return {s.a.x + t * ux, s.a.y + t * uy};
+}
+
+// A separation shift cur → to, projected so that the body (radius r) ends no closer to any wall
+// than min(r − kWallSqueeze, its distance from that wall at cur): where `to` is too close, it is
+// moved straight away from the wall's nearest point. Only where that point lies inside the wall:
+// a wall end (a door jamb, a corner seen from outside) is left to the wall guard, as people
+// squeeze past jambs. Walls are taken in the order of `near` (deterministic).
+Vec2 keep_off_walls(Vec2 cur, Vec2 to, double r, std::span<const std::uint32_t> near,
+                    const std::vector<WallSegment>& walls) {
+  for (std::uint32_t w : near) {
+    const WallSegment& s = walls[w];
+    bool interior = false;
+    const Vec2 qc = nearest_on_wall(cur, s, &interior);
+    const double dc = std::hypot(cur.x - qc.x, cur.y - qc.y);
+    const double limit = std::min(r - kWallSqueeze, dc);
+    const Vec2 q = nearest_on_wall(to, s, &interior);
+    if (!interior) continue;  // a wall end (a door jamb): people squeeze past it
+    const double dx = to.x - q.x;
+    const double dy = to.y - q.y;
+    const double d = std::sqrt(dx * dx + dy * dy);
+    if (d >= limit) continue;
+    if (d > 1e-9) {
+      to = {q.x + dx * (limit / d), q.y + dy * (limit / d)};
+    } else if (dc > 1e-9) {
+      to = {qc.x + (cur.x - qc.x) * (limit / dc), qc.y + (cur.y - qc.y) * (limit / dc)};
+    } else {
+      to = cur;
+    }
+  }
+  return to;
 }
 
 // Whether a body of radius r walking straight from p along the unit direction e for `len` metres
@@ -1202,6 +1248,29 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
         }
       }
     }
+    // Walls are contacts too: towards a wall's nearest point (inside the wall, not at an end)
+    // the velocity may close at most the gap between the wall and the body, of radius
+    // r − kWallSqueeze here, in this step, and not at all once it touches. The obstacle force
+    // keeps walking bodies off walls; this only acts where the crowd presses one against a wall
+    // (without it, with several separation passes, bodies were squeezed onto the wall beside a
+    // passage's entrance, centre on the wall line, and stayed wedged there).
+    for (std::uint32_t w : near_walls) {
+      bool interior = false;
+      const Vec2 q = nearest_on_wall({x, y}, walls_[w], &interior);
+      if (!interior) continue;  // a wall end (a door jamb): people squeeze past it
+      const double wx = q.x - x;
+      const double wy = q.y - y;
+      const double d2 = wx * wx + wy * wy;
+      const double reach = r + dt * kMaxAgentSpeed;
+      if (d2 <= kTiny2 || d2 >= reach * reach) continue;
+      const double d = std::sqrt(d2);
+      const double limit = std::max(0.0, d - (r - kWallSqueeze)) / dt;
+      const double along = (nvx * wx + nvy * wy) / d;
+      if (along > limit) {
+        nvx -= (along - limit) * wx / d;
+        nvy -= (along - limit) * wy / d;
+      }
+    }
     const double s3 = nvx * nvx + nvy * nvy;
     if (s3 > kMaxAgentSpeed * kMaxAgentSpeed) {
       const double k = kMaxAgentSpeed / std::sqrt(s3);
@@ -1225,54 +1294,83 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   nvx_[i] = nvx;
   nvy_[i] = nvy;
   if (config_.hard_contact) {
-    const std::size_t stored = std::min(contacts.size(), kStoredContacts);
-    for (std::size_t k = 0; k < stored; ++k) contact_ids_[i * kStoredContacts + k] = contacts[k].who;
-    contact_count_[i] = static_cast<std::uint8_t>(stored);
+    // The kStoredContacts nearest (smallest gap, then lowest id), kept in id order: in a pile-up
+    // the bodies that can overlap are the near ones, not the lowest ids.
+    if (contacts.size() > kStoredContacts) {
+      const auto nearer = [](const NeighbourSums::Contact& a, const NeighbourSums::Contact& b) {
+        return a.gap < b.gap || (a.gap == b.gap && a.who < b.who);
+      };
+      const auto cut = contacts.begin() + static_cast<std::ptrdiff_t>(kStoredContacts);
+      std::nth_element(contacts.begin(), cut, contacts.end(), nearer);
+      contacts.resize(kStoredContacts);
+      std::sort(
+          contacts.begin(), contacts.end(),
+          [](const NeighbourSums::Contact& a, const NeighbourSums::Contact& b) { return a.who < b.who; });
+    }
+    for (std::size_t k = 0; k < contacts.size(); ++k) contact_ids_[i * kStoredContacts + k] = contacts[k].who;
+    contact_count_[i] = static_cast<std::uint8_t>(contacts.size());
   }
 }
 
 void CrowdSimulation::separate_bodies() {
   if (!config_.hard_contact) return;
   constexpr double kTolerance = 0.01;  // m of overlap left alone (the body force handles it)
-  constexpr double kMaxShift = 0.05;   // m per step
+  constexpr double kMaxShift = 0.05;   // m per pass
   const double length = config_.periodic_length;
-  pool_->parallel_for(size(), 256, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      spx_[i] = npx_[i];
-      spy_[i] = npy_[i];
-      if (!active_[i] || driven_[i] != kNotDriven) continue;
-      double cx = 0.0;
-      double cy = 0.0;
-      for (std::size_t k = 0; k < contact_count_[i]; ++k) {
-        const std::uint32_t j = contact_ids_[i * kStoredContacts + k];
-        double dx = npx_[j] - npx_[i];
-        if (length > 0.0) dx -= length * std::round(dx / length);  // the nearest image
-        const double dy = npy_[j] - npy_[i];
-        const double d2 = dx * dx + dy * dy;
-        const double reach = radius_[i] + radius_[j] - kTolerance;
-        if (d2 >= reach * reach) continue;
-        const Separation n = separation(dx, dy, d2, static_cast<std::uint32_t>(i), j);
-        const double share = driven_[j] != kNotDriven ? 1.0 : 0.5;  // a robot is not pushed
-        cx -= share * (reach - n.d) * n.x;
-        cy -= share * (reach - n.d) * n.y;
+  // Jacobi passes, each from the positions the previous one left (npx_/npy_), until a pass moves
+  // no one or kSeparationPasses are done. A body pinned against a wall or squeezed between
+  // others is resolved over several passes (each halves what is left where one side cannot
+  // move). Whether a pass moved anyone is an OR over per-agent results that do not depend on
+  // the order or the thread count, so the number of passes is deterministic too.
+  for (int pass = 0; pass < kSeparationPasses; ++pass) {
+    std::atomic<bool> moved{false};
+    pool_->parallel_for(size(), 256, [&](std::size_t begin, std::size_t end) {
+      bool any = false;
+      for (std::size_t i = begin; i < end; ++i) {
+        spx_[i] = npx_[i];
+        spy_[i] = npy_[i];
+        if (!active_[i] || driven_[i] != kNotDriven) continue;
+        double cx = 0.0;
+        double cy = 0.0;
+        for (std::size_t k = 0; k < contact_count_[i]; ++k) {
+          const std::uint32_t j = contact_ids_[i * kStoredContacts + k];
+          double dx = npx_[j] - npx_[i];
+          if (length > 0.0) dx -= length * std::round(dx / length);  // the nearest image
+          const double dy = npy_[j] - npy_[i];
+          const double d2 = dx * dx + dy * dy;
+          const double reach = radius_[i] + radius_[j] - kTolerance;
+          if (d2 >= reach * reach) continue;
+          const Separation n = separation(dx, dy, d2, static_cast<std::uint32_t>(i), j);
+          const double share = driven_[j] != kNotDriven ? 1.0 : 0.5;  // a robot is not pushed
+          cx -= share * (reach - n.d) * n.x;
+          cy -= share * (reach - n.d) * n.y;
+        }
+        const double shift2 = cx * cx + cy * cy;
+        if (shift2 == 0.0) continue;
+        if (shift2 > kMaxShift * kMaxShift) {
+          const double k = kMaxShift / std::sqrt(shift2);
+          cx *= k;
+          cy *= k;
+        }
+        // From where the agent was to where it is pushed: still never through a wall, and never
+        // pushed closer to a wall than its radius (or than it already was): the shift slides
+        // along a wall instead, so a body is not wedged into a corner or a door jamb by the
+        // crowd behind it (the partner takes the rest in the next passes).
+        const Vec2 from{px_[i], py_[i]};
+        const std::span<const std::uint32_t> near = wall_grid_.near(from.x, from.y);
+        const Vec2 to =
+            keep_off_walls({npx_[i], npy_[i]}, {npx_[i] + cx, npy_[i] + cy}, radius_[i], near, walls_);
+        const Vec2 next = guard_move(from, to, near, walls_);
+        any = any || !(next.x == npx_[i] && next.y == npy_[i]);
+        spx_[i] = next.x;
+        spy_[i] = next.y;
       }
-      const double shift2 = cx * cx + cy * cy;
-      if (shift2 == 0.0) continue;
-      if (shift2 > kMaxShift * kMaxShift) {
-        const double k = kMaxShift / std::sqrt(shift2);
-        cx *= k;
-        cy *= k;
-      }
-      // From where the agent was to where it is pushed: still never through a wall.
-      const Vec2 from{px_[i], py_[i]};
-      const Vec2 to{npx_[i] + cx, npy_[i] + cy};
-      const Vec2 next = guard_move(from, to, wall_grid_.near(from.x, from.y), walls_);
-      spx_[i] = next.x;
-      spy_[i] = next.y;
-    }
-  });
-  npx_.swap(spx_);
-  npy_.swap(spy_);
+      if (any) moved.store(true, std::memory_order_relaxed);
+    });
+    npx_.swap(spx_);
+    npy_.swap(spy_);
+    if (!moved.load(std::memory_order_relaxed)) break;
+  }
 }
 
 void CrowdSimulation::finish_step() {

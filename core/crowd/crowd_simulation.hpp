@@ -158,7 +158,8 @@ class CrowdSimulation {
   std::int32_t group_slot(std::int64_t group_id);
   void prepare_step();
   // Hard contact, second half: pairs whose bodies the moves of this step would still leave
-  // overlapping by more than 1 cm are pushed apart, each by half the excess (see docs/crowd.md).
+  // overlapping by more than 1 cm are pushed apart, each by half the excess, in up to
+  // kSeparationPasses Jacobi passes, never through a wall nor into one (see docs/crowd.md).
   void separate_bodies();
   void finish_step();
   void build_cells();
@@ -189,6 +190,7 @@ class CrowdSimulation {
   // Per agent, the ids (ascending) of the neighbours it could touch in this step, for
   // separate_bodies(): up to kStoredContacts at index i·kStoredContacts, count in contact_count_.
   static constexpr std::size_t kStoredContacts = 16;
+  static constexpr int kSeparationPasses = 8;  // at most, per step (see separate_bodies())
   std::vector<std::uint32_t> contact_ids_;
   std::vector<std::uint8_t> contact_count_;
   std::vector<double> spx_, spy_;  // positions after separate_bodies()
