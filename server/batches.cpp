@@ -9,6 +9,7 @@
 #include "core/household/household_document.hpp"
 #include "core/interop/tar_archive.hpp"
 #include "core/scenario/trajectory_store.hpp"
+#include "server/pagination.hpp"
 
 namespace socsim::server {
 namespace {
@@ -323,12 +324,9 @@ Result<Json> list_batches(store::Store& store, std::size_t page_size,
                           const std::optional<std::string>& cursor) {
   std::optional<std::int64_t> before;
   if (cursor) {
-    const std::string digits =
-        cursor->rfind(kBatchCursorPrefix, 0) == 0 ? cursor->substr(kBatchCursorPrefix.size()) : "";
-    if (digits.empty() || digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
-      return fail(ErrorCode::kBadRequest, "the cursor is not one this server issued",
-                  {{"", "use next_cursor from a previous page", "cursor", 0, 0}});
-    before = std::stoll(digits);
+    auto seq = parse_sequence_cursor(*cursor, kBatchCursorPrefix);
+    if (!seq) return tl::unexpected(seq.error());
+    before = *seq;
   }
   return store.read([&](Database& db) -> Result<Json> {
     auto st = db.prepare(std::string("SELECT id, seq FROM batches") + (before ? " WHERE seq < ?" : "") +
