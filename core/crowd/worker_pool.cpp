@@ -2,7 +2,27 @@
 
 #include <algorithm>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace socsim::crowd {
+
+namespace {
+
+// A step calls parallel_for several times in a row (neighbour forces, separation passes, the
+// update) with microseconds of serial work between them. Waking a sleeping thread costs tens of
+// microseconds, so both sides first spin this many times (a few tens of microseconds) on the
+// state they wait for, and only then sleep on the condition variable.
+constexpr int kSpins = 2048;
+
+void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#endif
+}
+
+}  // namespace
 
 WorkerPool::WorkerPool(unsigned threads) {
   const unsigned extra = threads > 1 ? threads - 1 : 0;
@@ -36,6 +56,10 @@ void WorkerPool::drain() {
 void WorkerPool::worker_loop() {
   std::size_t seen = 0;
   for (;;) {
+    for (int k = 0; k < kSpins; ++k) {
+      if (generation_.load(std::memory_order_acquire) != seen || stop_.load(std::memory_order_acquire)) break;
+      relax();
+    }
     {
       std::unique_lock lock(mutex_);
       start_cv_.wait(lock, [&] { return stop_ || generation_ != seen; });
@@ -43,11 +67,10 @@ void WorkerPool::worker_loop() {
       seen = generation_;
     }
     drain();
-    {
-      std::lock_guard lock(mutex_);
-      --busy_;
+    if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+      std::lock_guard lock(mutex_);  // the caller checks busy_ under the mutex before it sleeps
+      done_cv_.notify_one();
     }
-    done_cv_.notify_one();
   }
 }
 
@@ -70,6 +93,7 @@ void WorkerPool::parallel_for(std::size_t count, std::size_t chunk, const RangeF
   }
   start_cv_.notify_all();
   drain();
+  for (int k = 0; k < kSpins && busy_.load(std::memory_order_acquire) != 0; ++k) relax();
   std::exception_ptr error;
   {
     std::unique_lock lock(mutex_);

@@ -37,9 +37,10 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable start_cv_;
   std::condition_variable done_cv_;
-  std::size_t generation_ = 0;
-  unsigned busy_ = 0;
-  bool stop_ = false;
+  // Written under mutex_, read by spinning threads without it.
+  std::atomic<std::size_t> generation_{0};
+  std::atomic<unsigned> busy_{0};
+  std::atomic<bool> stop_{false};
 
   const RangeFn* fn_ = nullptr;
   std::size_t count_ = 0;
