@@ -7,6 +7,10 @@
 
 #include "core/crowd/fast_math.hpp"
 
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
+#include <immintrin.h>
+#endif
+
 // Kept in its own translation unit so the compiler vectorises this loop on its own terms
 // (selects only, no branches); every lane computes the same IEEE operations a scalar loop would.
 namespace socsim::crowd {
@@ -17,9 +21,10 @@ namespace socsim::crowd {
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
-void social_kernel(const SocialParams& p, int count, const float* __restrict dx, const float* __restrict dy,
-                   const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,
-                   const float* __restrict tie_y, std::int32_t* __restrict fx, std::int32_t* __restrict fy) {
+void social_kernel_portable(const SocialParams& p, int count, const float* __restrict dx,
+                            const float* __restrict dy, const float* __restrict dvx, const float* __restrict dvy,
+                            const float* __restrict tie_x, const float* __restrict tie_y, std::int32_t* __restrict fx,
+                            std::int32_t* __restrict fy) {
   const float lambda = p.lambda;
   const float gamma = p.gamma;
   const float inv_gamma = p.inv_gamma;
@@ -59,6 +64,232 @@ void social_kernel(const SocialParams& p, int count, const float* __restrict dx,
     fx[m] = static_cast<std::int32_t>(gx);
     fy[m] = static_cast<std::int32_t>(gy);
   }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
+#define SOCSIM_KERNEL_AVX512 1
+namespace {
+
+// The kernel by hand with AVX-512, N vectors of 16 lanes at a time, their operations interleaved
+// one by one. The compiled loop works on one vector at a time: each lane is a chain of ~200
+// dependent operations (two square roots, four divisions, an arctangent and two exponentials),
+// longer than the processor can look ahead, so consecutive vectors barely overlap; two
+// interleaved vectors keep its units busy (−28 % per pair at 32 lanes, docs/PERFORMANCE.md).
+// Every operation is the portable loop's, in its order, with the same rounding: the same bits
+// (SocialKernel.HandWrittenKernelEqualsThePortableLoop).
+template <int N>
+struct Pk {
+  __m512 v[N];
+};
+template <int N>
+struct Mk {
+  __mmask16 v[N];
+};
+
+#define SOCSIM_AVX512 __attribute__((target("avx512f"), always_inline)) inline
+#define SOCSIM_EACH for (int k = 0; k < N; ++k)
+
+template <int N>
+SOCSIM_AVX512 Pk<N> splat(float x) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = _mm512_set1_ps(x);
+  return r;
+}
+template <int N>
+SOCSIM_AVX512 Pk<N> operator+(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = _mm512_add_ps(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_AVX512 Pk<N> operator-(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = _mm512_sub_ps(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_AVX512 Pk<N> operator*(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = _mm512_mul_ps(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_AVX512 Pk<N> operator/(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = _mm512_div_ps(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_AVX512 Pk<N> operator-(const Pk<N>& a) {  // unary minus: the sign bit flipped
+  Pk<N> r;
+  const __m512i sign = _mm512_set1_epi32(INT32_MIN);
+  SOCSIM_EACH r.v[k] = _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(a.v[k]), sign));
+  return r;
+}
+template <int N>
+SOCSIM_AVX512 Pk<N> root(const Pk<N>& a) {  // the masked form: no undefined source register
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = _mm512_mask_sqrt_ps(a.v[k], 0xFFFF, a.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_AVX512 Mk<N> operator<(const Pk<N>& a, const Pk<N>& b) {
+  Mk<N> r;
+  SOCSIM_EACH r.v[k] = _mm512_cmp_ps_mask(a.v[k], b.v[k], _CMP_LT_OQ);
+  return r;
+}
+template <int N>
+SOCSIM_AVX512 Mk<N> operator>(const Pk<N>& a, const Pk<N>& b) {
+  Mk<N> r;
+  SOCSIM_EACH r.v[k] = _mm512_cmp_ps_mask(a.v[k], b.v[k], _CMP_GT_OQ);
+  return r;
+}
+// m ? t : f, lane by lane
+template <int N>
+SOCSIM_AVX512 Pk<N> select(const Mk<N>& m, const Pk<N>& t, const Pk<N>& f) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = _mm512_mask_blend_ps(m.v[k], f.v[k], t.v[k]);
+  return r;
+}
+
+template <int N>
+SOCSIM_AVX512 Pk<N> exp_lanes(const Pk<N>& x) {  // fast_expf
+  const Pk<N> lo = splat<N>(-87.0f);
+  const Pk<N> hi = splat<N>(88.0f);
+  const Pk<N> clamped = select(x < lo, lo, select(x > hi, hi, x));
+  const Pk<N> shift = splat<N>(12582912.0f);
+  const Pk<N> kf = (clamped * splat<N>(1.44269504088896341f) + shift) - shift;
+  const Pk<N> r = (clamped - kf * splat<N>(0.693359375f)) - kf * splat<N>(-2.12194440e-4f);
+  Pk<N> p = splat<N>(1.0f / 720.0f);
+  p = p * r + splat<N>(1.0f / 120.0f);
+  p = p * r + splat<N>(1.0f / 24.0f);
+  p = p * r + splat<N>(1.0f / 6.0f);
+  p = p * r + splat<N>(0.5f);
+  p = p * r + splat<N>(1.0f);
+  p = p * r + splat<N>(1.0f);
+  Pk<N> scale;
+  const __m512i bias = _mm512_set1_epi32(127);
+  SOCSIM_EACH {
+    const __m512i e = _mm512_mask_cvttps_epi32(bias, 0xFFFF, kf.v[k]);
+    scale.v[k] = _mm512_castsi512_ps(_mm512_slli_epi32(_mm512_add_epi32(e, bias), 23));
+  }
+  return select(x < lo, splat<N>(0.0f), p * scale);
+}
+
+template <int N>
+SOCSIM_AVX512 Pk<N> atan2_lanes(const Pk<N>& y, const Pk<N>& x) {  // fast_atan2f
+  const Pk<N> zero = splat<N>(0.0f);
+  const Pk<N> one = splat<N>(1.0f);
+  const Pk<N> ax = select(x < zero, -x, x);
+  const Pk<N> ay = select(y < zero, -y, y);
+  const Mk<N> x_wider = ax > ay;
+  const Pk<N> mx = select(x_wider, ax, ay);
+  const Pk<N> mn = select(x_wider, ay, ax);
+  const Pk<N> a = mn / select(mx > zero, mx, one);
+  const Mk<N> upper = a > splat<N>(0.414213562373095f);
+  const Pk<N> t = select(upper, (a - one) / (a + one), a);
+  const Pk<N> s = t * t;
+  Pk<N> p = splat<N>(-1.0f / 15.0f);
+  p = p * s + splat<N>(1.0f / 13.0f);
+  p = p * s - splat<N>(1.0f / 11.0f);
+  p = p * s + splat<N>(1.0f / 9.0f);
+  p = p * s - splat<N>(1.0f / 7.0f);
+  p = p * s + splat<N>(1.0f / 5.0f);
+  p = p * s - splat<N>(1.0f / 3.0f);
+  p = p * s + one;
+  Pk<N> angle = select(upper, splat<N>(0.785398163397448f), zero) + t * p;
+  angle = select(ay > ax, splat<N>(1.57079632679490f) - angle, angle);
+  angle = select(x < zero, splat<N>(3.14159265358979f) - angle, angle);
+  return select(y < zero, -angle, angle);
+}
+
+// Lanes [m, m + 16·N) of the batch, those at or past `count` read as 0 and not written.
+template <int N>
+SOCSIM_AVX512 void kernel_lanes(const SocialParams& p, int m, int count, const float* dx, const float* dy,
+                                const float* dvx, const float* dvy, const float* tie_x, const float* tie_y,
+                                std::int32_t* fx, std::int32_t* fy) {
+  Mk<N> in;
+  SOCSIM_EACH {
+    const int left = count - m - 16 * k;
+    in.v[k] = left >= 16 ? __mmask16{0xFFFF}
+                         : (left <= 0 ? __mmask16{0} : static_cast<__mmask16>((1u << left) - 1u));
+  }
+  Pk<N> rx, ry, ux, uy, vx, vy;
+  SOCSIM_EACH {
+    const int o = m + 16 * k;
+    rx.v[k] = _mm512_maskz_loadu_ps(in.v[k], dx + o);
+    ry.v[k] = _mm512_maskz_loadu_ps(in.v[k], dy + o);
+    ux.v[k] = _mm512_maskz_loadu_ps(in.v[k], tie_x + o);
+    uy.v[k] = _mm512_maskz_loadu_ps(in.v[k], tie_y + o);
+    vx.v[k] = _mm512_maskz_loadu_ps(in.v[k], dvx + o);
+    vy.v[k] = _mm512_maskz_loadu_ps(in.v[k], dvy + o);
+  }
+  const Pk<N> zero = splat<N>(0.0f);
+  const Pk<N> one = splat<N>(1.0f);
+  const Pk<N> d = root(rx * rx + ry * ry);
+  const Pk<N> tiny = splat<N>(1e-30f);
+  const Pk<N> inv_d = one / select(d < tiny, tiny, d);
+  const Pk<N> ex = rx * inv_d + ux;
+  const Pk<N> ey = ry * inv_d + uy;
+  const Pk<N> lambda = splat<N>(p.lambda);
+  const Pk<N> ix = lambda * vx + ex;
+  const Pk<N> iy = lambda * vy + ey;
+  const Pk<N> il2 = ix * ix + iy * iy;
+  const Mk<N> live = il2 > splat<N>(1e-12f);
+  const Pk<N> il = root(il2);
+  const Pk<N> floor = splat<N>(1e-6f);
+  const Pk<N> inv_il = one / select(il < floor, floor, il);
+  const Pk<N> tx = ix * inv_il;
+  const Pk<N> ty = iy * inv_il;
+  const Pk<N> b = splat<N>(p.gamma) * il;
+  const Pk<N> theta = atan2_lanes(tx * ey - ty * ex, tx * ex + ty * ey);
+  const Pk<N> base = -d * inv_il * splat<N>(p.inv_gamma);
+  const Pk<N> nb = splat<N>(p.n) * b * theta;
+  const Pk<N> npb = splat<N>(p.n_prime) * b * theta;
+  const Pk<N> along = -exp_lanes(base - npb * npb);
+  const Pk<N> sign = select(theta > zero, one, select(theta < zero, splat<N>(-1.0f), zero));
+  const Pk<N> side = -sign * exp_lanes(base - nb * nb);
+  const Pk<N> scale = splat<N>(p.factor * kForceQuantum);
+  const Pk<N> gx = select(live, scale * (along * tx - side * ty), zero);
+  const Pk<N> gy = select(live, scale * (along * ty + side * tx), zero);
+  const __m512i none = _mm512_setzero_si512();
+  SOCSIM_EACH {
+    const int o = m + 16 * k;
+    _mm512_mask_storeu_epi32(fx + o, in.v[k], _mm512_mask_cvttps_epi32(none, 0xFFFF, gx.v[k]));
+    _mm512_mask_storeu_epi32(fy + o, in.v[k], _mm512_mask_cvttps_epi32(none, 0xFFFF, gy.v[k]));
+  }
+}
+
+__attribute__((target("avx512f"))) void social_kernel_avx512(const SocialParams& p, int count,
+                                                             const float* dx, const float* dy,
+                                                             const float* dvx, const float* dvy,
+                                                             const float* tie_x, const float* tie_y,
+                                                             std::int32_t* fx, std::int32_t* fy) {
+  int m = 0;
+  for (; count - m > 16; m += 32) kernel_lanes<2>(p, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  if (m < count) kernel_lanes<1>(p, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+}
+
+#undef SOCSIM_EACH
+#undef SOCSIM_AVX512
+
+}  // namespace
+#endif
+
+void social_kernel(const SocialParams& p, int count, const float* __restrict dx, const float* __restrict dy,
+                   const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,
+                   const float* __restrict tie_y, std::int32_t* __restrict fx, std::int32_t* __restrict fy) {
+#ifdef SOCSIM_KERNEL_AVX512
+  static const bool avx512 = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") != 0;
+  }();
+  if (avx512) {
+    social_kernel_avx512(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+    return;
+  }
+#endif
+  social_kernel_portable(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)

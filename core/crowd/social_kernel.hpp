@@ -35,9 +35,18 @@ struct PairBatch {
 };
 
 // Writes the force on the agent from each of `count` neighbours into fx, fy (units of 2^-20 m/s²).
+// On x86-64 CPUs with AVX-512 a hand-written version runs; every other CPU runs the portable
+// loop (compiled for AVX2 or plain x86-64). Both give the same bits.
 void social_kernel(const SocialParams& p, int count, const float* __restrict dx, const float* __restrict dy,
                    const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,
                    const float* __restrict tie_y, std::int32_t* __restrict fx, std::int32_t* __restrict fy);
+
+// The portable loop, always available (tests compare it with social_kernel).
+void social_kernel_portable(const SocialParams& p, int count, const float* __restrict dx,
+                            const float* __restrict dy, const float* __restrict dvx,
+                            const float* __restrict dvy, const float* __restrict tie_x,
+                            const float* __restrict tie_y, std::int32_t* __restrict fx,
+                            std::int32_t* __restrict fy);
 
 // The speed–headway cap over the same batch: the smallest (s_j − ℓ + τ·(v_j − v_i)·e)/T, floored
 // at 0, over the neighbours straight ahead — (dx, dy)·e > 0, their centre within `band` of the walking
