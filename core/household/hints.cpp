@@ -308,7 +308,11 @@ std::vector<double> hint_distribution(const HintReading& reading, std::string_vi
           for (const auto& [r, x] : o.receptacles) rec_total += x;
         }
     for (std::size_t i = 0; i < n; ++i) {
-      double x = base[i];
+      // Without the activity's tables the answer places the object in a room and says nothing of
+      // which receptacle there: its share is spread evenly over the room's receptacles, and the
+      // base's own view of them stays in the remaining 1 − trust (docs/navbench.md, "Hints and the
+      // two planners").
+      double x = activity_tables ? base[i] : 1.0;
       if (reading.room) x *= recs[i].room_type == *reading.room ? 1.0 : 0.0;
       if (activity) {
         x *= activity->effects.rooms[index_of(recs[i].room_type)] + 0.05;

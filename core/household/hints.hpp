@@ -83,8 +83,10 @@ struct ReceptacleView {
 // named room and activity reweight `base` by the curated p(l|a) and p(r|o,a,l) of that activity
 // and, for the room, keep `trust` (half of it when the answer is vague) inside rooms of that type.
 // "No" or nothing understood gives `base` normalised. `activity_tables` false: the curated
-// activity's p(l|a) and p(r|o,a,l) are not read (they are the scene generator's own tables); the
-// named room (or receptacle) alone focuses `base`, and an answer naming only an activity gives `base`.
+// activity's p(l|a) and p(r|o,a,l) are not read (they are the scene generator's own tables): a
+// named room's `trust` is spread evenly over that room's receptacles (the answer says nothing of
+// which one; `base` ranks them in its 1 − trust share), and an answer naming only an activity gives
+// `base`.
 std::vector<double> hint_distribution(const HintReading& reading, std::string_view object_type,
                                       std::span<const ReceptacleView> receptacles,
                                       std::span<const double> base, double trust = 0.85,

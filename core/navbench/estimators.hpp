@@ -87,8 +87,10 @@ class ScenePriorEstimator final : public LocationEstimator {
 
 // The residents' answers (one a line) read by household::read_hints (room, receptacle and activity
 // words of the curated knowledge), each turned into a distribution by household::hint_distribution
-// with the scene prior as the base: `trust` of the mass on a named receptacle, or on the named room
-// spread by the scene prior (half when the answer is hedged); the mean over the answers that say
+// with the scene prior as the base: `trust` of the mass on a named receptacle, or spread evenly over
+// the named room's receptacles (half when the answer is hedged), the rest on the scene prior, which
+// thus still ranks the room's receptacles by ratios that CEG follows but with absolute differences
+// too small to beat OSG's distance share; the mean over the answers that say
 // "used"; the scene prior alone when every answer says no or names nothing known. The named
 // activity's curated p(l|a) and p(r|o,a,l) are not read: they are the scene generator's own tables
 // (as the paper's LLM estimator goes from the event to a room and then to receptacles by its own

@@ -146,7 +146,7 @@ TEST(Hints, TheInterpreterGivesADistributionOverTheHousesReceptacles) {
   EXPECT_FALSE(interpreter.interpret({nullptr, "Mug", "", 0, Weekday::kWednesday}));
 }
 
-TEST(Hints, WithoutTheActivityTablesTheNamedRoomIsSpreadByTheBase) {
+TEST(Hints, WithoutTheActivityTablesTheNamedRoomIsSpreadEvenly) {
   // Kitchen: counter, table, sink; living room: sofa. Base 0.4, 0.3, 0.1, 0.2.
   const std::vector<ReceptacleView> recs = {{"CounterTop", RoomType::kKitchen},
                                             {"DiningTable", RoomType::kKitchen},
@@ -160,12 +160,23 @@ TEST(Hints, WithoutTheActivityTablesTheNamedRoomIsSpreadByTheBase) {
   HintReading room_only = with_activity;
   room_only.activity = nullptr;
   const auto p = hint_distribution(with_activity, "Mug", recs, base, 0.85, false);
-  const auto q = hint_distribution(room_only, "Mug", recs, base, 0.85, true);
+  const auto q = hint_distribution(room_only, "Mug", recs, base, 0.85, false);
   ASSERT_EQ(p.size(), 4u);
   for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], q[i], 1e-12) << i;
-  // 0.85 inside the kitchen in the base's proportions, 0.15 of the base everywhere.
-  EXPECT_NEAR(p[0], 0.15 * 0.4 + 0.85 * 0.5, 1e-12);
+  // The answer's 0.85 in equal parts on the kitchen's three receptacles (it says nothing of which
+  // one); 0.15 of the base everywhere, which alone ranks the kitchen's receptacles.
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(p[i], 0.15 * base[i] + 0.85 / 3.0, 1e-12) << i;
   EXPECT_NEAR(p[3], 0.15 * 0.2, 1e-12);
+  EXPECT_GT(p[0], p[1]);
+  EXPECT_GT(p[1], p[2]);
+  // Hedged: half the share.
+  HintReading hedged = room_only;
+  hedged.vague = true;
+  const auto h = hint_distribution(hedged, "Mug", recs, base, 0.85, false);
+  EXPECT_NEAR(h[2], 0.575 * 0.1 + 0.425 / 3.0, 1e-12);
+  // With the tables (the household's interpreter) the base still spreads the named room.
+  const auto t = hint_distribution(room_only, "Mug", recs, base, 0.85, true);
+  EXPECT_NEAR(t[0], 0.15 * 0.4 + 0.85 * 0.5, 1e-12);
   // An answer naming only an activity says nothing without the tables.
   HintReading activity_only = with_activity;
   activity_only.room.reset();

@@ -8,6 +8,7 @@
 
 #include <numeric>
 
+#include "core/navbench/planners.hpp"
 #include "tests/core/navbench/navbench_fixture.hpp"
 
 namespace socsim::navbench {
@@ -190,6 +191,42 @@ TEST(Estimators, HintsAreReadFromTheResidentsWords) {
   EXPECT_EQ(readings[1].receptacle_type, "Dresser");
   q.hint = "Ann Lee: No, I don't think I've used the mug recently.\nBo Chen: No, not the mug.";
   EXPECT_EQ(hint.estimate(q), prior->estimate(q));
+}
+
+// A room answer lifts each of the room's receptacles by the same share of the answer (it does not
+// say which one), the scene prior ranking them in its remaining mass. So the hint multiplies the
+// room's probabilities — CEG, which compares p/d, goes into the room past a nearer receptacle —
+// while adding too little to any one receptacle for OSG to give up the nearer one (paper 000 §VI:
+// the LLM's hints help CEG, "LLM + OSG fails to outperform SP + OSG").
+TEST(Estimators, ARoomAnswerSteersCegButNotOsg) {
+  const NavMap map = map_of(hand_built_house(
+      {{RoomType::kKitchen, 0, 0, 4, 3}, {RoomType::kLivingRoom, 4, 0, 8, 3}}, {{0, 1, 4.0, 1.5}},
+      {{"CounterTop", 0, 2.0, 2.6, 3.0, 0.6},
+       {"DiningTable", 0, 2.0, 1.2, 1.0, 1.0},
+       {"Sink", 0, 0.4, 0.4},
+       {"SideTable", 0, 3.6, 0.4},
+       {"Sofa", 1, 6.0, 2.6, 1.6, 0.6}}));
+  auto prior = std::make_shared<const ScenePriorEstimator>(small_counts());
+  const HintEstimator hint(prior, knowledge(), 0.85);
+  EstimateQuery q;
+  q.map = &map;
+  q.target_type = "Mug";
+  const auto sp = prior->estimate(q);
+  q.hint = "Ann Lee: I think I had the mug while having breakfast this morning, in the kitchen.";
+  const auto p = hint.estimate(q);
+  ASSERT_EQ(p.size(), 5u);
+  EXPECT_NEAR(sum(p), 1.0, 1e-12);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(p[i], 0.15 * sp[i] + 0.85 / 4.0, 1e-12) << i;
+  EXPECT_NEAR(p[4], 0.15 * sp[4], 1e-12);
+  // The sofa next to the agent, the kitchen's receptacles three to four times as far: every kitchen
+  // receptacle beats the sofa by probability per step, none by α·p against the distance share.
+  const int near = 6;
+  std::vector<Candidate> with_hint;
+  for (int i = 0; i < 5; ++i)
+    with_hint.push_back({i, p[static_cast<std::size_t>(i)], i == 4 ? near : 3 * near + i});
+  ASSERT_GT(p[0] / 18, p[4] / near) << "the hint's ratios must steer CEG";
+  EXPECT_LT(with_hint[CegPlanner().choose(with_hint)].receptacle, 4);
+  EXPECT_EQ(with_hint[OsgPlanner(0.5).choose(with_hint)].receptacle, 4);
 }
 
 TEST(Estimators, PosteriorNeverRulesOutTheTruthAndIsCalibrated) {
