@@ -156,7 +156,9 @@ TEST(BtNodes, EvacuateLeavesThroughTheNearestExit) {
   runner->run(60.0);
   for (std::uint32_t i = 0; i < 7; ++i) {
     EXPECT_EQ(runner->sim().state(AgentId(i)).activity, Activity::kExited) << "agent " << i;
+    // Out by the main entrance (y = 0), and only once clear of the doorway (0.9 m from its centre).
     EXPECT_LT(runner->sim().position(AgentId(i)).y, 0.0) << "left by the main entrance (y = 0)";
+    EXPECT_GE(dist(runner->sim().position(AgentId(i)), {5, 0}), 0.9) << "removed while still in the doorway";
   }
   EXPECT_TRUE(runner->errors().empty());
 }
