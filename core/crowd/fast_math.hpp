@@ -2,7 +2,9 @@
 // Deterministic, inlinable exp and atan2 for the social-force inner loop: plain IEEE double
 // arithmetic only (no libm calls, no table), so every platform and thread count gives the same bits.
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 
 namespace socsim::crowd {
 
@@ -85,33 +87,43 @@ namespace socsim::crowd {
 // Branch-free single-precision versions for the vectorised pair kernel (selects only, so the
 // compiler can turn a loop of them into SIMD code; results are the same bits either way).
 
+// The constants of fast_expf and fast_atan2f, shared with the hand-written AVX-512 kernel
+// (social_kernel.cpp), which evaluates the same polynomials in the same order.
+namespace fast_float {
+inline constexpr float kExpLow = -87.0f;  // below: 0
+inline constexpr float kExpHigh = 88.0f;
+inline constexpr float kLog2e = 1.44269504088896341f;
+inline constexpr float kLn2Hi = 0.693359375f;
+inline constexpr float kLn2Lo = -2.12194440e-4f;
+inline constexpr float kShift = 12582912.0f;  // 1.5·2^23: adding it rounds to an integer
+// e^r on |r| <= ln2/2, Horner's order (highest degree first).
+inline constexpr float kExpPoly[] = {1.0f / 720.0f, 1.0f / 120.0f, 1.0f / 24.0f, 1.0f / 6.0f,
+                                     0.5f,          1.0f,          1.0f};
+inline constexpr float kPi = 3.14159265358979f;
+inline constexpr float kPi2 = 1.57079632679490f;
+inline constexpr float kPi4 = 0.785398163397448f;
+inline constexpr float kTanPi8 = 0.414213562373095f;
+// atan(t)/t as a polynomial in s = t², Horner's order (the odd Taylor series to t^15).
+inline constexpr float kAtanPoly[] = {-1.0f / 15.0f, 1.0f / 13.0f, -1.0f / 11.0f, 1.0f / 9.0f,
+                                      -1.0f / 7.0f,  1.0f / 5.0f,  -1.0f / 3.0f,  1.0f};
+}  // namespace fast_float
+
 // e^x, relative error < 2e-7 for -87 < x < 88; 0 below -87.
 inline float fast_expf(float x) {
-  const float clamped = x < -87.0f ? -87.0f : (x > 88.0f ? 88.0f : x);
-  constexpr float kLog2e = 1.44269504088896341f;
-  constexpr float kLn2Hi = 0.693359375f;
-  constexpr float kLn2Lo = -2.12194440e-4f;
-  constexpr float kShift = 12582912.0f;  // 1.5·2^23
+  using namespace fast_float;
+  const float clamped = x < kExpLow ? kExpLow : (x > kExpHigh ? kExpHigh : x);
   const float kf = (clamped * kLog2e + kShift) - kShift;
   const float r = (clamped - kf * kLn2Hi) - kf * kLn2Lo;
-  float p = 1.0f / 720.0f;
-  p = p * r + 1.0f / 120.0f;
-  p = p * r + 1.0f / 24.0f;
-  p = p * r + 1.0f / 6.0f;
-  p = p * r + 0.5f;
-  p = p * r + 1.0f;
-  p = p * r + 1.0f;
+  float p = kExpPoly[0];
+  for (std::size_t i = 1; i < std::size(kExpPoly); ++i) p = p * r + kExpPoly[i];
   const auto k = static_cast<std::int32_t>(kf);
   const float scale = std::bit_cast<float>(static_cast<std::uint32_t>(k + 127) << 23u);
-  return x < -87.0f ? 0.0f : p * scale;
+  return x < kExpLow ? 0.0f : p * scale;
 }
 
 // atan2(y, x) in [-pi, pi], absolute error < 1e-7 rad; atan2(0, 0) = 0.
 inline float fast_atan2f(float y, float x) {
-  constexpr float kPi = 3.14159265358979f;
-  constexpr float kPi2 = 1.57079632679490f;
-  constexpr float kPi4 = 0.785398163397448f;
-  constexpr float kTanPi8 = 0.414213562373095f;
+  using namespace fast_float;
   const float ax = x < 0.0f ? -x : x;
   const float ay = y < 0.0f ? -y : y;
   const float mx = ax > ay ? ax : ay;
@@ -120,14 +132,8 @@ inline float fast_atan2f(float y, float x) {
   const bool upper = a > kTanPi8;
   const float t = upper ? (a - 1.0f) / (a + 1.0f) : a;
   const float s = t * t;
-  float p = -1.0f / 15.0f;
-  p = p * s + 1.0f / 13.0f;
-  p = p * s - 1.0f / 11.0f;
-  p = p * s + 1.0f / 9.0f;
-  p = p * s - 1.0f / 7.0f;
-  p = p * s + 1.0f / 5.0f;
-  p = p * s - 1.0f / 3.0f;
-  p = p * s + 1.0f;
+  float p = kAtanPoly[0];
+  for (std::size_t i = 1; i < std::size(kAtanPoly); ++i) p = p * s + kAtanPoly[i];  // a − b is a + (−b)
   float angle = (upper ? kPi4 : 0.0f) + t * p;
   angle = ay > ax ? kPi2 - angle : angle;
   angle = x < 0.0f ? kPi - angle : angle;

@@ -154,19 +154,15 @@ SOCSIM_AVX512 Pk<N> select(const Mk<N>& m, const Pk<N>& t, const Pk<N>& f) {
 
 template <int N>
 SOCSIM_AVX512 Pk<N> exp_lanes(const Pk<N>& x) {  // fast_expf
-  const Pk<N> lo = splat<N>(-87.0f);
-  const Pk<N> hi = splat<N>(88.0f);
+  using namespace fast_float;
+  const Pk<N> lo = splat<N>(kExpLow);
+  const Pk<N> hi = splat<N>(kExpHigh);
   const Pk<N> clamped = select(x < lo, lo, select(x > hi, hi, x));
-  const Pk<N> shift = splat<N>(12582912.0f);
-  const Pk<N> kf = (clamped * splat<N>(1.44269504088896341f) + shift) - shift;
-  const Pk<N> r = (clamped - kf * splat<N>(0.693359375f)) - kf * splat<N>(-2.12194440e-4f);
-  Pk<N> p = splat<N>(1.0f / 720.0f);
-  p = p * r + splat<N>(1.0f / 120.0f);
-  p = p * r + splat<N>(1.0f / 24.0f);
-  p = p * r + splat<N>(1.0f / 6.0f);
-  p = p * r + splat<N>(0.5f);
-  p = p * r + splat<N>(1.0f);
-  p = p * r + splat<N>(1.0f);
+  const Pk<N> shift = splat<N>(kShift);
+  const Pk<N> kf = (clamped * splat<N>(kLog2e) + shift) - shift;
+  const Pk<N> r = (clamped - kf * splat<N>(kLn2Hi)) - kf * splat<N>(kLn2Lo);
+  Pk<N> p = splat<N>(kExpPoly[0]);
+  for (std::size_t i = 1; i < std::size(kExpPoly); ++i) p = p * r + splat<N>(kExpPoly[i]);
   Pk<N> scale;
   const __m512i bias = _mm512_set1_epi32(127);
   SOCSIM_EACH {
@@ -178,6 +174,7 @@ SOCSIM_AVX512 Pk<N> exp_lanes(const Pk<N>& x) {  // fast_expf
 
 template <int N>
 SOCSIM_AVX512 Pk<N> atan2_lanes(const Pk<N>& y, const Pk<N>& x) {  // fast_atan2f
+  using namespace fast_float;
   const Pk<N> zero = splat<N>(0.0f);
   const Pk<N> one = splat<N>(1.0f);
   const Pk<N> ax = select(x < zero, -x, x);
@@ -186,20 +183,14 @@ SOCSIM_AVX512 Pk<N> atan2_lanes(const Pk<N>& y, const Pk<N>& x) {  // fast_atan2
   const Pk<N> mx = select(x_wider, ax, ay);
   const Pk<N> mn = select(x_wider, ay, ax);
   const Pk<N> a = mn / select(mx > zero, mx, one);
-  const Mk<N> upper = a > splat<N>(0.414213562373095f);
+  const Mk<N> upper = a > splat<N>(kTanPi8);
   const Pk<N> t = select(upper, (a - one) / (a + one), a);
   const Pk<N> s = t * t;
-  Pk<N> p = splat<N>(-1.0f / 15.0f);
-  p = p * s + splat<N>(1.0f / 13.0f);
-  p = p * s - splat<N>(1.0f / 11.0f);
-  p = p * s + splat<N>(1.0f / 9.0f);
-  p = p * s - splat<N>(1.0f / 7.0f);
-  p = p * s + splat<N>(1.0f / 5.0f);
-  p = p * s - splat<N>(1.0f / 3.0f);
-  p = p * s + one;
-  Pk<N> angle = select(upper, splat<N>(0.785398163397448f), zero) + t * p;
-  angle = select(ay > ax, splat<N>(1.57079632679490f) - angle, angle);
-  angle = select(x < zero, splat<N>(3.14159265358979f) - angle, angle);
+  Pk<N> p = splat<N>(kAtanPoly[0]);
+  for (std::size_t i = 1; i < std::size(kAtanPoly); ++i) p = p * s + splat<N>(kAtanPoly[i]);
+  Pk<N> angle = select(upper, splat<N>(kPi4), zero) + t * p;
+  angle = select(ay > ax, splat<N>(kPi2) - angle, angle);
+  angle = select(x < zero, splat<N>(kPi) - angle, angle);
   return select(y < zero, -angle, angle);
 }
 
