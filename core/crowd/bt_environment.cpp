@@ -570,11 +570,11 @@ void BtEnvironment::build_exits() {
     if (len > 1e-9) normal = {-uy / len, ux / len};
     Vec2 beyond{c.x + normal.x * 1.0, c.y + normal.y * 1.0};
     if (world_->zone_at(pt(beyond))) beyond = {c.x - normal.x * 1.0, c.y - normal.y * 1.0};
-    exits_.push_back(Exit{d.name, c, beyond, nullptr});
+    exits_.push_back(Exit{d.name, c, beyond, nullptr, {ux / 2.0, uy / 2.0}});
   }
   for (world::RoiId r : world_->rois_of_kind("exit")) {
     const world::Roi& roi = world_->roi(r);
-    exits_.push_back(Exit{roi.name, interior_point(roi.polygon), std::nullopt, &roi.polygon});
+    exits_.push_back(Exit{roi.name, interior_point(roi.polygon), std::nullopt, &roi.polygon, {}});
   }
   exit_fields_.resize(exits_.size());
 }

@@ -157,8 +157,9 @@ class BtEnvironment {
   struct Exit {
     std::string name;
     Vec2 point;                  // door centre or a point of the exit ROI
-    std::optional<Vec2> beyond;  // a point outside the plan (doors to the outside)
+    std::optional<Vec2> beyond;  // a point outside the plan (doors to the outside), 1 m out
     const geometry::Polygon* region = nullptr;
+    Vec2 half_opening{};  // doors: from the centre to one jamb along the opening
   };
   [[nodiscard]] const std::vector<Exit>& exits() const { return exits_; }
   // The exit with the shortest walk from p (geodesic); nullopt when none is reachable.

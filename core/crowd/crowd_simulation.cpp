@@ -1093,11 +1093,16 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   // walking direction: it steers, it does not brake (nor push from behind once passed). See
   // docs/crowd.md, "doorways".
   const std::span<const std::uint32_t> near_walls = wall_grid_.near(x, y);
+  // Walls within zipper_reach, abreast: bit 1 on the left of the walking line, bit 2 on its right
+  // (both: the agent is in or just before a narrow opening, or faces a wall's corner or a pillar
+  // head-on, where the narrower band changes little).
+  unsigned wall_sides = 0;
   {
     const double wc2 = config_.wall_cutoff * config_.wall_cutoff;
     const double sweep = std::min(goal_distance, config_.wall_cutoff);
     std::array<Vec2, 8> vertices{};
     std::size_t vertex_count = 0;
+    const double zr2 = fp.zipper_reach * fp.zipper_reach;
     for (std::uint32_t w : near_walls) {
       const WallSegment& s = walls_[w];
       const double ux = s.b.x - s.a.x;
@@ -1110,6 +1115,11 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
       const double dy = y - q.y;
       const double d2 = dx * dx + dy * dy;
       if (d2 > wc2) continue;
+      if (heading && d2 <= zr2) {  // walls beside the walking line, abreast of the agent (zipper)
+        const double ahead = -(dx * ex + dy * ey);
+        const double left = -(ex * dy - ey * dx);  // > 0: the wall point is left of the line
+        if (std::abs(ahead) <= fp.zipper_reach) wall_sides |= left > 0.0 ? 1u : (left < 0.0 ? 2u : 0u);
+      }
       const unsigned end_bit = t == 0.0 ? 1u : (t == 1.0 ? 2u : 0u);  // nearest point at an end
       // With end_bit: the wall end's index into wall_link_start_ (2w for end a, 2w + 1 for end b).
       const std::size_t end = 2 * static_cast<std::size_t>(w) + (end_bit == 2u ? 1 : 0);
@@ -1168,7 +1178,8 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
     // Neighbours the two bodies could reach within one step (with 0.05 m to spare) are contacts.
     const double margin = config_.hard_contact ? dt * (vmax_[i] + max_vmax_) + 0.05 : 0.0;
     NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, max_radius_, fp,
-                       config_.body_stiffness, ex, ey, margin, fp.headway_band * r);
+                       config_.body_stiffness, ex, ey, margin,
+                       (wall_sides == 3u ? fp.zipper_band : fp.headway_band) * r);
     neighbours(sums, x, y);
     sums.flush();
     if (heading) {

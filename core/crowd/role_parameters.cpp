@@ -67,6 +67,8 @@ Status validate(const RoleParameters& r, const std::string& p) {
                    {"/forces/headway_time", f.headway_time, 0.0, 100.0, false},
                    {"/forces/headway_band", f.headway_band, 0.0, 10.0, false},
                    {"/forces/headway_anticipation", f.headway_anticipation, 0.0, 100.0, false},
+                   {"/forces/zipper_band", f.zipper_band, 0.0, 10.0, false},
+                   {"/forces/zipper_reach", f.zipper_reach, 0.0, 10.0, false},
                    {"/forces/side_factor", f.side_factor, 0.0, 100.0, false},
                    {"/forces/side_range", f.side_range, 0.01, 100.0, false},
                    {"/forces/side_bias", f.side_bias, -10.0, 10.0, false},
@@ -111,6 +113,8 @@ Json to_json(const RoleParameters& r) {
         {"headway_time", f.headway_time},
         {"headway_band", f.headway_band},
         {"headway_anticipation", f.headway_anticipation},
+        {"zipper_band", f.zipper_band},
+        {"zipper_reach", f.zipper_reach},
         {"side_factor", f.side_factor},
         {"side_range", f.side_range},
         {"side_bias", f.side_bias},
@@ -162,6 +166,8 @@ Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParame
                      "headway_time",
                      "headway_band",
                      "headway_anticipation",
+                     "zipper_band",
+                     "zipper_reach",
                      "side_factor",
                      "side_range",
                      "side_bias",
@@ -183,6 +189,8 @@ Result<RoleParameters> role_parameters_from_json(const Json& j, const RoleParame
     read(check, *f, fp, "headway_time", x.headway_time);
     read(check, *f, fp, "headway_band", x.headway_band);
     read(check, *f, fp, "headway_anticipation", x.headway_anticipation);
+    read(check, *f, fp, "zipper_band", x.zipper_band);
+    read(check, *f, fp, "zipper_reach", x.zipper_reach);
     read(check, *f, fp, "side_factor", x.side_factor);
     read(check, *f, fp, "side_range", x.side_range);
     read(check, *f, fp, "side_bias", x.side_bias);

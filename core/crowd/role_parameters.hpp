@@ -42,6 +42,13 @@ struct ForceParameters {
   // headway_distance and headway_time); lets followers keep up with people accelerating away, as
   // through a door (calibrated on Seyfried's and Kretz's bottleneck flows, docs/crowd.md).
   double headway_anticipation = 2.5;
+  // The zipper (Hoogendoorn & Daamen 2005; Seyfried et al. 2009): in a narrow opening people
+  // follow in two staggered lanes, shoulders turned, closer than in single file. Where walls
+  // come within zipper_reach of the agent on both sides of its walking line (abreast of it, in or
+  // just before an opening narrower than ~2·zipper_reach), the band in which someone counts as
+  // ahead narrows to zipper_band × the radius. zipper_band = headway_band turns it off.
+  double zipper_band = 0.75;
+  double zipper_reach = 0.8;  // m
   // Side preference towards oncoming walkers (an addition): each walker coming towards the agent
   // within side_band of its walking line pushes it sideways with side_factor·exp(−ahead/side_range),
   // to the right unless that walker is already more than side_bias right of the line. 0 = off.

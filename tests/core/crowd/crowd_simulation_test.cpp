@@ -300,6 +300,30 @@ TEST(CrowdSimulation, FollowersSlowToTheirHeadway) {
   EXPECT_NEAR(desired_x({0.3, 0.0}, {0.0, 0}), 2.0 * (0.0 - 1.3) / 0.5, 1e-12);  // closer than 0.4 m: stop
 }
 
+// The zipper: in a narrow opening (walls within zipper_reach on both sides of the walking line)
+// someone 0.2 m beside the line — inside the 1.5-radius band, outside the 0.75-radius one — no
+// longer caps the follower's speed; in the open, or in a 2 m wide door, it does. Someone
+// straight ahead caps it in the opening too.
+TEST(CrowdSimulation, ZipperLanesInNarrowOpenings) {
+  const auto desired_x = [](double door, Vec2 other) {
+    CrowdSimulation sim = make();
+    if (door > 0.0) {  // a thin wall across x = 0.3 with an opening of width `door` round y = 0
+      EXPECT_TRUE(sim.add_wall({0.3, door / 2.0}, {0.3, 5.0}));
+      EXPECT_TRUE(sim.add_wall({0.3, -5.0}, {0.3, -door / 2.0}));
+    }
+    const AgentId a = add(sim, {0, 0}, {1.0, 0});
+    add(sim, other, {1.0, 0});
+    EXPECT_TRUE(sim.set_goal(a, Goal{{20, 0}, 0.3}));
+    return sim.forces(a).desired.x;
+  };
+  const double capped = 2.0 * ((std::hypot(0.6, 0.2) - 0.4) / 0.6 - 1.0) / 0.5;
+  const double free = 2.0 * (1.3 - 1.0) / 0.5;
+  EXPECT_NEAR(desired_x(0.0, {0.6, 0.2}), capped, 1e-5);  // in the open: the person ahead counts
+  EXPECT_NEAR(desired_x(0.8, {0.6, 0.2}), free, 1e-5);    // in a 0.8 m door: a staggered lane
+  EXPECT_NEAR(desired_x(2.0, {0.6, 0.2}), capped, 1e-5);  // a wide door: no zipper
+  EXPECT_NEAR(desired_x(0.8, {0.6, 0.0}), 2.0 * ((0.6 - 0.4) / 0.6 - 1.0) / 0.5, 1e-5);  // in line
+}
+
 // Side preference: someone coming head-on pushes the agent to its right (−y when walking +x);
 // someone coming well to the agent's right pushes it left; nobody coming the same way pushes.
 TEST(CrowdSimulation, OncomingWalkersPushToTheRight) {
