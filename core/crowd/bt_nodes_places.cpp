@@ -208,7 +208,8 @@ class Evacuate final : public LibraryNode {
     }
     const double across = std::clamp(lateral, -room, room);
     const double ahead = kExitClearance + 1.0;
-    env_.move_to(*id, {e.point.x + u.x * across + normal.x * ahead, e.point.y + u.y * across + normal.y * ahead},
+    env_.move_to(*id,
+                 {e.point.x + u.x * across + normal.x * ahead, e.point.y + u.y * across + normal.y * ahead},
                  0.05, speed, Activity::kEvacuating, Routing::kDirect);
     return S::kRunning;
   }
