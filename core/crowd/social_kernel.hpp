@@ -35,8 +35,8 @@ struct PairBatch {
 };
 
 // Writes the force on the agent from each of `count` neighbours into fx, fy (units of 2^-20 m/s²).
-// On x86-64 CPUs with AVX-512 a hand-written version runs; every other CPU runs the portable
-// loop (compiled for AVX2 or plain x86-64). Both give the same bits.
+// On x86-64 CPUs with AVX-512 or AVX2 a hand-written version for that width runs; every other CPU
+// runs the portable loop. All give the same bits.
 void social_kernel(const SocialParams& p, int count, const float* __restrict dx, const float* __restrict dy,
                    const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,
                    const float* __restrict tie_y, std::int32_t* __restrict fx, std::int32_t* __restrict fy);

@@ -1,0 +1,213 @@
+// The hand-written social kernel's body, written once for every x86-64 vector width: included by
+// core/crowd/social_kernel.cpp once per instruction set, so no #pragma once. Before each inclusion
+// the includer defines
+//   SOCSIM_LANES_NAMESPACE  the namespace (inside socsim::crowd's anonymous one) to fill, which
+//                           already holds `struct Simd`: the vector type, its lane count,
+//                           kInterleave and the few operations below that differ between widths;
+//   SOCSIM_LANES_TARGET     the instruction set to compile it for, as in __attribute__((target)).
+// A target attribute cannot depend on a template parameter, and GCC and clang refuse to inline an
+// intrinsic into a function compiled for less, hence one copy of this text per instruction set
+// rather than a template over Simd.
+//
+// N vectors at a time, their operations interleaved one by one. The compiled loop works on one
+// vector at a time: each lane is a chain of ~200 dependent operations (two square roots, four
+// divisions, an arctangent and two exponentials), longer than the processor can look ahead, so
+// consecutive vectors barely overlap; interleaved vectors keep its units busy (−28 % per pair for
+// two AVX-512 vectors, docs/PERFORMANCE.md). Every operation is the portable loop's, in its order,
+// with the same rounding (no fused multiply-add): the same bits
+// (SocialKernel.HandWrittenKernelEqualsThePortableLoop).
+
+namespace socsim::crowd {
+namespace {
+namespace SOCSIM_LANES_NAMESPACE {
+
+#define SOCSIM_LANES __attribute__((target(SOCSIM_LANES_TARGET), always_inline)) inline
+#define SOCSIM_EACH for (int k = 0; k < N; ++k)
+
+template <int N>
+struct Pk {
+  typename Simd::vec v[N];
+};
+template <int N>
+struct Mk {
+  typename Simd::mask v[N];
+};
+
+template <int N>
+SOCSIM_LANES Pk<N> splat(float x) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::set1(x);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Pk<N> operator+(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::add(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Pk<N> operator-(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::sub(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Pk<N> operator*(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::mul(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Pk<N> operator/(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::div(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Pk<N> operator-(const Pk<N>& a) {  // unary minus: the sign bit flipped
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::neg(a.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Pk<N> root(const Pk<N>& a) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::sqrt(a.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Mk<N> operator<(const Pk<N>& a, const Pk<N>& b) {
+  Mk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::less(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Mk<N> operator>(const Pk<N>& a, const Pk<N>& b) {
+  Mk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::less(b.v[k], a.v[k]);  // a > b is b < a, NaN false in both
+  return r;
+}
+// m ? t : f, lane by lane
+template <int N>
+SOCSIM_LANES Pk<N> select(const Mk<N>& m, const Pk<N>& t, const Pk<N>& f) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::select(m.v[k], t.v[k], f.v[k]);
+  return r;
+}
+
+template <int N>
+SOCSIM_LANES Pk<N> exp_lanes(const Pk<N>& x) {  // fast_expf
+  using namespace fast_float;
+  const Pk<N> lo = splat<N>(kExpLow);
+  const Pk<N> hi = splat<N>(kExpHigh);
+  const Pk<N> clamped = select(x < lo, lo, select(x > hi, hi, x));
+  const Pk<N> shift = splat<N>(kShift);
+  const Pk<N> kf = (clamped * splat<N>(kLog2e) + shift) - shift;
+  const Pk<N> r = (clamped - kf * splat<N>(kLn2Hi)) - kf * splat<N>(kLn2Lo);
+  Pk<N> p = splat<N>(kExpPoly[0]);
+  for (std::size_t i = 1; i < std::size(kExpPoly); ++i) p = p * r + splat<N>(kExpPoly[i]);
+  Pk<N> scale;
+  SOCSIM_EACH scale.v[k] = Simd::exp2_integer(kf.v[k]);
+  return select(x < lo, splat<N>(0.0f), p * scale);
+}
+
+template <int N>
+SOCSIM_LANES Pk<N> atan2_lanes(const Pk<N>& y, const Pk<N>& x) {  // fast_atan2f
+  using namespace fast_float;
+  const Pk<N> zero = splat<N>(0.0f);
+  const Pk<N> one = splat<N>(1.0f);
+  const Pk<N> ax = select(x < zero, -x, x);
+  const Pk<N> ay = select(y < zero, -y, y);
+  const Mk<N> x_wider = ax > ay;
+  const Pk<N> mx = select(x_wider, ax, ay);
+  const Pk<N> mn = select(x_wider, ay, ax);
+  const Pk<N> a = mn / select(mx > zero, mx, one);
+  const Mk<N> upper = a > splat<N>(kTanPi8);
+  const Pk<N> t = select(upper, (a - one) / (a + one), a);
+  const Pk<N> s = t * t;
+  Pk<N> p = splat<N>(kAtanPoly[0]);
+  for (std::size_t i = 1; i < std::size(kAtanPoly); ++i) p = p * s + splat<N>(kAtanPoly[i]);
+  Pk<N> angle = select(upper, splat<N>(kPi4), zero) + t * p;
+  angle = select(ay > ax, splat<N>(kPi2) - angle, angle);
+  angle = select(x < zero, splat<N>(kPi) - angle, angle);
+  return select(y < zero, -angle, angle);
+}
+
+// Lanes [m, m + L·N) of the batch (L = Simd::kLanes), those at or past `count` read as 0 and not
+// written; count − m > L·(N − 1), so every vector has a lane in the batch.
+template <int N>
+SOCSIM_LANES void kernel_lanes(const SocialParams& p, int m, int count, const float* dx, const float* dy,
+                               const float* dvx, const float* dvy, const float* tie_x, const float* tie_y,
+                               std::int32_t* fx, std::int32_t* fy) {
+  typename Simd::lanes in[N];
+  SOCSIM_EACH in[k] = Simd::first(count - m - Simd::kLanes * k);
+  Pk<N> rx, ry, ux, uy, vx, vy;
+  SOCSIM_EACH {
+    const int o = m + Simd::kLanes * k;
+    rx.v[k] = Simd::load(in[k], dx + o);
+    ry.v[k] = Simd::load(in[k], dy + o);
+    ux.v[k] = Simd::load(in[k], tie_x + o);
+    uy.v[k] = Simd::load(in[k], tie_y + o);
+    vx.v[k] = Simd::load(in[k], dvx + o);
+    vy.v[k] = Simd::load(in[k], dvy + o);
+  }
+  const Pk<N> zero = splat<N>(0.0f);
+  const Pk<N> one = splat<N>(1.0f);
+  const Pk<N> d = root(rx * rx + ry * ry);
+  const Pk<N> tiny = splat<N>(1e-30f);
+  const Pk<N> inv_d = one / select(d < tiny, tiny, d);
+  const Pk<N> ex = rx * inv_d + ux;
+  const Pk<N> ey = ry * inv_d + uy;
+  const Pk<N> lambda = splat<N>(p.lambda);
+  const Pk<N> ix = lambda * vx + ex;
+  const Pk<N> iy = lambda * vy + ey;
+  const Pk<N> il2 = ix * ix + iy * iy;
+  const Mk<N> live = il2 > splat<N>(1e-12f);
+  const Pk<N> il = root(il2);
+  const Pk<N> floor = splat<N>(1e-6f);
+  const Pk<N> inv_il = one / select(il < floor, floor, il);
+  const Pk<N> tx = ix * inv_il;
+  const Pk<N> ty = iy * inv_il;
+  const Pk<N> b = splat<N>(p.gamma) * il;
+  const Pk<N> theta = atan2_lanes(tx * ey - ty * ex, tx * ex + ty * ey);
+  const Pk<N> base = -d * inv_il * splat<N>(p.inv_gamma);
+  const Pk<N> nb = splat<N>(p.n) * b * theta;
+  const Pk<N> npb = splat<N>(p.n_prime) * b * theta;
+  const Pk<N> along = -exp_lanes(base - npb * npb);
+  const Pk<N> sign = select(theta > zero, one, select(theta < zero, splat<N>(-1.0f), zero));
+  const Pk<N> side = -sign * exp_lanes(base - nb * nb);
+  const Pk<N> scale = splat<N>(p.factor * kForceQuantum);
+  const Pk<N> gx = select(live, scale * (along * tx - side * ty), zero);
+  const Pk<N> gy = select(live, scale * (along * ty + side * tx), zero);
+  SOCSIM_EACH {
+    const int o = m + Simd::kLanes * k;
+    Simd::store_truncated(in[k], fx + o, gx.v[k]);
+    Simd::store_truncated(in[k], fy + o, gy.v[k]);
+  }
+}
+
+// Lanes [m, count): N vectors at a time while the batch fills more than N − 1, then the rest with
+// fewer, so no vector runs without a lane in the batch.
+template <int N>
+SOCSIM_LANES void kernel_from(const SocialParams& p, int m, int count, const float* dx, const float* dy,
+                              const float* dvx, const float* dvy, const float* tie_x, const float* tie_y,
+                              std::int32_t* fx, std::int32_t* fy) {
+  for (; count - m > Simd::kLanes * (N - 1); m += Simd::kLanes * N)
+    kernel_lanes<N>(p, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  if constexpr (N > 1) kernel_from<N - 1>(p, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+}
+
+__attribute__((target(SOCSIM_LANES_TARGET))) void social_kernel_lanes(const SocialParams& p, int count,
+                                                                      const float* dx, const float* dy,
+                                                                      const float* dvx, const float* dvy,
+                                                                      const float* tie_x, const float* tie_y,
+                                                                      std::int32_t* fx, std::int32_t* fy) {
+  kernel_from<Simd::kInterleave>(p, 0, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+}
+
+#undef SOCSIM_EACH
+#undef SOCSIM_LANES
+
+}  // namespace SOCSIM_LANES_NAMESPACE
+}  // namespace
+}  // namespace socsim::crowd
