@@ -29,8 +29,9 @@ namespace socsim::crowd {
 // IEEE operations and gives identical bits (tests/core/crowd compares them with the scalar clone).
 SOCSIM_CLONES
 void social_kernel_portable(const SocialParams& p, int count, const float* __restrict dx,
-                            const float* __restrict dy, const float* __restrict dvx, const float* __restrict dvy,
-                            const float* __restrict tie_x, const float* __restrict tie_y, std::int32_t* __restrict fx,
+                            const float* __restrict dy, const float* __restrict dvx,
+                            const float* __restrict dvy, const float* __restrict tie_x,
+                            const float* __restrict tie_y, std::int32_t* __restrict fx,
                             std::int32_t* __restrict fy) {
   const float lambda = p.lambda;
   const float gamma = p.gamma;
@@ -207,9 +208,9 @@ void social_kernel(const SocialParams& p, int count, const float* __restrict dx,
 
 SOCSIM_CLONES
 float headway_speed_cap(int count, const float* __restrict dx, const float* __restrict dy,
-                        const float* __restrict dvx, const float* __restrict dvy, float ex, float ey, float band,
-                        float speed_along, float oncoming, float distance, float inv_time, float anticipation,
-                        float best) {
+                        const float* __restrict dvx, const float* __restrict dvy, float ex, float ey,
+                        float band, float speed_along, float oncoming, float distance, float inv_time,
+                        float anticipation, float best) {
   const float band2 = band * band;
   // One running minimum per lane of 8 and the selects written as integer masks: GCC turned the
   // boolean form of this loop into branches and left it scalar (18 % of a step in `perf`).
@@ -245,10 +246,10 @@ float headway_speed_cap(int count, const float* __restrict dx, const float* __re
 }
 
 SOCSIM_CLONES
-std::int64_t
-oncoming_side_push(int count, const float* __restrict dx, const float* __restrict dy,
-                   const float* __restrict dvx, const float* __restrict dvy, float ex, float ey, float band,
-                   float speed_along, float oncoming, float bias, float factor, float inv_range) {
+std::int64_t oncoming_side_push(int count, const float* __restrict dx, const float* __restrict dy,
+                                const float* __restrict dvx, const float* __restrict dvy, float ex, float ey,
+                                float band, float speed_along, float oncoming, float bias, float factor,
+                                float inv_range) {
   const float band2 = band * band;
   const float scale = factor * kForceQuantum;
   // In blocks of 8 lanes with one integer sum per lane (as headway_speed_cap): no scalar tail
@@ -281,9 +282,9 @@ oncoming_side_push(int count, const float* __restrict dx, const float* __restric
 }
 
 SOCSIM_CLONES
-AheadTerms
-ahead_terms(int count, const float* __restrict dx, const float* __restrict dy, const float* __restrict dvx,
-            const float* __restrict dvy, const AheadParams& p, float best) {
+AheadTerms ahead_terms(int count, const float* __restrict dx, const float* __restrict dy,
+                       const float* __restrict dvx, const float* __restrict dvy, const AheadParams& p,
+                       float best) {
   // The lane computations of headway_speed_cap and oncoming_side_push, sharing the loads and the
   // projections on the walking direction.
   const float ex = p.ex, ey = p.ey, speed_along = p.speed_along, oncoming = p.oncoming;
