@@ -1009,9 +1009,9 @@ struct GridScan {
     const std::int64_t y_hi = clamp_y((y + c - origin_y) * inv_cell);
     // Cells are at least a third of the cut-off tall, so a scan spans at most 8 rows (10 leaves
     // room for rounding).
-    std::array<GatherRange, 10> ranges{};
+    GatherRange ranges[10];  // the first `count` are set
     int count = 0;
-    for (std::int64_t row = y_lo; row <= y_hi && count < static_cast<int>(ranges.size()); ++row) {
+    for (std::int64_t row = y_lo; row <= y_hi && count < static_cast<int>(std::size(ranges)); ++row) {
       const double band_lo = origin_y + static_cast<double>(row) * cell;
       const double gap = std::max({0.0, band_lo - y, y - (band_lo + cell)}) - 1e-9;
       const double half = gap > 0.0 ? std::sqrt(std::max(0.0, c * c - gap * gap)) + 1e-9 : c;
@@ -1020,7 +1020,7 @@ struct GridScan {
       ranges[static_cast<std::size_t>(count++)] = {start[static_cast<std::size_t>(row * nx + x_lo)],
                                                    start[static_cast<std::size_t>(row * nx + x_hi + 1)]};
     }
-    s.scan(arrays, ranges.data(), count, self);
+    s.scan(arrays, ranges, count, self);
   }
 };
 
@@ -1100,7 +1100,10 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   {
     const double wc2 = config_.wall_cutoff * config_.wall_cutoff;
     const double sweep = std::min(goal_distance, config_.wall_cutoff);
-    std::array<Vec2, 8> vertices{};
+    // Wall ends already applied (at most 8 kept); not zeroed, only the first vertex_count are read
+    // (zeroing them cost 2 % of a step).
+    double vertex_x[8];
+    double vertex_y[8];
     std::size_t vertex_count = 0;
     const double zr2 = fp.zipper_reach * fp.zipper_reach;
     for (std::uint32_t w : near_walls) {
@@ -1130,9 +1133,13 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
           hidden = !nearest_point_is({x, y}, v, walls_[wall_links_[k]]);
         if (hidden) continue;
         bool seen = false;
-        for (std::size_t k = 0; k < vertex_count; ++k) seen = seen || vertices[k] == v;
+        for (std::size_t k = 0; k < vertex_count; ++k)
+          seen = seen || (vertex_x[k] == v.x && vertex_y[k] == v.y);
         if (seen) continue;
-        if (vertex_count < vertices.size()) vertices[vertex_count++] = v;
+        if (vertex_count < std::size(vertex_x)) {
+          vertex_x[vertex_count] = v.x;
+          vertex_y[vertex_count++] = v.y;
+        }
       }
       double nx = 0.0;
       double ny = 0.0;
