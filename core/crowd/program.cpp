@@ -217,7 +217,7 @@ Result<Program> program_from_json(const Json& j) {
       }
       c.only_keys(a, ptr,
                   {"name", "role", "position", "spawn", "count", "yaw", "speed", "radius", "group_id",
-                   "goals", "cyclic_goals", "goal_radius", "behavior", "tags"});
+                   "goals", "cyclic_goals", "goal_radius", "on_arrival", "behavior", "tags"});
       ProgramAgent agent;
       agent.pointer = ptr;
       agent.name = c.string(a, ptr, "name", false, 0, 128).value_or("");
@@ -236,6 +236,14 @@ Result<Program> program_from_json(const Json& j) {
       agent.goals = r.goals(a, ptr);
       agent.cyclic_goals = c.boolean(a, ptr, "cyclic_goals", false).value_or(true);
       agent.goal_radius = c.number(a, ptr, "goal_radius", false, 0.01, 100.0).value_or(0.3);
+      if (auto arrival = c.string(a, ptr, "on_arrival", false, 1, 16)) {
+        if (*arrival == "exit")
+          agent.exit_at_goal = true;
+        else if (*arrival == "stand")
+          agent.exit_at_goal = false;
+        else
+          c.add(ptr + "/on_arrival", "must be 'exit' or 'stand'");
+      }
       if (a.contains("behavior")) agent.behavior = r.tree(a["behavior"], ptr + "/behavior", true);
       if (const Json* tags = c.array(a, ptr, "tags", false, 64)) {
         for (std::size_t t = 0; t < tags->size(); ++t) {

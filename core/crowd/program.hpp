@@ -51,6 +51,9 @@ struct ProgramAgent {
   std::vector<ProgramPoint> goals;
   bool cyclic_goals = true;
   double goal_radius = 0.3;
+  // At the last goal (non-cyclic goals): true = leave the simulation there (activity "exited"),
+  // false = stay. Unset: leave when the last goal is a place of type "exit", else stay.
+  std::optional<bool> exit_at_goal;
   std::optional<ProgramTree> behavior;  // none: walk the goals (HuNavSim's regular navigation)
   std::vector<std::string> tags;
   std::string pointer;

@@ -316,6 +316,18 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       continue;
     }
     const double radius = a.radius.value_or(roles.at(*role).radius);
+    // Whether the agent leaves at its last goal: as the program says, else when that goal is an
+    // exit (a person walking to an exit goes out there, rather than standing in the way of
+    // those behind).
+    bool leaves = false;
+    if (!a.cyclic_goals && !a.goals.empty()) {
+      if (a.exit_at_goal) {
+        leaves = *a.exit_at_goal;
+      } else if (const auto* name = std::get_if<std::string>(&a.goals.back().where)) {
+        const auto place = env.place(*name);
+        leaves = place && place->type == "exit";
+      }
+    }
     for (std::size_t k = 0; k < a.count; ++k, ++index) {
       AgentSpec spec;
       spec.role = a.role;
@@ -348,7 +360,7 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       run->agents_.push_back(RunnerAgent{*id, AgentKind::kSpotlight,
                                          a.count > 1 ? a.name + "#" + std::to_string(k) : a.name, a.pointer});
       pending.push_back(Pending{tree, goals, a.cyclic_goals});
-      run->exit_at_goal_.push_back(0);
+      run->exit_at_goal_.push_back(leaves ? 2 : 0);
     }
   }
   if (!b.ok()) return tl::unexpected(b.failure());
@@ -470,7 +482,9 @@ void ScenarioRunner::decide() {
     const BtStatus status = trees_[i]->tick(now);
     std::string leaf = trees_[i]->running_leaf();
     if (sim_->state(id).metadata.bt_node != leaf) (void)sim_->set_bt_node(id, std::move(leaf));
-    if (exit_at_goal_[i] && status == BtStatus::kSuccess) (void)sim_->set_activity(id, Activity::kExited);
+    if (exit_at_goal_[i] != 0 && status == BtStatus::kSuccess &&
+        (exit_at_goal_[i] == 1 || !env.current_goal(id)))
+      (void)sim_->set_activity(id, Activity::kExited);
   }
   if (const auto robot = env.robot(); robot && sim_->active(*robot) && !robot_goals_.empty()) {
     const Vec2 p = sim_->position(*robot);

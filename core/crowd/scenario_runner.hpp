@@ -86,6 +86,8 @@ class ScenarioRunner {
   std::vector<BtDocument> documents_;
   std::vector<RunnerAgent> agents_;
   std::vector<std::optional<BtTree>> trees_;
+  // Per agent: 0 stays, 1 leaves when its tree succeeds (ambient groups), 2 leaves when its tree
+  // succeeds with its goal list done (spotlight agents with on_arrival "exit").
   std::vector<std::uint8_t> exit_at_goal_;
   std::vector<AgentId> driven_robots_;
   std::vector<Goal> robot_goals_;

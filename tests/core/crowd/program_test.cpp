@@ -50,7 +50,7 @@ TEST(Program, ExamplesMatchTheSchemaParseAndRun) {
 TEST(Program, EveryBadFieldIsReportedWithItsPointer) {
   auto p = program_from_text(R"({
     "dt": 0.5, "colour": "red",
-    "agents": [{"position": [0, 0], "spawn": "lobby"}, {"position": [1], "goals": [3, {"place": "a", "position": [0, 0]}]},
+    "agents": [{"position": [0, 0], "spawn": "lobby", "on_arrival": "out"}, {"position": [1], "goals": [3, {"place": "a", "position": [0, 0]}]},
                {"spawn": "lobby", "count": 2, "behavior": {"xml": "<root/>", "file": "a.xml"}}],
     "groups": [{"id": 1, "agents": [0, 7]}],
     "ambient_groups": [{"name": "a", "start": [], "goal": ["x"], "size": 3, "on_arrival": "fly",
@@ -59,10 +59,11 @@ TEST(Program, EveryBadFieldIsReportedWithItsPointer) {
   ASSERT_FALSE(p);
   std::vector<std::string> pointers;
   for (const FieldError& e : p.error().errors) pointers.push_back(e.pointer);
-  EXPECT_THAT(pointers, ElementsAre("/colour", "/dt", "/agents/0", "/agents/1/position", "/agents/1/goals/0",
-                                    "/agents/1/goals/1", "/agents/2/behavior", "/groups/0/agents/1",
-                                    "/ambient_groups/0/start", "/ambient_groups/0/on_arrival",
-                                    "/ambient_groups/0/field/values/1/0", "/robot/position", "/robot/speed"));
+  EXPECT_THAT(pointers,
+              ElementsAre("/colour", "/dt", "/agents/0", "/agents/0/on_arrival", "/agents/1/position",
+                          "/agents/1/goals/0", "/agents/1/goals/1", "/agents/2/behavior",
+                          "/groups/0/agents/1", "/ambient_groups/0/start", "/ambient_groups/0/on_arrival",
+                          "/ambient_groups/0/field/values/1/0", "/robot/position", "/robot/speed"));
   EXPECT_EQ(p.error().code, ErrorCode::kValidation);
 
   auto syntax = program_from_text("{\"agents\": [}");

@@ -1,6 +1,7 @@
 // ScenarioRunner: frames are bit-identical for the same inputs and seed (also across thread
 // counts), the seed matters, and the queue scenario serves patients in the order they joined,
 // one at a time, after timed service.
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -61,6 +62,52 @@ TEST(ScenarioRunner, SameInputsAndSeedGiveBitIdenticalFrames) {
     EXPECT_EQ(0, std::memcmp(a.data(), c.data(), a.size() * sizeof(double)));
     EXPECT_NE(a, d);
   }
+}
+
+// A person whose last goal is an exit leaves the simulation there (activity "exited") instead of
+// standing in the way of those behind; on_arrival says otherwise where given, and an agent with
+// several goals leaves only at the last one.
+TEST(ScenarioRunner, AgentsLeaveAtAnExitTheyWalkTo) {
+  auto w = world::world_from_yaml(R"(name: "exit test"
+units: {length: m, angle: rad}
+origin: [0, 0]
+zones:
+  - {name: "hall", type: "corridor", polygon: [[0, 0], [12, 0], [12, 4], [0, 4]]}
+segmentation:
+  - {name: "way_out", kind: "exit", polygon: [[10, 1], [12, 1], [12, 3], [10, 3]]}
+  - {name: "desk", kind: "counter_area", polygon: [[5, 3], [6, 3], [6, 4], [5, 4]]}
+)");
+  ASSERT_TRUE(w) << w.error().message();
+  auto p = program_from_text(R"({"agents": [
+    {"name": "leaver", "position": [1, 1], "goals": ["way_out"], "cyclic_goals": false},
+    {"name": "stayer", "position": [1, 2], "goals": ["way_out"], "cyclic_goals": false, "on_arrival": "stand"},
+    {"name": "errand", "position": [1, 3], "goals": ["desk", [3, 2]], "cyclic_goals": false, "on_arrival": "exit"},
+    {"name": "walker", "position": [2, 1], "goals": ["way_out", [2, 1]]},
+    {"name": "visitor", "position": [2, 3], "goals": ["desk"], "cyclic_goals": false}]})");
+  ASSERT_TRUE(p) << p.error().message();
+  auto created = ScenarioRunner::create(&*w, *p, options(3));
+  ASSERT_TRUE(created) << created.error().message();
+  ScenarioRunner& run = **created;
+  std::map<std::uint32_t, double> exited_at;
+  bool errand_left_early = false;
+  for (int k = 0; k < 800; ++k) {  // 40 s
+    run.step();
+    for (std::uint32_t i = 0; i < 5; ++i) {
+      const PedestrianState s = run.sim().state(AgentId(i));
+      if (s.activity == Activity::kExited && exited_at.count(i) == 0) {
+        exited_at[i] = run.sim().time();
+        if (i == 2) errand_left_early = std::hypot(s.pose.x - 3.0, s.pose.y - 2.0) > 1.0;
+      }
+    }
+  }
+  EXPECT_EQ(exited_at.count(0), 1u) << "the leaver walked to the exit and went out";
+  EXPECT_EQ(exited_at.count(1), 0u) << "on_arrival stand: stays at the exit";
+  EXPECT_EQ(exited_at.count(2), 1u) << "on_arrival exit: leaves at its last goal";
+  EXPECT_FALSE(errand_left_early) << "not at the desk, its first goal";
+  EXPECT_EQ(exited_at.count(3), 0u) << "cyclic goals never end";
+  EXPECT_EQ(exited_at.count(4), 0u) << "a counter is not an exit";
+  const PedestrianState stayer = run.sim().state(AgentId(1));
+  EXPECT_GT(stayer.pose.x, 9.5) << "the stayer stands at the exit";
 }
 
 // Paper 001 Table II "Queuing": five patients join the reception queue and are served one by
