@@ -28,6 +28,16 @@ class Reader {
     return p;
   }
 
+  // "on_arrival": "exit" (true) or "stand" (false); nullopt when absent or wrong.
+  std::optional<bool> on_arrival(const Json& a, const std::string& ptr) {
+    const auto arrival = c.string(a, ptr, "on_arrival", false, 1, 16);
+    if (!arrival) return std::nullopt;
+    if (*arrival == "exit") return true;
+    if (*arrival == "stand") return false;
+    c.add(ptr + "/on_arrival", "must be 'exit' or 'stand'");
+    return std::nullopt;
+  }
+
   std::optional<ProgramPoint> target(const Json& v, const std::string& ptr) {
     if (v.is_string()) {
       if (v.get_ref<const std::string&>().empty()) {
@@ -236,14 +246,7 @@ Result<Program> program_from_json(const Json& j) {
       agent.goals = r.goals(a, ptr);
       agent.cyclic_goals = c.boolean(a, ptr, "cyclic_goals", false).value_or(true);
       agent.goal_radius = c.number(a, ptr, "goal_radius", false, 0.01, 100.0).value_or(0.3);
-      if (auto arrival = c.string(a, ptr, "on_arrival", false, 1, 16)) {
-        if (*arrival == "exit")
-          agent.exit_at_goal = true;
-        else if (*arrival == "stand")
-          agent.exit_at_goal = false;
-        else
-          c.add(ptr + "/on_arrival", "must be 'exit' or 'stand'");
-      }
+      agent.exit_at_goal = r.on_arrival(a, ptr);
       if (a.contains("behavior")) agent.behavior = r.tree(a["behavior"], ptr + "/behavior", true);
       if (const Json* tags = c.array(a, ptr, "tags", false, 64)) {
         for (std::size_t t = 0; t < tags->size(); ++t) {
@@ -310,14 +313,7 @@ Result<Program> program_from_json(const Json& j) {
       g.resolution = static_cast<int>(c.integer(a, ptr, "resolution", false, 8, 1024).value_or(64));
       g.variation = c.number(a, ptr, "variation", false, 0.0, 1.5707963267948966).value_or(0.0);
       g.tolerance = c.number(a, ptr, "tolerance", false, 0.01, 10.0).value_or(0.5);
-      if (auto arrival = c.string(a, ptr, "on_arrival", false, 1, 16)) {
-        if (*arrival == "exit")
-          g.exit_at_goal = true;
-        else if (*arrival == "stand")
-          g.exit_at_goal = false;
-        else
-          c.add(ptr + "/on_arrival", "must be 'exit' or 'stand'");
-      }
+      g.exit_at_goal = r.on_arrival(a, ptr).value_or(true);
       if (a.contains("field")) g.field = r.field(a["field"], ptr + "/field");
       if (a.contains("behavior")) g.behavior = r.tree(a["behavior"], ptr + "/behavior", true);
       total += g.size;
