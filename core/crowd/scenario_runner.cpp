@@ -360,7 +360,7 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       run->agents_.push_back(RunnerAgent{*id, AgentKind::kSpotlight,
                                          a.count > 1 ? a.name + "#" + std::to_string(k) : a.name, a.pointer});
       pending.push_back(Pending{tree, goals, a.cyclic_goals});
-      run->exit_at_goal_.push_back(leaves ? 2 : 0);
+      run->leaving_.push_back(leaves ? Leaving::kAtLastGoal : Leaving::kNever);
     }
   }
   if (!b.ok()) return tl::unexpected(b.failure());
@@ -402,7 +402,7 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       run->agents_.push_back(
           RunnerAgent{*id, AgentKind::kAmbient, group.name + "#" + std::to_string(k), group.pointer});
       pending.push_back(Pending{tree, {}, false});
-      run->exit_at_goal_.push_back(group.exit_at_goal ? 1 : 0);
+      run->leaving_.push_back(group.exit_at_goal ? Leaving::kWhenTreeSucceeds : Leaving::kNever);
     }
   }
 
@@ -427,7 +427,7 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
     run->driven_robots_.push_back(*id);
     run->agents_.push_back(RunnerAgent{*id, AgentKind::kRobot, r.name, pointer});
     pending.push_back(Pending{std::nullopt, {}, false});
-    run->exit_at_goal_.push_back(0);
+    run->leaving_.push_back(Leaving::kNever);
   }
   if (program.robot && !driven) {
     const ProgramRobot& r = *program.robot;
@@ -446,7 +446,7 @@ Result<std::unique_ptr<ScenarioRunner>> ScenarioRunner::create(const world::Worl
       robot = *id;
       run->agents_.push_back(RunnerAgent{*id, AgentKind::kRobot, "robot", r.pointer});
       pending.push_back(Pending{std::nullopt, run->robot_goals_, r.cyclic_goals});
-      run->exit_at_goal_.push_back(0);
+      run->leaving_.push_back(Leaving::kNever);
       run->robot_cyclic_ = r.cyclic_goals;
     }
   }
@@ -482,8 +482,8 @@ void ScenarioRunner::decide() {
     const BtStatus status = trees_[i]->tick(now);
     std::string leaf = trees_[i]->running_leaf();
     if (sim_->state(id).metadata.bt_node != leaf) (void)sim_->set_bt_node(id, std::move(leaf));
-    if (exit_at_goal_[i] != 0 && status == BtStatus::kSuccess &&
-        (exit_at_goal_[i] == 1 || !env.current_goal(id)))
+    if (status == BtStatus::kSuccess && (leaving_[i] == Leaving::kWhenTreeSucceeds ||
+                                         (leaving_[i] == Leaving::kAtLastGoal && !env.current_goal(id))))
       (void)sim_->set_activity(id, Activity::kExited);
   }
   if (const auto robot = env.robot(); robot && sim_->active(*robot) && !robot_goals_.empty()) {

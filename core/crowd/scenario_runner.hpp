@@ -86,9 +86,13 @@ class ScenarioRunner {
   std::vector<BtDocument> documents_;
   std::vector<RunnerAgent> agents_;
   std::vector<std::optional<BtTree>> trees_;
-  // Per agent: 0 stays, 1 leaves when its tree succeeds (ambient groups), 2 leaves when its tree
-  // succeeds with its goal list done (spotlight agents with on_arrival "exit").
-  std::vector<std::uint8_t> exit_at_goal_;
+  // When each agent leaves the simulation (activity "exited").
+  enum class Leaving : std::uint8_t {
+    kNever,
+    kWhenTreeSucceeds,  // ambient groups with on_arrival "exit": at the goal region
+    kAtLastGoal,        // spotlight agents: the tree succeeds with the goal list done
+  };
+  std::vector<Leaving> leaving_;
   std::vector<AgentId> driven_robots_;
   std::vector<Goal> robot_goals_;
   std::size_t robot_goal_ = 0;
