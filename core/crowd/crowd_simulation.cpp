@@ -360,6 +360,9 @@ class NeighbourSums {
     // them neither ahead nor oncoming, (dx, dy)·e = 0), so no kernel runs a scalar tail.
     const int padded = (count_ + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
     for (int m = count_; m < padded; ++m) batch_.dx[m] = batch_.dy[m] = batch_.dvx[m] = batch_.dvy[m] = 0.0f;
+    static constexpr float kNoTies[kBatch] = {};
+    const float* tie_x = tied ? batch_.tie_x : kNoTies;
+    const float* tie_y = tied ? batch_.tie_y : kNoTies;
     if (heading_) {
       const AheadParams ahead{ex_,
                               ey_,
@@ -373,14 +376,15 @@ class NeighbourSums {
                               side_bias_,
                               side_factor_,
                               side_inv_range_};
-      const AheadTerms terms =
-          ahead_terms(padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, ahead, speed_cap_);
+      // The social force and the terms of the people ahead in one pass over the batch.
+      const AheadTerms terms = social_kernel_with_ahead(params_, ahead, speed_cap_, padded, batch_.dx, batch_.dy,
+                                                        batch_.dvx, batch_.dvy, tie_x, tie_y, batch_.fx, batch_.fy);
       if (headway_on_) speed_cap_ = terms.speed_cap;
       side_push_ += terms.side_push;  // 0 when side_factor is 0
+    } else {
+      social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, tie_x, tie_y, batch_.fx,
+                    batch_.fy);
     }
-    static constexpr float kNoTies[kBatch] = {};
-    social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy,
-                  tied ? batch_.tie_x : kNoTies, tied ? batch_.tie_y : kNoTies, batch_.fx, batch_.fy);
     close_count_ = 0;
     std::int64_t sx = 0;
     std::int64_t sy = 0;

@@ -118,6 +118,18 @@ struct Simd {
   SOCSIM_SIMD("avx512f") void store_truncated(lanes in, std::int32_t* p, vec g) {
     _mm512_mask_storeu_epi32(p, in, _mm512_mask_cvttps_epi32(_mm512_setzero_si512(), 0xFFFF, g));
   }
+  // For the ahead terms: masks combined, integer lanes (running minimum, sums).
+  using ivec = __m512i;
+  SOCSIM_SIMD("avx512f") mask both(mask a, mask b) { return static_cast<mask>(a & b); }
+  SOCSIM_SIMD("avx512f") mask greater_equal(vec a, vec b) { return _mm512_cmp_ps_mask(a, b, _CMP_GE_OQ); }
+  SOCSIM_SIMD("avx512f") bool any(mask m) { return m != 0; }
+  SOCSIM_SIMD("avx512f") ivec iset1(std::int32_t x) { return _mm512_set1_epi32(x); }
+  SOCSIM_SIMD("avx512f") ivec bits(vec a) { return _mm512_castps_si512(a); }
+  SOCSIM_SIMD("avx512f") ivec truncate(vec a) { return _mm512_mask_cvttps_epi32(_mm512_setzero_si512(), 0xFFFF, a); }
+  SOCSIM_SIMD("avx512f") ivec imin(ivec a, ivec b) { return _mm512_min_epi32(a, b); }
+  SOCSIM_SIMD("avx512f") ivec iadd(ivec a, ivec b) { return _mm512_add_epi32(a, b); }
+  SOCSIM_SIMD("avx512f") ivec iselect(mask m, ivec t, ivec f) { return _mm512_mask_blend_epi32(m, f, t); }
+  SOCSIM_SIMD("avx512f") void istore(std::int32_t* p, ivec v) { _mm512_storeu_si512(p, v); }
 };
 }  // namespace avx512
 
@@ -161,6 +173,19 @@ struct Simd {
     else
       _mm256_maskstore_epi32(p, in.mask, v);
   }
+  using ivec = __m256i;
+  SOCSIM_SIMD("avx2") mask both(mask a, mask b) { return _mm256_and_ps(a, b); }
+  SOCSIM_SIMD("avx2") mask greater_equal(vec a, vec b) { return _mm256_cmp_ps(a, b, _CMP_GE_OQ); }
+  SOCSIM_SIMD("avx2") bool any(mask m) { return _mm256_movemask_ps(m) != 0; }
+  SOCSIM_SIMD("avx2") ivec iset1(std::int32_t x) { return _mm256_set1_epi32(x); }
+  SOCSIM_SIMD("avx2") ivec bits(vec a) { return _mm256_castps_si256(a); }
+  SOCSIM_SIMD("avx2") ivec truncate(vec a) { return _mm256_cvttps_epi32(a); }
+  SOCSIM_SIMD("avx2") ivec imin(ivec a, ivec b) { return _mm256_min_epi32(a, b); }
+  SOCSIM_SIMD("avx2") ivec iadd(ivec a, ivec b) { return _mm256_add_epi32(a, b); }
+  SOCSIM_SIMD("avx2") ivec iselect(mask m, ivec t, ivec f) {
+    return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(f), _mm256_castsi256_ps(t), m));
+  }
+  SOCSIM_SIMD("avx2") void istore(std::int32_t* p, ivec v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v); }
 };
 }  // namespace avx2
 
@@ -195,15 +220,33 @@ void social_kernel(const SocialParams& p, int count, const float* __restrict dx,
     return __builtin_cpu_supports("avx2") ? Isa::kAvx2 : Isa::kOther;
   }();
   if (isa == Isa::kAvx512) {
-    avx512::social_kernel_lanes(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+    (void)avx512::social_kernel_lanes(p, nullptr, 0.0f, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
     return;
   }
   if (isa == Isa::kAvx2) {
-    avx2::social_kernel_lanes(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+    (void)avx2::social_kernel_lanes(p, nullptr, 0.0f, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
     return;
   }
 #endif
   social_kernel_portable(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+}
+
+AheadTerms social_kernel_with_ahead(const SocialParams& p, const AheadParams& ahead, float best, int count,
+                                    const float* __restrict dx, const float* __restrict dy,
+                                    const float* __restrict dvx, const float* __restrict dvy,
+                                    const float* __restrict tie_x, const float* __restrict tie_y,
+                                    std::int32_t* __restrict fx, std::int32_t* __restrict fy) {
+#ifdef SOCSIM_KERNEL_BY_HAND
+  static const int isa = [] {
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f")) return 512;
+    return __builtin_cpu_supports("avx2") ? 256 : 0;
+  }();
+  if (isa == 512) return avx512::social_kernel_lanes(p, &ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  if (isa == 256) return avx2::social_kernel_lanes(p, &ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+#endif
+  social_kernel_portable(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  return ahead_terms(count, dx, dy, dvx, dvy, ahead, best);
 }
 
 SOCSIM_CLONES

@@ -133,12 +133,59 @@ SOCSIM_LANES Pk<N> atan2_lanes(const Pk<N>& y, const Pk<N>& x) {  // fast_atan2f
   return select(y < zero, -angle, angle);
 }
 
+// Running per-lane results of the ahead terms (ahead_terms in social_kernel.cpp): the smallest
+// headway cap as the bits of a non-negative float (INT32_MAX where no neighbour counts) and the
+// integer sum of the side pushes. A lane sees at most kBatch / kLanes <= 8 neighbours, so its sum
+// stays within 32 bits (|push| <= 100·2^20).
+struct AheadLanes {
+  typename Simd::ivec least, sum;
+};
+
+// ahead_terms' lane computation on N vectors (same operations, same order, same bits), from the
+// kernel's loads and its distance d = √(dx² + dy²), which ahead_terms computes the same way. The
+// side push's exponential is evaluated only when some lane meets an oncoming walker: the others
+// are masked out after it anyway.
+template <int N>
+SOCSIM_LANES void ahead_lanes(const AheadParams& a, const Pk<N>& ox, const Pk<N>& oy, const Pk<N>& dvx,
+                              const Pk<N>& dvy, const Pk<N>& d, AheadLanes& acc) {
+  const Pk<N> zero = splat<N>(0.0f);
+  const Pk<N> ex = splat<N>(a.ex);
+  const Pk<N> ey = splat<N>(a.ey);
+  const Pk<N> ahead = ox * ex + oy * ey;
+  const Pk<N> side = ox * ey - oy * ex;
+  const Pk<N> closing = dvx * ex + dvy * ey;
+  const Pk<N> toward = splat<N>(a.speed_along) - closing;
+  const Pk<N> raw = ((d - splat<N>(a.distance)) - splat<N>(a.anticipation) * closing) * splat<N>(a.inv_time);
+  const Pk<N> cap = select(raw < zero, zero, raw);  // std::max(raw, 0.0f)
+  const Mk<N> in_front = ahead > zero;
+  const Pk<N> side2 = side * side;
+  const Pk<N> oncoming = splat<N>(-a.oncoming);
+  const Pk<N> band2 = splat<N>(a.headway_band * a.headway_band);
+  const Pk<N> side_band2 = splat<N>(a.side_band * a.side_band);
+  bool any_meets = false;
+  typename Simd::mask meets[N];
+  SOCSIM_EACH {
+    const typename Simd::mask follows =
+        Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], band2.v[k])),
+                   Simd::greater_equal(toward.v[k], oncoming.v[k]));
+    acc.least = Simd::imin(acc.least, Simd::iselect(follows, Simd::bits(cap.v[k]), Simd::iset1(INT32_MAX)));
+    meets[k] = Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], side_band2.v[k])),
+                          Simd::less(toward.v[k], oncoming.v[k]));
+    any_meets = any_meets || Simd::any(meets[k]);
+  }
+  if (!any_meets) return;
+  const Pk<N> floored = select(ahead < zero, zero, ahead);  // std::max(ahead, 0.0f)
+  const Pk<N> magnitude = splat<N>(a.side_factor * kForceQuantum) * exp_lanes(-floored * splat<N>(a.side_inv_range));
+  const Pk<N> push = select(side < splat<N>(a.side_bias), magnitude, -magnitude);
+  SOCSIM_EACH acc.sum = Simd::iadd(acc.sum, Simd::iselect(meets[k], Simd::truncate(push.v[k]), Simd::iset1(0)));
+}
+
 // Lanes [m, m + L·N) of the batch (L = Simd::kLanes), those at or past `count` read as 0 and not
 // written; count − m > L·(N − 1), so every vector has a lane in the batch.
 template <int N>
-SOCSIM_LANES void kernel_lanes(const SocialParams& p, int m, int count, const float* dx, const float* dy,
-                               const float* dvx, const float* dvy, const float* tie_x, const float* tie_y,
-                               std::int32_t* fx, std::int32_t* fy) {
+SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m, int count,
+                               const float* dx, const float* dy, const float* dvx, const float* dvy,
+                               const float* tie_x, const float* tie_y, std::int32_t* fx, std::int32_t* fy) {
   typename Simd::lanes in[N];
   SOCSIM_EACH in[k] = Simd::first(count - m - Simd::kLanes * k);
   Pk<N> rx, ry, ux, uy, vx, vy;
@@ -154,6 +201,7 @@ SOCSIM_LANES void kernel_lanes(const SocialParams& p, int m, int count, const fl
   const Pk<N> zero = splat<N>(0.0f);
   const Pk<N> one = splat<N>(1.0f);
   const Pk<N> d = root(rx * rx + ry * ry);
+  if (ahead != nullptr) ahead_lanes(*ahead, rx, ry, vx, vy, d, acc);
   const Pk<N> tiny = splat<N>(1e-30f);
   const Pk<N> inv_d = one / select(d < tiny, tiny, d);
   const Pk<N> ex = rx * inv_d + ux;
@@ -189,20 +237,31 @@ SOCSIM_LANES void kernel_lanes(const SocialParams& p, int m, int count, const fl
 // Lanes [m, count): N vectors at a time while the batch fills more than N − 1, then the rest with
 // fewer, so no vector runs without a lane in the batch.
 template <int N>
-SOCSIM_LANES void kernel_from(const SocialParams& p, int m, int count, const float* dx, const float* dy,
-                              const float* dvx, const float* dvy, const float* tie_x, const float* tie_y,
-                              std::int32_t* fx, std::int32_t* fy) {
+SOCSIM_LANES void kernel_from(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m, int count,
+                              const float* dx, const float* dy, const float* dvx, const float* dvy,
+                              const float* tie_x, const float* tie_y, std::int32_t* fx, std::int32_t* fy) {
   for (; count - m > Simd::kLanes * (N - 1); m += Simd::kLanes * N)
-    kernel_lanes<N>(p, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
-  if constexpr (N > 1) kernel_from<N - 1>(p, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+    kernel_lanes<N>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  if constexpr (N > 1) kernel_from<N - 1>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
 }
 
-__attribute__((target(SOCSIM_LANES_TARGET))) void social_kernel_lanes(const SocialParams& p, int count,
-                                                                      const float* dx, const float* dy,
-                                                                      const float* dvx, const float* dvy,
-                                                                      const float* tie_x, const float* tie_y,
-                                                                      std::int32_t* fx, std::int32_t* fy) {
-  kernel_from<Simd::kInterleave>(p, 0, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+__attribute__((target(SOCSIM_LANES_TARGET))) AheadTerms social_kernel_lanes(
+    const SocialParams& p, const AheadParams* ahead, float best, int count, const float* dx, const float* dy,
+    const float* dvx, const float* dvy, const float* tie_x, const float* tie_y, std::int32_t* fx,
+    std::int32_t* fy) {
+  AheadLanes acc{Simd::iset1(std::bit_cast<std::int32_t>(best)), Simd::iset1(0)};
+  kernel_from<Simd::kInterleave>(p, ahead, acc, 0, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  alignas(64) std::int32_t least[Simd::kLanes];
+  alignas(64) std::int32_t sums[Simd::kLanes];
+  Simd::istore(least, acc.least);
+  Simd::istore(sums, acc.sum);
+  std::int32_t cap = least[0];
+  std::int64_t push = 0;
+  for (int l = 0; l < Simd::kLanes; ++l) {
+    cap = std::min(cap, least[l]);
+    push += sums[l];
+  }
+  return {std::bit_cast<float>(cap), push};
 }
 
 #undef SOCSIM_EACH

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -288,6 +289,44 @@ TEST(SocialKernel, AheadTermsEqualTheHeadwayCapAndTheSidePush) {
       }
     }
   }
+}
+
+// The step's single pass (social force and the ahead terms from the same loads) gives what the
+// two functions give one after the other, to the bit, with and without people ahead or oncoming.
+TEST(SocialKernel, FusedPassEqualsTheKernelAndTheAheadTerms) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const SocialParams sp{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, 2.1f};
+  int pushes = 0;
+  for (std::uint64_t seed : {41, 43, 47, 59}) {
+    PairBatch batch = random_batch(seed, 3.0, 0.8, 3.0, 0.6);
+    batch.dx[5] = batch.dy[5] = 0.0f;  // coincident: the tie direction applies
+    batch.tie_x[5] = 0.6f;
+    batch.tie_y[5] = -0.8f;
+    for (const float ex : {0.6f, -1.0f}) {
+      const float ey = ex > 0.0f ? 0.8f : 0.0f;
+      const AheadParams p{ex, ey, 1.2f, 0.1f, 0.345f, 0.4f, 1.0f / 0.6f, 2.5f, 0.7f, 0.1f, 1.5f, 1.0f / 1.5f};
+      for (int count : {kBatch, 40, 24, 13, 1}) {
+        for (float best : {inf, 0.7f}) {
+          PairBatch fused = batch;
+          const AheadTerms t = social_kernel_with_ahead(sp, p, best, count, fused.dx, fused.dy, fused.dvx, fused.dvy,
+                                                        fused.tie_x, fused.tie_y, fused.fx, fused.fy);
+          PairBatch apart = batch;
+          social_kernel(sp, count, apart.dx, apart.dy, apart.dvx, apart.dvy, apart.tie_x, apart.tie_y, apart.fx,
+                        apart.fy);
+          const AheadTerms u = ahead_terms(count, apart.dx, apart.dy, apart.dvx, apart.dvy, p, best);
+          const std::string where = "seed " + std::to_string(seed) + " count " + std::to_string(count);
+          EXPECT_EQ(std::bit_cast<std::uint32_t>(t.speed_cap), std::bit_cast<std::uint32_t>(u.speed_cap)) << where;
+          EXPECT_EQ(t.side_push, u.side_push) << where;
+          for (int m = 0; m < count; ++m) {
+            EXPECT_EQ(fused.fx[m], apart.fx[m]) << where << " lane " << m;
+            EXPECT_EQ(fused.fy[m], apart.fy[m]) << where << " lane " << m;
+          }
+          pushes += u.side_push != 0;
+        }
+      }
+    }
+  }
+  EXPECT_GT(pushes, 4);  // oncoming walkers were met, not only people ahead
 }
 
 // LightSFM's pair force is antisymmetric between agents with the same parameters, and the
