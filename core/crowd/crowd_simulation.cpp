@@ -37,6 +37,7 @@ struct CrowdSimulation::CellIndex {
   std::vector<double> x, y, vx, vy, r;
   std::vector<std::int32_t> group;
   std::vector<std::uint32_t> id;
+  std::vector<AgentInputs> inputs;  // of agents[k], in that order
 };
 
 struct CrowdSimulation::Images {
@@ -986,6 +987,15 @@ void CrowdSimulation::build_cells() {
       c.id[k] = i;
     }
   });
+  c.inputs.resize(c.agents.size());
+  pool_->parallel_for(c.agents.size(), 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) c.inputs[k] = inputs_of(c.agents[k]);
+  });
+}
+
+CrowdSimulation::AgentInputs CrowdSimulation::inputs_of(std::uint32_t i) const {
+  return {px_[i], py_[i], vx_[i], vy_[i], radius_[i], v0_[i],   vmax_[i],
+          gx_[i], gy_[i], gr_[i], group_[i],  role_[i], driven_[i], has_goal_[i]};
 }
 
 namespace {
@@ -1051,18 +1061,18 @@ FullScan full_scan(const ImagesT& m) {
 }  // namespace
 
 template <class Neighbours>
-void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbours,
+void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, const Neighbours& neighbours,
                                     ForceBreakdown* breakdown) {
-  const RoleParameters& role = roles_.at(role_[i]);
+  const RoleParameters& role = roles_.at(in.role);
   const ForceParameters& fp = role.forces;
-  const double x = px_[i];
-  const double y = py_[i];
-  const double vx = vx_[i];
-  const double vy = vy_[i];
-  const double r = radius_[i];
+  const double x = in.x;
+  const double y = in.y;
+  const double vx = in.vx;
+  const double vy = in.vy;
+  const double r = in.r;
   const double dt = config_.dt;
   ForceBreakdown f;
-  if (driven_[i] != kNotDriven) {  // moved from outside: stays where it was put
+  if (in.driven != kNotDriven) {  // moved from outside: stays where it was put
     if (breakdown != nullptr) *breakdown = f;
     npx_[i] = x;
     npy_[i] = y;
@@ -1079,11 +1089,11 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   double ey = 0.0;
   double goal_distance = 0.0;
   bool heading = false;
-  if (has_goal_[i]) {
-    const double dx = gx_[i] - x;
-    const double dy = gy_[i] - y;
+  if (in.has_goal) {
+    const double dx = in.gx - x;
+    const double dy = in.gy - y;
     const double dist2 = dx * dx + dy * dy;
-    if (dist2 > gr_[i] * gr_[i] && dist2 > kTiny2) {
+    if (dist2 > in.gr * in.gr && dist2 > kTiny2) {
       const double dist = std::sqrt(dist2);
       goal_distance = dist;
       ex = dx / dist;
@@ -1185,11 +1195,11 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   }
 
   // Social, group-repulsion and body forces from neighbours within the cut-off.
-  const std::int32_t g = group_[i];
+  const std::int32_t g = in.group;
   thread_local std::vector<NeighbourSums::Contact> contacts;
   {
     // Neighbours the two bodies could reach within one step (with 0.05 m to spare) are contacts.
-    const double margin = config_.hard_contact ? dt * (vmax_[i] + max_vmax_) + 0.05 : 0.0;
+    const double margin = config_.hard_contact ? dt * (in.vmax + max_vmax_) + 0.05 : 0.0;
     NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, max_radius_, fp,
                        config_.body_stiffness, ex, ey, margin,
                        (wall_sides == 3u ? fp.zipper_band : fp.headway_band) * r);
@@ -1197,7 +1207,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
     sums.flush();
     if (heading) {
       // The desired speed, capped by the headway to the person ahead (speed–headway adaptation).
-      double v0 = v0_[i];
+      double v0 = in.v0;
       if (fp.headway_time > 0.0) v0 = std::min(v0, sums.speed_cap());
       f.desired = {fp.desired_factor * (ex * v0 - vx) / fp.relaxation_time,
                    fp.desired_factor * (ey * v0 - vy) / fp.relaxation_time};
@@ -1245,7 +1255,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const Neighbours& neighbour
   double nvx = vx + total.x * dt;
   double nvy = vy + total.y * dt;
   const double s2 = nvx * nvx + nvy * nvy;
-  const double vmax = vmax_[i];
+  const double vmax = in.vmax;
   if (s2 > vmax * vmax) {
     const double k = s2 > 0.0 ? vmax / std::sqrt(s2) : 0.0;
     nvx *= k;
@@ -1464,7 +1474,7 @@ void CrowdSimulation::step() {
                       {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.group.data(),
                        c.id.data(), nullptr, static_cast<std::uint32_t>(c.x.size())}};
   pool_->parallel_for(c.agents.size(), 128, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) advance_agent(c.agents[k], scan, nullptr);
+    for (std::size_t k = begin; k < end; ++k) advance_agent(c.agents[k], c.inputs[k], scan, nullptr);
   });
   separate_bodies();
   finish_step();
@@ -1477,7 +1487,7 @@ void CrowdSimulation::step_reference() {
   const FullScan scan = full_scan(m);
   pool_->parallel_for(size(), 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
-      if (seen(i)) advance_agent(static_cast<std::uint32_t>(i), scan, nullptr);
+      if (seen(i)) advance_agent(static_cast<std::uint32_t>(i), inputs_of(static_cast<std::uint32_t>(i)), scan, nullptr);
   });
   separate_bodies();
   finish_step();
@@ -1490,7 +1500,7 @@ ForceBreakdown CrowdSimulation::forces(AgentId id) {
   Images m;
   build_images(m);
   const FullScan scan = full_scan(m);
-  advance_agent(id.value(), scan, &out);
+  advance_agent(id.value(), inputs_of(id.value()), scan, &out);
   return out;
 }
 

@@ -167,8 +167,18 @@ class CrowdSimulation {
   [[nodiscard]] bool near_low_end(double x) const;
   [[nodiscard]] bool near_high_end(double x) const;
   [[nodiscard]] double wrap_x(double x) const;
+  // What advance_agent reads of agent i itself, in one place: the step copies it in the order it
+  // visits agents (cell order), so those reads are sequential instead of a dozen scattered ones.
+  struct AgentInputs {
+    double x, y, vx, vy, r, v0, vmax, gx, gy, gr;
+    std::int32_t group;
+    std::uint16_t role;
+    std::uint8_t driven, has_goal;
+  };
+  [[nodiscard]] AgentInputs inputs_of(std::uint32_t i) const;
   template <class Neighbours>
-  void advance_agent(std::uint32_t i, const Neighbours& neighbours, ForceBreakdown* breakdown);
+  void advance_agent(std::uint32_t i, const AgentInputs& a, const Neighbours& neighbours,
+                     ForceBreakdown* breakdown);
 
   SimulationConfig config_;
   RoleTable roles_;
