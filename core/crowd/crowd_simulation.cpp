@@ -364,37 +364,27 @@ class NeighbourSums {
     static constexpr float kNoTies[kBatch] = {};
     const float* tie_x = tied ? batch_.tie_x : kNoTies;
     const float* tie_y = tied ? batch_.tie_y : kNoTies;
-    if (heading_) {
-      const AheadParams ahead{ex_,
-                              ey_,
-                              speed_along_,
-                              kOncoming,
-                              band_,
-                              headway_distance_,
-                              headway_inv_time_,
-                              headway_anticipation_,
-                              side_band_,
-                              side_bias_,
-                              side_factor_,
-                              side_inv_range_};
-      // The social force and the terms of the people ahead in one pass over the batch.
-      const AheadTerms terms = social_kernel_with_ahead(params_, ahead, speed_cap_, padded, batch_.dx, batch_.dy,
-                                                        batch_.dvx, batch_.dvy, tie_x, tie_y, batch_.fx, batch_.fy);
-      if (headway_on_) speed_cap_ = terms.speed_cap;
-      side_push_ += terms.side_push;  // 0 when side_factor is 0
-    } else {
-      social_kernel(params_, padded, batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, tie_x, tie_y, batch_.fx,
-                    batch_.fy);
-    }
+    const AheadParams ahead{ex_,
+                            ey_,
+                            speed_along_,
+                            kOncoming,
+                            band_,
+                            headway_distance_,
+                            headway_inv_time_,
+                            headway_anticipation_,
+                            side_band_,
+                            side_bias_,
+                            side_factor_,
+                            side_inv_range_};
+    // The social force, its sum and the terms of the people ahead in one pass over the batch.
+    const BatchTotals totals = social_kernel_with_ahead(params_, heading_ ? &ahead : nullptr, speed_cap_, padded,
+                                                        batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, tie_x, tie_y,
+                                                        batch_.fx, batch_.fy);
+    if (heading_ && headway_on_) speed_cap_ = totals.ahead.speed_cap;
+    side_push_ += totals.ahead.side_push;  // 0 when side_factor is 0 or without a heading
+    social_x_ += totals.fx;
+    social_y_ += totals.fy;
     close_count_ = 0;
-    std::int64_t sx = 0;
-    std::int64_t sy = 0;
-    for (int m = 0; m < padded; ++m) {  // padding entries are 0
-      sx += batch_.fx[m];
-      sy += batch_.fy[m];
-    }
-    social_x_ += sx;
-    social_y_ += sy;
     count_ = 0;
   }
 

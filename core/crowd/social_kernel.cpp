@@ -115,9 +115,7 @@ struct Simd {
   }
   SOCSIM_SIMD("avx512f") vec load(lanes in, const float* p) { return _mm512_maskz_loadu_ps(in, p); }
   // static_cast<std::int32_t> of each lane in the batch
-  SOCSIM_SIMD("avx512f") void store_truncated(lanes in, std::int32_t* p, vec g) {
-    _mm512_mask_storeu_epi32(p, in, _mm512_mask_cvttps_epi32(_mm512_setzero_si512(), 0xFFFF, g));
-  }
+  SOCSIM_SIMD("avx512f") void store_ints(lanes in, std::int32_t* p, __m512i v) { _mm512_mask_storeu_epi32(p, in, v); }
   // For the ahead terms: masks combined, integer lanes (running minimum, sums).
   using ivec = __m512i;
   SOCSIM_SIMD("avx512f") mask both(mask a, mask b) { return static_cast<mask>(a & b); }
@@ -130,6 +128,12 @@ struct Simd {
   SOCSIM_SIMD("avx512f") ivec iadd(ivec a, ivec b) { return _mm512_add_epi32(a, b); }
   SOCSIM_SIMD("avx512f") ivec iselect(mask m, ivec t, ivec f) { return _mm512_mask_blend_epi32(m, f, t); }
   SOCSIM_SIMD("avx512f") void istore(std::int32_t* p, ivec v) { _mm512_storeu_si512(p, v); }
+  // 64-bit running sums of integer lanes: acc + (the low half of v widened) + (its high half)
+  SOCSIM_SIMD("avx512f") ivec widen_add(ivec acc, ivec v) {
+    const __m512i lo = _mm512_cvtepi32_epi64(_mm512_castsi512_si256(v));
+    const __m512i hi = _mm512_cvtepi32_epi64(_mm512_extracti64x4_epi64(v, 1));
+    return _mm512_add_epi64(acc, _mm512_add_epi64(lo, hi));
+  }
 };
 }  // namespace avx512
 
@@ -166,8 +170,7 @@ struct Simd {
   SOCSIM_SIMD("avx2") vec load(const lanes& in, const float* p) {
     return in.full ? _mm256_loadu_ps(p) : _mm256_maskload_ps(p, in.mask);
   }
-  SOCSIM_SIMD("avx2") void store_truncated(const lanes& in, std::int32_t* p, vec g) {
-    const __m256i v = _mm256_cvttps_epi32(g);
+  SOCSIM_SIMD("avx2") void store_ints(const lanes& in, std::int32_t* p, __m256i v) {
     if (in.full)
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v);
     else
@@ -186,6 +189,11 @@ struct Simd {
     return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(f), _mm256_castsi256_ps(t), m));
   }
   SOCSIM_SIMD("avx2") void istore(std::int32_t* p, ivec v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v); }
+  SOCSIM_SIMD("avx2") ivec widen_add(ivec acc, ivec v) {
+    const __m256i lo = _mm256_cvtepi32_epi64(_mm256_castsi256_si128(v));
+    const __m256i hi = _mm256_cvtepi32_epi64(_mm256_extracti128_si256(v, 1));
+    return _mm256_add_epi64(acc, _mm256_add_epi64(lo, hi));
+  }
 };
 }  // namespace avx2
 
@@ -231,22 +239,28 @@ void social_kernel(const SocialParams& p, int count, const float* __restrict dx,
   social_kernel_portable(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
 }
 
-AheadTerms social_kernel_with_ahead(const SocialParams& p, const AheadParams& ahead, float best, int count,
-                                    const float* __restrict dx, const float* __restrict dy,
-                                    const float* __restrict dvx, const float* __restrict dvy,
-                                    const float* __restrict tie_x, const float* __restrict tie_y,
-                                    std::int32_t* __restrict fx, std::int32_t* __restrict fy) {
+BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* ahead, float best, int count,
+                                     const float* __restrict dx, const float* __restrict dy,
+                                     const float* __restrict dvx, const float* __restrict dvy,
+                                     const float* __restrict tie_x, const float* __restrict tie_y,
+                                     std::int32_t* __restrict fx, std::int32_t* __restrict fy) {
 #ifdef SOCSIM_KERNEL_BY_HAND
   static const int isa = [] {
     __builtin_cpu_init();
     if (__builtin_cpu_supports("avx512f")) return 512;
     return __builtin_cpu_supports("avx2") ? 256 : 0;
   }();
-  if (isa == 512) return avx512::social_kernel_lanes(p, &ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
-  if (isa == 256) return avx2::social_kernel_lanes(p, &ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  if (isa == 512) return avx512::social_kernel_lanes(p, ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  if (isa == 256) return avx2::social_kernel_lanes(p, ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
 #endif
   social_kernel_portable(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
-  return ahead_terms(count, dx, dy, dvx, dvy, ahead, best);
+  BatchTotals t{{best, 0}, 0, 0};
+  if (ahead != nullptr) t.ahead = ahead_terms(count, dx, dy, dvx, dvy, *ahead, best);
+  for (int m = 0; m < count; ++m) {
+    t.fx += fx[m];
+    t.fy += fy[m];
+  }
+  return t;
 }
 
 SOCSIM_CLONES

@@ -99,14 +99,19 @@ AheadTerms ahead_terms(int count, const float* __restrict dx, const float* __res
                        float best);
 
 // social_kernel and ahead_terms over the same batch in one pass (what the step uses): fx, fy as
-// social_kernel writes them, and the terms ahead_terms(count, dx, dy, dvx, dvy, ahead, best)
-// returns, bit for bit (tests/core/crowd/neighbour_gather_test.cpp). On CPUs with AVX-512 or AVX2
-// the hand-written kernel computes both from the same loads and distances; elsewhere the two
-// functions run one after the other.
-AheadTerms social_kernel_with_ahead(const SocialParams& p, const AheadParams& ahead, float best, int count,
-                                    const float* __restrict dx, const float* __restrict dy,
-                                    const float* __restrict dvx, const float* __restrict dvy,
-                                    const float* __restrict tie_x, const float* __restrict tie_y,
-                                    std::int32_t* __restrict fx, std::int32_t* __restrict fy);
+// social_kernel writes them with their sums, and, when `ahead` is given, the terms
+// ahead_terms(count, dx, dy, dvx, dvy, *ahead, best) returns ({best, 0} without), bit for bit
+// (tests/core/crowd/neighbour_gather_test.cpp). On CPUs with AVX-512 or AVX2 the hand-written
+// kernel computes all of it from the same loads and distances; elsewhere the functions run one
+// after the other.
+struct BatchTotals {
+  AheadTerms ahead;
+  std::int64_t fx, fy;  // Σ fx[m], Σ fy[m] (units of 2^-20 m/s²)
+};
+BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* ahead, float best, int count,
+                                     const float* __restrict dx, const float* __restrict dy,
+                                     const float* __restrict dvx, const float* __restrict dvy,
+                                     const float* __restrict tie_x, const float* __restrict tie_y,
+                                     std::int32_t* __restrict fx, std::int32_t* __restrict fy);
 
 }  // namespace socsim::crowd

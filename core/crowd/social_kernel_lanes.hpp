@@ -139,6 +139,7 @@ SOCSIM_LANES Pk<N> atan2_lanes(const Pk<N>& y, const Pk<N>& x) {  // fast_atan2f
 // stays within 32 bits (|push| <= 100·2^20).
 struct AheadLanes {
   typename Simd::ivec least, sum;
+  typename Simd::ivec fx, fy;  // 64-bit lanes: the running sums of the pair forces
 };
 
 // ahead_terms' lane computation on N vectors (same operations, same order, same bits), from the
@@ -229,8 +230,13 @@ SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, 
   const Pk<N> gy = select(live, scale * (along * ty + side * tx), zero);
   SOCSIM_EACH {
     const int o = m + Simd::kLanes * k;
-    Simd::store_truncated(in[k], fx + o, gx.v[k]);
-    Simd::store_truncated(in[k], fy + o, gy.v[k]);
+    // Lanes outside the batch read zeros and give 0 (not live), so they add nothing to the sums.
+    const typename Simd::ivec qx = Simd::truncate(gx.v[k]);
+    const typename Simd::ivec qy = Simd::truncate(gy.v[k]);
+    Simd::store_ints(in[k], fx + o, qx);
+    Simd::store_ints(in[k], fy + o, qy);
+    acc.fx = Simd::widen_add(acc.fx, qx);
+    acc.fy = Simd::widen_add(acc.fy, qy);
   }
 }
 
@@ -245,23 +251,32 @@ SOCSIM_LANES void kernel_from(const SocialParams& p, const AheadParams* ahead, A
   if constexpr (N > 1) kernel_from<N - 1>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
 }
 
-__attribute__((target(SOCSIM_LANES_TARGET))) AheadTerms social_kernel_lanes(
+__attribute__((target(SOCSIM_LANES_TARGET))) BatchTotals social_kernel_lanes(
     const SocialParams& p, const AheadParams* ahead, float best, int count, const float* dx, const float* dy,
     const float* dvx, const float* dvy, const float* tie_x, const float* tie_y, std::int32_t* fx,
     std::int32_t* fy) {
-  AheadLanes acc{Simd::iset1(std::bit_cast<std::int32_t>(best)), Simd::iset1(0)};
+  AheadLanes acc{Simd::iset1(std::bit_cast<std::int32_t>(best)), Simd::iset1(0), Simd::iset1(0), Simd::iset1(0)};
   kernel_from<Simd::kInterleave>(p, ahead, acc, 0, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
   alignas(64) std::int32_t least[Simd::kLanes];
   alignas(64) std::int32_t sums[Simd::kLanes];
+  alignas(64) std::int64_t force_x[Simd::kLanes / 2];
+  alignas(64) std::int64_t force_y[Simd::kLanes / 2];
   Simd::istore(least, acc.least);
   Simd::istore(sums, acc.sum);
+  Simd::istore(reinterpret_cast<std::int32_t*>(force_x), acc.fx);
+  Simd::istore(reinterpret_cast<std::int32_t*>(force_y), acc.fy);
+  BatchTotals t{{std::bit_cast<float>(least[0]), 0}, 0, 0};
   std::int32_t cap = least[0];
-  std::int64_t push = 0;
   for (int l = 0; l < Simd::kLanes; ++l) {
     cap = std::min(cap, least[l]);
-    push += sums[l];
+    t.ahead.side_push += sums[l];
   }
-  return {std::bit_cast<float>(cap), push};
+  t.ahead.speed_cap = std::bit_cast<float>(cap);
+  for (int l = 0; l < Simd::kLanes / 2; ++l) {
+    t.fx += force_x[l];
+    t.fy += force_y[l];
+  }
+  return t;
 }
 
 #undef SOCSIM_EACH

@@ -308,8 +308,9 @@ TEST(SocialKernel, FusedPassEqualsTheKernelAndTheAheadTerms) {
       for (int count : {kBatch, 40, 24, 13, 1}) {
         for (float best : {inf, 0.7f}) {
           PairBatch fused = batch;
-          const AheadTerms t = social_kernel_with_ahead(sp, p, best, count, fused.dx, fused.dy, fused.dvx, fused.dvy,
-                                                        fused.tie_x, fused.tie_y, fused.fx, fused.fy);
+const BatchTotals totals = social_kernel_with_ahead(sp, &p, best, count, fused.dx, fused.dy, fused.dvx,
+                                                             fused.dvy, fused.tie_x, fused.tie_y, fused.fx, fused.fy);
+          const AheadTerms& t = totals.ahead;
           PairBatch apart = batch;
           social_kernel(sp, count, apart.dx, apart.dy, apart.dvx, apart.dvy, apart.tie_x, apart.tie_y, apart.fx,
                         apart.fy);
@@ -321,6 +322,17 @@ TEST(SocialKernel, FusedPassEqualsTheKernelAndTheAheadTerms) {
             EXPECT_EQ(fused.fx[m], apart.fx[m]) << where << " lane " << m;
             EXPECT_EQ(fused.fy[m], apart.fy[m]) << where << " lane " << m;
           }
+          std::int64_t sx = 0, sy = 0;
+          for (int m = 0; m < count; ++m) {
+            sx += apart.fx[m];
+            sy += apart.fy[m];
+          }
+          EXPECT_EQ(totals.fx, sx) << where;
+          EXPECT_EQ(totals.fy, sy) << where;
+          const BatchTotals alone = social_kernel_with_ahead(sp, nullptr, best, count, batch.dx, batch.dy, batch.dvx,
+                                                             batch.dvy, batch.tie_x, batch.tie_y, fused.fx, fused.fy);
+          EXPECT_EQ(alone.fx, sx) << where;
+          EXPECT_EQ(alone.ahead.side_push, 0) << where;
           pushes += u.side_push != 0;
         }
       }
