@@ -377,9 +377,9 @@ class NeighbourSums {
                             side_factor_,
                             side_inv_range_};
     // The social force, its sum and the terms of the people ahead in one pass over the batch.
-    const BatchTotals totals = social_kernel_with_ahead(params_, heading_ ? &ahead : nullptr, speed_cap_, padded,
-                                                        batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, tie_x, tie_y,
-                                                        batch_.fx, batch_.fy);
+    const BatchTotals totals =
+        social_kernel_with_ahead(params_, heading_ ? &ahead : nullptr, speed_cap_, padded, batch_.dx,
+                                 batch_.dy, batch_.dvx, batch_.dvy, tie_x, tie_y, batch_.fx, batch_.fy);
     if (heading_ && headway_on_) speed_cap_ = totals.ahead.speed_cap;
     side_push_ += totals.ahead.side_push;  // 0 when side_factor is 0 or without a heading
     social_x_ += totals.fx;
@@ -984,8 +984,8 @@ void CrowdSimulation::build_cells() {
 }
 
 CrowdSimulation::AgentInputs CrowdSimulation::inputs_of(std::uint32_t i) const {
-  return {px_[i], py_[i], vx_[i], vy_[i], radius_[i], v0_[i],   vmax_[i],
-          gx_[i], gy_[i], gr_[i], group_[i],  role_[i], driven_[i], has_goal_[i]};
+  return {px_[i], py_[i], vx_[i], vy_[i],    radius_[i], v0_[i],     vmax_[i],
+          gx_[i], gy_[i], gr_[i], group_[i], role_[i],   driven_[i], has_goal_[i]};
 }
 
 namespace {
@@ -1477,7 +1477,8 @@ void CrowdSimulation::step_reference() {
   const FullScan scan = full_scan(m);
   pool_->parallel_for(size(), 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
-      if (seen(i)) advance_agent(static_cast<std::uint32_t>(i), inputs_of(static_cast<std::uint32_t>(i)), scan, nullptr);
+      if (seen(i))
+        advance_agent(static_cast<std::uint32_t>(i), inputs_of(static_cast<std::uint32_t>(i)), scan, nullptr);
   });
   separate_bodies();
   finish_step();

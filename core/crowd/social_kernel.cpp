@@ -115,7 +115,9 @@ struct Simd {
   }
   SOCSIM_SIMD("avx512f") vec load(lanes in, const float* p) { return _mm512_maskz_loadu_ps(in, p); }
   // static_cast<std::int32_t> of each lane in the batch
-  SOCSIM_SIMD("avx512f") void store_ints(lanes in, std::int32_t* p, __m512i v) { _mm512_mask_storeu_epi32(p, in, v); }
+  SOCSIM_SIMD("avx512f") void store_ints(lanes in, std::int32_t* p, __m512i v) {
+    _mm512_mask_storeu_epi32(p, in, v);
+  }
   // For the ahead terms: masks combined, integer lanes (running minimum, sums).
   using ivec = __m512i;
   SOCSIM_SIMD("avx512f") mask both(mask a, mask b) { return static_cast<mask>(a & b); }
@@ -123,7 +125,9 @@ struct Simd {
   SOCSIM_SIMD("avx512f") bool any(mask m) { return m != 0; }
   SOCSIM_SIMD("avx512f") ivec iset1(std::int32_t x) { return _mm512_set1_epi32(x); }
   SOCSIM_SIMD("avx512f") ivec bits(vec a) { return _mm512_castps_si512(a); }
-  SOCSIM_SIMD("avx512f") ivec truncate(vec a) { return _mm512_mask_cvttps_epi32(_mm512_setzero_si512(), 0xFFFF, a); }
+  SOCSIM_SIMD("avx512f") ivec truncate(vec a) {
+    return _mm512_mask_cvttps_epi32(_mm512_setzero_si512(), 0xFFFF, a);
+  }
   SOCSIM_SIMD("avx512f") ivec imin(ivec a, ivec b) { return _mm512_min_epi32(a, b); }
   SOCSIM_SIMD("avx512f") ivec iadd(ivec a, ivec b) { return _mm512_add_epi32(a, b); }
   SOCSIM_SIMD("avx512f") ivec iselect(mask m, ivec t, ivec f) { return _mm512_mask_blend_epi32(m, f, t); }
@@ -188,7 +192,9 @@ struct Simd {
   SOCSIM_SIMD("avx2") ivec iselect(mask m, ivec t, ivec f) {
     return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(f), _mm256_castsi256_ps(t), m));
   }
-  SOCSIM_SIMD("avx2") void istore(std::int32_t* p, ivec v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v); }
+  SOCSIM_SIMD("avx2") void istore(std::int32_t* p, ivec v) {
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v);
+  }
   SOCSIM_SIMD("avx2") ivec widen_add(ivec acc, ivec v) {
     const __m256i lo = _mm256_cvtepi32_epi64(_mm256_castsi256_si128(v));
     const __m256i hi = _mm256_cvtepi32_epi64(_mm256_extracti128_si256(v, 1));
@@ -250,8 +256,10 @@ BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* a
     if (__builtin_cpu_supports("avx512f")) return 512;
     return __builtin_cpu_supports("avx2") ? 256 : 0;
   }();
-  if (isa == 512) return avx512::social_kernel_lanes(p, ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
-  if (isa == 256) return avx2::social_kernel_lanes(p, ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  if (isa == 512)
+    return avx512::social_kernel_lanes(p, ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  if (isa == 256)
+    return avx2::social_kernel_lanes(p, ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
 #endif
   social_kernel_portable(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
   BatchTotals t{{best, 0}, 0, 0};

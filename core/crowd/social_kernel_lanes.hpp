@@ -176,17 +176,20 @@ SOCSIM_LANES void ahead_lanes(const AheadParams& a, const Pk<N>& ox, const Pk<N>
   }
   if (!any_meets) return;
   const Pk<N> floored = select(ahead < zero, zero, ahead);  // std::max(ahead, 0.0f)
-  const Pk<N> magnitude = splat<N>(a.side_factor * kForceQuantum) * exp_lanes(-floored * splat<N>(a.side_inv_range));
+  const Pk<N> magnitude =
+      splat<N>(a.side_factor * kForceQuantum) * exp_lanes(-floored * splat<N>(a.side_inv_range));
   const Pk<N> push = select(side < splat<N>(a.side_bias), magnitude, -magnitude);
-  SOCSIM_EACH acc.sum = Simd::iadd(acc.sum, Simd::iselect(meets[k], Simd::truncate(push.v[k]), Simd::iset1(0)));
+  SOCSIM_EACH acc.sum =
+      Simd::iadd(acc.sum, Simd::iselect(meets[k], Simd::truncate(push.v[k]), Simd::iset1(0)));
 }
 
 // Lanes [m, m + L·N) of the batch (L = Simd::kLanes), those at or past `count` read as 0 and not
 // written; count − m > L·(N − 1), so every vector has a lane in the batch.
 template <int N>
-SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m, int count,
-                               const float* dx, const float* dy, const float* dvx, const float* dvy,
-                               const float* tie_x, const float* tie_y, std::int32_t* fx, std::int32_t* fy) {
+SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m,
+                               int count, const float* dx, const float* dy, const float* dvx,
+                               const float* dvy, const float* tie_x, const float* tie_y, std::int32_t* fx,
+                               std::int32_t* fy) {
   typename Simd::lanes in[N];
   SOCSIM_EACH in[k] = Simd::first(count - m - Simd::kLanes * k);
   Pk<N> rx, ry, ux, uy, vx, vy;
@@ -243,8 +246,8 @@ SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, 
 // Lanes [m, count): N vectors at a time while the batch fills more than N − 1, then the rest with
 // fewer, so no vector runs without a lane in the batch.
 template <int N>
-SOCSIM_LANES void kernel_from(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m, int count,
-                              const float* dx, const float* dy, const float* dvx, const float* dvy,
+SOCSIM_LANES void kernel_from(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m,
+                              int count, const float* dx, const float* dy, const float* dvx, const float* dvy,
                               const float* tie_x, const float* tie_y, std::int32_t* fx, std::int32_t* fy) {
   for (; count - m > Simd::kLanes * (N - 1); m += Simd::kLanes * N)
     kernel_lanes<N>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
@@ -255,7 +258,8 @@ __attribute__((target(SOCSIM_LANES_TARGET))) BatchTotals social_kernel_lanes(
     const SocialParams& p, const AheadParams* ahead, float best, int count, const float* dx, const float* dy,
     const float* dvx, const float* dvy, const float* tie_x, const float* tie_y, std::int32_t* fx,
     std::int32_t* fy) {
-  AheadLanes acc{Simd::iset1(std::bit_cast<std::int32_t>(best)), Simd::iset1(0), Simd::iset1(0), Simd::iset1(0)};
+  AheadLanes acc{Simd::iset1(std::bit_cast<std::int32_t>(best)), Simd::iset1(0), Simd::iset1(0),
+                 Simd::iset1(0)};
   kernel_from<Simd::kInterleave>(p, ahead, acc, 0, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
   alignas(64) std::int32_t least[Simd::kLanes];
   alignas(64) std::int32_t sums[Simd::kLanes];

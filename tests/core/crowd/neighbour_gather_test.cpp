@@ -308,15 +308,17 @@ TEST(SocialKernel, FusedPassEqualsTheKernelAndTheAheadTerms) {
       for (int count : {kBatch, 40, 24, 13, 1}) {
         for (float best : {inf, 0.7f}) {
           PairBatch fused = batch;
-const BatchTotals totals = social_kernel_with_ahead(sp, &p, best, count, fused.dx, fused.dy, fused.dvx,
-                                                             fused.dvy, fused.tie_x, fused.tie_y, fused.fx, fused.fy);
+          const BatchTotals totals =
+              social_kernel_with_ahead(sp, &p, best, count, fused.dx, fused.dy, fused.dvx, fused.dvy,
+                                       fused.tie_x, fused.tie_y, fused.fx, fused.fy);
           const AheadTerms& t = totals.ahead;
           PairBatch apart = batch;
-          social_kernel(sp, count, apart.dx, apart.dy, apart.dvx, apart.dvy, apart.tie_x, apart.tie_y, apart.fx,
-                        apart.fy);
+          social_kernel(sp, count, apart.dx, apart.dy, apart.dvx, apart.dvy, apart.tie_x, apart.tie_y,
+                        apart.fx, apart.fy);
           const AheadTerms u = ahead_terms(count, apart.dx, apart.dy, apart.dvx, apart.dvy, p, best);
           const std::string where = "seed " + std::to_string(seed) + " count " + std::to_string(count);
-          EXPECT_EQ(std::bit_cast<std::uint32_t>(t.speed_cap), std::bit_cast<std::uint32_t>(u.speed_cap)) << where;
+          EXPECT_EQ(std::bit_cast<std::uint32_t>(t.speed_cap), std::bit_cast<std::uint32_t>(u.speed_cap))
+              << where;
           EXPECT_EQ(t.side_push, u.side_push) << where;
           for (int m = 0; m < count; ++m) {
             EXPECT_EQ(fused.fx[m], apart.fx[m]) << where << " lane " << m;
@@ -329,8 +331,9 @@ const BatchTotals totals = social_kernel_with_ahead(sp, &p, best, count, fused.d
           }
           EXPECT_EQ(totals.fx, sx) << where;
           EXPECT_EQ(totals.fy, sy) << where;
-          const BatchTotals alone = social_kernel_with_ahead(sp, nullptr, best, count, batch.dx, batch.dy, batch.dvx,
-                                                             batch.dvy, batch.tie_x, batch.tie_y, fused.fx, fused.fy);
+          const BatchTotals alone =
+              social_kernel_with_ahead(sp, nullptr, best, count, batch.dx, batch.dy, batch.dvx, batch.dvy,
+                                       batch.tie_x, batch.tie_y, fused.fx, fused.fy);
           EXPECT_EQ(alone.fx, sx) << where;
           EXPECT_EQ(alone.ahead.side_push, 0) << where;
           pushes += u.side_push != 0;
