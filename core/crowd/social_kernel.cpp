@@ -226,23 +226,7 @@ namespace socsim::crowd {
 void social_kernel(const SocialParams& p, int count, const float* __restrict dx, const float* __restrict dy,
                    const float* __restrict dvx, const float* __restrict dvy, const float* __restrict tie_x,
                    const float* __restrict tie_y, std::int32_t* __restrict fx, std::int32_t* __restrict fy) {
-#ifdef SOCSIM_KERNEL_BY_HAND
-  enum class Isa { kAvx512, kAvx2, kOther };
-  static const Isa isa = [] {
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f")) return Isa::kAvx512;
-    return __builtin_cpu_supports("avx2") ? Isa::kAvx2 : Isa::kOther;
-  }();
-  if (isa == Isa::kAvx512) {
-    (void)avx512::social_kernel_lanes(p, nullptr, 0.0f, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
-    return;
-  }
-  if (isa == Isa::kAvx2) {
-    (void)avx2::social_kernel_lanes(p, nullptr, 0.0f, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
-    return;
-  }
-#endif
-  social_kernel_portable(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  (void)social_kernel_with_ahead(p, nullptr, 0.0f, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
 }
 
 BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* ahead, float best, int count,
@@ -251,14 +235,15 @@ BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* a
                                      const float* __restrict tie_x, const float* __restrict tie_y,
                                      std::int32_t* __restrict fx, std::int32_t* __restrict fy) {
 #ifdef SOCSIM_KERNEL_BY_HAND
-  static const int isa = [] {
+  enum class Isa { kAvx512, kAvx2, kOther };
+  static const Isa isa = [] {
     __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f")) return 512;
-    return __builtin_cpu_supports("avx2") ? 256 : 0;
+    if (__builtin_cpu_supports("avx512f")) return Isa::kAvx512;
+    return __builtin_cpu_supports("avx2") ? Isa::kAvx2 : Isa::kOther;
   }();
-  if (isa == 512)
+  if (isa == Isa::kAvx512)
     return avx512::social_kernel_lanes(p, ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
-  if (isa == 256)
+  if (isa == Isa::kAvx2)
     return avx2::social_kernel_lanes(p, ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
 #endif
   social_kernel_portable(p, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
