@@ -64,10 +64,12 @@ namespace {
 constexpr std::uint32_t kNoCell = UINT32_MAX;
 constexpr double kMaxCoordinate = 1.0e6;  // m; keeps every product far from overflow
 constexpr double kTiny2 = 1e-18;          // squared lengths below this count as zero
-// How far the crowd may press a body into a wall (m): people squeezed against a wall or past a
-// door jamb turn their shoulders; a body turned sideways is about 0.26 m deep, 0.1 m less than an
-// adult's radius (0.23 m) on each side.
-constexpr double kWallSqueeze = 0.10;
+// The gap the crowd leaves between a body and a wall's inside when it presses the body against it
+// (m): the velocity limit and the separation passes stop a body this far from the wall. (It was a
+// 0.1 m squeeze — shoulders turned — but then a body's disc could end up to 0.1 m into a wall in a
+// dense crowd round a corner, RiMEA 15, depending on the run.) Wall ends (door jambs) are exempt:
+// people squeeze past them.
+constexpr double kWallClearance = 0.01;
 
 bool finite_in_range(double v, double limit) {
   return std::isfinite(v) && std::abs(v) <= limit;
@@ -177,7 +179,7 @@ Vec2 nearest_on_wall(Vec2 p, const WallSegment& s, bool* interior) {
 }
 
 // A separation shift cur → to, projected so that the body (radius r) ends no closer to any wall
-// than min(r − kWallSqueeze, its distance from that wall at cur): where `to` is too close, it is
+// than min(r + kWallClearance, its distance from that wall at cur): where `to` is too close, it is
 // moved straight away from the wall's nearest point. Only where that point lies inside the wall:
 // a wall end (a door jamb, a corner seen from outside) is left to the wall guard, as people
 // squeeze past jambs. Walls are taken in the order of `near` (deterministic).
@@ -188,7 +190,7 @@ Vec2 keep_off_walls(Vec2 cur, Vec2 to, double r, std::span<const std::uint32_t> 
     bool interior = false;
     const Vec2 qc = nearest_on_wall(cur, s, &interior);
     const double dc = std::hypot(cur.x - qc.x, cur.y - qc.y);
-    const double limit = std::min(r - kWallSqueeze, dc);
+    const double limit = std::min(r + kWallClearance, dc);
     const Vec2 q = nearest_on_wall(to, s, &interior);
     if (!interior) continue;  // a wall end (a door jamb): people squeeze past it
     const double dx = to.x - q.x;
@@ -1274,7 +1276,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, cons
     }
     // Walls are contacts too: towards a wall's nearest point (inside the wall, not at an end)
     // the velocity may close at most the gap between the wall and the body, of radius
-    // r − kWallSqueeze here, in this step, and not at all once it touches. The obstacle force
+    // r + kWallClearance here, in this step, and not at all once it touches. The obstacle force
     // keeps walking bodies off walls; this only acts where the crowd presses one against a wall
     // (without it, with several separation passes, bodies were squeezed onto the wall beside a
     // passage's entrance, centre on the wall line, and stayed wedged there).
@@ -1288,7 +1290,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, cons
       const double reach = r + dt * kMaxAgentSpeed;
       if (d2 <= kTiny2 || d2 >= reach * reach) continue;
       const double d = std::sqrt(d2);
-      const double limit = std::max(0.0, d - (r - kWallSqueeze)) / dt;
+      const double limit = std::max(0.0, d - (r + kWallClearance)) / dt;
       const double along = (nvx * wx + nvy * wy) / d;
       if (along > limit) {
         nvx -= (along - limit) * wx / d;
