@@ -128,9 +128,10 @@ inline float fast_atan2f(float y, float x) {
   const float ay = y < 0.0f ? -y : y;
   const float mx = ax > ay ? ax : ay;
   const float mn = ax > ay ? ay : ax;
-  const float a = mn / (mx > 0.0f ? mx : 1.0f);
-  const bool upper = a > kTanPi8;
-  const float t = upper ? (a - 1.0f) / (a + 1.0f) : a;
+  // t = a or (a − 1)/(a + 1) for a = mn/mx, as one division: (mn − mx)/(mn + mx) above tan(π/8)
+  // (mx = 0 only with mn = 0: t = 0).
+  const bool upper = mn > kTanPi8 * mx;
+  const float t = (upper ? mn - mx : mn) / (upper ? mn + mx : (mx > 0.0f ? mx : 1.0f));
   const float s = t * t;
   float p = kAtanPoly[0];
   for (std::size_t i = 1; i < std::size(kAtanPoly); ++i) p = p * s + kAtanPoly[i];  // a − b is a + (−b)

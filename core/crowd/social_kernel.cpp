@@ -59,7 +59,8 @@ void social_kernel_portable(const SocialParams& p, int count, const float* __res
     const float tx = ix * inv_il;
     const float ty = iy * inv_il;
     const float b = gamma * il;
-    const float theta = fast_atan2f(tx * ey - ty * ex, tx * ex + ty * ey);
+    // The angle from i to e (the same as from t = i/|i|): it need not wait for the division.
+    const float theta = fast_atan2f(ix * ey - iy * ex, ix * ex + iy * ey);
     const float base = -d * inv_il * inv_gamma;
     const float nb = n * b * theta;
     const float npb = n_prime * b * theta;

@@ -121,9 +121,8 @@ SOCSIM_LANES Pk<N> atan2_lanes(const Pk<N>& y, const Pk<N>& x) {  // fast_atan2f
   const Mk<N> x_wider = ax > ay;
   const Pk<N> mx = select(x_wider, ax, ay);
   const Pk<N> mn = select(x_wider, ay, ax);
-  const Pk<N> a = mn / select(mx > zero, mx, one);
-  const Mk<N> upper = a > splat<N>(kTanPi8);
-  const Pk<N> t = select(upper, (a - one) / (a + one), a);
+  const Mk<N> upper = mn > splat<N>(kTanPi8) * mx;
+  const Pk<N> t = select(upper, mn - mx, mn) / select(upper, mn + mx, select(mx > zero, mx, one));
   const Pk<N> s = t * t;
   Pk<N> p = splat<N>(kAtanPoly[0]);
   for (std::size_t i = 1; i < std::size(kAtanPoly); ++i) p = p * s + splat<N>(kAtanPoly[i]);
@@ -221,7 +220,7 @@ SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, 
   const Pk<N> tx = ix * inv_il;
   const Pk<N> ty = iy * inv_il;
   const Pk<N> b = splat<N>(p.gamma) * il;
-  const Pk<N> theta = atan2_lanes(tx * ey - ty * ex, tx * ex + ty * ey);
+  const Pk<N> theta = atan2_lanes(ix * ey - iy * ex, ix * ex + iy * ey);
   const Pk<N> base = -d * inv_il * splat<N>(p.inv_gamma);
   const Pk<N> nb = splat<N>(p.n) * b * theta;
   const Pk<N> npb = splat<N>(p.n_prime) * b * theta;
