@@ -1005,29 +1005,9 @@ struct GridScan {
 
   void operator()(NeighbourSums& s, double x, double y) const {
     const std::uint32_t self = position_of[s.id()];
-    const double c = cutoff + 1e-9;
-    const auto floor_clamp = [](double v, std::int64_t hi) {
-      if (!(v > 0.0)) return std::int64_t{0};  // also catches NaN
-      if (v >= static_cast<double>(hi)) return hi;
-      return static_cast<std::int64_t>(v);  // truncation = floor for positive values
-    };
-    const auto clamp_x = [&](double v) { return floor_clamp(v, nx - 1); };
-    const auto clamp_y = [&](double v) { return floor_clamp(v, ny - 1); };
-    const std::int64_t y_lo = clamp_y((y - c - origin_y) * inv_cell);
-    const std::int64_t y_hi = clamp_y((y + c - origin_y) * inv_cell);
-    // Cells are at least a third of the cut-off tall, so a scan spans at most 8 rows (10 leaves
-    // room for rounding).
-    GatherRange ranges[10];  // the first `count` are set
-    int count = 0;
-    for (std::int64_t row = y_lo; row <= y_hi && count < static_cast<int>(std::size(ranges)); ++row) {
-      const double band_lo = origin_y + static_cast<double>(row) * cell;
-      const double gap = std::max({0.0, band_lo - y, y - (band_lo + cell)}) - 1e-9;
-      const double half = gap > 0.0 ? std::sqrt(std::max(0.0, c * c - gap * gap)) + 1e-9 : c;
-      const std::int64_t x_lo = clamp_x((x - half - origin_x) * inv_cell);
-      const std::int64_t x_hi = clamp_x((x + half - origin_x) * inv_cell);
-      ranges[static_cast<std::size_t>(count++)] = {start[static_cast<std::size_t>(row * nx + x_lo)],
-                                                   start[static_cast<std::size_t>(row * nx + x_hi + 1)]};
-    }
+    GatherRange ranges[kMaxGridRows];
+    const GridQuery q{start.data(), origin_x, origin_y, cell, inv_cell, cutoff + 1e-9, nx, ny, x, y};
+    const int count = grid_ranges(q, ranges);
     s.scan(arrays, ranges, count, self);
   }
 };

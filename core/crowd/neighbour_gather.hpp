@@ -35,6 +35,26 @@ struct GatherRange {
   std::uint32_t begin, end;
 };
 
+// The cell rows of a uniform grid that can hold a candidate within `reach` of (x, y): per row, the
+// run of cells [x_lo, x_hi] whose x-range meets the disc's chord over that row's y-band (widened by
+// 1e-9 m so rounding can never hide a candidate), as a range of entries of the cell-sorted arrays
+// (`start[cell]` .. `start[cell + 1]`, cells numbered row by row, nx per row). Rows outside the
+// grid are clamped to its edge.
+struct GridQuery {
+  const std::uint32_t* start;  // nx·ny + 1 entries
+  double origin_x, origin_y, cell, inv_cell;
+  double reach;  // the cut-off (+ 1e-9)
+  std::int64_t nx, ny;
+  double x, y;
+};
+inline constexpr int kMaxGridRows = 10;  // cells at least a third of the cut-off tall: <= 8 rows
+
+// Writes the rows' ranges, lowest row first, into ranges[0 .. returned count) (at most
+// kMaxGridRows). On x86-64 CPUs with AVX2, four rows at a time with the same IEEE operations as
+// the portable version: the same ranges.
+int grid_ranges(const GridQuery& q, GatherRange* ranges);
+int grid_ranges_scalar(const GridQuery& q, GatherRange* ranges);
+
 // Visits the ranges in order until done or the batch is full; returns how many ranges were
 // finished (fewer than `count` when the batch filled up: the next range's `begin` is advanced to
 // the first candidate not visited). Entries past `count` may be overwritten with scratch values.

@@ -137,6 +137,48 @@ TEST(NeighbourGather, InactiveCandidatesAreSkipped) {
   for (std::uint32_t k : got.slot) EXPECT_NE(k % 3, 0u);
 }
 
+// The cell rows of a scan: the dispatched version (AVX2 where the CPU has it) gives the scalar
+// ranges exactly, and every point within the reach lies in a cell of its row's range (start[k] = k
+// here, so a range is a run of cell numbers). Agents anywhere on the grid, near its edges too.
+TEST(NeighbourGather, GridRowsMatchScalarAndCoverTheDisc) {
+  Rng rng(11);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double cutoff = rng.uniform(0.5, 4.0);
+    const double cell = cutoff / 3.0 * rng.uniform(1.0, 2.5);
+    const auto nx = static_cast<std::int64_t>(rng.uniform(1.0, 40.0));
+    const auto ny = static_cast<std::int64_t>(rng.uniform(1.0, 40.0));
+    std::vector<std::uint32_t> start(static_cast<std::size_t>(nx * ny + 1));
+    for (std::size_t k = 0; k < start.size(); ++k) start[k] = static_cast<std::uint32_t>(k);
+    const double ox = rng.uniform(-50.0, 50.0);
+    const double oy = rng.uniform(-50.0, 50.0);
+    const double x = ox + rng.uniform(0.0, static_cast<double>(nx) * cell);
+    const double y = oy + rng.uniform(0.0, static_cast<double>(ny) * cell);
+    const GridQuery q{start.data(), ox, oy, cell, 1.0 / cell, cutoff + 1e-9, nx, ny, x, y};
+    GatherRange fast[kMaxGridRows];
+    GatherRange slow[kMaxGridRows];
+    const int n = grid_ranges(q, fast);
+    ASSERT_EQ(n, grid_ranges_scalar(q, slow)) << "trial " << trial;
+    for (int r = 0; r < n; ++r) {
+      EXPECT_EQ(fast[r].begin, slow[r].begin) << "trial " << trial << " row " << r;
+      EXPECT_EQ(fast[r].end, slow[r].end) << "trial " << trial << " row " << r;
+    }
+    const auto first_row = static_cast<std::int64_t>(fast[0].begin) / nx;
+    for (int k = 0; k < 50; ++k) {
+      const double angle = rng.uniform(0.0, 6.283185307179586);
+      const double dist = cutoff * std::sqrt(rng.uniform(0.0, 1.0));
+      const double px = x + dist * std::cos(angle);
+      const double py = y + dist * std::sin(angle);
+      const auto cx = static_cast<std::int64_t>(std::floor((px - ox) / cell));
+      const auto cy = static_cast<std::int64_t>(std::floor((py - oy) / cell));
+      if (cx < 0 || cy < 0 || cx >= nx || cy >= ny) continue;  // off the grid: no cell holds it
+      const std::int64_t r = cy - first_row;
+      ASSERT_TRUE(r >= 0 && r < n) << "trial " << trial;
+      const auto cell_index = static_cast<std::uint32_t>(cy * nx + cx);
+      EXPECT_TRUE(cell_index >= fast[r].begin && cell_index < fast[r].end) << "trial " << trial;
+    }
+  }
+}
+
 // A full batch of random pairs: offsets within ±dx, ±dy (m), relative velocities within ±dvx, ±dvy (m/s).
 PairBatch random_batch(std::uint64_t seed, double dx, double dy, double dvx, double dvy) {
   Rng rng(seed);
