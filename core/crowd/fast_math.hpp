@@ -2,6 +2,7 @@
 // Deterministic, inlinable exp and atan2 for the social-force inner loop: plain IEEE double
 // arithmetic only (no libm calls, no table), so every platform and thread count gives the same bits.
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -124,8 +125,8 @@ inline float fast_expf(float x) {
 // atan2(y, x) in [-pi, pi], absolute error < 1e-7 rad; atan2(0, 0) = 0.
 inline float fast_atan2f(float y, float x) {
   using namespace fast_float;
-  const float ax = x < 0.0f ? -x : x;
-  const float ay = y < 0.0f ? -y : y;
+  const float ax = std::fabs(x);
+  const float ay = std::fabs(y);
   const float mx = ax > ay ? ax : ay;
   const float mn = ax > ay ? ay : ax;
   // t = a or (a − 1)/(a + 1) for a = mn/mx, as one division: (mn − mx)/(mn + mx) above tan(π/8)

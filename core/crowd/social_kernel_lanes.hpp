@@ -87,6 +87,25 @@ SOCSIM_LANES Mk<N> operator>(const Pk<N>& a, const Pk<N>& b) {
   SOCSIM_EACH r.v[k] = Simd::less(b.v[k], a.v[k]);  // a > b is b < a, NaN false in both
   return r;
 }
+// For finite lanes: max(a, b), min(a, b) (as std::max, std::min) and |a|
+template <int N>
+SOCSIM_LANES Pk<N> maximum(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::max(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Pk<N> minimum(const Pk<N>& a, const Pk<N>& b) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::min(a.v[k], b.v[k]);
+  return r;
+}
+template <int N>
+SOCSIM_LANES Pk<N> magnitude(const Pk<N>& a) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::abs(a.v[k]);
+  return r;
+}
 // m ? t : f, lane by lane
 template <int N>
 SOCSIM_LANES Pk<N> select(const Mk<N>& m, const Pk<N>& t, const Pk<N>& f) {
@@ -100,7 +119,7 @@ SOCSIM_LANES Pk<N> exp_lanes(const Pk<N>& x) {  // fast_expf
   using namespace fast_float;
   const Pk<N> lo = splat<N>(kExpLow);
   const Pk<N> hi = splat<N>(kExpHigh);
-  const Pk<N> clamped = select(x < lo, lo, select(x > hi, hi, x));
+  const Pk<N> clamped = maximum(minimum(x, hi), lo);  // the same as fast_expf's selects for finite x
   const Pk<N> shift = splat<N>(kShift);
   const Pk<N> kf = (clamped * splat<N>(kLog2e) + shift) - shift;
   const Pk<N> r = (clamped - kf * splat<N>(kLn2Hi)) - kf * splat<N>(kLn2Lo);
@@ -116,8 +135,8 @@ SOCSIM_LANES Pk<N> atan2_lanes(const Pk<N>& y, const Pk<N>& x) {  // fast_atan2f
   using namespace fast_float;
   const Pk<N> zero = splat<N>(0.0f);
   const Pk<N> one = splat<N>(1.0f);
-  const Pk<N> ax = select(x < zero, -x, x);
-  const Pk<N> ay = select(y < zero, -y, y);
+  const Pk<N> ax = magnitude(x);
+  const Pk<N> ay = magnitude(y);
   const Mk<N> x_wider = ax > ay;
   const Pk<N> mx = select(x_wider, ax, ay);
   const Pk<N> mn = select(x_wider, ay, ax);
@@ -138,7 +157,7 @@ SOCSIM_LANES Pk<N> atan2_lanes(const Pk<N>& y, const Pk<N>& x) {  // fast_atan2f
 // stays within 32 bits (|push| <= 100·2^20).
 struct AheadLanes {
   typename Simd::ivec least, sum;
-  typename Simd::ivec fx, fy;  // 64-bit lanes: the running sums of the pair forces
+  typename Simd::ivec fx, fy;  // the running sums of the pair forces (32- or 64-bit lanes)
 };
 
 // ahead_terms' lane computation on N vectors (same operations, same order, same bits), from the
@@ -184,7 +203,7 @@ SOCSIM_LANES void ahead_lanes(const AheadParams& a, const Pk<N>& ox, const Pk<N>
 
 // Lanes [m, m + L·N) of the batch (L = Simd::kLanes), those at or past `count` read as 0 and not
 // written; count − m > L·(N − 1), so every vector has a lane in the batch.
-template <int N>
+template <int N, bool Narrow>
 SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m,
                                int count, const float* dx, const float* dy, const float* dvx,
                                const float* dvy, const float* tie_x, const float* tie_y, std::int32_t* fx,
@@ -227,9 +246,10 @@ SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, 
   const Pk<N> along = -exp_lanes(base - npb * npb);
   const Pk<N> sign = select(theta > zero, one, select(theta < zero, splat<N>(-1.0f), zero));
   const Pk<N> side = -sign * exp_lanes(base - nb * nb);
-  const Pk<N> scale = splat<N>(p.factor * kForceQuantum);
-  const Pk<N> gx = select(live, scale * (along * tx - side * ty), zero);
-  const Pk<N> gy = select(live, scale * (along * ty + side * tx), zero);
+  // 0 where not live: every other factor is finite, so the force is ±0 there, truncated to 0.
+  const Pk<N> scale = select(live, splat<N>(p.factor * kForceQuantum), zero);
+  const Pk<N> gx = scale * (along * tx - side * ty);
+  const Pk<N> gy = scale * (along * ty + side * tx);
   SOCSIM_EACH {
     const int o = m + Simd::kLanes * k;
     // Lanes outside the batch read zeros and give 0 (not live), so they add nothing to the sums.
@@ -237,20 +257,26 @@ SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, 
     const typename Simd::ivec qy = Simd::truncate(gy.v[k]);
     Simd::store_ints(in[k], fx + o, qx);
     Simd::store_ints(in[k], fy + o, qy);
-    acc.fx = Simd::widen_add(acc.fx, qx);
-    acc.fy = Simd::widen_add(acc.fy, qy);
+    if constexpr (Narrow) {  // 32-bit lanes (they cannot overflow: social_kernel_lanes)
+      acc.fx = Simd::iadd(acc.fx, qx);
+      acc.fy = Simd::iadd(acc.fy, qy);
+    } else {
+      acc.fx = Simd::widen_add(acc.fx, qx);
+      acc.fy = Simd::widen_add(acc.fy, qy);
+    }
   }
 }
 
 // Lanes [m, count): N vectors at a time while the batch fills more than N − 1, then the rest with
 // fewer, so no vector runs without a lane in the batch.
-template <int N>
+template <int N, bool Narrow>
 SOCSIM_LANES void kernel_from(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m,
                               int count, const float* dx, const float* dy, const float* dvx, const float* dvy,
                               const float* tie_x, const float* tie_y, std::int32_t* fx, std::int32_t* fy) {
   for (; count - m > Simd::kLanes * (N - 1); m += Simd::kLanes * N)
-    kernel_lanes<N>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
-  if constexpr (N > 1) kernel_from<N - 1>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+    kernel_lanes<N, Narrow>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  if constexpr (N > 1)
+    kernel_from<N - 1, Narrow>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
 }
 
 __attribute__((target(SOCSIM_LANES_TARGET))) BatchTotals social_kernel_lanes(
@@ -259,15 +285,25 @@ __attribute__((target(SOCSIM_LANES_TARGET))) BatchTotals social_kernel_lanes(
     std::int32_t* fy) {
   AheadLanes acc{Simd::iset1(std::bit_cast<std::int32_t>(best)), Simd::iset1(0), Simd::iset1(0),
                  Simd::iset1(0)};
-  kernel_from<Simd::kInterleave>(p, ahead, acc, 0, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  // Each lane sums at most kBatch / kLanes pair forces, each below 1.5·factor·2^20 in magnitude
+  // (|along|, |side| <= 1, |t| = 1, with rounding to spare): with the usual factors (below about
+  // 170 m/s² on 8 lanes) the sums fit 32-bit lanes, widened once at the end.
+  const bool narrow =
+      p.factor * kForceQuantum * 1.5f * static_cast<float>(kBatch / Simd::kLanes) < 2147483648.0f;
+  if (narrow)
+    kernel_from<Simd::kInterleave, true>(p, ahead, acc, 0, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+  else
+    kernel_from<Simd::kInterleave, false>(p, ahead, acc, 0, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
   alignas(64) std::int32_t least[Simd::kLanes];
   alignas(64) std::int32_t sums[Simd::kLanes];
-  alignas(64) std::int64_t force_x[Simd::kLanes / 2];
-  alignas(64) std::int64_t force_y[Simd::kLanes / 2];
+  // The lanes as stored (32-bit integers), read as the integers they hold: 32-bit sums, or the
+  // two halves of each 64-bit sum (low word first, two's complement).
+  alignas(64) std::int32_t force_x[Simd::kLanes];
+  alignas(64) std::int32_t force_y[Simd::kLanes];
   Simd::istore(least, acc.least);
   Simd::istore(sums, acc.sum);
-  Simd::istore(reinterpret_cast<std::int32_t*>(force_x), acc.fx);
-  Simd::istore(reinterpret_cast<std::int32_t*>(force_y), acc.fy);
+  Simd::istore(force_x, acc.fx);
+  Simd::istore(force_y, acc.fy);
   BatchTotals t{{std::bit_cast<float>(least[0]), 0}, 0, 0};
   std::int32_t cap = least[0];
   for (int l = 0; l < Simd::kLanes; ++l) {
@@ -275,9 +311,21 @@ __attribute__((target(SOCSIM_LANES_TARGET))) BatchTotals social_kernel_lanes(
     t.ahead.side_push += sums[l];
   }
   t.ahead.speed_cap = std::bit_cast<float>(cap);
-  for (int l = 0; l < Simd::kLanes / 2; ++l) {
-    t.fx += force_x[l];
-    t.fy += force_y[l];
+  if (narrow) {
+    for (int l = 0; l < Simd::kLanes; ++l) {
+      t.fx += force_x[l];
+      t.fy += force_y[l];
+    }
+  } else {
+    const auto wide = [](const std::int32_t* w, int l) {
+      return static_cast<std::int64_t>(
+          (static_cast<std::uint64_t>(static_cast<std::uint32_t>(w[2 * l + 1])) << 32u) |
+          static_cast<std::uint32_t>(w[2 * l]));
+    };
+    for (int l = 0; l < Simd::kLanes / 2; ++l) {
+      t.fx += wide(force_x, l);
+      t.fy += wide(force_y, l);
+    }
   }
   return t;
 }

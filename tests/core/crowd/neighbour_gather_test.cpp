@@ -334,12 +334,14 @@ TEST(SocialKernel, AheadTermsEqualTheHeadwayCapAndTheSidePush) {
 }
 
 // The step's single pass (social force and the ahead terms from the same loads) gives what the
-// two functions give one after the other, to the bit, with and without people ahead or oncoming.
+// two functions give one after the other, to the bit, with and without people ahead or oncoming,
+// with sums in 32-bit lanes and (large factor) in 64-bit ones.
 TEST(SocialKernel, FusedPassEqualsTheKernelAndTheAheadTerms) {
   const float inf = std::numeric_limits<float>::infinity();
-  const SocialParams sp{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, 2.1f};
   int pushes = 0;
   for (std::uint64_t seed : {41, 43, 47, 59}) {
+    // Two seeds with a social factor so large that the kernel sums in 64-bit lanes.
+    const SocialParams sp{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, seed < 47 ? 2.1f : 900.0f};
     PairBatch batch = random_batch(seed, 3.0, 0.8, 3.0, 0.6);
     batch.dx[5] = batch.dy[5] = 0.0f;  // coincident: the tie direction applies
     batch.tie_x[5] = 0.6f;
