@@ -159,11 +159,16 @@ TEST(CrowdAcceptance, WeidmannInPeriodicCorridor) {
 // 1.0 m: 1.52–2.28 /s, 1.2 m: 1.82–2.74 /s.
 struct BottleneckRun {
   double flow = 0.0;  // persons/s
+  // With a passage, while people flow through it (exits 10..70): mean density in it (/m²), mean
+  // speed of those in it (m/s), and the mean |offset| of their centres from its middle line (m).
+  double passage_density = 0.0, passage_speed = 0.0, passage_offset = 0.0;
   bool emptied = false;
   OverlapCounter overlaps;
 };
 
-BottleneckRun run_bottleneck(double width, std::uint64_t seed) {
+// `length` > 0: the door is the entrance of a passage that long (two thin walls), as in the
+// Jülich/Wuppertal experiments; crossings are then counted at its far end.
+BottleneckRun run_bottleneck(double width, std::uint64_t seed, double length = 0.0) {
   SimulationConfig config;
   config.threads = 2;
   config.seed = seed;
@@ -171,6 +176,11 @@ BottleneckRun run_bottleneck(double width, std::uint64_t seed) {
   EXPECT_TRUE(sim);
   const std::vector<Vec2> room = {{8, 4 - width / 2}, {8, 0}, {0, 0}, {0, 8}, {8, 8}, {8, 4 + width / 2}};
   EXPECT_TRUE(sim->add_polyline(room, false));
+  if (length > 0.0) {
+    EXPECT_TRUE(sim->add_wall({8, 4 - width / 2}, {8 + length, 4 - width / 2}));
+    EXPECT_TRUE(sim->add_wall({8, 4 + width / 2}, {8 + length, 4 + width / 2}));
+  }
+  const double line = 8.0 + length;  // counted when past it
   Rng rng(seed);
   std::vector<AgentId> ids;
   for (int k = 0; k < 80; ++k) {
@@ -183,21 +193,42 @@ BottleneckRun run_bottleneck(double width, std::uint64_t seed) {
     // (kept a body radius + 5 cm from the jambs), as routing to an exit line does; then straight on
     // along +x, spreading out as people leaving a bottleneck do.
     const double aim = std::clamp(spec.position.y, 4 - width / 2 + 0.28, 4 + width / 2 - 0.28);
-    EXPECT_TRUE(sim->set_goals(*id, {Goal{{8.5, aim}, width / 2 + 0.1}, Goal{{1000, aim}, 0.5}}));
+    std::vector<Goal> goals{Goal{{8.5, aim}, width / 2 + 0.1}};
+    if (length > 0.0) goals.push_back(Goal{{line + 0.5, aim}, width / 2 + 0.1});  // on through the passage
+    goals.push_back(Goal{{1000, aim}, 0.5});
+    EXPECT_TRUE(sim->set_goals(*id, goals));
     ids.push_back(*id);
   }
   BottleneckRun out;
   std::vector<double> crossed;
   std::vector<bool> out_of_room(ids.size(), false);
+  double inside_count = 0.0, speed_sum = 0.0, offset_sum = 0.0;
+  long inside_samples = 0;
   while (sim->time() < 150.0 && crossed.size() < ids.size()) {
     sim->step();
     out.overlaps.check(*sim);
     for (std::size_t k = 0; k < ids.size(); ++k) {
-      if (!out_of_room[k] && sim->position(ids[k]).x > 8.0) {
+      if (!out_of_room[k] && sim->position(ids[k]).x > line) {
         out_of_room[k] = true;
         crossed.push_back(sim->time());
       }
     }
+    if (length > 0.0 && crossed.size() >= 10 && crossed.size() < 70) {
+      for (std::size_t k = 0; k < ids.size(); ++k) {
+        const Vec2 p = sim->position(ids[k]);
+        if (p.x < 8.0 || p.x > line) continue;
+        const Vec2 v = sim->velocity(ids[k]);
+        inside_count += 1.0;
+        speed_sum += std::hypot(v.x, v.y);
+        offset_sum += std::abs(p.y - 4.0);
+      }
+      ++inside_samples;
+    }
+  }
+  if (inside_samples > 0 && inside_count > 0.0) {
+    out.passage_density = inside_count / (static_cast<double>(inside_samples) * width * length);
+    out.passage_speed = speed_sum / inside_count;
+    out.passage_offset = offset_sum / inside_count;
   }
   out.emptied = crossed.size() >= 70;
   if (out.emptied) out.flow = 60.0 / (crossed[69] - crossed[9]);
@@ -219,6 +250,34 @@ TEST(CrowdAcceptance, BottleneckFlowByWidth) {
       EXPECT_TRUE(r.emptied) << "b " << width << " seed " << seed;
       EXPECT_GE(r.flow, lo) << "b " << width << " seed " << seed;
       EXPECT_LE(r.flow, hi) << "b " << width << " seed " << seed;
+      EXPECT_EQ(r.overlaps.violations, 0) << "b " << width << " seed " << seed;
+    }
+  }
+}
+
+// The same room and crowd, the door now the entrance of a passage 4 m long, as in the Jülich and
+// Wuppertal experiments (Seyfried et al. 2009 used a bottleneck of that length). Asserted: everyone
+// passes and no overlap beyond 5 cm. J is printed against the same band but not asserted: the
+// model is under it here (about 1.1 /s at 0.8 m, 1.4–1.6 at 1.0 m, 1.8–1.9 at 1.2 m in session 16):
+// in the passage LightSFM's wall force holds people on its middle line, in single file, where
+// people walk staggered (docs/crowd.md, "Not done yet / weak").
+TEST(CrowdAcceptance, BottleneckFlowByWidthLongPassage) {
+  std::printf(
+      "Bottleneck, 80 persons, a passage 4 m long of width b (thin walls), J over exits 10..70\n"
+      "  (J printed against the band of 1.9 b /s ±20 %% (Seyfried et al. 2009), not asserted: a known gap;\n"
+      "   criteria: everyone through, no overlap > 5 cm)\n");
+  for (double width : {0.8, 1.0, 1.2}) {
+    const double lo = 0.8 * 1.9 * width;
+    const double hi = 1.2 * 1.9 * width;
+    for (std::uint64_t seed : {31, 32, 33}) {
+      const BottleneckRun r = run_bottleneck(width, seed, 4.0);
+      std::printf(
+          "  b = %.1f m, seed %llu: J = %.2f /s (range %.2f..%.2f); in the passage %.2f /m2 at %.2f m/s, "
+          "mean offset %.2f m\n",
+          width, static_cast<unsigned long long>(seed), r.flow, lo, hi, r.passage_density, r.passage_speed,
+          r.passage_offset);
+      report_overlaps("", r.overlaps);
+      EXPECT_TRUE(r.emptied) << "b " << width << " seed " << seed;
       EXPECT_EQ(r.overlaps.violations, 0) << "b " << width << " seed " << seed;
     }
   }
