@@ -256,16 +256,15 @@ TEST(CrowdAcceptance, BottleneckFlowByWidth) {
 }
 
 // The same room and crowd, the door now the entrance of a passage 4 m long, as in the Jülich and
-// Wuppertal experiments (Seyfried et al. 2009 used a bottleneck of that length). Asserted: everyone
-// passes and no overlap beyond 5 cm. J is printed against the same band but not asserted: the
-// model is under it here (about 1.1 /s at 0.8 m, 1.4–1.6 at 1.0 m, 1.8–1.9 at 1.2 m in session 16):
-// in the passage LightSFM's wall force holds people on its middle line, in single file, where
-// people walk staggered (docs/crowd.md, "Not done yet / weak").
+// Wuppertal experiments (Seyfried et al. 2009 used a bottleneck of that length). Criteria: J in
+// the band at 0.8 and 1.0 m and not over it at 1.2 m, everyone through, no overlap beyond 5 cm.
+// At 1.2 m J is printed but its lower edge not asserted: 1.76–1.89 /s against 1.82 in session 16
+// (inside the passage people walk at about 0.7 m/s at 2.3 /m²), a known gap (docs/crowd.md).
 TEST(CrowdAcceptance, BottleneckFlowByWidthLongPassage) {
   std::printf(
       "Bottleneck, 80 persons, a passage 4 m long of width b (thin walls), J over exits 10..70\n"
-      "  (J printed against the band of 1.9 b /s ±20 %% (Seyfried et al. 2009), not asserted: a known gap;\n"
-      "   criteria: everyone through, no overlap > 5 cm)\n");
+      "  (criterion: J within ±20 %% of 1.9 b /s, Seyfried et al. 2009; at 1.2 m only the upper edge\n"
+      "   is asserted, a known gap; everyone through, no overlap > 5 cm)\n");
   for (double width : {0.8, 1.0, 1.2}) {
     const double lo = 0.8 * 1.9 * width;
     const double hi = 1.2 * 1.9 * width;
@@ -278,6 +277,10 @@ TEST(CrowdAcceptance, BottleneckFlowByWidthLongPassage) {
           r.passage_offset);
       report_overlaps("", r.overlaps);
       EXPECT_TRUE(r.emptied) << "b " << width << " seed " << seed;
+      if (width < 1.1) {
+        EXPECT_GE(r.flow, lo) << "b " << width << " seed " << seed;
+      }
+      EXPECT_LE(r.flow, hi) << "b " << width << " seed " << seed;
       EXPECT_EQ(r.overlaps.violations, 0) << "b " << width << " seed " << seed;
     }
   }
