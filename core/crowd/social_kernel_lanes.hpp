@@ -10,7 +10,7 @@
 // rather than a template over Simd.
 //
 // N vectors at a time, their operations interleaved one by one. The compiled loop works on one
-// vector at a time: each lane is a chain of ~200 dependent operations (two square roots, four
+// vector at a time: each lane is a chain of ~200 dependent operations (two square roots, three
 // divisions, an arctangent and two exponentials), longer than the processor can look ahead, so
 // consecutive vectors barely overlap; interleaved vectors keep its units busy (−28 % per pair for
 // two AVX-512 vectors, docs/PERFORMANCE.md). Every operation is the portable loop's, in its order,
