@@ -177,7 +177,7 @@ class CrowdSimulation {
   };
   [[nodiscard]] AgentInputs inputs_of(std::uint32_t i) const;
   template <class Neighbours>
-  void advance_agent(std::uint32_t i, const AgentInputs& a, const Neighbours& neighbours,
+  void advance_agent(std::uint32_t i, const AgentInputs& in, const Neighbours& neighbours,
                      ForceBreakdown* breakdown);
 
   SimulationConfig config_;

@@ -304,7 +304,7 @@ __attribute__((target(SOCSIM_LANES_TARGET))) BatchTotals social_kernel_lanes(
   Simd::istore(sums, acc.sum);
   Simd::istore(force_x, acc.fx);
   Simd::istore(force_y, acc.fy);
-  BatchTotals t{{std::bit_cast<float>(least[0]), 0}, 0, 0};
+  BatchTotals t{};
   std::int32_t cap = least[0];
   for (int l = 0; l < Simd::kLanes; ++l) {
     cap = std::min(cap, least[l]);
