@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -57,6 +58,57 @@ struct CrowdSimulation::AgentMeta {
   std::vector<Goal> goals;
   std::size_t goal_index = 0;
   bool cyclic = false;
+};
+
+// A neighbour within touching distance + margin: its agent id, the unit direction n to it, the
+// gap between the bodies (negative: overlap) and its frozen velocity.
+struct BodyContact {
+  std::uint32_t who;
+  double nx, ny, gap, vx, vy;
+};
+
+// What an agent's step needs before its neighbours (prepare_agent).
+struct CrowdSimulation::AgentPrep {
+  double ex = 0.0;  // the unit walking direction, (0, 0) without a goal (or once reached)
+  double ey = 0.0;
+  bool heading = false;
+  unsigned wall_sides = 0;  // walls abreast within zipper_reach: 1 left, 2 right, 3 both
+  Vec2 obstacle;            // the walls' force
+};
+
+// The neighbours' sums for one agent.
+struct CrowdSimulation::NeighbourTotals {
+  double speed_cap = std::numeric_limits<double>::infinity();
+  Vec2 social, repulsion, body;
+};
+
+// The pair step's scratch (step_pairs), kept between steps.
+struct CrowdSimulation::PairState {
+  // One agent's sums from the pairs a thread computed (integers: exact, in any order).
+  struct Sums {
+    std::int64_t social_x, social_y, side_push, repulsion_x, repulsion_y, body_x, body_y;
+    std::int32_t cap;  // the bits of the smallest headway cap (those of +inf: none)
+  };
+  struct Record {
+    std::uint32_t to;  // the sorted position of the agent the contact belongs to
+    BodyContact contact;
+  };
+  struct Thread {
+    std::vector<Sums> sums;  // by sorted position
+    std::vector<Record> contacts;
+  };
+  std::vector<Thread> threads;
+  // By sorted position: prepare_agent's results, the kernel's inputs of each agent (walking
+  // direction, v·e, headway band; 0 for a driven one), the contact margin.
+  std::vector<AgentPrep> prep;
+  struct Heading {
+    float ex, ey, along, band;
+  };
+  std::vector<Heading> heading;
+  std::vector<double> margin;
+  // The contacts of the agent at sorted position k: contacts[contact_start[k] .. [k + 1]).
+  std::vector<std::uint32_t> contact_start;
+  std::vector<BodyContact> contacts;
 };
 
 namespace {
@@ -254,16 +306,30 @@ bool nearest_point_is(Vec2 p, Vec2 v, const WallSegment& o) {
 // reference give bit-identical results. Each term is bounded to ±2^30 (no overflow).
 class FixedSum {
  public:
-  void add(double v) {
+  void add(double v) { sum_ += term(v); }
+  [[nodiscard]] double value() const { return to_double(sum_); }
+  // What add(v) adds, and the value of a sum of such terms.
+  static std::int64_t term(double v) {
     constexpr double kLimit = 1073741824.0;  // 2^30 m/s²
     const double clamped = v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v);
-    sum_ += static_cast<std::int64_t>(clamped * 4294967296.0);
+    return static_cast<std::int64_t>(clamped * 4294967296.0);
   }
-  [[nodiscard]] double value() const { return static_cast<double>(sum_) * 0x1.0p-32; }
+  static double to_double(std::int64_t sum) { return static_cast<double>(sum) * 0x1.0p-32; }
 
  private:
   std::int64_t sum_ = 0;
 };
+
+// The social force from the kernel's integer sums and the side push, which pushes along the
+// right-hand direction (e_y, −e_x) of the walking direction e.
+Vec2 social_total(std::int64_t social_x, std::int64_t social_y, std::int64_t side_push, float ex, float ey) {
+  const double side = static_cast<double>(side_push) / kForceQuantum;
+  return {static_cast<double>(social_x) / kForceQuantum + side * static_cast<double>(ey),
+          static_cast<double>(social_y) / kForceQuantum - side * static_cast<double>(ex)};
+}
+
+// v_j·e below −kOncoming (m/s along the walking direction e) is walking towards the agent.
+constexpr float kOncoming = 0.1f;
 
 // Frozen state of the candidate neighbours, in the order a scan visits them.
 struct NeighbourArrays {
@@ -400,12 +466,7 @@ class NeighbourSums {
     count_ = 0;
   }
 
-  [[nodiscard]] Vec2 social() const {
-    // The side preference pushes along the right-hand direction (e_y, −e_x).
-    const double side = static_cast<double>(side_push_) / kForceQuantum;
-    return {static_cast<double>(social_x_) / kForceQuantum + side * static_cast<double>(ey_),
-            static_cast<double>(social_y_) / kForceQuantum - side * static_cast<double>(ex_)};
-  }
+  [[nodiscard]] Vec2 social() const { return social_total(social_x_, social_y_, side_push_, ex_, ey_); }
 
   // The speed–headway cap: the smallest (s − ℓ + τ·(v_j − v_i)·e)/T over the people ahead in the
   // walking band (band_) who do not come towards the agent; +inf when there is none within the
@@ -415,12 +476,7 @@ class NeighbourSums {
   FixedSum repulsion_x, repulsion_y;
   FixedSum body_x, body_y;
 
-  // A neighbour within touching distance + margin: its agent id, the unit direction n to it, the
-  // gap between the bodies (negative: overlap) and its frozen velocity.
-  struct Contact {
-    std::uint32_t who;
-    double nx, ny, gap, vx, vy;
-  };
+  using Contact = BodyContact;
   static constexpr int kMaxContacts = 32;
   // Sorted by agent id, so the list (and what is done with it) does not depend on the order
   // neighbours were visited in; beyond kMaxContacts (bodies piled up) the highest ids are dropped.
@@ -438,8 +494,6 @@ class NeighbourSums {
     contacts_[pos] = c;
     contact_count_ = std::min(contact_count_ + 1, contacts_.size());
   }
-
-  static constexpr float kOncoming = 0.1f;  // m/s along the walking direction
 
   void touching(double dx, double dy, double d2, double reach, std::int32_t gj, std::uint32_t idj) {
     if (group_ >= 0 && gj == group_) {  // LightSFM: Σ (p_i − p_j) over touching group members
@@ -1045,6 +1099,45 @@ FullScan full_scan(const ImagesT& m) {
 template <class Neighbours>
 void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, const Neighbours& neighbours,
                                     ForceBreakdown* breakdown) {
+  if (in.driven != kNotDriven) {  // moved from outside: stays where it was put
+    hold_driven(i, in, breakdown);
+    return;
+  }
+  const AgentPrep prep = prepare_agent(in);
+  // Social, group-repulsion and body forces from neighbours within the cut-off.
+  const ForceParameters& fp = roles_.at(in.role).forces;
+  thread_local std::vector<BodyContact> contacts;
+  NeighbourTotals t;
+  {
+    NeighbourSums sums(i, in.x, in.y, in.vx, in.vy, in.r, in.group, config_.neighbor_cutoff, max_radius_, fp,
+                       config_.body_stiffness, prep.ex, prep.ey, contact_margin(in),
+                       (prep.wall_sides == 3u ? fp.zipper_band : fp.headway_band) * in.r);
+    neighbours(sums, in.x, in.y);
+    sums.flush();
+    t.speed_cap = sums.speed_cap();
+    t.social = sums.social();
+    t.repulsion = {sums.repulsion_x.value(), sums.repulsion_y.value()};
+    t.body = {sums.body_x.value(), sums.body_y.value()};
+    contacts.assign(sums.contacts().begin(), sums.contacts().end());
+  }
+  finish_agent(i, in, prep, t, contacts, breakdown);
+}
+
+void CrowdSimulation::hold_driven(std::uint32_t i, const AgentInputs& in, ForceBreakdown* breakdown) {
+  if (breakdown != nullptr) *breakdown = ForceBreakdown{};
+  npx_[i] = in.x;
+  npy_[i] = in.y;
+  nvx_[i] = in.vx;
+  nvy_[i] = in.vy;
+  if (config_.hard_contact) contact_count_[i] = 0;
+}
+
+double CrowdSimulation::contact_margin(const AgentInputs& in) const {
+  // Neighbours the two bodies could reach within one step (with 0.05 m to spare) are contacts.
+  return config_.hard_contact ? config_.dt * (in.vmax + max_vmax_) + 0.05 : 0.0;
+}
+
+CrowdSimulation::AgentPrep CrowdSimulation::prepare_agent(const AgentInputs& in) const {
   const RoleParameters& role = roles_.at(in.role);
   const ForceParameters& fp = role.forces;
   const double x = in.x;
@@ -1052,18 +1145,8 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, cons
   const double vx = in.vx;
   const double vy = in.vy;
   const double r = in.r;
-  const double dt = config_.dt;
+  AgentPrep prep;
   ForceBreakdown f;
-  if (in.driven != kNotDriven) {  // moved from outside: stays where it was put
-    if (breakdown != nullptr) *breakdown = f;
-    npx_[i] = x;
-    npy_[i] = y;
-    nvx_[i] = vx;
-    nvy_[i] = vy;
-    if (config_.hard_contact) contact_count_[i] = 0;
-    return;
-  }
-
   // Desired force (computed after the neighbour scan): relax towards the desired speed along the
   // goal direction (LightSFM computeDesiredForce); brake with −v/τ when there is no goal or it is
   // reached.
@@ -1201,31 +1284,43 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, cons
     f.obstacle.y += along * ey + across * (side_y - along * ey);
   }
 
-  // Social, group-repulsion and body forces from neighbours within the cut-off.
+  prep.ex = ex;
+  prep.ey = ey;
+  prep.heading = heading;
+  prep.wall_sides = wall_sides;
+  prep.obstacle = f.obstacle;
+  return prep;
+}
+
+void CrowdSimulation::finish_agent(std::uint32_t i, const AgentInputs& in, const AgentPrep& prep,
+                                   const NeighbourTotals& t, std::vector<BodyContact>& contacts,
+                                   ForceBreakdown* breakdown) {
+  const ForceParameters& fp = roles_.at(in.role).forces;
+  const double x = in.x;
+  const double y = in.y;
+  const double vx = in.vx;
+  const double vy = in.vy;
+  const double r = in.r;
+  const double dt = config_.dt;
+  const double ex = prep.ex;
+  const double ey = prep.ey;
+  const bool heading = prep.heading;
   const std::int32_t g = in.group;
-  thread_local std::vector<NeighbourSums::Contact> contacts;
-  {
-    // Neighbours the two bodies could reach within one step (with 0.05 m to spare) are contacts.
-    const double margin = config_.hard_contact ? dt * (in.vmax + max_vmax_) + 0.05 : 0.0;
-    NeighbourSums sums(i, x, y, vx, vy, r, g, config_.neighbor_cutoff, max_radius_, fp,
-                       config_.body_stiffness, ex, ey, margin,
-                       (wall_sides == 3u ? fp.zipper_band : fp.headway_band) * r);
-    neighbours(sums, x, y);
-    sums.flush();
-    if (heading) {
-      // The desired speed, capped by the headway to the person ahead (speed–headway adaptation).
-      double v0 = in.v0;
-      if (fp.headway_time > 0.0) v0 = std::min(v0, sums.speed_cap());
-      f.desired = {fp.desired_factor * (ex * v0 - vx) / fp.relaxation_time,
-                   fp.desired_factor * (ey * v0 - vy) / fp.relaxation_time};
-    } else {
-      f.desired = {-vx / fp.relaxation_time, -vy / fp.relaxation_time};
-    }
-    f.social = sums.social();
-    f.group = {sums.repulsion_x.value(), sums.repulsion_y.value()};
-    f.body = {sums.body_x.value(), sums.body_y.value()};
-    contacts.assign(sums.contacts().begin(), sums.contacts().end());
+  ForceBreakdown f;
+  f.obstacle = prep.obstacle;
+  if (heading) {
+    // The desired speed, capped by the headway to the person ahead (speed–headway adaptation).
+    double v0 = in.v0;
+    if (fp.headway_time > 0.0) v0 = std::min(v0, t.speed_cap);
+    f.desired = {fp.desired_factor * (ex * v0 - vx) / fp.relaxation_time,
+                 fp.desired_factor * (ey * v0 - vy) / fp.relaxation_time};
+  } else {
+    f.desired = {-vx / fp.relaxation_time, -vy / fp.relaxation_time};
   }
+  f.social = t.social;
+  f.group = t.repulsion;
+  f.body = t.body;
+  const std::span<const std::uint32_t> near_walls = wall_grid_.near(x, y);
 
   // Group gaze and coherence (LightSFM computeGroupForce, non-paper variant).
   if (g >= 0 && group_size_[static_cast<std::size_t>(g)] >= 2) {
@@ -1276,7 +1371,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, cons
   // Contacts come sorted by agent id: the result does not depend on the order of the scan.
   if (config_.hard_contact) {
     for (int pass = 0; pass < 2; ++pass) {
-      for (const NeighbourSums::Contact& c : contacts) {
+      for (const BodyContact& c : contacts) {
         // A driven agent (a robot) does not give way: against it the agent takes the whole gap.
         const bool alone = driven_[c.who] != kNotDriven;
         const double mean =
@@ -1338,15 +1433,14 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, cons
     // The kStoredContacts nearest (smallest gap, then lowest id), kept in id order: in a pile-up
     // the bodies that can overlap are the near ones, not the lowest ids.
     if (contacts.size() > kStoredContacts) {
-      const auto nearer = [](const NeighbourSums::Contact& a, const NeighbourSums::Contact& b) {
+      const auto nearer = [](const BodyContact& a, const BodyContact& b) {
         return a.gap < b.gap || (a.gap == b.gap && a.who < b.who);
       };
       const auto cut = contacts.begin() + static_cast<std::ptrdiff_t>(kStoredContacts);
       std::nth_element(contacts.begin(), cut, contacts.end(), nearer);
       contacts.resize(kStoredContacts);
-      std::sort(
-          contacts.begin(), contacts.end(),
-          [](const NeighbourSums::Contact& a, const NeighbourSums::Contact& b) { return a.who < b.who; });
+      std::sort(contacts.begin(), contacts.end(),
+                [](const BodyContact& a, const BodyContact& b) { return a.who < b.who; });
     }
     for (std::size_t k = 0; k < contacts.size(); ++k) contact_ids_[i * kStoredContacts + k] = contacts[k].who;
     contact_count_[i] = static_cast<std::uint8_t>(contacts.size());
@@ -1480,11 +1574,314 @@ void CrowdSimulation::step() {
                       c.ny,
                       {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.group.data(),
                        c.id.data(), nullptr, static_cast<std::uint32_t>(c.x.size())}};
-  pool_->parallel_for(c.agents.size(), 128, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) advance_agent(c.agents[k], c.inputs[k], scan, nullptr);
-  });
+  if (pairs_once()) {
+    step_pairs();
+  } else {
+    pool_->parallel_for(c.agents.size(), 128, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) advance_agent(c.agents[k], c.inputs[k], scan, nullptr);
+    });
+  }
   separate_bodies();
   finish_step();
+}
+
+namespace {
+
+// Whether two roles' pair terms agree (then every pair's social force is antisymmetric and the
+// ahead terms use the same parameters on both sides).
+bool same_pair_terms(const ForceParameters& a, const ForceParameters& b) {
+  return a.lambda == b.lambda && a.gamma == b.gamma && a.n == b.n && a.n_prime == b.n_prime &&
+         a.social_factor == b.social_factor && a.headway_distance == b.headway_distance &&
+         a.headway_time == b.headway_time && a.headway_anticipation == b.headway_anticipation &&
+         a.side_factor == b.side_factor && a.side_range == b.side_range && a.side_bias == b.side_bias &&
+         a.side_band == b.side_band && a.group_repulsion_factor == b.group_repulsion_factor;
+}
+
+}  // namespace
+
+bool CrowdSimulation::pairs_once() const {
+  if (!config_.pairs_once || config_.periodic_length > 0.0) return false;
+  std::size_t role = SIZE_MAX;
+  for (std::size_t i = 0; i < size(); ++i) {
+    if (!seen(i) || role_[i] == role) continue;
+    if (role != SIZE_MAX && !same_pair_terms(roles_.at(role).forces, roles_.at(role_[i]).forces))
+      return false;
+    if (role == SIZE_MAX) role = role_[i];
+  }
+  return true;
+}
+
+// The step with each pair once (pairs_once()): the same results as advance_agent agent by agent,
+// bit for bit (CrowdSimulation.PairsOnceGiveTheSameBits). Three passes over the agents in the
+// cells' order: (1) each agent's walking direction and walls (prepare_agent); (2) each agent's
+// pairs with the neighbours that come after it in that order — the rows of cells from its own
+// upwards — through pair_kernel, the results added to both agents' sums in the running thread's
+// own arrays; (3) the sums of all threads and finish_agent.
+void CrowdSimulation::step_pairs() {
+  const CellIndex& c = *cells_;
+  const std::size_t n = c.agents.size();  // no periodic images here: entries = agents
+  if (n == 0) return;
+  if (!pairs_) pairs_ = std::make_unique<PairState>();
+  PairState& ps = *pairs_;
+  ps.threads.resize(pool_->threads());
+  for (PairState::Thread& t : ps.threads) {
+    t.sums.resize(n);
+    t.contacts.clear();
+  }
+  ps.prep.resize(n);
+  ps.heading.resize(n);
+  ps.margin.resize(n);
+  const std::int32_t no_cap = std::bit_cast<std::int32_t>(std::numeric_limits<float>::infinity());
+
+  pool_->parallel_for(n, 256, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const AgentInputs& in = c.inputs[k];
+      for (PairState::Thread& t : ps.threads) t.sums[k] = {0, 0, 0, 0, 0, 0, 0, no_cap};
+      ps.margin[k] = contact_margin(in);
+      if (in.driven != kNotDriven) {  // its own sums are not used
+        ps.heading[k] = {0.0f, 0.0f, 0.0f, 0.0f};
+        continue;
+      }
+      const AgentPrep prep = prepare_agent(in);
+      const ForceParameters& fp = roles_.at(in.role).forces;
+      ps.prep[k] = prep;
+      // As NeighbourSums takes them.
+      ps.heading[k] = {static_cast<float>(prep.ex), static_cast<float>(prep.ey),
+                       static_cast<float>(in.vx * prep.ex + in.vy * prep.ey),
+                       static_cast<float>((prep.wall_sides == 3u ? fp.zipper_band : fp.headway_band) * in.r)};
+    }
+  });
+
+  const ForceParameters& fp = roles_.at(c.inputs[0].role).forces;  // every agent's pair terms
+  const SocialParams social{static_cast<float>(fp.lambda),      static_cast<float>(fp.gamma),
+                            static_cast<float>(1.0 / fp.gamma), static_cast<float>(fp.n),
+                            static_cast<float>(fp.n_prime),     static_cast<float>(fp.social_factor)};
+  const PairAheadParams ahead{kOncoming,
+                              static_cast<float>(fp.headway_distance),
+                              static_cast<float>(fp.headway_time > 0.0 ? 1.0 / fp.headway_time : 0.0),
+                              static_cast<float>(fp.headway_anticipation),
+                              static_cast<float>(fp.side_band),
+                              static_cast<float>(fp.side_bias),
+                              static_cast<float>(fp.side_factor),
+                              static_cast<float>(1.0 / fp.side_range)};
+  const double cutoff2 = config_.neighbor_cutoff * config_.neighbor_cutoff;
+  const double widest_margin = config_.hard_contact ? config_.dt * 2.0 * max_vmax_ + 0.05 : 0.0;
+  const double repulsion = fp.group_repulsion_factor;
+  const double stiffness = config_.body_stiffness;
+  const auto readable = static_cast<std::uint32_t>(c.x.size());
+
+  pool_->parallel_for(n, 128, [&](std::size_t begin, std::size_t end) {
+    PairState::Thread& t = ps.threads[WorkerPool::current_thread()];
+    struct Batch {
+      PairLanes lanes;
+      std::uint32_t owner[kBatch];
+      std::uint32_t slot[kBatch];
+      std::uint8_t close[kBatch];
+      int count = 0;
+      int close_count = 0;
+      bool tied = false;  // some tie direction is set (else tie_x, tie_y are all 0)
+      Batch() {
+        std::fill(std::begin(lanes.tie_x), std::end(lanes.tie_x), 0.0f);
+        std::fill(std::begin(lanes.tie_y), std::end(lanes.tie_y), 0.0f);
+      }
+    };
+    thread_local Batch batch;
+    Batch& b = batch;
+    PairLanes& l = b.lanes;
+    const auto contact = [&](std::uint32_t to, std::uint32_t self, std::uint32_t other, double dx, double dy,
+                             double d2, double reach, std::size_t from) {
+      const Separation sep = separation(dx, dy, d2, self, other);
+      t.contacts.push_back({to, {other, sep.x, sep.y, sep.d - reach, c.vx[from], c.vy[from]}});
+    };
+    const auto flush = [&] {
+      // Pairs that may touch: contacts, group repulsion and the body force, on both sides (as
+      // NeighbourSums::flush does for each).
+      for (int q = 0; q < b.close_count; ++q) {
+        const int m = b.close[q];
+        const std::uint32_t ki = b.owner[m];
+        const std::uint32_t kj = b.slot[m];
+        const double fdx = l.dx[m];
+        const double fdy = l.dy[m];
+        const double d2 = fdx * fdx + fdy * fdy;
+        const double reach = c.r[ki] + c.r[kj];
+        const std::uint32_t id_i = c.id[ki];
+        const std::uint32_t id_j = c.id[kj];
+        const double mi = ps.margin[ki];
+        const double mj = ps.margin[kj];
+        if (mi > 0.0 && d2 < (reach + mi) * (reach + mi)) contact(ki, id_i, id_j, fdx, fdy, d2, reach, kj);
+        if (mj > 0.0 && d2 < (reach + mj) * (reach + mj)) contact(kj, id_j, id_i, -fdx, -fdy, d2, reach, ki);
+        if (d2 >= reach * reach) continue;
+        if (d2 <= kTiny2) {  // coincident: part along the pair's fixed direction
+          const Vec2 u = tie_break_direction(id_i, id_j);
+          l.dx[m] = 0.0f;
+          l.dy[m] = 0.0f;
+          l.tie_x[m] = static_cast<float>(u.x);
+          l.tie_y[m] = static_cast<float>(u.y);
+          b.tied = true;
+        }
+        PairState::Sums& si = t.sums[ki];
+        PairState::Sums& sj = t.sums[kj];
+        const double dxi = c.x[kj] - c.x[ki];
+        const double dyi = c.y[kj] - c.y[ki];
+        const double dxj = c.x[ki] - c.x[kj];
+        const double dyj = c.y[ki] - c.y[kj];
+        if (c.group[ki] >= 0 && c.group[kj] == c.group[ki]) {
+          si.repulsion_x += FixedSum::term(-repulsion * dxi);
+          si.repulsion_y += FixedSum::term(-repulsion * dyi);
+          sj.repulsion_x += FixedSum::term(-repulsion * dxj);
+          sj.repulsion_y += FixedSum::term(-repulsion * dyj);
+        }
+        if (stiffness > 0.0) {
+          const Separation a = separation(dxi, dyi, d2, id_i, id_j);
+          si.body_x += FixedSum::term(-stiffness * (reach - a.d) * a.x);
+          si.body_y += FixedSum::term(-stiffness * (reach - a.d) * a.y);
+          const Separation o = separation(dxj, dyj, d2, id_j, id_i);
+          sj.body_x += FixedSum::term(-stiffness * (reach - o.d) * o.x);
+          sj.body_y += FixedSum::term(-stiffness * (reach - o.d) * o.y);
+        }
+      }
+      const int padded = (b.count + kPairLanes - 1) / kPairLanes * kPairLanes;
+      for (int m = b.count; m < padded; ++m) {
+        l.dx[m] = l.dy[m] = l.dvx[m] = l.dvy[m] = 0.0f;
+        l.ex_i[m] = l.ey_i[m] = l.along_i[m] = l.band_i[m] = 0.0f;
+        l.ex_j[m] = l.ey_j[m] = l.along_j[m] = l.band_j[m] = 0.0f;
+      }
+      pair_kernel(social, ahead, padded, l);
+      if (b.tied) {
+        std::fill(std::begin(l.tie_x), std::end(l.tie_x), 0.0f);
+        std::fill(std::begin(l.tie_y), std::end(l.tie_y), 0.0f);
+        b.tied = false;
+      }
+      // The owners' lanes are consecutive: their sums are kept here and added once per owner.
+      std::uint32_t owner = b.owner[0];
+      std::int64_t sx = 0, sy = 0, push = 0;
+      std::int32_t cap = INT32_MAX;
+      const auto add_owner = [&] {
+        PairState::Sums& si = t.sums[owner];
+        si.social_x += sx;
+        si.social_y += sy;
+        si.side_push += push;
+        si.cap = std::min(si.cap, cap);
+      };
+      for (int m = 0; m < b.count; ++m) {
+        if (b.owner[m] != owner) {
+          add_owner();
+          owner = b.owner[m];
+          sx = sy = push = 0;
+          cap = INT32_MAX;
+        }
+        sx += l.fx[m];
+        sy += l.fy[m];
+        push += l.push_i[m];
+        cap = std::min(cap, l.cap_i[m]);
+        PairState::Sums& sj = t.sums[b.slot[m]];
+        sj.social_x -= l.fx[m];
+        sj.social_y -= l.fy[m];
+        if (l.cap_j[m] != INT32_MAX || l.push_j[m] != 0) {  // mostly not: i is rarely ahead of j
+          sj.side_push += l.push_j[m];
+          sj.cap = std::min(sj.cap, l.cap_j[m]);
+        }
+      }
+      if (b.count > 0) add_owner();
+      b.count = 0;
+      b.close_count = 0;
+    };
+    for (std::size_t k = begin; k < end; ++k) {
+      const auto self = static_cast<std::uint32_t>(k);
+      const double px = c.x[k];
+      const double py = c.y[k];
+      const double close = c.r[k] + max_radius_ + widest_margin;
+      const GatherQuery q{c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), px, py, c.vx[k], c.vy[k], cutoff2,
+                          // As NeighbourSums' (widened: the other side's margin may be the larger).
+                          close * close * (1.0 + 1e-5) + 2.0 * kTiny2, self, nullptr, readable};
+      GatherRange ranges[kMaxGridRows];
+      const GridQuery g{
+          c.start.data(), c.origin_x, c.origin_y, c.cell, c.inv_cell, config_.neighbor_cutoff + 1e-9,
+          c.nx,           c.ny,       px,         py,     true};
+      const int rows = grid_ranges(g, ranges);
+      int count = 0;
+      for (int r = 0; r < rows; ++r) {  // the own row from the agent on: later entries only
+        const std::uint32_t from = std::max(ranges[r].begin, self + 1);
+        if (from < ranges[r].end) ranges[count++] = {from, ranges[r].end};
+      }
+      GatherBatch gb{l.dx, l.dy, l.dvx, l.dvy, b.slot, b.close, kBatch, b.count, b.close_count};
+      const PairState::Heading own = ps.heading[k];
+      int done = 0;
+      while (true) {
+        const int first = gb.count;
+        done += gather_neighbours(q, ranges + done, count - done, gb);
+        for (int m = first; m < gb.count; ++m) {
+          const PairState::Heading other = ps.heading[b.slot[m]];
+          b.owner[m] = self;
+          l.ex_i[m] = own.ex;
+          l.ey_i[m] = own.ey;
+          l.along_i[m] = own.along;
+          l.band_i[m] = own.band;
+          l.ex_j[m] = other.ex;
+          l.ey_j[m] = other.ey;
+          l.along_j[m] = other.along;
+          l.band_j[m] = other.band;
+        }
+        b.count = gb.count;
+        b.close_count = gb.close_count;
+        if (done == count) break;
+        flush();  // the batch is full
+        gb.count = gb.close_count = 0;
+      }
+      if (b.count >= kBatch - 16) flush();
+    }
+    if (b.count > 0) flush();
+  });
+
+  // Each agent's contacts in one run (records of both threads, any order: sorted below).
+  ps.contact_start.assign(n + 1, 0);
+  for (const PairState::Thread& t : ps.threads)
+    for (const PairState::Record& r : t.contacts) ++ps.contact_start[r.to + 1];
+  for (std::size_t k = 0; k < n; ++k) ps.contact_start[k + 1] += ps.contact_start[k];
+  ps.contacts.resize(ps.contact_start[n]);
+  {
+    std::vector<std::uint32_t>& fill = ps.contact_start;  // advanced to each run's end, then restored
+    for (const PairState::Thread& t : ps.threads)
+      for (const PairState::Record& r : t.contacts) ps.contacts[fill[r.to]++] = r.contact;
+    for (std::size_t k = n; k > 0; --k) fill[k] = fill[k - 1];
+    fill[0] = 0;
+  }
+
+  pool_->parallel_for(n, 128, [&](std::size_t begin, std::size_t end) {
+    thread_local std::vector<BodyContact> contacts;
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t i = c.agents[k];
+      const AgentInputs& in = c.inputs[k];
+      if (in.driven != kNotDriven) {
+        hold_driven(i, in, nullptr);
+        continue;
+      }
+      PairState::Sums s = ps.threads[0].sums[k];
+      for (std::size_t th = 1; th < ps.threads.size(); ++th) {
+        const PairState::Sums& o = ps.threads[th].sums[k];
+        s.social_x += o.social_x;
+        s.social_y += o.social_y;
+        s.side_push += o.side_push;
+        s.repulsion_x += o.repulsion_x;
+        s.repulsion_y += o.repulsion_y;
+        s.body_x += o.body_x;
+        s.body_y += o.body_y;
+        s.cap = std::min(s.cap, o.cap);
+      }
+      NeighbourTotals totals;
+      totals.speed_cap = static_cast<double>(std::bit_cast<float>(s.cap));
+      totals.social = social_total(s.social_x, s.social_y, s.side_push, ps.heading[k].ex, ps.heading[k].ey);
+      totals.repulsion = {FixedSum::to_double(s.repulsion_x), FixedSum::to_double(s.repulsion_y)};
+      totals.body = {FixedSum::to_double(s.body_x), FixedSum::to_double(s.body_y)};
+      // As NeighbourSums keeps them: by agent id, the lowest kMaxContacts.
+      contacts.assign(ps.contacts.begin() + ps.contact_start[k],
+                      ps.contacts.begin() + ps.contact_start[k + 1]);
+      std::sort(contacts.begin(), contacts.end(),
+                [](const BodyContact& a, const BodyContact& o) { return a.who < o.who; });
+      if (contacts.size() > NeighbourSums::kMaxContacts) contacts.resize(NeighbourSums::kMaxContacts);
+      finish_agent(i, in, ps.prep[k], totals, contacts, nullptr);
+    }
+  });
 }
 
 void CrowdSimulation::step_reference() {

@@ -18,6 +18,8 @@
 
 namespace socsim::crowd {
 
+struct BodyContact;  // a neighbour the agent could touch in this step (crowd_simulation.cpp)
+
 struct SimulationConfig {
   double dt = 0.05;              // s, fixed step
   double neighbor_cutoff = 3.0;  // m, agents farther apart do not interact
@@ -42,6 +44,9 @@ struct SimulationConfig {
   // the two bodies do not come closer than the sum of their radii (see docs/crowd.md, "Body
   // contact"). false: bodies are kept apart by the body force alone.
   bool hard_contact = true;
+  // Compute each pair's social force once where the model allows it (CrowdSimulation::step):
+  // the same bits as agent by agent, in less time. false: agent by agent (for comparisons).
+  bool pairs_once = true;
 };
 Status validate(const SimulationConfig& config);
 
@@ -176,9 +181,25 @@ class CrowdSimulation {
     std::uint8_t driven, has_goal;
   };
   [[nodiscard]] AgentInputs inputs_of(std::uint32_t i) const;
+  // One agent's step: prepare_agent (walking direction, walls), the neighbour sums, finish_agent
+  // (the other forces, the integration, the hard contact, the wall guard).
   template <class Neighbours>
   void advance_agent(std::uint32_t i, const AgentInputs& in, const Neighbours& neighbours,
                      ForceBreakdown* breakdown);
+  struct AgentPrep;
+  struct NeighbourTotals;
+  [[nodiscard]] AgentPrep prepare_agent(const AgentInputs& in) const;
+  void finish_agent(std::uint32_t i, const AgentInputs& in, const AgentPrep& prep, const NeighbourTotals& t,
+                    std::vector<BodyContact>& contacts, ForceBreakdown* breakdown);
+  void hold_driven(std::uint32_t i, const AgentInputs& in, ForceBreakdown* breakdown);
+  [[nodiscard]] double contact_margin(const AgentInputs& in) const;
+  // Each pair once (social_kernel.hpp, pair_kernel): step() does so when pairs_once() holds — no
+  // periodic boundary, every agent's role with the same pair parameters — else agent by agent.
+  // The results are the same bits either way.
+  [[nodiscard]] bool pairs_once() const;
+  void step_pairs();
+  struct PairState;
+  std::unique_ptr<PairState> pairs_;
 
   SimulationConfig config_;
   RoleTable roles_;

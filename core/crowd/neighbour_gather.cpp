@@ -71,7 +71,7 @@ std::int64_t floor_clamp(double v, std::int64_t hi) {
 
 // The first and last row of the scan (clamped to the grid).
 std::pair<std::int64_t, std::int64_t> grid_rows(const GridQuery& q) {
-  return {floor_clamp((q.y - q.reach - q.origin_y) * q.inv_cell, q.ny - 1),
+  return {floor_clamp(((q.upper ? q.y : q.y - q.reach) - q.origin_y) * q.inv_cell, q.ny - 1),
           floor_clamp((q.y + q.reach - q.origin_y) * q.inv_cell, q.ny - 1)};
 }
 

@@ -46,6 +46,9 @@ struct GridQuery {
   double reach;  // the cut-off (+ 1e-9)
   std::int64_t nx, ny;
   double x, y;
+  // Only the rows from the one holding (x, y) upwards (the half of the disc that comes later in
+  // the cells' order: each pair once, CrowdSimulation::step_pairs).
+  bool upper = false;
 };
 inline constexpr int kMaxGridRows = 10;  // cells at least a third of the cut-off tall: <= 8 rows
 

@@ -24,6 +24,75 @@
 // (selects only, no branches); every lane computes the same IEEE operations a scalar loop would.
 namespace socsim::crowd {
 
+namespace {
+
+// One lane of the portable loops, inlined into each clone: the social force on the agent from a
+// neighbour at (rx, ry) with relative velocity (dvx, dvy) = v_i − v_j and tie direction (ux, uy).
+struct SocialLane {
+  std::int32_t fx, fy;
+};
+[[gnu::always_inline]] inline SocialLane social_lane(const SocialParams& p, float rx, float ry, float dvx,
+                                                     float dvy, float ux, float uy) {
+  const float d2 = rx * rx + ry * ry;
+  const float d = std::sqrt(d2);
+  // Either (rx, ry) = 0 (coincident: the tie direction u applies) or u = 0, so no select is needed.
+  const float inv_d = 1.0f / std::max(d, 1e-30f);
+  const float ex = rx * inv_d + ux;
+  const float ey = ry * inv_d + uy;
+  const float ix = p.lambda * dvx + ex;
+  const float iy = p.lambda * dvy + ey;
+  const float il2 = ix * ix + iy * iy;
+  const bool live = il2 > 1e-12f;
+  const float il = std::sqrt(il2);
+  const float inv_il = 1.0f / std::max(il, 1e-6f);
+  const float tx = ix * inv_il;
+  const float ty = iy * inv_il;
+  const float b = p.gamma * il;
+  // The angle from i to e (the same as from t = i/|i|): it need not wait for the division.
+  const float theta = fast_atan2f(ix * ey - iy * ex, ix * ex + iy * ey);
+  const float base = -d * inv_il * p.inv_gamma;
+  const float nb = p.n * b * theta;
+  const float npb = p.n_prime * b * theta;
+  const float along = -fast_expf(base - npb * npb);
+  const float sign = theta > 0.0f ? 1.0f : (theta < 0.0f ? -1.0f : 0.0f);
+  const float side = -sign * fast_expf(base - nb * nb);
+  // |along|, |side| <= 1 and factor <= 1000, so |g| < 2^31: the conversion cannot overflow.
+  const float scale = p.factor * kForceQuantum;
+  const float gx = live ? scale * (along * tx - side * ty) : 0.0f;
+  const float gy = live ? scale * (along * ty + side * tx) : 0.0f;
+  return {static_cast<std::int32_t>(gx), static_cast<std::int32_t>(gy)};
+}
+
+// One lane of the ahead terms (ahead_terms' and the pair kernel's): the headway cap's bits
+// (INT32_MAX where the neighbour at (ox, oy) does not count) and the side push (0 where it does
+// not meet the agent), for an agent walking along (ex, ey) at speed_along = v·e with headway band
+// `band`; (dvx, dvy) = v_agent − v_neighbour.
+struct AheadLane {
+  std::int32_t cap, push;
+};
+[[gnu::always_inline]] inline AheadLane ahead_lane(const PairAheadParams& a, float ex, float ey,
+                                                   float speed_along, float band, float ox, float oy,
+                                                   float dvx, float dvy) {
+  const float ahead = ox * ex + oy * ey;
+  const float side = ox * ey - oy * ex;
+  const float closing = dvx * ex + dvy * ey;  // (v_i − v_j)·e
+  const float toward = speed_along - closing;
+  const float d = std::sqrt(ox * ox + oy * oy);
+  const float cap = std::max((d - a.distance - a.anticipation * closing) * a.inv_time, 0.0f);
+  const std::int32_t in_front = -static_cast<std::int32_t>(ahead > 0.0f);
+  const std::int32_t follows = in_front & -static_cast<std::int32_t>(side * side < band * band) &
+                               -static_cast<std::int32_t>(toward >= -a.oncoming);
+  const std::int32_t meets = in_front & -static_cast<std::int32_t>(side * side < a.side_band * a.side_band) &
+                             -static_cast<std::int32_t>(toward < -a.oncoming);
+  const float magnitude =
+      a.side_factor * kForceQuantum * fast_expf(-std::max(ahead, 0.0f) * a.side_inv_range);
+  const float signed_push = side < a.side_bias ? magnitude : -magnitude;
+  return {(std::bit_cast<std::int32_t>(cap) & follows) | (INT32_MAX & ~follows),
+          static_cast<std::int32_t>(signed_push) & meets};
+}
+
+}  // namespace
+
 // On x86-64 an AVX-512 clone (16 lanes) or an AVX2 clone (8 lanes) is picked at load time where
 // the CPU has it. -ffp-contract=off forbids fused multiply-adds, so every clone computes the same
 // IEEE operations and gives identical bits (tests/core/crowd compares them with the scalar clone).
@@ -33,45 +102,29 @@ void social_kernel_portable(const SocialParams& p, int count, const float* __res
                             const float* __restrict dvy, const float* __restrict tie_x,
                             const float* __restrict tie_y, std::int32_t* __restrict fx,
                             std::int32_t* __restrict fy) {
-  const float lambda = p.lambda;
-  const float gamma = p.gamma;
-  const float inv_gamma = p.inv_gamma;
-  const float n = p.n;
-  const float n_prime = p.n_prime;
-  const float scale = p.factor * kForceQuantum;
   for (int m = 0; m < count; ++m) {
-    const float rx = dx[m];
-    const float ry = dy[m];
-    const float ux = tie_x[m];
-    const float uy = tie_y[m];
-    const float d2 = rx * rx + ry * ry;
-    const float d = std::sqrt(d2);
-    // Either (rx, ry) = 0 (coincident: the tie direction u applies) or u = 0, so no select is needed.
-    const float inv_d = 1.0f / std::max(d, 1e-30f);
-    const float ex = rx * inv_d + ux;
-    const float ey = ry * inv_d + uy;
-    const float ix = lambda * dvx[m] + ex;
-    const float iy = lambda * dvy[m] + ey;
-    const float il2 = ix * ix + iy * iy;
-    const bool live = il2 > 1e-12f;
-    const float il = std::sqrt(il2);
-    const float inv_il = 1.0f / std::max(il, 1e-6f);
-    const float tx = ix * inv_il;
-    const float ty = iy * inv_il;
-    const float b = gamma * il;
-    // The angle from i to e (the same as from t = i/|i|): it need not wait for the division.
-    const float theta = fast_atan2f(ix * ey - iy * ex, ix * ex + iy * ey);
-    const float base = -d * inv_il * inv_gamma;
-    const float nb = n * b * theta;
-    const float npb = n_prime * b * theta;
-    const float along = -fast_expf(base - npb * npb);
-    const float sign = theta > 0.0f ? 1.0f : (theta < 0.0f ? -1.0f : 0.0f);
-    const float side = -sign * fast_expf(base - nb * nb);
-    // |along|, |side| <= 1 and factor <= 1000, so |g| < 2^31: the conversion cannot overflow.
-    const float gx = live ? scale * (along * tx - side * ty) : 0.0f;
-    const float gy = live ? scale * (along * ty + side * tx) : 0.0f;
-    fx[m] = static_cast<std::int32_t>(gx);
-    fy[m] = static_cast<std::int32_t>(gy);
+    const SocialLane f = social_lane(p, dx[m], dy[m], dvx[m], dvy[m], tie_x[m], tie_y[m]);
+    fx[m] = f.fx;
+    fy[m] = f.fy;
+  }
+}
+
+SOCSIM_CLONES
+void pair_kernel_portable(const SocialParams& p, const PairAheadParams& a, int count, PairLanes& b) {
+  for (int m = 0; m < count; ++m) {
+    const float rx = b.dx[m];
+    const float ry = b.dy[m];
+    const float vx = b.dvx[m];
+    const float vy = b.dvy[m];
+    const SocialLane f = social_lane(p, rx, ry, vx, vy, b.tie_x[m], b.tie_y[m]);
+    b.fx[m] = f.fx;
+    b.fy[m] = f.fy;
+    const AheadLane i = ahead_lane(a, b.ex_i[m], b.ey_i[m], b.along_i[m], b.band_i[m], rx, ry, vx, vy);
+    const AheadLane j = ahead_lane(a, b.ex_j[m], b.ey_j[m], b.along_j[m], b.band_j[m], -rx, -ry, -vx, -vy);
+    b.cap_i[m] = i.cap;
+    b.push_i[m] = i.push;
+    b.cap_j[m] = j.cap;
+    b.push_j[m] = j.push;
   }
 }
 
@@ -234,6 +287,17 @@ struct Simd {
 #undef SOCSIM_LANES_NAMESPACE
 
 namespace socsim::crowd {
+namespace {
+enum class Isa { kAvx512, kAvx2, kOther };
+Isa kernel_isa() {
+  static const Isa isa = [] {
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f")) return Isa::kAvx512;
+    return __builtin_cpu_supports("avx2") ? Isa::kAvx2 : Isa::kOther;
+  }();
+  return isa;
+}
+}  // namespace
 #endif
 
 void social_kernel(const SocialParams& p, int count, const float* __restrict dx, const float* __restrict dy,
@@ -248,12 +312,7 @@ BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* a
                                      const float* __restrict tie_x, const float* __restrict tie_y,
                                      std::int32_t* __restrict fx, std::int32_t* __restrict fy) {
 #ifdef SOCSIM_KERNEL_BY_HAND
-  enum class Isa { kAvx512, kAvx2, kOther };
-  static const Isa isa = [] {
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f")) return Isa::kAvx512;
-    return __builtin_cpu_supports("avx2") ? Isa::kAvx2 : Isa::kOther;
-  }();
+  const Isa isa = kernel_isa();
   if (isa == Isa::kAvx512)
     return avx512::social_kernel_lanes(p, ahead, best, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
   if (isa == Isa::kAvx2)
@@ -267,6 +326,15 @@ BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* a
     t.fy += fy[m];
   }
   return t;
+}
+
+void pair_kernel(const SocialParams& p, const PairAheadParams& a, int count, PairLanes& b) {
+#ifdef SOCSIM_KERNEL_BY_HAND
+  const Isa isa = kernel_isa();
+  if (isa == Isa::kAvx512) return avx512::pair_kernel_lanes(p, a, count, b);
+  if (isa == Isa::kAvx2) return avx2::pair_kernel_lanes(p, a, count, b);
+#endif
+  pair_kernel_portable(p, a, count, b);
 }
 
 SOCSIM_CLONES
@@ -350,11 +418,8 @@ AheadTerms ahead_terms(int count, const float* __restrict dx, const float* __res
                        float best) {
   // The lane computations of headway_speed_cap and oncoming_side_push, sharing the loads and the
   // projections on the walking direction.
-  const float ex = p.ex, ey = p.ey, speed_along = p.speed_along, oncoming = p.oncoming;
-  const float band2 = p.headway_band * p.headway_band;
-  const float distance = p.distance, inv_time = p.inv_time, anticipation = p.anticipation;
-  const float side_band2 = p.side_band * p.side_band;
-  const float bias = p.side_bias, scale = p.side_factor * kForceQuantum, inv_range = p.side_inv_range;
+  const PairAheadParams shared{p.oncoming,  p.distance,  p.inv_time,    p.anticipation,
+                               p.side_band, p.side_bias, p.side_factor, p.side_inv_range};
   constexpr int kLanes = 8;
   alignas(32) std::int32_t least[kLanes];
   // Per-lane sums of the pushes in 32 bits: a lane sees at most kBatch / 8 = 8 neighbours of a
@@ -364,23 +429,10 @@ AheadTerms ahead_terms(int count, const float* __restrict dx, const float* __res
   for (int l = 0; l < kLanes; ++l) least[l] = std::bit_cast<std::int32_t>(best);
   std::int64_t sum = 0;
   const auto lane = [&](int m, std::int32_t* cap_bits, std::int32_t* push) {
-    const float ox = dx[m];
-    const float oy = dy[m];
-    const float ahead = ox * ex + oy * ey;
-    const float side = ox * ey - oy * ex;
-    const float closing = dvx[m] * ex + dvy[m] * ey;  // (v_i − v_j)·e
-    const float toward = speed_along - closing;
-    const float d = std::sqrt(ox * ox + oy * oy);
-    const float cap = std::max((d - distance - anticipation * closing) * inv_time, 0.0f);
-    const std::int32_t in_front = -static_cast<std::int32_t>(ahead > 0.0f);
-    const std::int32_t follows = in_front & -static_cast<std::int32_t>(side * side < band2) &
-                                 -static_cast<std::int32_t>(toward >= -oncoming);
-    *cap_bits = (std::bit_cast<std::int32_t>(cap) & follows) | (INT32_MAX & ~follows);
-    const std::int32_t meets = in_front & -static_cast<std::int32_t>(side * side < side_band2) &
-                               -static_cast<std::int32_t>(toward < -oncoming);
-    const float magnitude = scale * fast_expf(-std::max(ahead, 0.0f) * inv_range);
-    const float signed_push = side < bias ? magnitude : -magnitude;
-    *push = static_cast<std::int32_t>(signed_push) & meets;
+    const AheadLane r =
+        ahead_lane(shared, p.ex, p.ey, p.speed_along, p.headway_band, dx[m], dy[m], dvx[m], dvy[m]);
+    *cap_bits = r.cap;
+    *push = r.push;
   };
   int m = 0;
   for (; m + kLanes <= count; m += kLanes) {

@@ -114,4 +114,48 @@ BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* a
                                      const float* __restrict tie_x, const float* __restrict tie_y,
                                      std::int32_t* __restrict fx, std::int32_t* __restrict fy);
 
+// Each pair once. Where every agent shares the pair terms' parameters (one role, or roles that
+// differ only elsewhere), the social force on j from i is exactly minus the force on i from j —
+// d and θ are the same, e and t change sign, and every float operation here rounds symmetrically —
+// so the step computes each pair (i, j) once, from whichever of the two comes first in the grid's
+// order, and gives j the negated force; the headway cap and side push are not antisymmetric and
+// are computed for both from the same loads. Lanes may belong to different agents i.
+inline constexpr int kPairLanes = 16;  // the widest vector (AVX-512)
+struct PairLanes {
+  // Inputs: the offset x_j − x_i, the relative velocity v_i − v_j, the tie direction (as PairBatch),
+  // and for each side its walking direction ((0, 0) without a goal), v·e and headway band.
+  alignas(32) float dx[kBatch];
+  alignas(32) float dy[kBatch];
+  alignas(32) float dvx[kBatch];
+  alignas(32) float dvy[kBatch];
+  alignas(32) float tie_x[kBatch];
+  alignas(32) float tie_y[kBatch];
+  alignas(32) float ex_i[kBatch];
+  alignas(32) float ey_i[kBatch];
+  alignas(32) float along_i[kBatch];
+  alignas(32) float band_i[kBatch];
+  alignas(32) float ex_j[kBatch];
+  alignas(32) float ey_j[kBatch];
+  alignas(32) float along_j[kBatch];
+  alignas(32) float band_j[kBatch];
+  // Outputs: the social force on i (units of 2^-20 m/s²; j gets minus it), and for each side the
+  // headway cap as the bits of a non-negative float (INT32_MAX where j is not ahead of i in the
+  // band) and the side push (as oncoming_side_push: along that side's right-hand direction).
+  alignas(32) std::int32_t fx[kBatch];
+  alignas(32) std::int32_t fy[kBatch];
+  alignas(32) std::int32_t cap_i[kBatch];
+  alignas(32) std::int32_t cap_j[kBatch];
+  alignas(32) std::int32_t push_i[kBatch];
+  alignas(32) std::int32_t push_j[kBatch];
+};
+// The ahead terms' parameters shared by both sides (AheadParams without the per-agent ones).
+struct PairAheadParams {
+  float oncoming, distance, inv_time, anticipation, side_band, side_bias, side_factor, side_inv_range;
+};
+// Lanes [0, count) of b, count a multiple of kPairLanes (pad with zeros: inert). For each lane
+// the results are, bit for bit, what social_kernel and ahead_terms give for i's batch (fx, fy,
+// cap_i, push_i) and for j's (−fx, −fy, cap_j, push_j): tests/core/crowd/neighbour_gather_test.cpp.
+void pair_kernel(const SocialParams& p, const PairAheadParams& a, int count, PairLanes& b);
+void pair_kernel_portable(const SocialParams& p, const PairAheadParams& a, int count, PairLanes& b);
+
 }  // namespace socsim::crowd

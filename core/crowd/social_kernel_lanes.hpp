@@ -201,29 +201,17 @@ SOCSIM_LANES void ahead_lanes(const AheadParams& a, const Pk<N>& ox, const Pk<N>
       Simd::iadd(acc.sum, Simd::iselect(meets[k], Simd::truncate(push.v[k]), Simd::iset1(0)));
 }
 
-// Lanes [m, m + L·N) of the batch (L = Simd::kLanes), those at or past `count` read as 0 and not
-// written; count − m > L·(N − 1), so every vector has a lane in the batch.
-template <int N, bool Narrow>
-SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m,
-                               int count, const float* dx, const float* dy, const float* dvx,
-                               const float* dvy, const float* tie_x, const float* tie_y, std::int32_t* fx,
-                               std::int32_t* fy) {
-  typename Simd::lanes in[N];
-  SOCSIM_EACH in[k] = Simd::first(count - m - Simd::kLanes * k);
-  Pk<N> rx, ry, ux, uy, vx, vy;
-  SOCSIM_EACH {
-    const int o = m + Simd::kLanes * k;
-    rx.v[k] = Simd::load(in[k], dx + o);
-    ry.v[k] = Simd::load(in[k], dy + o);
-    ux.v[k] = Simd::load(in[k], tie_x + o);
-    uy.v[k] = Simd::load(in[k], tie_y + o);
-    vx.v[k] = Simd::load(in[k], dvx + o);
-    vy.v[k] = Simd::load(in[k], dvy + o);
-  }
+// The social force (in units of 2^-20 m/s², before truncation) on the agent from N vectors of
+// neighbours at (rx, ry), tie direction (ux, uy), relative velocity (vx, vy), distance d.
+template <int N>
+struct Forces {
+  Pk<N> x, y;
+};
+template <int N>
+SOCSIM_LANES Forces<N> social_lanes(const SocialParams& p, const Pk<N>& rx, const Pk<N>& ry, const Pk<N>& ux,
+                                    const Pk<N>& uy, const Pk<N>& vx, const Pk<N>& vy, const Pk<N>& d) {
   const Pk<N> zero = splat<N>(0.0f);
   const Pk<N> one = splat<N>(1.0f);
-  const Pk<N> d = root(rx * rx + ry * ry);
-  if (ahead != nullptr) ahead_lanes(*ahead, rx, ry, vx, vy, d, acc);
   const Pk<N> tiny = splat<N>(1e-30f);
   const Pk<N> inv_d = one / select(d < tiny, tiny, d);
   const Pk<N> ex = rx * inv_d + ux;
@@ -250,11 +238,36 @@ SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, 
   const Pk<N> scale = select(live, splat<N>(p.factor * kForceQuantum), zero);
   const Pk<N> gx = scale * (along * tx - side * ty);
   const Pk<N> gy = scale * (along * ty + side * tx);
+  return {gx, gy};
+}
+
+// Lanes [m, m + L·N) of the batch (L = Simd::kLanes), those at or past `count` read as 0 and not
+// written; count − m > L·(N − 1), so every vector has a lane in the batch.
+template <int N, bool Narrow>
+SOCSIM_LANES void kernel_lanes(const SocialParams& p, const AheadParams* ahead, AheadLanes& acc, int m,
+                               int count, const float* dx, const float* dy, const float* dvx,
+                               const float* dvy, const float* tie_x, const float* tie_y, std::int32_t* fx,
+                               std::int32_t* fy) {
+  typename Simd::lanes in[N];
+  SOCSIM_EACH in[k] = Simd::first(count - m - Simd::kLanes * k);
+  Pk<N> rx, ry, ux, uy, vx, vy;
+  SOCSIM_EACH {
+    const int o = m + Simd::kLanes * k;
+    rx.v[k] = Simd::load(in[k], dx + o);
+    ry.v[k] = Simd::load(in[k], dy + o);
+    ux.v[k] = Simd::load(in[k], tie_x + o);
+    uy.v[k] = Simd::load(in[k], tie_y + o);
+    vx.v[k] = Simd::load(in[k], dvx + o);
+    vy.v[k] = Simd::load(in[k], dvy + o);
+  }
+  const Pk<N> d = root(rx * rx + ry * ry);
+  if (ahead != nullptr) ahead_lanes(*ahead, rx, ry, vx, vy, d, acc);
+  const Forces<N> g = social_lanes<N>(p, rx, ry, ux, uy, vx, vy, d);
   SOCSIM_EACH {
     const int o = m + Simd::kLanes * k;
     // Lanes outside the batch read zeros and give 0 (not live), so they add nothing to the sums.
-    const typename Simd::ivec qx = Simd::truncate(gx.v[k]);
-    const typename Simd::ivec qy = Simd::truncate(gy.v[k]);
+    const typename Simd::ivec qx = Simd::truncate(g.x.v[k]);
+    const typename Simd::ivec qy = Simd::truncate(g.y.v[k]);
     Simd::store_ints(in[k], fx + o, qx);
     Simd::store_ints(in[k], fy + o, qy);
     if constexpr (Narrow) {  // 32-bit lanes (they cannot overflow: social_kernel_lanes)
@@ -277,6 +290,95 @@ SOCSIM_LANES void kernel_from(const SocialParams& p, const AheadParams* ahead, A
     kernel_lanes<N, Narrow>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
   if constexpr (N > 1)
     kernel_from<N - 1, Narrow>(p, ahead, acc, m, count, dx, dy, dvx, dvy, tie_x, tie_y, fx, fy);
+}
+
+// One side's ahead terms for N vectors of pairs, each lane with its own walking direction (ex,
+// ey), speed along it and headway band: ahead_lanes' operations, the results stored per lane at
+// cap + m and push + m (not reduced).
+template <int N>
+SOCSIM_LANES void pair_ahead_lanes(const PairAheadParams& a, const Pk<N>& ex, const Pk<N>& ey,
+                                   const Pk<N>& speed_along, const Pk<N>& band, const Pk<N>& ox,
+                                   const Pk<N>& oy, const Pk<N>& dvx, const Pk<N>& dvy, const Pk<N>& d,
+                                   std::int32_t* cap_out, std::int32_t* push_out, int m) {
+  const Pk<N> zero = splat<N>(0.0f);
+  const Pk<N> ahead = ox * ex + oy * ey;
+  const Pk<N> side = ox * ey - oy * ex;
+  const Pk<N> closing = dvx * ex + dvy * ey;
+  const Pk<N> toward = speed_along - closing;
+  const Pk<N> raw = ((d - splat<N>(a.distance)) - splat<N>(a.anticipation) * closing) * splat<N>(a.inv_time);
+  const Pk<N> cap = select(raw < zero, zero, raw);  // std::max(raw, 0.0f)
+  const Mk<N> in_front = ahead > zero;
+  const Pk<N> side2 = side * side;
+  const Pk<N> oncoming = splat<N>(-a.oncoming);
+  const Pk<N> band2 = band * band;
+  const Pk<N> side_band2 = splat<N>(a.side_band * a.side_band);
+  bool any_meets = false;
+  typename Simd::mask meets[N];
+  SOCSIM_EACH {
+    const typename Simd::mask follows =
+        Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], band2.v[k])),
+                   Simd::greater_equal(toward.v[k], oncoming.v[k]));
+    Simd::istore(cap_out + m + Simd::kLanes * k,
+                 Simd::iselect(follows, Simd::bits(cap.v[k]), Simd::iset1(INT32_MAX)));
+    meets[k] = Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], side_band2.v[k])),
+                          Simd::less(toward.v[k], oncoming.v[k]));
+    any_meets = any_meets || Simd::any(meets[k]);
+  }
+  if (!any_meets) {
+    SOCSIM_EACH Simd::istore(push_out + m + Simd::kLanes * k, Simd::iset1(0));
+    return;
+  }
+  const Pk<N> floored = select(ahead < zero, zero, ahead);  // std::max(ahead, 0.0f)
+  const Pk<N> magnitude =
+      splat<N>(a.side_factor * kForceQuantum) * exp_lanes(-floored * splat<N>(a.side_inv_range));
+  const Pk<N> push = select(side < splat<N>(a.side_bias), magnitude, -magnitude);
+  SOCSIM_EACH Simd::istore(push_out + m + Simd::kLanes * k,
+                           Simd::iselect(meets[k], Simd::truncate(push.v[k]), Simd::iset1(0)));
+}
+
+// N whole vectors from p (every lane in the batch).
+template <int N>
+SOCSIM_LANES Pk<N> load_lanes(const typename Simd::lanes& all, const float* p) {
+  Pk<N> r;
+  SOCSIM_EACH r.v[k] = Simd::load(all, p + Simd::kLanes * k);
+  return r;
+}
+
+// Lanes [m, m + L·N) of a batch of pairs (pair_kernel): the force on i, both sides' ahead terms.
+template <int N>
+SOCSIM_LANES void pair_lanes(const SocialParams& p, const PairAheadParams& a, int m, PairLanes& b) {
+  const typename Simd::lanes all = Simd::first(Simd::kLanes);
+  const Pk<N> rx = load_lanes<N>(all, b.dx + m);
+  const Pk<N> ry = load_lanes<N>(all, b.dy + m);
+  const Pk<N> vx = load_lanes<N>(all, b.dvx + m);
+  const Pk<N> vy = load_lanes<N>(all, b.dvy + m);
+  const Pk<N> d = root(rx * rx + ry * ry);
+  pair_ahead_lanes<N>(a, load_lanes<N>(all, b.ex_i + m), load_lanes<N>(all, b.ey_i + m),
+                      load_lanes<N>(all, b.along_i + m), load_lanes<N>(all, b.band_i + m), rx, ry, vx, vy, d,
+                      b.cap_i, b.push_i, m);
+  // j's view: the offset and the relative velocity reversed (exactly: a sign flip), the same d.
+  pair_ahead_lanes<N>(a, load_lanes<N>(all, b.ex_j + m), load_lanes<N>(all, b.ey_j + m),
+                      load_lanes<N>(all, b.along_j + m), load_lanes<N>(all, b.band_j + m), -rx, -ry, -vx, -vy,
+                      d, b.cap_j, b.push_j, m);
+  const Forces<N> g =
+      social_lanes<N>(p, rx, ry, load_lanes<N>(all, b.tie_x + m), load_lanes<N>(all, b.tie_y + m), vx, vy, d);
+  SOCSIM_EACH {
+    const int o = m + Simd::kLanes * k;
+    Simd::store_ints(all, b.fx + o, Simd::truncate(g.x.v[k]));
+    Simd::store_ints(all, b.fy + o, Simd::truncate(g.y.v[k]));
+  }
+}
+
+template <int N>
+SOCSIM_LANES void pair_from(const SocialParams& p, const PairAheadParams& a, int m, int count, PairLanes& b) {
+  for (; count - m >= Simd::kLanes * N; m += Simd::kLanes * N) pair_lanes<N>(p, a, m, b);
+  if constexpr (N > 1) pair_from<N - 1>(p, a, m, count, b);
+}
+
+__attribute__((target(SOCSIM_LANES_TARGET))) void pair_kernel_lanes(const SocialParams& p,
+                                                                    const PairAheadParams& a, int count,
+                                                                    PairLanes& b) {
+  pair_from<Simd::kInterleave>(p, a, 0, count, b);
 }
 
 __attribute__((target(SOCSIM_LANES_TARGET))) BatchTotals social_kernel_lanes(

@@ -16,6 +16,8 @@ namespace {
 // state they wait for, and only then sleep on the condition variable.
 constexpr int kSpins = 2048;
 
+thread_local unsigned t_thread_index = 0;  // set once by each worker
+
 void relax() {
 #if defined(__x86_64__) || defined(__i386__)
   _mm_pause();
@@ -27,7 +29,15 @@ void relax() {
 WorkerPool::WorkerPool(unsigned threads) {
   const unsigned extra = threads > 1 ? threads - 1 : 0;
   workers_.reserve(extra);
-  for (unsigned i = 0; i < extra; ++i) workers_.emplace_back([this] { worker_loop(); });
+  for (unsigned i = 0; i < extra; ++i)
+    workers_.emplace_back([this, i] {
+      t_thread_index = i + 1;
+      worker_loop();
+    });
+}
+
+unsigned WorkerPool::current_thread() {
+  return t_thread_index;
 }
 
 WorkerPool::~WorkerPool() {

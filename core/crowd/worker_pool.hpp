@@ -23,6 +23,8 @@ class WorkerPool {
   WorkerPool& operator=(const WorkerPool&) = delete;
 
   [[nodiscard]] unsigned threads() const { return static_cast<unsigned>(workers_.size()) + 1; }
+  // Inside fn: which of this pool's threads runs it, 0 .. threads() − 1 (0: the caller's).
+  [[nodiscard]] static unsigned current_thread();
 
   // Calls fn on disjoint ranges covering [0, count), each at most `chunk` long. Which thread
   // runs which range varies; callers must make each index's work independent of the others.

@@ -25,83 +25,89 @@ using socsim::crowd::Vec2;
 
 // The scene (tests/bench/crowd_bench_scene.hpp): N agents on a jittered 1 m lattice, walking
 // back and forth between two random goals; --walls, --groups as described there.
-CrowdSimulation make_crowd(std::size_t n, unsigned threads, bool walls, bool groups, std::uint64_t seed) {
+CrowdSimulation make_crowd(std::size_t n, unsigned threads, bool walls, bool groups, std::uint64_t seed,
+                           bool pairs_once = true) {
   return socsim::bench::crowd_bench_simulation(socsim::bench::crowd_bench_scene(n, walls, groups, seed),
-                                               threads, seed);
+                                               threads, seed, pairs_once);
 }
 
-SOCSIM_BENCH("crowd", "--agents N --steps S --threads T [--walls] [--groups] [--reference-agents M]",
-             [](const socsim::bench::Args& a) {
-               const auto n = static_cast<std::size_t>(a.integer("agents", 10000));
-               const auto steps = a.integer("steps", 200);
-               const auto threads = static_cast<unsigned>(a.integer("threads", 2));
-               const bool walls = a.has("walls");
-               const bool groups = a.has("groups");
-               CrowdSimulation sim = make_crowd(n, threads, walls, groups, 42);
-               for (int k = 0; k < 10; ++k) sim.step();  // leave the lattice start behind
-               const std::clock_t cpu0 = std::clock();
-               const auto t0 = std::chrono::steady_clock::now();
-               for (std::int64_t k = 0; k < steps; ++k) sim.step();
-               const double seconds = socsim::bench::seconds_since(t0);
-               // CPU time of all threads: on a shared machine the wall clock also counts waiting.
-               const double cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
-               // FNV-1a over the bits of every position and velocity: equal between two builds
-               // exactly when a change to the step left every result bit-identical.
-               std::uint64_t fnv = 14695981039346656037ULL;
-               for (std::uint32_t i = 0; i < n; ++i) {
-                 const Vec2 p = sim.position(socsim::crowd::AgentId(i));
-                 const Vec2 v = sim.velocity(socsim::crowd::AgentId(i));
-                 for (const double value : {p.x, p.y, v.x, v.y}) {
-                   auto bits = std::bit_cast<std::uint64_t>(value);
-                   for (int b = 0; b < 8; ++b, bits >>= 8) fnv = (fnv ^ (bits & 0xffU)) * 1099511628211ULL;
-                 }
-               }
-               socsim::bench::emit(
-                   {{"bench", "crowd"},
-                    {"agents", n},
-                    {"threads", threads},
-                    {"steps", steps},
-                    {"walls", walls},
-                    {"groups", groups},
-                    {"agent_steps_per_s", static_cast<double>(n) * static_cast<double>(steps) / seconds},
-                    {"ms_per_step", 1000.0 * seconds / static_cast<double>(steps)},
-                    {"cpu_us_per_agent_step",
-                     1e6 * cpu_seconds / (static_cast<double>(n) * static_cast<double>(steps))},
-                    {"state_fnv1a", fnv}});
+SOCSIM_BENCH(
+    "crowd",
+    "--agents N --steps S --threads T [--walls] [--groups] [--reference-agents M] [--agent-by-agent]",
+    [](const socsim::bench::Args& a) {
+      const auto n = static_cast<std::size_t>(a.integer("agents", 10000));
+      const auto steps = a.integer("steps", 200);
+      const auto threads = static_cast<unsigned>(a.integer("threads", 2));
+      const bool walls = a.has("walls");
+      const bool groups = a.has("groups");
+      // Each pair once (the default) or agent by agent: the same state_fnv1a.
+      const bool pairs_once = !a.has("agent-by-agent");
+      CrowdSimulation sim = make_crowd(n, threads, walls, groups, 42, pairs_once);
+      for (int k = 0; k < 10; ++k) sim.step();  // leave the lattice start behind
+      const std::clock_t cpu0 = std::clock();
+      const auto t0 = std::chrono::steady_clock::now();
+      for (std::int64_t k = 0; k < steps; ++k) sim.step();
+      const double seconds = socsim::bench::seconds_since(t0);
+      // CPU time of all threads: on a shared machine the wall clock also counts waiting.
+      const double cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+      // FNV-1a over the bits of every position and velocity: equal between two builds
+      // exactly when a change to the step left every result bit-identical.
+      std::uint64_t fnv = 14695981039346656037ULL;
+      for (std::uint32_t i = 0; i < n; ++i) {
+        const Vec2 p = sim.position(socsim::crowd::AgentId(i));
+        const Vec2 v = sim.velocity(socsim::crowd::AgentId(i));
+        for (const double value : {p.x, p.y, v.x, v.y}) {
+          auto bits = std::bit_cast<std::uint64_t>(value);
+          for (int b = 0; b < 8; ++b, bits >>= 8) fnv = (fnv ^ (bits & 0xffU)) * 1099511628211ULL;
+        }
+      }
+      socsim::bench::emit(
+          {{"bench", "crowd"},
+           {"agents", n},
+           {"threads", threads},
+           {"steps", steps},
+           {"walls", walls},
+           {"groups", groups},
+           {"pairs_once", pairs_once},
+           {"agent_steps_per_s", static_cast<double>(n) * static_cast<double>(steps) / seconds},
+           {"ms_per_step", 1000.0 * seconds / static_cast<double>(steps)},
+           {"cpu_us_per_agent_step",
+            1e6 * cpu_seconds / (static_cast<double>(n) * static_cast<double>(steps))},
+           {"state_fnv1a", fnv}});
 
-               const auto m = static_cast<std::size_t>(a.integer("reference-agents", 2000));
-               if (m == 0) return 0;
-               CrowdSimulation grid = make_crowd(m, threads, walls, groups, 7);
-               CrowdSimulation brute = make_crowd(m, threads, walls, groups, 7);
-               double grid_s = 0.0;
-               double brute_s = 0.0;
-               for (int k = 0; k < 100; ++k) {
-                 auto t1 = std::chrono::steady_clock::now();
-                 grid.step();
-                 grid_s += socsim::bench::seconds_since(t1);
-                 t1 = std::chrono::steady_clock::now();
-                 brute.step_reference();
-                 brute_s += socsim::bench::seconds_since(t1);
-               }
-               double max_diff = 0.0;
-               for (std::uint32_t i = 0; i < m; ++i) {
-                 const Vec2 p = grid.position(socsim::crowd::AgentId(i));
-                 const Vec2 q = brute.position(socsim::crowd::AgentId(i));
-                 max_diff = std::max(max_diff, std::hypot(p.x - q.x, p.y - q.y));
-               }
-               socsim::bench::emit({{"bench", "crowd_reference"},
-                                    {"agents", m},
-                                    {"threads", threads},
-                                    {"steps", 100},
-                                    {"walls", walls},
-                                    {"groups", groups},
-                                    {"grid_ms_per_step", 1000.0 * grid_s / 100.0},
-                                    {"brute_force_ms_per_step", 1000.0 * brute_s / 100.0},
-                                    {"speedup", brute_s / grid_s},
-                                    {"max_position_difference_m", max_diff},
-                                    {"agree_1e-4_m", max_diff <= 1e-4}});
-               return 0;
-             });
+      const auto m = static_cast<std::size_t>(a.integer("reference-agents", 2000));
+      if (m == 0) return 0;
+      CrowdSimulation grid = make_crowd(m, threads, walls, groups, 7);
+      CrowdSimulation brute = make_crowd(m, threads, walls, groups, 7);
+      double grid_s = 0.0;
+      double brute_s = 0.0;
+      for (int k = 0; k < 100; ++k) {
+        auto t1 = std::chrono::steady_clock::now();
+        grid.step();
+        grid_s += socsim::bench::seconds_since(t1);
+        t1 = std::chrono::steady_clock::now();
+        brute.step_reference();
+        brute_s += socsim::bench::seconds_since(t1);
+      }
+      double max_diff = 0.0;
+      for (std::uint32_t i = 0; i < m; ++i) {
+        const Vec2 p = grid.position(socsim::crowd::AgentId(i));
+        const Vec2 q = brute.position(socsim::crowd::AgentId(i));
+        max_diff = std::max(max_diff, std::hypot(p.x - q.x, p.y - q.y));
+      }
+      socsim::bench::emit({{"bench", "crowd_reference"},
+                           {"agents", m},
+                           {"threads", threads},
+                           {"steps", 100},
+                           {"walls", walls},
+                           {"groups", groups},
+                           {"grid_ms_per_step", 1000.0 * grid_s / 100.0},
+                           {"brute_force_ms_per_step", 1000.0 * brute_s / 100.0},
+                           {"speedup", brute_s / grid_s},
+                           {"max_position_difference_m", max_diff},
+                           {"agree_1e-4_m", max_diff <= 1e-4}});
+      return 0;
+    });
 
 }  // namespace
 

@@ -71,12 +71,14 @@ inline CrowdBenchScene crowd_bench_scene(std::size_t n, bool walls, bool groups,
   return scene;
 }
 
-// The socsim simulation of a scene (desired speeds sampled from the adult role with `seed`).
+// The socsim simulation of a scene (desired speeds sampled from the adult role with `seed`);
+// pairs_once = false: agent by agent (SimulationConfig::pairs_once, the same bits).
 inline crowd::CrowdSimulation crowd_bench_simulation(const CrowdBenchScene& scene, unsigned threads,
-                                                     std::uint64_t seed) {
+                                                     std::uint64_t seed, bool pairs_once = true) {
   crowd::SimulationConfig config;
   config.threads = threads;
   config.seed = seed;
+  config.pairs_once = pairs_once;
   auto sim = crowd::CrowdSimulation::create(config);
   if (!sim) throw std::runtime_error(sim.error().message());
   for (const auto& outline : scene.outlines) (void)sim->add_polyline(outline, true);

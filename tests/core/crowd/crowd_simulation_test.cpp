@@ -387,6 +387,62 @@ TEST(CrowdSimulation, CellListAgreesWithBruteForceReference) {
   EXPECT_TRUE(bit_identical(snapshot(grid), snapshot(brute)));
 }
 
+// Each pair once (the default where every role shares the pair terms) and agent by agent give the
+// same bits: a crowd of 400 in a 20 × 20 m room (1 /m², groups, walls, every fifth an elderly
+// person: a role that differs in speeds only), with two agents on the same spot, one pair just
+// touching, a robot driven from outside (visible) and one invisible, on 1 and 2 threads; and a
+// crowd with children (a role with other pair terms) falls back to agent by agent.
+TEST(CrowdSimulation, PairsOnceGivesTheSameBitsAsAgentByAgent) {
+  const auto run = [](bool pairs_once, unsigned threads, bool children) {
+    SimulationConfig config;
+    config.threads = threads;
+    config.seed = 13;
+    config.pairs_once = pairs_once;
+    // Children: adults' parameters with a stronger social force (pair terms that differ).
+    RoleTable roles = RoleTable::defaults();
+    RoleParameters child = roles.at(*roles.index_of("adult"));
+    child.name = "child";
+    child.forces.social_factor = 3.0;
+    EXPECT_TRUE(roles.put(child));
+    auto created = CrowdSimulation::create(config, roles);
+    EXPECT_TRUE(created);
+    CrowdSimulation sim = std::move(*created);
+    const std::vector<Vec2> box = {{0, 0}, {20, 0}, {20, 20}, {0, 20}};
+    EXPECT_TRUE(sim.add_polyline(box, true));
+    EXPECT_TRUE(sim.add_wall({7, 4}, {7, 12}));
+    Rng rng(13);
+    for (std::size_t k = 0; k < 400; ++k) {
+      AgentSpec spec;
+      spec.position = {rng.uniform(0.5, 19.5), rng.uniform(0.5, 19.5)};
+      if (k == 1) spec.position = {10.0, 10.0};  // coincident with agent 0
+      if (k == 0) spec.position = {10.0, 10.0};
+      if (k == 3) spec.position = {4.0, 4.0};  // 3 and 4 touching
+      if (k == 4) spec.position = {4.45, 4.0};
+      spec.group_id = k % 4 == 0 ? -1 : static_cast<std::int64_t>(k / 3);
+      if (k % 5 == 2) spec.role = "elderly";
+      if (children && k % 5 == 0) spec.role = "child";
+      auto id = sim.add_agent(spec);
+      EXPECT_TRUE(id);
+      EXPECT_TRUE(sim.set_goals(*id,
+                                {Goal{{rng.uniform(1, 19), rng.uniform(1, 19)}, 0.5},
+                                 Goal{{rng.uniform(1, 19), rng.uniform(1, 19)}, 0.5}},
+                                true));
+    }
+    EXPECT_TRUE(sim.set_driven(AgentId(7), Presence::kVisible));
+    EXPECT_TRUE(sim.set_driven(AgentId(8), Presence::kInvisible));
+    for (int k = 0; k < 60; ++k) {
+      EXPECT_TRUE(sim.set_driven_state(AgentId(7), Pose2{2.0 + 0.05 * k, 15.0, 0.0}, Twist2{1.0, 0.0, 0.0}));
+      sim.step();
+    }
+    return snapshot(sim);
+  };
+  const std::vector<double> by_agent = run(false, 1, false);
+  EXPECT_TRUE(bit_identical(run(true, 1, false), by_agent));
+  EXPECT_TRUE(bit_identical(run(true, 2, false), by_agent));
+  EXPECT_FALSE(bit_identical(run(true, 2, true), by_agent));  // the children change the crowd
+  EXPECT_TRUE(bit_identical(run(true, 2, true), run(false, 1, true)));
+}
+
 // A periodic corridor 20 m long, 4 m wide, with people walking both ways (contacts, headway,
 // side preference and images across the boundary all in play).
 CrowdSimulation periodic_corridor(std::size_t n, unsigned threads, std::uint64_t seed) {

@@ -391,7 +391,7 @@ TEST(SocialKernel, FusedPassEqualsTheKernelAndTheAheadTerms) {
 // LightSFM's pair force is antisymmetric between agents with the same parameters, and the
 // kernel keeps that to the bit: seen from j, every input is negated exactly (offset, relative
 // velocity, tie direction), so F_ji = −F_ij. A step could therefore compute each such pair once
-// (docs/crowd.md, "Side by side with RVO2").
+// (the step does: CrowdSimulation::step_pairs).
 TEST(SocialKernel, PairForceIsAntisymmetricToTheBit) {
   const SocialParams p{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, 2.1f};
   PairBatch batch = random_batch(53, 3.0, 3.0, 2.0, 2.0);
@@ -418,6 +418,93 @@ TEST(SocialKernel, PairForceIsAntisymmetricToTheBit) {
     nonzero += batch.fx[m] != 0;
   }
   EXPECT_GT(nonzero, kBatch / 2);
+}
+
+// The pair kernel (each pair once) gives, lane by lane, what each of the two agents' own batches
+// give: the force on i, minus the force on j, and both sides' headway caps and side pushes —
+// with per-lane walking directions, agents without one, people ahead and oncoming walkers.
+TEST(SocialKernel, PairKernelEqualsBothAgentsBatches) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const SocialParams sp{2.0f, 0.35f, 1.0f / 0.35f, 2.0f, 3.0f, 2.1f};
+  const PairAheadParams a{0.1f, 0.4f, 1.0f / 0.6f, 2.5f, 0.7f, 0.1f, 1.5f, 1.0f / 1.5f};
+  int caps = 0, pushes = 0;
+  for (std::uint64_t seed : {61, 67, 71}) {
+    Rng rng(seed);
+    const PairBatch batch = random_batch(seed, 3.0, 1.0, 2.0, 0.6);
+    PairLanes l{};
+    const auto heading = [&](float* ex, float* ey, float* along, float* band, int m) {
+      const double angle = rng.uniform(-0.6, 0.6) + (rng.uniform(0.0, 1.0) < 0.5 ? 0.0 : 3.14159);
+      const bool none = rng.uniform(0.0, 1.0) < 0.15;  // no goal: (0, 0)
+      ex[m] = none ? 0.0f : static_cast<float>(std::cos(angle));
+      ey[m] = none ? 0.0f : static_cast<float>(std::sin(angle));
+      along[m] = none ? 0.0f : static_cast<float>(rng.uniform(0.0, 1.4));
+      band[m] = static_cast<float>(rng.uniform(0.17, 0.35));
+    };
+    for (int m = 0; m < kBatch; ++m) {
+      l.dx[m] = batch.dx[m];
+      l.dy[m] = batch.dy[m];
+      l.dvx[m] = batch.dvx[m];
+      l.dvy[m] = batch.dvy[m];
+      heading(l.ex_i, l.ey_i, l.along_i, l.band_i, m);
+      heading(l.ex_j, l.ey_j, l.along_j, l.band_j, m);
+    }
+    l.dx[9] = l.dy[9] = 0.0f;  // coincident: the tie direction applies (−u for j)
+    l.tie_x[9] = 0.6f;
+    l.tie_y[9] = -0.8f;
+    for (int count : {kBatch, 48, 16}) {
+      PairLanes fast = l;
+      PairLanes portable = l;
+      pair_kernel(sp, a, count, fast);
+      pair_kernel_portable(sp, a, count, portable);
+      for (int m = 0; m < count; ++m) {
+        const std::string where =
+            "seed " + std::to_string(seed) + " count " + std::to_string(count) + " lane " + std::to_string(m);
+        EXPECT_EQ(fast.fx[m], portable.fx[m]) << where;
+        EXPECT_EQ(fast.fy[m], portable.fy[m]) << where;
+        EXPECT_EQ(fast.cap_i[m], portable.cap_i[m]) << where;
+        EXPECT_EQ(fast.cap_j[m], portable.cap_j[m]) << where;
+        EXPECT_EQ(fast.push_i[m], portable.push_i[m]) << where;
+        EXPECT_EQ(fast.push_j[m], portable.push_j[m]) << where;
+        // Each side alone, as the agent-by-agent step computes it.
+        for (const bool j : {false, true}) {
+          const float sign = j ? -1.0f : 1.0f;
+          PairBatch one{};
+          one.dx[0] = sign * l.dx[m];
+          one.dy[0] = sign * l.dy[m];
+          one.dvx[0] = sign * l.dvx[m];
+          one.dvy[0] = sign * l.dvy[m];
+          one.tie_x[0] = sign * l.tie_x[m];
+          one.tie_y[0] = sign * l.tie_y[m];
+          const AheadParams p{j ? l.ex_j[m] : l.ex_i[m],
+                              j ? l.ey_j[m] : l.ey_i[m],
+                              j ? l.along_j[m] : l.along_i[m],
+                              a.oncoming,
+                              j ? l.band_j[m] : l.band_i[m],
+                              a.distance,
+                              a.inv_time,
+                              a.anticipation,
+                              a.side_band,
+                              a.side_bias,
+                              a.side_factor,
+                              a.side_inv_range};
+          const BatchTotals t = social_kernel_with_ahead(sp, &p, inf, kBatchLanes, one.dx, one.dy, one.dvx,
+                                                         one.dvy, one.tie_x, one.tie_y, one.fx, one.fy);
+          const std::int32_t cap = j ? fast.cap_j[m] : fast.cap_i[m];
+          const std::int32_t push = j ? fast.push_j[m] : fast.push_i[m];
+          EXPECT_EQ(static_cast<std::int64_t>(sign) * fast.fx[m], t.fx) << where << (j ? " j" : " i");
+          EXPECT_EQ(static_cast<std::int64_t>(sign) * fast.fy[m], t.fy) << where << (j ? " j" : " i");
+          EXPECT_EQ(std::min(cap, std::bit_cast<std::int32_t>(inf)),
+                    std::bit_cast<std::int32_t>(t.ahead.speed_cap))
+              << where << (j ? " j" : " i");
+          EXPECT_EQ(push, t.ahead.side_push) << where << (j ? " j" : " i");
+          caps += cap != INT32_MAX;
+          pushes += push != 0;
+        }
+      }
+    }
+  }
+  EXPECT_GT(caps, 10);  // the cases are not trivial
+  EXPECT_GT(pushes, 10);
 }
 
 }  // namespace
