@@ -101,10 +101,7 @@ struct CrowdSimulation::PairState {
   // By sorted position: prepare_agent's results, the kernel's inputs of each agent (walking
   // direction, v·e, headway band; 0 for a driven one), the contact margin.
   std::vector<AgentPrep> prep;
-  struct Heading {
-    float ex, ey, along, band;
-  };
-  std::vector<Heading> heading;
+  std::vector<float> heading;  // 4 per agent: ex, ey, along, band (fill_pair_sides)
   std::vector<double> margin;
   // The contacts of the agent at sorted position k: contacts[contact_start[k] .. [k + 1]).
   std::vector<std::uint32_t> contact_start;
@@ -1629,7 +1626,9 @@ void CrowdSimulation::step_pairs() {
     t.contacts.clear();
   }
   ps.prep.resize(n);
-  ps.heading.resize(n);
+  // Entries past the agents read as 0: the gather may leave them in slot (fill_pair_sides).
+  ps.heading.resize(4 * (n + kFillSlack));
+  std::fill(ps.heading.begin() + static_cast<std::ptrdiff_t>(4 * n), ps.heading.end(), 0.0f);
   ps.margin.resize(n);
   const std::int32_t no_cap = std::bit_cast<std::int32_t>(std::numeric_limits<float>::infinity());
 
@@ -1638,17 +1637,19 @@ void CrowdSimulation::step_pairs() {
       const AgentInputs& in = c.inputs[k];
       for (PairState::Thread& t : ps.threads) t.sums[k] = {0, 0, 0, 0, 0, 0, 0, no_cap};
       ps.margin[k] = contact_margin(in);
+      float* heading = ps.heading.data() + 4 * k;
       if (in.driven != kNotDriven) {  // its own sums are not used
-        ps.heading[k] = {0.0f, 0.0f, 0.0f, 0.0f};
+        std::fill(heading, heading + 4, 0.0f);
         continue;
       }
       const AgentPrep prep = prepare_agent(in);
       const ForceParameters& fp = roles_.at(in.role).forces;
       ps.prep[k] = prep;
       // As NeighbourSums takes them.
-      ps.heading[k] = {static_cast<float>(prep.ex), static_cast<float>(prep.ey),
-                       static_cast<float>(in.vx * prep.ex + in.vy * prep.ey),
-                       static_cast<float>((prep.wall_sides == 3u ? fp.zipper_band : fp.headway_band) * in.r)};
+      heading[0] = static_cast<float>(prep.ex);
+      heading[1] = static_cast<float>(prep.ey);
+      heading[2] = static_cast<float>(in.vx * prep.ex + in.vy * prep.ey);
+      heading[3] = static_cast<float>((prep.wall_sides == 3u ? fp.zipper_band : fp.headway_band) * in.r);
     }
   });
 
@@ -1674,13 +1675,18 @@ void CrowdSimulation::step_pairs() {
     PairState::Thread& t = ps.threads[WorkerPool::current_thread()];
     struct Batch {
       PairLanes lanes;
-      std::uint32_t owner[kBatch];
-      std::uint32_t slot[kBatch];
+      std::uint32_t owner[kBatch + kFillSlack];
+      std::uint32_t slot[kBatch + kFillSlack];
       std::uint8_t close[kBatch];
+      // Runs of consecutive lanes with the same owner: run_owner[r] from lane run_begin[r].
+      std::uint32_t run_owner[kBatch];
+      int run_begin[kBatch];
+      int runs = 0;
       int count = 0;
       int close_count = 0;
       bool tied = false;  // some tie direction is set (else tie_x, tie_y are all 0)
       Batch() {
+        std::fill(std::begin(slot), std::end(slot), 0u);  // entries, whatever the lanes hold
         std::fill(std::begin(lanes.tie_x), std::end(lanes.tie_x), 0.0f);
         std::fill(std::begin(lanes.tie_y), std::end(lanes.tie_y), 0.0f);
       }
@@ -1688,6 +1694,7 @@ void CrowdSimulation::step_pairs() {
     thread_local Batch batch;
     Batch& b = batch;
     PairLanes& l = b.lanes;
+    const SideLanes sides{l.ex_i, l.ey_i, l.along_i, l.band_i, l.ex_j, l.ey_j, l.along_j, l.band_j, b.owner};
     const auto contact = [&](std::uint32_t to, std::uint32_t self, std::uint32_t other, double dx, double dy,
                              double d2, double reach, std::size_t from) {
       const Separation sep = separation(dx, dy, d2, self, other);
@@ -1752,39 +1759,40 @@ void CrowdSimulation::step_pairs() {
         std::fill(std::begin(l.tie_y), std::end(l.tie_y), 0.0f);
         b.tied = false;
       }
-      // The owners' lanes are consecutive: their sums are kept here and added once per owner.
-      std::uint32_t owner = b.owner[0];
-      std::int64_t sx = 0, sy = 0, push = 0;
-      std::int32_t cap = INT32_MAX;
-      const auto add_owner = [&] {
-        PairState::Sums& si = t.sums[owner];
+      // The forces: summed per owner over its run of lanes, minus each to the other agent.
+      for (int r = 0; r < b.runs; ++r) {
+        const int stop = r + 1 < b.runs ? b.run_begin[r + 1] : b.count;
+        std::int64_t sx = 0;
+        std::int64_t sy = 0;
+        for (int m = b.run_begin[r]; m < stop; ++m) {
+          sx += l.fx[m];
+          sy += l.fy[m];
+        }
+        PairState::Sums& si = t.sums[b.run_owner[r]];
         si.social_x += sx;
         si.social_y += sy;
-        si.side_push += push;
-        si.cap = std::min(si.cap, cap);
-      };
+      }
       for (int m = 0; m < b.count; ++m) {
-        if (b.owner[m] != owner) {
-          add_owner();
-          owner = b.owner[m];
-          sx = sy = push = 0;
-          cap = INT32_MAX;
-        }
-        sx += l.fx[m];
-        sy += l.fy[m];
-        push += l.push_i[m];
-        cap = std::min(cap, l.cap_i[m]);
         PairState::Sums& sj = t.sums[b.slot[m]];
         sj.social_x -= l.fx[m];
         sj.social_y -= l.fy[m];
-        if (l.cap_j[m] != INT32_MAX || l.push_j[m] != 0) {  // mostly not: i is rarely ahead of j
-          sj.side_push += l.push_j[m];
-          sj.cap = std::min(sj.cap, l.cap_j[m]);
-        }
       }
-      if (b.count > 0) add_owner();
+      // The headway caps and side pushes: only the lanes that have one.
+      for (std::uint64_t bits = l.ahead_i; bits != 0; bits &= bits - 1) {
+        const int m = std::countr_zero(bits);
+        PairState::Sums& si = t.sums[b.owner[m]];
+        si.side_push += l.push_i[m];
+        si.cap = std::min(si.cap, l.cap_i[m]);
+      }
+      for (std::uint64_t bits = l.ahead_j; bits != 0; bits &= bits - 1) {
+        const int m = std::countr_zero(bits);
+        PairState::Sums& sj = t.sums[b.slot[m]];
+        sj.side_push += l.push_j[m];
+        sj.cap = std::min(sj.cap, l.cap_j[m]);
+      }
       b.count = 0;
       b.close_count = 0;
+      b.runs = 0;
     };
     for (std::size_t k = begin; k < end; ++k) {
       const auto self = static_cast<std::uint32_t>(k);
@@ -1805,22 +1813,14 @@ void CrowdSimulation::step_pairs() {
         if (from < ranges[r].end) ranges[count++] = {from, ranges[r].end};
       }
       GatherBatch gb{l.dx, l.dy, l.dvx, l.dvy, b.slot, b.close, kBatch, b.count, b.close_count};
-      const PairState::Heading own = ps.heading[k];
       int done = 0;
       while (true) {
         const int first = gb.count;
         done += gather_neighbours(q, ranges + done, count - done, gb);
-        for (int m = first; m < gb.count; ++m) {
-          const PairState::Heading other = ps.heading[b.slot[m]];
-          b.owner[m] = self;
-          l.ex_i[m] = own.ex;
-          l.ey_i[m] = own.ey;
-          l.along_i[m] = own.along;
-          l.band_i[m] = own.band;
-          l.ex_j[m] = other.ex;
-          l.ey_j[m] = other.ey;
-          l.along_j[m] = other.along;
-          l.band_j[m] = other.band;
+        if (gb.count > first) {
+          fill_pair_sides(ps.heading.data(), b.slot, ps.heading.data() + 4 * k, self, first, gb.count, sides);
+          b.run_owner[b.runs] = self;
+          b.run_begin[b.runs++] = first;
         }
         b.count = gb.count;
         b.close_count = gb.close_count;
@@ -1870,7 +1870,8 @@ void CrowdSimulation::step_pairs() {
       }
       NeighbourTotals totals;
       totals.speed_cap = static_cast<double>(std::bit_cast<float>(s.cap));
-      totals.social = social_total(s.social_x, s.social_y, s.side_push, ps.heading[k].ex, ps.heading[k].ey);
+      totals.social =
+          social_total(s.social_x, s.social_y, s.side_push, ps.heading[4 * k], ps.heading[4 * k + 1]);
       totals.repulsion = {FixedSum::to_double(s.repulsion_x), FixedSum::to_double(s.repulsion_y)};
       totals.body = {FixedSum::to_double(s.body_x), FixedSum::to_double(s.body_y)};
       // As NeighbourSums keeps them: by agent id, the lowest kMaxContacts.

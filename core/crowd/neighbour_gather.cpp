@@ -236,6 +236,47 @@ __attribute__((target("avx2,popcnt"))) int gather_avx2(const GatherQuery& q, Gat
   return count;
 }
 
+// fill_pair_sides_scalar, 8 lanes at a time: the 8 neighbours' 4 floats transposed into the 4
+// j-side arrays, the owner's broadcast into the i-side ones.
+__attribute__((target("avx2"))) void fill_pair_sides_avx2(const float* heading, const std::uint32_t* slot,
+                                                          const float* own, std::uint32_t owner, int first,
+                                                          int count, const SideLanes& out) {
+  const __m256 ex = _mm256_set1_ps(own[0]);
+  const __m256 ey = _mm256_set1_ps(own[1]);
+  const __m256 along = _mm256_set1_ps(own[2]);
+  const __m256 band = _mm256_set1_ps(own[3]);
+  const __m256i who = _mm256_set1_epi32(static_cast<int>(owner));
+  // Whole vectors, the last one past `count` (see the header: slot holds entries there too).
+  for (int m = first; m < count; m += 8) {
+    const auto row = [&](int q) { return _mm_loadu_ps(heading + 4 * static_cast<std::size_t>(slot[m + q])); };
+    // t_q = (lane q | lane q + 4), each (ex, ey, along, band)
+    const __m256 t0 = _mm256_insertf128_ps(_mm256_castps128_ps256(row(0)), row(4), 1);
+    const __m256 t1 = _mm256_insertf128_ps(_mm256_castps128_ps256(row(1)), row(5), 1);
+    const __m256 t2 = _mm256_insertf128_ps(_mm256_castps128_ps256(row(2)), row(6), 1);
+    const __m256 t3 = _mm256_insertf128_ps(_mm256_castps128_ps256(row(3)), row(7), 1);
+    const __m256 u0 = _mm256_unpacklo_ps(t0, t1);  // ex0 ex1 ey0 ey1 | ex4 ex5 ey4 ey5
+    const __m256 u1 = _mm256_unpackhi_ps(t0, t1);  // along, band likewise
+    const __m256 u2 = _mm256_unpacklo_ps(t2, t3);
+    const __m256 u3 = _mm256_unpackhi_ps(t2, t3);
+    _mm256_storeu_ps(out.ex_j + m, _mm256_shuffle_ps(u0, u2, 0x44));
+    _mm256_storeu_ps(out.ey_j + m, _mm256_shuffle_ps(u0, u2, 0xEE));
+    _mm256_storeu_ps(out.along_j + m, _mm256_shuffle_ps(u1, u3, 0x44));
+    _mm256_storeu_ps(out.band_j + m, _mm256_shuffle_ps(u1, u3, 0xEE));
+    _mm256_storeu_ps(out.ex_i + m, ex);
+    _mm256_storeu_ps(out.ey_i + m, ey);
+    _mm256_storeu_ps(out.along_i + m, along);
+    _mm256_storeu_ps(out.band_i + m, band);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.owner + m), who);
+  }
+}
+
+using SidesFn = void (*)(const float*, const std::uint32_t*, const float*, std::uint32_t, int, int,
+                         const SideLanes&);
+SidesFn pick_sides() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") ? fill_pair_sides_avx2 : fill_pair_sides_scalar;
+}
+
 using GridFn = int (*)(const GridQuery&, GatherRange*);
 GridFn pick_grid() {
   __builtin_cpu_init();
@@ -258,6 +299,32 @@ int grid_ranges(const GridQuery& q, GatherRange* ranges) {
   return fn(q, ranges);
 #else
   return grid_ranges_scalar(q, ranges);
+#endif
+}
+
+void fill_pair_sides_scalar(const float* heading, const std::uint32_t* slot, const float* own,
+                            std::uint32_t owner, int first, int count, const SideLanes& out) {
+  for (int m = first; m < count; ++m) {
+    const float* other = heading + 4 * static_cast<std::size_t>(slot[m]);
+    out.ex_i[m] = own[0];
+    out.ey_i[m] = own[1];
+    out.along_i[m] = own[2];
+    out.band_i[m] = own[3];
+    out.ex_j[m] = other[0];
+    out.ey_j[m] = other[1];
+    out.along_j[m] = other[2];
+    out.band_j[m] = other[3];
+    out.owner[m] = owner;
+  }
+}
+
+void fill_pair_sides(const float* heading, const std::uint32_t* slot, const float* own, std::uint32_t owner,
+                     int first, int count, const SideLanes& out) {
+#ifdef SOCSIM_GATHER_AVX2
+  static const SidesFn fn = pick_sides();
+  fn(heading, slot, own, owner, first, count, out);
+#else
+  fill_pair_sides_scalar(heading, slot, own, owner, first, count, out);
 #endif
 }
 

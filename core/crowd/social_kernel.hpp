@@ -123,21 +123,22 @@ BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* a
 inline constexpr int kPairLanes = 16;  // the widest vector (AVX-512)
 struct PairLanes {
   // Inputs: the offset x_j − x_i, the relative velocity v_i − v_j, the tie direction (as PairBatch),
-  // and for each side its walking direction ((0, 0) without a goal), v·e and headway band.
+  // and for each side its walking direction ((0, 0) without a goal), v·e and headway band (8
+  // lanes to spare: core/crowd/neighbour_gather.hpp fills them 8 at a time).
   alignas(32) float dx[kBatch];
   alignas(32) float dy[kBatch];
   alignas(32) float dvx[kBatch];
   alignas(32) float dvy[kBatch];
   alignas(32) float tie_x[kBatch];
   alignas(32) float tie_y[kBatch];
-  alignas(32) float ex_i[kBatch];
-  alignas(32) float ey_i[kBatch];
-  alignas(32) float along_i[kBatch];
-  alignas(32) float band_i[kBatch];
-  alignas(32) float ex_j[kBatch];
-  alignas(32) float ey_j[kBatch];
-  alignas(32) float along_j[kBatch];
-  alignas(32) float band_j[kBatch];
+  alignas(32) float ex_i[kBatch + 8];
+  alignas(32) float ey_i[kBatch + 8];
+  alignas(32) float along_i[kBatch + 8];
+  alignas(32) float band_i[kBatch + 8];
+  alignas(32) float ex_j[kBatch + 8];
+  alignas(32) float ey_j[kBatch + 8];
+  alignas(32) float along_j[kBatch + 8];
+  alignas(32) float band_j[kBatch + 8];
   // Outputs: the social force on i (units of 2^-20 m/s²; j gets minus it), and for each side the
   // headway cap as the bits of a non-negative float (INT32_MAX where j is not ahead of i in the
   // band) and the side push (as oncoming_side_push: along that side's right-hand direction).
@@ -147,6 +148,9 @@ struct PairLanes {
   alignas(32) std::int32_t cap_j[kBatch];
   alignas(32) std::int32_t push_i[kBatch];
   alignas(32) std::int32_t push_j[kBatch];
+  // Bit m set: in lane m the other is ahead of i in its band or meets it (ahead_i; ahead_j for j):
+  // the few lanes with a headway cap or a side push (the others hold INT32_MAX and 0).
+  std::uint64_t ahead_i, ahead_j;
 };
 // The ahead terms' parameters shared by both sides (AheadParams without the per-agent ones).
 struct PairAheadParams {

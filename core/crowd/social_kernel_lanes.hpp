@@ -299,7 +299,8 @@ template <int N>
 SOCSIM_LANES void pair_ahead_lanes(const PairAheadParams& a, const Pk<N>& ex, const Pk<N>& ey,
                                    const Pk<N>& speed_along, const Pk<N>& band, const Pk<N>& ox,
                                    const Pk<N>& oy, const Pk<N>& dvx, const Pk<N>& dvy, const Pk<N>& d,
-                                   std::int32_t* cap_out, std::int32_t* push_out, int m) {
+                                   std::int32_t* cap_out, std::int32_t* push_out, std::uint64_t& bits,
+                                   int m) {
   const Pk<N> zero = splat<N>(0.0f);
   const Pk<N> ahead = ox * ex + oy * ey;
   const Pk<N> side = ox * ey - oy * ex;
@@ -323,6 +324,7 @@ SOCSIM_LANES void pair_ahead_lanes(const PairAheadParams& a, const Pk<N>& ex, co
     meets[k] = Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], side_band2.v[k])),
                           Simd::less(toward.v[k], oncoming.v[k]));
     any_meets = any_meets || Simd::any(meets[k]);
+    bits |= (Simd::bitmask(follows) | Simd::bitmask(meets[k])) << (m + Simd::kLanes * k);
   }
   if (!any_meets) {
     SOCSIM_EACH Simd::istore(push_out + m + Simd::kLanes * k, Simd::iset1(0));
@@ -355,11 +357,11 @@ SOCSIM_LANES void pair_lanes(const SocialParams& p, const PairAheadParams& a, in
   const Pk<N> d = root(rx * rx + ry * ry);
   pair_ahead_lanes<N>(a, load_lanes<N>(all, b.ex_i + m), load_lanes<N>(all, b.ey_i + m),
                       load_lanes<N>(all, b.along_i + m), load_lanes<N>(all, b.band_i + m), rx, ry, vx, vy, d,
-                      b.cap_i, b.push_i, m);
+                      b.cap_i, b.push_i, b.ahead_i, m);
   // j's view: the offset and the relative velocity reversed (exactly: a sign flip), the same d.
   pair_ahead_lanes<N>(a, load_lanes<N>(all, b.ex_j + m), load_lanes<N>(all, b.ey_j + m),
                       load_lanes<N>(all, b.along_j + m), load_lanes<N>(all, b.band_j + m), -rx, -ry, -vx, -vy,
-                      d, b.cap_j, b.push_j, m);
+                      d, b.cap_j, b.push_j, b.ahead_j, m);
   const Forces<N> g =
       social_lanes<N>(p, rx, ry, load_lanes<N>(all, b.tie_x + m), load_lanes<N>(all, b.tie_y + m), vx, vy, d);
   SOCSIM_EACH {
@@ -378,6 +380,7 @@ SOCSIM_LANES void pair_from(const SocialParams& p, const PairAheadParams& a, int
 __attribute__((target(SOCSIM_LANES_TARGET))) void pair_kernel_lanes(const SocialParams& p,
                                                                     const PairAheadParams& a, int count,
                                                                     PairLanes& b) {
+  b.ahead_i = b.ahead_j = 0;
   pair_from<Simd::kInterleave>(p, a, 0, count, b);
 }
 
