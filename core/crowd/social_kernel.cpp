@@ -148,6 +148,7 @@ struct Simd {
   using lanes = __mmask16;  // the lanes of a vector that are in the batch
   static constexpr int kLanes = 16;
   static constexpr int kInterleave = 2;  // −28 % per pair against one vector at a time
+  static constexpr int kPairInterleave = 2;
   SOCSIM_SIMD("avx512f") vec set1(float x) { return _mm512_set1_ps(x); }
   SOCSIM_SIMD("avx512f") vec add(vec a, vec b) { return _mm512_add_ps(a, b); }
   SOCSIM_SIMD("avx512f") vec sub(vec a, vec b) { return _mm512_sub_ps(a, b); }
@@ -221,6 +222,10 @@ struct Simd {
   // EPYC): 7.57 ns per pair with four, 7.15 with five, 7.46 with six, 7.36 with eight (spills
   // grow); against the compiled AVX2 loop four gave about −40 % (2: −15 %, 3: −30 %).
   static constexpr int kInterleave = 5;
+  // The pair kernel (both sides' ahead terms, more live values): three (socsim-bench crowd-kernel,
+  // pairs_once_ns_per_pair, three alternated runs: 7.2–7.5 ns with three, 7.5–7.7 with four,
+  // 8.0–8.2 with five, 7.9–10 with two).
+  static constexpr int kPairInterleave = 3;
   SOCSIM_SIMD("avx2") vec set1(float x) { return _mm256_set1_ps(x); }
   SOCSIM_SIMD("avx2") vec add(vec a, vec b) { return _mm256_add_ps(a, b); }
   SOCSIM_SIMD("avx2") vec sub(vec a, vec b) { return _mm256_sub_ps(a, b); }
@@ -332,6 +337,13 @@ BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* a
     t.fy += fy[m];
   }
   return t;
+}
+
+int pair_kernel_lanes() {
+#ifdef SOCSIM_KERNEL_BY_HAND
+  if (kernel_isa() == Isa::kAvx512) return 16;
+#endif
+  return 8;
 }
 
 void pair_kernel(const SocialParams& p, const PairAheadParams& a, int count, PairLanes& b) {

@@ -120,7 +120,6 @@ BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* a
 // so the step computes each pair (i, j) once, from whichever of the two comes first in the grid's
 // order, and gives j the negated force; the headway cap and side push are not antisymmetric and
 // are computed for both from the same loads. Lanes may belong to different agents i.
-inline constexpr int kPairLanes = 16;  // the widest vector (AVX-512)
 struct PairLanes {
   // Inputs: the offset x_j − x_i, the relative velocity v_i − v_j, the tie direction (as PairBatch),
   // and for each side its walking direction ((0, 0) without a goal), v·e and headway band (8
@@ -156,10 +155,12 @@ struct PairLanes {
 struct PairAheadParams {
   float oncoming, distance, inv_time, anticipation, side_band, side_bias, side_factor, side_inv_range;
 };
-// Lanes [0, count) of b, count a multiple of kPairLanes (pad with zeros: inert). For each lane
+// Lanes [0, count) of b, count a multiple of pair_kernel_lanes() (pad with zeros: inert). For each lane
 // the results are, bit for bit, what social_kernel and ahead_terms give for i's batch (fx, fy,
 // cap_i, push_i) and for j's (−fx, −fy, cap_j, push_j): tests/core/crowd/neighbour_gather_test.cpp.
 void pair_kernel(const SocialParams& p, const PairAheadParams& a, int count, PairLanes& b);
+// The lanes pair_kernel runs at a time on this CPU (16 with AVX-512, else 8): pad counts to it.
+int pair_kernel_lanes();
 void pair_kernel_portable(const SocialParams& p, const PairAheadParams& a, int count, PairLanes& b);
 
 }  // namespace socsim::crowd

@@ -381,7 +381,7 @@ __attribute__((target(SOCSIM_LANES_TARGET))) void pair_kernel_lanes(const Social
                                                                     const PairAheadParams& a, int count,
                                                                     PairLanes& b) {
   b.ahead_i = b.ahead_j = 0;
-  pair_from<Simd::kInterleave>(p, a, 0, count, b);
+  pair_from<Simd::kPairInterleave>(p, a, 0, count, b);
 }
 
 __attribute__((target(SOCSIM_LANES_TARGET))) BatchTotals social_kernel_lanes(

@@ -188,8 +188,8 @@ SOCSIM_BENCH("crowd-field", "--size 256 --runs 20 [--world schemas/examples/worl
 // pass, as the step calls it) on batches shaped like the crowd bench's — neighbours uniform in a
 // 3 m disc, walking at 1.34 m/s in random directions, batches of 28–40 pairs padded to 8 — so a
 // change to the kernel can be timed without the rest of the step's noise. Reports the best of
-// --repeats timings in ns per pair: the dispatched kernel with and without the ahead terms, and
-// the portable loop (social force only).
+// --repeats timings in ns per pair: the dispatched kernel with and without the ahead terms, the
+// portable loop (social force only), and the kernel of the step that computes each pair once.
 int crowd_kernel_bench(const socsim::bench::Args& a) {
   using namespace socsim::crowd;
   const auto batches = static_cast<int>(a.integer("batches", 4096));
@@ -260,13 +260,68 @@ int crowd_kernel_bench(const socsim::bench::Args& a) {
   const auto [fused_ns, fused_sink] = time_kernel(false, true);
   const auto [social_ns, social_sink] = time_kernel(false, false);
   const auto [portable_ns, portable_sink] = time_kernel(true, false);
+  // The pair kernel of the step that computes each pair once: the same pairs, 48–56 to a batch
+  // (several agents', as the step fills them), each lane with both agents' headings.
+  std::vector<PairLanes> lanes;
+  std::vector<int> lane_counts;
+  std::int64_t lanes_per_pass = 0;
+  {
+    PairLanes cur{};
+    int fill = 0;
+    int target = 48;
+    for (int k = 0; k < batches; ++k) {
+      const PairBatch& b = data[static_cast<std::size_t>(k)];
+      const AheadParams& h = ahead[static_cast<std::size_t>(k)];
+      for (int m = 0; m < counts[static_cast<std::size_t>(k)] && b.dvx[m] != 0.0f; ++m) {
+        const double other = rng.uniform(-3.14159, 3.14159);
+        cur.dx[fill] = b.dx[m];
+        cur.dy[fill] = b.dy[m];
+        cur.dvx[fill] = b.dvx[m];
+        cur.dvy[fill] = b.dvy[m];
+        cur.ex_i[fill] = h.ex;
+        cur.ey_i[fill] = h.ey;
+        cur.along_i[fill] = 1.34f;
+        cur.band_i[fill] = 0.345f;
+        cur.ex_j[fill] = static_cast<float>(std::cos(other));
+        cur.ey_j[fill] = static_cast<float>(std::sin(other));
+        cur.along_j[fill] = 1.34f;
+        cur.band_j[fill] = 0.345f;
+        if (++fill == target) {
+          lanes.push_back(cur);
+          lane_counts.push_back(fill);
+          lanes_per_pass += fill;
+          cur = PairLanes{};
+          fill = 0;
+          target = 48 + static_cast<int>(rng.uniform() * 9.0);
+        }
+      }
+    }
+  }
+  const PairAheadParams pair_ahead{0.1f, 0.36f, 1.0f / 0.9f, 0.5f, 0.5f, 0.1f, 0.8f, 1.0f / 1.5f};
+  const int granule = pair_kernel_lanes();
+  double pair_ns = 1e30;
+  std::int64_t pair_sink = 0;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int pass = 0; pass < passes; ++pass) {
+      for (std::size_t k = 0; k < lanes.size(); ++k) {
+        const int n = (lane_counts[k] + granule - 1) / granule * granule;
+        pair_kernel(params, pair_ahead, n, lanes[k]);
+        pair_sink += lanes[k].fx[0] + static_cast<std::int64_t>(lanes[k].ahead_j);
+      }
+    }
+    pair_ns = std::min(pair_ns,
+                       socsim::bench::seconds_since(t0) * 1e9 / static_cast<double>(lanes_per_pass * passes));
+  }
   socsim::bench::emit({{"bench", "crowd-kernel"},
                        {"batches", batches},
                        {"pairs_per_batch_mean", static_cast<double>(pairs_per_pass) / batches},
                        {"fused_ns_per_pair", fused_ns},
                        {"social_only_ns_per_pair", social_ns},
                        {"portable_social_only_ns_per_pair", portable_ns},
-                       {"checksum", fused_sink + social_sink + portable_sink}});
+                       // Per pair computed once: both agents' terms (two of the pairs above).
+                       {"pairs_once_ns_per_pair", pair_ns},
+                       {"checksum", fused_sink + social_sink + portable_sink + pair_sink}});
   return 0;
 }
 

@@ -451,7 +451,7 @@ TEST(SocialKernel, PairKernelEqualsBothAgentsBatches) {
     l.dx[9] = l.dy[9] = 0.0f;  // coincident: the tie direction applies (−u for j)
     l.tie_x[9] = 0.6f;
     l.tie_y[9] = -0.8f;
-    for (int count : {kBatch, 48, 16}) {
+    for (int count : {kBatch, 48, 16, pair_kernel_lanes()}) {
       PairLanes fast = l;
       PairLanes portable = l;
       pair_kernel(sp, a, count, fast);
