@@ -74,6 +74,9 @@ struct CrowdSimulation::AgentPrep {
   bool heading = false;
   unsigned wall_sides = 0;  // walls abreast within zipper_reach: 1 left, 2 right, 3 both
   Vec2 obstacle;            // the walls' force
+  // The squared distance to the nearest wall of wall_grid_.near(x, y) (+inf: none): walls
+  // farther than one step's move can neither block it nor limit the velocity (finish_agent).
+  double wall_d2 = std::numeric_limits<double>::infinity();
 };
 
 // The neighbours' sums for one agent.
@@ -1200,6 +1203,7 @@ CrowdSimulation::AgentPrep CrowdSimulation::prepare_agent(const AgentInputs& in)
       const double dx = x - q.x;
       const double dy = y - q.y;
       const double d2 = dx * dx + dy * dy;
+      prep.wall_d2 = std::min(prep.wall_d2, d2);
       if (d2 > wc2) continue;
       const unsigned end_bit = t == 0.0 ? 1u : (t == 1.0 ? 2u : 0u);  // nearest point at an end
       if (heading && d2 <= zr2) {  // walls beside the walking line, abreast of the agent (zipper)
@@ -1317,7 +1321,11 @@ void CrowdSimulation::finish_agent(std::uint32_t i, const AgentInputs& in, const
   f.social = t.social;
   f.group = t.repulsion;
   f.body = t.body;
-  const std::span<const std::uint32_t> near_walls = wall_grid_.near(x, y);
+  // Walls beyond one step's reach (prep.wall_d2) can neither limit the velocity nor block the move
+  // (below): most agents are far from every wall and skip both.
+  const double wall_reach = r + dt * kMaxAgentSpeed;
+  std::span<const std::uint32_t> near_walls;
+  if (prep.wall_d2 < wall_reach * wall_reach) near_walls = wall_grid_.near(x, y);
 
   // Group gaze and coherence (LightSFM computeGroupForce, non-paper variant).
   if (g >= 0 && group_size_[static_cast<std::size_t>(g)] >= 2) {
@@ -1412,6 +1420,8 @@ void CrowdSimulation::finish_agent(std::uint32_t i, const AgentInputs& in, const
     }
   }
   const Vec2 target{x + nvx * dt, y + nvy * dt};
+  if (near_walls.empty() && (nvx * nvx + nvy * nvy) * dt * dt * 1.01 + 1e-12 >= prep.wall_d2)
+    near_walls = wall_grid_.near(x, y);  // a move that could reach a wall (no hard contact)
   Vec2 next = guard_move({x, y}, target, near_walls, walls_);
   if (!(next == target)) {
     nvx = (next.x - x) / dt;
