@@ -36,6 +36,9 @@ struct CrowdSimulation::CellIndex {
   // Agent index -> sorted position of its own entry (kNoCell when inactive).
   std::vector<std::uint32_t> cell_of;
   std::vector<double> x, y, vx, vy, r;
+  // The same positions and velocities in single precision, for the gather (kGatherSlack inert
+  // entries past the end: far away, never within the cut-off).
+  std::vector<float> fx, fy, fvx, fvy;
   std::vector<std::int32_t> group;
   std::vector<std::uint32_t> id;
   std::vector<AgentInputs> inputs;  // of agents[k], in that order
@@ -43,6 +46,7 @@ struct CrowdSimulation::CellIndex {
 
 struct CrowdSimulation::Images {
   std::vector<double> x, y, vx, vy, r;
+  std::vector<float> fx, fy, fvx, fvy;  // as CellIndex's
   std::vector<std::int32_t> group;
   std::vector<std::uint32_t> id;
   std::vector<std::uint8_t> active;
@@ -331,13 +335,15 @@ Vec2 social_total(std::int64_t social_x, std::int64_t social_y, std::int64_t sid
 // v_j·e below −kOncoming (m/s along the walking direction e) is walking towards the agent.
 constexpr float kOncoming = 0.1f;
 
-// Frozen state of the candidate neighbours, in the order a scan visits them.
+// Frozen state of the candidate neighbours, in the order a scan visits them; positions and
+// velocities also in single precision (the gather's).
 struct NeighbourArrays {
   const double *x, *y, *vx, *vy, *r;
+  const float *fx, *fy, *fvx, *fvy;
   const std::int32_t* group;
   const std::uint32_t* id;     // agent index of each entry (nullptr: the entry index is the agent)
   const std::uint8_t* active;  // nullptr: all entries are active
-  std::uint32_t readable;      // entries of x, y, vx, vy that may be read (see GatherQuery)
+  std::uint32_t readable;      // entries of fx, fy, fvx, fvy that may be read (see GatherQuery)
 };
 
 // Collects the neighbours of one agent within the cut-off, runs the kernel batch by batch and
@@ -391,8 +397,19 @@ class NeighbourSums {
   // Visits the candidate ranges of `a` in order; `self` is the owner's own entry, which is skipped.
   void scan(const NeighbourArrays& a, GatherRange* ranges, int count, std::uint32_t self) {
     arrays_ = &a;
-    const GatherQuery q{a.x, a.y,      a.vx,    a.vy, x_,       y_,        vx_,
-                        vy_, cutoff2_, close2_, self, a.active, a.readable};
+    const GatherQuery q{a.fx,
+                        a.fy,
+                        a.fvx,
+                        a.fvy,
+                        static_cast<float>(x_),
+                        static_cast<float>(y_),
+                        static_cast<float>(vx_),
+                        static_cast<float>(vy_),
+                        static_cast<float>(cutoff2_),
+                        static_cast<float>(close2_),
+                        self,
+                        a.active,
+                        a.readable};
     GatherBatch b{batch_.dx, batch_.dy, batch_.dvx, batch_.dvy, slot_, close_, kBatch, count_, close_count_};
     int done = 0;
     while (true) {
@@ -946,6 +963,15 @@ void CrowdSimulation::build_images(Images& m) const {
     m.active.push_back(1);
     m.id.push_back(i);
   }
+  const std::size_t entries = m.x.size();
+  for (std::vector<float>* v : {&m.fx, &m.fy, &m.fvx, &m.fvy}) v->assign(entries + kGatherSlack, 0.0f);
+  for (std::size_t k = 0; k < entries; ++k) {
+    m.fx[k] = static_cast<float>(m.x[k]);
+    m.fy[k] = static_cast<float>(m.y[k]);
+    m.fvx[k] = static_cast<float>(m.vx[k]);
+    m.fvy[k] = static_cast<float>(m.vy[k]);
+  }
+  for (std::size_t k = entries; k < entries + kGatherSlack; ++k) m.fx[k] = m.fy[k] = 1e30f;
 }
 
 void CrowdSimulation::build_cells() {
@@ -1023,10 +1049,15 @@ void CrowdSimulation::build_cells() {
     if (c.order[k] < active) c.agents.push_back(c.entry_agent[c.order[k]]);
   // Three inert entries past the end (far away, never within the cut-off) so the vector gather
   // may read whole groups of four.
-  c.x.assign(entries + 3, 1e30);
-  c.y.assign(entries + 3, 1e30);
-  c.vx.assign(entries + 3, 0.0);
-  c.vy.assign(entries + 3, 0.0);
+  c.x.resize(entries);
+  c.y.resize(entries);
+  c.vx.resize(entries);
+  c.vy.resize(entries);
+  for (std::vector<float>* v : {&c.fx, &c.fy, &c.fvx, &c.fvy}) v->resize(entries + kGatherSlack);
+  for (std::size_t k = entries; k < entries + kGatherSlack; ++k) {
+    c.fx[k] = c.fy[k] = 1e30f;
+    c.fvx[k] = c.fvy[k] = 0.0f;
+  }
   c.r.resize(entries);
   c.group.resize(entries);
   c.id.resize(entries);
@@ -1038,6 +1069,10 @@ void CrowdSimulation::build_cells() {
       c.y[k] = py_[i];
       c.vx[k] = vx_[i];
       c.vy[k] = vy_[i];
+      c.fx[k] = static_cast<float>(c.x[k]);
+      c.fy[k] = static_cast<float>(c.y[k]);
+      c.fvx[k] = static_cast<float>(c.vx[k]);
+      c.fvy[k] = static_cast<float>(c.vy[k]);
       c.r[k] = radius_[i];
       c.group[k] = group_[i];
       c.id[k] = i;
@@ -1089,9 +1124,10 @@ struct FullScan {
 template <class ImagesT>
 FullScan full_scan(const ImagesT& m) {
   const auto entries = static_cast<std::uint32_t>(m.x.size());
-  return {entries,
-          {m.x.data(), m.y.data(), m.vx.data(), m.vy.data(), m.r.data(), m.group.data(), m.id.data(),
-           m.active.data(), entries}};
+  return {
+      entries,
+      {m.x.data(), m.y.data(), m.vx.data(), m.vy.data(), m.r.data(), m.fx.data(), m.fy.data(), m.fvx.data(),
+       m.fvy.data(), m.group.data(), m.id.data(), m.active.data(), static_cast<std::uint32_t>(m.fx.size())}};
 }
 
 }  // namespace
@@ -1570,17 +1606,18 @@ void CrowdSimulation::step() {
   prepare_step();
   build_cells();
   const CellIndex& c = *cells_;
-  const GridScan scan{c.start,
-                      c.cell_of,
-                      c.origin_x,
-                      c.origin_y,
-                      c.cell,
-                      c.inv_cell,
-                      config_.neighbor_cutoff,
-                      c.nx,
-                      c.ny,
-                      {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.group.data(),
-                       c.id.data(), nullptr, static_cast<std::uint32_t>(c.x.size())}};
+  const GridScan scan{
+      c.start,
+      c.cell_of,
+      c.origin_x,
+      c.origin_y,
+      c.cell,
+      c.inv_cell,
+      config_.neighbor_cutoff,
+      c.nx,
+      c.ny,
+      {c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), c.r.data(), c.fx.data(), c.fy.data(), c.fvx.data(),
+       c.fvy.data(), c.group.data(), c.id.data(), nullptr, static_cast<std::uint32_t>(c.fx.size())}};
   if (pairs_once()) {
     step_pairs();
   } else {
@@ -1675,11 +1712,11 @@ void CrowdSimulation::step_pairs() {
                               static_cast<float>(fp.side_bias),
                               static_cast<float>(fp.side_factor),
                               static_cast<float>(1.0 / fp.side_range)};
-  const double cutoff2 = config_.neighbor_cutoff * config_.neighbor_cutoff;
+  const auto cutoff2 = static_cast<float>(config_.neighbor_cutoff * config_.neighbor_cutoff);
   const double widest_margin = config_.hard_contact ? config_.dt * 2.0 * max_vmax_ + 0.05 : 0.0;
   const double repulsion = fp.group_repulsion_factor;
   const double stiffness = config_.body_stiffness;
-  const auto readable = static_cast<std::uint32_t>(c.x.size());
+  const auto readable = static_cast<std::uint32_t>(c.fx.size());
   const int granule = pair_kernel_lanes();
 
   // Chunks of 64 agents: about 60 µs each, so the threads finish close together.
@@ -1811,9 +1848,10 @@ void CrowdSimulation::step_pairs() {
       const double px = c.x[k];
       const double py = c.y[k];
       const double close = c.r[k] + max_radius_ + widest_margin;
-      const GatherQuery q{c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), px, py, c.vx[k], c.vy[k], cutoff2,
-                          // As NeighbourSums' (widened: the other side's margin may be the larger).
-                          close * close * (1.0 + 1e-5) + 2.0 * kTiny2, self, nullptr, readable};
+      const GatherQuery q{
+          c.fx.data(), c.fy.data(), c.fvx.data(), c.fvy.data(), c.fx[k], c.fy[k], c.fvx[k], c.fvy[k], cutoff2,
+          // As NeighbourSums' (widened: the other side's margin may be the larger).
+          static_cast<float>(close * close * (1.0 + 1e-5) + 2.0 * kTiny2), self, nullptr, readable};
       GatherRange ranges[kMaxGridRows];
       const GridQuery g{
           c.start.data(), c.origin_x, c.origin_y, c.cell, c.inv_cell, config_.neighbor_cutoff + 1e-9,

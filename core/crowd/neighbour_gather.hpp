@@ -1,25 +1,29 @@
 #pragma once
 // Collecting the neighbours of one agent within the cut-off into a pair batch (the step's hottest
-// loop): a scalar version and, on x86-64 CPUs with AVX2, a 4-wide one that gives the same bits.
+// loop): a scalar version and, on x86-64 CPUs with AVX2, an 8-wide one that gives the same bits.
 #include <cstdint>
 
 namespace socsim::crowd {
 
-// Candidates are entries of the cell-sorted arrays; the agent's own entry is `self`.
+// Candidates are entries of the cell-sorted arrays; the agent's own entry is `self`. Positions
+// and velocities in single precision: the offsets and relative velocities are computed in single
+// precision (x_k − px rounds the same either way round, so a pair's offsets stay exactly opposite).
 struct GatherQuery {
-  const double *x, *y, *vx, *vy;  // candidate positions and velocities
-  double px, py, pvx, pvy;        // the agent's
-  double cutoff2;                 // take candidates with d² <= cutoff2
-  double close2;                  // and list those with d² < close2 (they may touch the agent)
+  const float *x, *y, *vx, *vy;  // candidate positions and velocities
+  float px, py, pvx, pvy;        // the agent's
+  float cutoff2;                 // take candidates with d² <= cutoff2
+  float close2;                  // and list those with d² < close2 (they may touch the agent)
   std::uint32_t self;
   const std::uint8_t* active = nullptr;  // per candidate, 0 = skip; nullptr: all are active
-  // Entries of x, y, vx, vy that may be read (>= every k1): reading up to 3 entries past k1 lets
-  // the vector version finish a range without a scalar tail; the extra lanes are never taken.
+  // Entries of x, y, vx, vy that may be read (>= every k1): reading up to kGatherSlack entries
+  // past k1 lets the vector version finish a range without a scalar tail; the extra lanes are
+  // never taken.
   std::uint32_t readable = 0;
 };
+inline constexpr std::uint32_t kGatherSlack = 7;
 
-// The batch being filled: per taken candidate the single-precision offset (x_k − px, y_k − py),
-// relative velocity (pvx − vx_k, pvy − vy_k) and entry index; `close` lists batch positions of
+// The batch being filled: per taken candidate the offset (x_k − px, y_k − py), relative velocity
+// (pvx − vx_k, pvy − vy_k) and entry index; `close` lists batch positions of
 // close candidates. Arrays hold `capacity` entries.
 struct GatherBatch {
   float *dx, *dy, *dvx, *dvy;

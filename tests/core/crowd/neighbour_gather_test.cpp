@@ -20,21 +20,21 @@ namespace socsim::crowd {
 namespace {
 
 struct Candidates {
-  std::vector<double> x, y, vx, vy;
+  std::vector<float> x, y, vx, vy;
 };
 
 Candidates random_candidates(Rng& rng, std::size_t n) {
   Candidates c;
   for (std::size_t k = 0; k < n; ++k) {
-    c.x.push_back(rng.uniform(-4.0, 4.0));
-    c.y.push_back(rng.uniform(-4.0, 4.0));
-    c.vx.push_back(rng.uniform(-1.5, 1.5));
-    c.vy.push_back(rng.uniform(-1.5, 1.5));
+    c.x.push_back(static_cast<float>(rng.uniform(-4.0, 4.0)));
+    c.y.push_back(static_cast<float>(rng.uniform(-4.0, 4.0)));
+    c.vx.push_back(static_cast<float>(rng.uniform(-1.5, 1.5)));
+    c.vy.push_back(static_cast<float>(rng.uniform(-1.5, 1.5)));
   }
-  c.x[n / 2] = 0.1;  // one coincident with the agent's position and one within touching reach
-  c.y[n / 2] = -0.2;
-  c.x[n / 3] = 0.4;
-  c.y[n / 3] = -0.2;
+  c.x[n / 2] = 0.1f;  // one coincident with the agent's position and one within touching reach
+  c.y[n / 2] = -0.2f;
+  c.x[n / 3] = 0.4f;
+  c.y[n / 3] = -0.2f;
   return c;
 }
 
@@ -83,16 +83,16 @@ TEST(NeighbourGather, DispatchedGatherMatchesScalarBitForBit) {
                         c.y.data(),
                         c.vx.data(),
                         c.vy.data(),
-                        0.1,
-                        -0.2,
-                        0.3,
-                        0.7,
-                        3.0 * 3.0,
-                        0.5 * 0.5,
+                        0.1f,
+                        -0.2f,
+                        0.3f,
+                        0.7f,
+                        3.0f * 3.0f,
+                        0.5f * 0.5f,
                         self,
                         nullptr,
                         static_cast<std::uint32_t>(n)};
-    // Rows of every length 0–13, and ranges that end at the arrays' end (no room for a 4-wide read).
+    // Rows of every length 0–13, and ranges that end at the arrays' end (no room for an 8-wide read).
     std::vector<GatherRange> ranges;
     std::uint32_t k = 0;
     while (k < n) {
@@ -116,9 +116,9 @@ TEST(NeighbourGather, DispatchedGatherMatchesScalarBitForBit) {
     std::vector<std::uint32_t> expected;
     for (const GatherRange& r : ranges) {
       for (std::uint32_t j = r.begin; j < r.end; ++j) {
-        const double dx = c.x[j] - 0.1;
-        const double dy = c.y[j] + 0.2;
-        if (j != self && dx * dx + dy * dy <= 9.0) expected.push_back(j);
+        const float dx = c.x[j] - 0.1f;
+        const float dy = c.y[j] - -0.2f;
+        if (j != self && dx * dx + dy * dy <= 9.0f) expected.push_back(j);
       }
     }
     EXPECT_EQ(a.slot, expected) << "trial " << trial;
@@ -130,8 +130,8 @@ TEST(NeighbourGather, InactiveCandidatesAreSkipped) {
   Candidates c = random_candidates(rng, 32);
   std::vector<std::uint8_t> active(32, 1);
   for (std::size_t k = 0; k < 32; k += 3) active[k] = 0;
-  const GatherQuery q{c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), 0.0,           0.0, 0.0,
-                      0.0,        100.0,      0.0,         99,          active.data(), 32};
+  const GatherQuery q{c.x.data(), c.y.data(), c.vx.data(), c.vy.data(), 0.0f,          0.0f, 0.0f,
+                      0.0f,       100.0f,     0.0f,        99,          active.data(), 32};
   const Collected got = collect(q, {{0, 32}}, kBatch, gather_neighbours);
   ASSERT_EQ(got.slot.size(), 21u);
   for (std::uint32_t k : got.slot) EXPECT_NE(k % 3, 0u);
