@@ -137,6 +137,16 @@ constexpr double kWallClearance = 0.01;
 constexpr double kNarrowFrom = 0.8;
 constexpr double kNarrowTo = 1.3;
 
+// Whether two roles' pair terms agree (then every pair's social force is antisymmetric and the
+// ahead terms use the same parameters on both sides).
+bool same_pair_terms(const ForceParameters& a, const ForceParameters& b) {
+  return a.lambda == b.lambda && a.gamma == b.gamma && a.n == b.n && a.n_prime == b.n_prime &&
+         a.social_factor == b.social_factor && a.headway_distance == b.headway_distance &&
+         a.headway_time == b.headway_time && a.headway_anticipation == b.headway_anticipation &&
+         a.side_factor == b.side_factor && a.side_range == b.side_range && a.side_bias == b.side_bias &&
+         a.side_band == b.side_band && a.group_repulsion_factor == b.group_repulsion_factor;
+}
+
 bool finite_in_range(double v, double limit) {
   return std::isfinite(v) && std::abs(v) <= limit;
 }
@@ -671,6 +681,9 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
   radius_.push_back(spec.radius ? *spec.radius : role.radius);
   v0_.push_back(v0);
   vmax_.push_back(vmax);
+  // Whether every agent's role shares the pair terms with the first one's (pairs_once()).
+  if (!role_.empty() && !same_pair_terms(roles_.at(role_.front()).forces, roles_.at(*role_index).forces))
+    mixed_pair_terms_ = true;
   role_.push_back(static_cast<std::uint16_t>(*role_index));
   group_.push_back(group);
   active_.push_back(spec.activity == Activity::kExited ? 0 : 1);
@@ -1458,7 +1471,7 @@ void CrowdSimulation::finish_agent(std::uint32_t i, const AgentInputs& in, const
   const Vec2 target{x + nvx * dt, y + nvy * dt};
   if (near_walls.empty() && (nvx * nvx + nvy * nvy) * dt * dt * 1.01 + 1e-12 >= prep.wall_d2)
     near_walls = wall_grid_.near(x, y);  // a move that could reach a wall (no hard contact)
-  Vec2 next = guard_move({x, y}, target, near_walls, walls_);
+  Vec2 next = near_walls.empty() ? target : guard_move({x, y}, target, near_walls, walls_);
   if (!(next == target)) {
     nvx = (next.x - x) / dt;
     nvy = (next.y - y) / dt;
@@ -1629,30 +1642,8 @@ void CrowdSimulation::step() {
   finish_step();
 }
 
-namespace {
-
-// Whether two roles' pair terms agree (then every pair's social force is antisymmetric and the
-// ahead terms use the same parameters on both sides).
-bool same_pair_terms(const ForceParameters& a, const ForceParameters& b) {
-  return a.lambda == b.lambda && a.gamma == b.gamma && a.n == b.n && a.n_prime == b.n_prime &&
-         a.social_factor == b.social_factor && a.headway_distance == b.headway_distance &&
-         a.headway_time == b.headway_time && a.headway_anticipation == b.headway_anticipation &&
-         a.side_factor == b.side_factor && a.side_range == b.side_range && a.side_bias == b.side_bias &&
-         a.side_band == b.side_band && a.group_repulsion_factor == b.group_repulsion_factor;
-}
-
-}  // namespace
-
 bool CrowdSimulation::pairs_once() const {
-  if (!config_.pairs_once || config_.periodic_length > 0.0) return false;
-  std::size_t role = SIZE_MAX;
-  for (std::size_t i = 0; i < size(); ++i) {
-    if (!seen(i) || role_[i] == role) continue;
-    if (role != SIZE_MAX && !same_pair_terms(roles_.at(role).forces, roles_.at(role_[i]).forces))
-      return false;
-    if (role == SIZE_MAX) role = role_[i];
-  }
-  return true;
+  return config_.pairs_once && config_.periodic_length <= 0.0 && !mixed_pair_terms_;
 }
 
 // The step with each pair once (pairs_once()): the same results as advance_agent agent by agent,

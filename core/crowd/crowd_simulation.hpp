@@ -194,10 +194,12 @@ class CrowdSimulation {
   void hold_driven(std::uint32_t i, const AgentInputs& in, ForceBreakdown* breakdown);
   [[nodiscard]] double contact_margin(const AgentInputs& in) const;
   // Each pair once (social_kernel.hpp, pair_kernel): step() does so when pairs_once() holds — no
-  // periodic boundary, every agent's role with the same pair parameters — else agent by agent.
+  // periodic boundary, every agent's role (active or not) with the same pair parameters — else
+  // agent by agent.
   // The results are the same bits either way.
   [[nodiscard]] bool pairs_once() const;
   void step_pairs();
+  bool mixed_pair_terms_ = false;  // some agent's role has other pair terms than the first's
   struct PairState;
   std::unique_ptr<PairState> pairs_;
 
