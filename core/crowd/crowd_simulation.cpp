@@ -1664,9 +1664,7 @@ void CrowdSimulation::step_pairs() {
     t.contacts.clear();
   }
   ps.prep.resize(n);
-  // Entries past the agents read as 0: the gather may leave them in slot (fill_pair_sides).
-  ps.heading.resize(4 * (n + kFillSlack));
-  std::fill(ps.heading.begin() + static_cast<std::ptrdiff_t>(4 * n), ps.heading.end(), 0.0f);
+  ps.heading.resize(4 * n);
   ps.margin.resize(n);
   const std::int32_t no_cap = std::bit_cast<std::int32_t>(std::numeric_limits<float>::infinity());
 
@@ -1726,7 +1724,6 @@ void CrowdSimulation::step_pairs() {
       int close_count = 0;
       bool tied = false;  // some tie direction is set (else tie_x, tie_y are all 0)
       Batch() {
-        std::fill(std::begin(slot), std::end(slot), 0u);  // entries, whatever the lanes hold
         std::fill(std::begin(lanes.tie_x), std::end(lanes.tie_x), 0.0f);
         std::fill(std::begin(lanes.tie_y), std::end(lanes.tie_y), 0.0f);
       }

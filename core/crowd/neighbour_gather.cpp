@@ -242,9 +242,12 @@ __attribute__((target("avx2"))) void fill_pair_sides_avx2(const float* heading, 
   const __m256 along = _mm256_set1_ps(own[2]);
   const __m256 band = _mm256_set1_ps(own[3]);
   const __m256i who = _mm256_set1_epi32(static_cast<int>(owner));
-  // Whole vectors, the last one past `count` (see the header: slot holds entries there too).
+  // Whole vectors, the last one past `count` (see the header).
   for (int m = first; m < count; m += 8) {
-    const auto row = [&](int q) { return _mm_loadu_ps(heading + 4 * static_cast<std::size_t>(slot[m + q])); };
+    // Lanes past `count` (the last vector) read the owner's own instead: their slots may hold anything.
+    const auto row = [&](int q) {
+      return _mm_loadu_ps(m + q < count ? heading + 4 * static_cast<std::size_t>(slot[m + q]) : own);
+    };
     // t_q = (lane q | lane q + 4), each (ex, ey, along, band)
     const __m256 t0 = _mm256_insertf128_ps(_mm256_castps128_ps256(row(0)), row(4), 1);
     const __m256 t1 = _mm256_insertf128_ps(_mm256_castps128_ps256(row(1)), row(5), 1);

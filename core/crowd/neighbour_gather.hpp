@@ -74,8 +74,8 @@ int gather_neighbours_scalar(const GatherQuery& q, GatherRange* ranges, int coun
 // agent's walking direction, speed along it and headway band are 4 floats at heading + 4·entry;
 // `own` (the owner's) goes to every lane's i side, that of the entry slot[m] to lane m's j side;
 // the owner's entry to owner[m]. On x86-64 CPUs with AVX2, 8 lanes at a time (the same values
-// in lanes [first, count)): lanes up to count + 7 are written too, so every array needs
-// kFillSlack entries to spare and slot[count .. count + 7) must hold entries of heading as well.
+// in lanes [first, count)): lanes up to count + 7 are written too (with whatever), so every
+// output array needs kFillSlack entries to spare.
 inline constexpr int kFillSlack = 8;
 struct SideLanes {
   float *ex_i, *ey_i, *along_i, *band_i, *ex_j, *ey_j, *along_j, *band_j;

@@ -44,6 +44,9 @@ export async function startServer(extraArgs = []) {
       const r = await fetch(base + path, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) });
       return { status: r.status, body: await r.json() };
     },
+    // Stops (SIGSTOP) or resumes (SIGCONT) the process: what it holds stays as it is meanwhile.
+    freeze() { proc.kill('SIGSTOP'); },
+    thaw() { proc.kill('SIGCONT'); },
     // The way a machine dies: no shutdown, no chance to hand jobs back.
     async kill9() {
       proc.kill('SIGKILL');
