@@ -1866,7 +1866,9 @@ void CrowdSimulation::step_pairs() {
         flush();  // the batch is full
         gb.count = gb.close_count = 0;
       }
-      if (b.count >= kBatch - 16) flush();
+      // Batches of 40–53 pairs: one agent by one thread, 10,000 agents (tests/bench `crowd`), two
+      // builds run at once one per core, 8 rounds each way: 5–10 % faster than at 48 or at 32.
+      if (b.count >= 40) flush();
     }
     if (b.count > 0) flush();
   });
