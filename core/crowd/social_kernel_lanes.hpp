@@ -160,45 +160,69 @@ struct AheadLanes {
   typename Simd::ivec fx, fy;  // the running sums of the pair forces (32- or 64-bit lanes)
 };
 
-// ahead_terms' lane computation on N vectors (same operations, same order, same bits), from the
-// kernel's loads and its distance d = √(dx² + dy²), which ahead_terms computes the same way. The
-// side push's exponential is evaluated only when some lane meets an oncoming walker: the others
-// are masked out after it anyway.
+// ahead_terms' lane computation on N vectors (same operations, same order, same bits), for an
+// agent walking along (ex, ey) at speed_along with the squared headway band band2 (per lane: the
+// pair kernel's lanes belong to different agents), from the kernel's loads and its distance
+// d = √(dx² + dy²), which ahead_terms computes the same way: each lane's headway cap (max(raw, 0))
+// and whether the neighbour follows in the band or meets the agent, and the side push where it
+// meets it. The push's exponential is evaluated only when some lane meets an oncoming walker:
+// the others are masked out after it anyway.
 template <int N>
-SOCSIM_LANES void ahead_lanes(const AheadParams& a, const Pk<N>& ox, const Pk<N>& oy, const Pk<N>& dvx,
-                              const Pk<N>& dvy, const Pk<N>& d, AheadLanes& acc) {
+struct AheadLaneTerms {
+  Pk<N> cap, push;  // push: only when any_meets
+  typename Simd::mask follows[N], meets[N];
+  bool any_meets;
+};
+template <int N>
+SOCSIM_LANES AheadLaneTerms<N> ahead_lane_terms(const PairAheadParams& a, const Pk<N>& ex, const Pk<N>& ey,
+                                                const Pk<N>& speed_along, const Pk<N>& band2, const Pk<N>& ox,
+                                                const Pk<N>& oy, const Pk<N>& dvx, const Pk<N>& dvy,
+                                                const Pk<N>& d) {
+  AheadLaneTerms<N> t;
   const Pk<N> zero = splat<N>(0.0f);
-  const Pk<N> ex = splat<N>(a.ex);
-  const Pk<N> ey = splat<N>(a.ey);
   const Pk<N> ahead = ox * ex + oy * ey;
   const Pk<N> side = ox * ey - oy * ex;
   const Pk<N> closing = dvx * ex + dvy * ey;
-  const Pk<N> toward = splat<N>(a.speed_along) - closing;
+  const Pk<N> toward = speed_along - closing;
   const Pk<N> raw = ((d - splat<N>(a.distance)) - splat<N>(a.anticipation) * closing) * splat<N>(a.inv_time);
-  const Pk<N> cap = select(raw < zero, zero, raw);  // std::max(raw, 0.0f)
+  t.cap = select(raw < zero, zero, raw);  // std::max(raw, 0.0f)
   const Mk<N> in_front = ahead > zero;
   const Pk<N> side2 = side * side;
   const Pk<N> oncoming = splat<N>(-a.oncoming);
-  const Pk<N> band2 = splat<N>(a.headway_band * a.headway_band);
   const Pk<N> side_band2 = splat<N>(a.side_band * a.side_band);
-  bool any_meets = false;
-  typename Simd::mask meets[N];
+  t.any_meets = false;
   SOCSIM_EACH {
-    const typename Simd::mask follows =
-        Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], band2.v[k])),
-                   Simd::greater_equal(toward.v[k], oncoming.v[k]));
-    acc.least = Simd::imin(acc.least, Simd::iselect(follows, Simd::bits(cap.v[k]), Simd::iset1(INT32_MAX)));
-    meets[k] = Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], side_band2.v[k])),
-                          Simd::less(toward.v[k], oncoming.v[k]));
-    any_meets = any_meets || Simd::any(meets[k]);
+    t.follows[k] = Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], band2.v[k])),
+                              Simd::greater_equal(toward.v[k], oncoming.v[k]));
+    t.meets[k] = Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], side_band2.v[k])),
+                            Simd::less(toward.v[k], oncoming.v[k]));
+    t.any_meets = t.any_meets || Simd::any(t.meets[k]);
   }
-  if (!any_meets) return;
-  const Pk<N> floored = select(ahead < zero, zero, ahead);  // std::max(ahead, 0.0f)
-  const Pk<N> magnitude =
-      splat<N>(a.side_factor * kForceQuantum) * exp_lanes(-floored * splat<N>(a.side_inv_range));
-  const Pk<N> push = select(side < splat<N>(a.side_bias), magnitude, -magnitude);
+  if (t.any_meets) {
+    const Pk<N> floored = select(ahead < zero, zero, ahead);  // std::max(ahead, 0.0f)
+    const Pk<N> magnitude =
+        splat<N>(a.side_factor * kForceQuantum) * exp_lanes(-floored * splat<N>(a.side_inv_range));
+    t.push = select(side < splat<N>(a.side_bias), magnitude, -magnitude);
+  } else {
+    t.push = zero;
+  }
+  return t;
+}
+
+// One agent's ahead terms over N vectors of its batch, folded into the running per-lane results.
+template <int N>
+SOCSIM_LANES void ahead_lanes(const AheadParams& a, const Pk<N>& ox, const Pk<N>& oy, const Pk<N>& dvx,
+                              const Pk<N>& dvy, const Pk<N>& d, AheadLanes& acc) {
+  const PairAheadParams shared{a.oncoming,  a.distance,  a.inv_time,    a.anticipation,
+                               a.side_band, a.side_bias, a.side_factor, a.side_inv_range};
+  const AheadLaneTerms<N> t =
+      ahead_lane_terms<N>(shared, splat<N>(a.ex), splat<N>(a.ey), splat<N>(a.speed_along),
+                          splat<N>(a.headway_band * a.headway_band), ox, oy, dvx, dvy, d);
+  SOCSIM_EACH acc.least =
+      Simd::imin(acc.least, Simd::iselect(t.follows[k], Simd::bits(t.cap.v[k]), Simd::iset1(INT32_MAX)));
+  if (!t.any_meets) return;
   SOCSIM_EACH acc.sum =
-      Simd::iadd(acc.sum, Simd::iselect(meets[k], Simd::truncate(push.v[k]), Simd::iset1(0)));
+      Simd::iadd(acc.sum, Simd::iselect(t.meets[k], Simd::truncate(t.push.v[k]), Simd::iset1(0)));
 }
 
 // The social force (in units of 2^-20 m/s², before truncation) on the agent from N vectors of
@@ -293,49 +317,23 @@ SOCSIM_LANES void kernel_from(const SocialParams& p, const AheadParams* ahead, A
 }
 
 // One side's ahead terms for N vectors of pairs, each lane with its own walking direction (ex,
-// ey), speed along it and headway band: ahead_lanes' operations, the results stored per lane at
-// cap + m and push + m (not reduced).
+// ey), speed along it and headway band, stored per lane at cap + m and push + m (not reduced);
+// bits gets the lanes that follow or meet.
 template <int N>
 SOCSIM_LANES void pair_ahead_lanes(const PairAheadParams& a, const Pk<N>& ex, const Pk<N>& ey,
                                    const Pk<N>& speed_along, const Pk<N>& band, const Pk<N>& ox,
                                    const Pk<N>& oy, const Pk<N>& dvx, const Pk<N>& dvy, const Pk<N>& d,
                                    std::int32_t* cap_out, std::int32_t* push_out, std::uint64_t& bits,
                                    int m) {
-  const Pk<N> zero = splat<N>(0.0f);
-  const Pk<N> ahead = ox * ex + oy * ey;
-  const Pk<N> side = ox * ey - oy * ex;
-  const Pk<N> closing = dvx * ex + dvy * ey;
-  const Pk<N> toward = speed_along - closing;
-  const Pk<N> raw = ((d - splat<N>(a.distance)) - splat<N>(a.anticipation) * closing) * splat<N>(a.inv_time);
-  const Pk<N> cap = select(raw < zero, zero, raw);  // std::max(raw, 0.0f)
-  const Mk<N> in_front = ahead > zero;
-  const Pk<N> side2 = side * side;
-  const Pk<N> oncoming = splat<N>(-a.oncoming);
-  const Pk<N> band2 = band * band;
-  const Pk<N> side_band2 = splat<N>(a.side_band * a.side_band);
-  bool any_meets = false;
-  typename Simd::mask meets[N];
+  const AheadLaneTerms<N> t = ahead_lane_terms<N>(a, ex, ey, speed_along, band * band, ox, oy, dvx, dvy, d);
   SOCSIM_EACH {
-    const typename Simd::mask follows =
-        Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], band2.v[k])),
-                   Simd::greater_equal(toward.v[k], oncoming.v[k]));
-    Simd::istore(cap_out + m + Simd::kLanes * k,
-                 Simd::iselect(follows, Simd::bits(cap.v[k]), Simd::iset1(INT32_MAX)));
-    meets[k] = Simd::both(Simd::both(in_front.v[k], Simd::less(side2.v[k], side_band2.v[k])),
-                          Simd::less(toward.v[k], oncoming.v[k]));
-    any_meets = any_meets || Simd::any(meets[k]);
-    bits |= (Simd::bitmask(follows) | Simd::bitmask(meets[k])) << (m + Simd::kLanes * k);
+    const int o = m + Simd::kLanes * k;
+    Simd::istore(cap_out + o, Simd::iselect(t.follows[k], Simd::bits(t.cap.v[k]), Simd::iset1(INT32_MAX)));
+    Simd::istore(push_out + o, t.any_meets
+                                   ? Simd::iselect(t.meets[k], Simd::truncate(t.push.v[k]), Simd::iset1(0))
+                                   : Simd::iset1(0));
+    bits |= (Simd::bitmask(t.follows[k]) | Simd::bitmask(t.meets[k])) << o;
   }
-  if (!any_meets) {
-    SOCSIM_EACH Simd::istore(push_out + m + Simd::kLanes * k, Simd::iset1(0));
-    return;
-  }
-  const Pk<N> floored = select(ahead < zero, zero, ahead);  // std::max(ahead, 0.0f)
-  const Pk<N> magnitude =
-      splat<N>(a.side_factor * kForceQuantum) * exp_lanes(-floored * splat<N>(a.side_inv_range));
-  const Pk<N> push = select(side < splat<N>(a.side_bias), magnitude, -magnitude);
-  SOCSIM_EACH Simd::istore(push_out + m + Simd::kLanes * k,
-                           Simd::iselect(meets[k], Simd::truncate(push.v[k]), Simd::iset1(0)));
 }
 
 // N whole vectors from p (every lane in the batch).
