@@ -321,6 +321,7 @@ bool nearest_point_is(Vec2 p, Vec2 v, const WallSegment& o) {
 class FixedSum {
  public:
   void add(double v) { sum_ += term(v); }
+  void add_term(std::int64_t t) { sum_ += t; }
   [[nodiscard]] double value() const { return to_double(sum_); }
   // What add(v) adds, and the value of a sum of such terms.
   static std::int64_t term(double v) {
@@ -333,6 +334,28 @@ class FixedSum {
  private:
   std::int64_t sum_ = 0;
 };
+
+// The forces between touching agents on `self` from `other`, at (dx, dy) = other − self with d2
+// from the batch's single-precision offsets (reach: the sum of the radii), as FixedSum terms:
+// LightSFM's group repulsion Σ (p_i − p_j) when both are in one group, and the body force.
+// NeighbourSums adds them for its agent; the pair step for both agents of a pair.
+struct TouchTerms {
+  std::int64_t repulsion_x = 0, repulsion_y = 0, body_x = 0, body_y = 0;
+};
+TouchTerms touch_terms(double dx, double dy, double d2, double reach, bool same_group, double repulsion,
+                       double stiffness, std::uint32_t self, std::uint32_t other) {
+  TouchTerms t;
+  if (same_group) {
+    t.repulsion_x = FixedSum::term(-repulsion * dx);
+    t.repulsion_y = FixedSum::term(-repulsion * dy);
+  }
+  if (stiffness > 0.0) {
+    const Separation n = separation(dx, dy, d2, self, other);
+    t.body_x = FixedSum::term(-stiffness * (reach - n.d) * n.x);
+    t.body_y = FixedSum::term(-stiffness * (reach - n.d) * n.y);
+  }
+  return t;
+}
 
 // The social force from the kernel's integer sums and the side push, which pushes along the
 // right-hand direction (e_y, −e_x) of the walking direction e.
@@ -523,15 +546,12 @@ class NeighbourSums {
   }
 
   void touching(double dx, double dy, double d2, double reach, std::int32_t gj, std::uint32_t idj) {
-    if (group_ >= 0 && gj == group_) {  // LightSFM: Σ (p_i − p_j) over touching group members
-      repulsion_x.add(-repulsion_factor_ * dx);
-      repulsion_y.add(-repulsion_factor_ * dy);
-    }
-    if (body_stiffness_ > 0.0) {
-      const Separation n = separation(dx, dy, d2, id_, idj);
-      body_x.add(-body_stiffness_ * (reach - n.d) * n.x);
-      body_y.add(-body_stiffness_ * (reach - n.d) * n.y);
-    }
+    const TouchTerms t = touch_terms(dx, dy, d2, reach, group_ >= 0 && gj == group_, repulsion_factor_,
+                                     body_stiffness_, id_, idj);
+    repulsion_x.add_term(t.repulsion_x);
+    repulsion_y.add_term(t.repulsion_y);
+    body_x.add_term(t.body_x);
+    body_y.add_term(t.body_y);
   }
 
   std::uint32_t id_;
@@ -1763,26 +1783,17 @@ void CrowdSimulation::step_pairs() {
           l.tie_y[m] = static_cast<float>(u.y);
           b.tied = true;
         }
-        PairState::Sums& si = t.sums[ki];
-        PairState::Sums& sj = t.sums[kj];
-        const double dxi = c.x[kj] - c.x[ki];
-        const double dyi = c.y[kj] - c.y[ki];
-        const double dxj = c.x[ki] - c.x[kj];
-        const double dyj = c.y[ki] - c.y[kj];
-        if (c.group[ki] >= 0 && c.group[kj] == c.group[ki]) {
-          si.repulsion_x += FixedSum::term(-repulsion * dxi);
-          si.repulsion_y += FixedSum::term(-repulsion * dyi);
-          sj.repulsion_x += FixedSum::term(-repulsion * dxj);
-          sj.repulsion_y += FixedSum::term(-repulsion * dyj);
-        }
-        if (stiffness > 0.0) {
-          const Separation a = separation(dxi, dyi, d2, id_i, id_j);
-          si.body_x += FixedSum::term(-stiffness * (reach - a.d) * a.x);
-          si.body_y += FixedSum::term(-stiffness * (reach - a.d) * a.y);
-          const Separation o = separation(dxj, dyj, d2, id_j, id_i);
-          sj.body_x += FixedSum::term(-stiffness * (reach - o.d) * o.x);
-          sj.body_y += FixedSum::term(-stiffness * (reach - o.d) * o.y);
-        }
+        const bool same_group = c.group[ki] >= 0 && c.group[kj] == c.group[ki];
+        const auto add = [](PairState::Sums& sum, const TouchTerms& terms) {
+          sum.repulsion_x += terms.repulsion_x;
+          sum.repulsion_y += terms.repulsion_y;
+          sum.body_x += terms.body_x;
+          sum.body_y += terms.body_y;
+        };
+        add(t.sums[ki], touch_terms(c.x[kj] - c.x[ki], c.y[kj] - c.y[ki], d2, reach, same_group, repulsion,
+                                    stiffness, id_i, id_j));
+        add(t.sums[kj], touch_terms(c.x[ki] - c.x[kj], c.y[ki] - c.y[kj], d2, reach, same_group, repulsion,
+                                    stiffness, id_j, id_i));
       }
       const int padded = (b.count + granule - 1) / granule * granule;
       for (int m = b.count; m < padded; ++m) {
