@@ -1601,14 +1601,20 @@ void CrowdSimulation::finish_step() {
   // Per agent and independent (each touches only its own entries), so it runs in parallel.
   const double dt = config_.dt;
   pool_->parallel_for(size(), 1024, [&](std::size_t begin, std::size_t end) {
+    // The headings of the new velocities, a block at a time (vectorised; those of agents that do
+    // not move are not used).
+    constexpr std::size_t kBlock = 256;
+    double heading[kBlock];
     for (std::size_t i = begin; i < end; ++i) {
+      if ((i - begin) % kBlock == 0)
+        fast_atan2_batch(nvy_.data() + i, nvx_.data() + i, heading, std::min(kBlock, end - i));
       if (!active_[i] || driven_[i] != kNotDriven) continue;
       px_[i] = wrap_x(npx_[i]);
       py_[i] = npy_[i];
       vx_[i] = nvx_[i];
       vy_[i] = nvy_[i];
       if (vx_[i] * vx_[i] + vy_[i] * vy_[i] > 1e-12) {
-        const double yaw = fast_atan2(vy_[i], vx_[i]);
+        const double yaw = heading[(i - begin) % kBlock];  // fast_atan2(vy_[i], vx_[i])
         omega_[i] = wrap_angle(yaw - yaw_[i]) / dt;
         yaw_[i] = yaw;
       } else {
