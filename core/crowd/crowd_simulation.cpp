@@ -91,9 +91,14 @@ struct CrowdSimulation::NeighbourTotals {
 
 // The pair step's scratch (step_pairs), kept between steps.
 struct CrowdSimulation::PairState {
-  // One agent's sums from the pairs a thread computed (integers: exact, in any order).
+  // One agent's sums from the pairs a thread computed (integers: exact, in any order): the social
+  // force, added for every pair, apart from the rest, added only for some (16 bytes a pair touches
+  // rather than 64).
+  struct Social {
+    std::int64_t x, y;
+  };
   struct Sums {
-    std::int64_t social_x, social_y, side_push, repulsion_x, repulsion_y, body_x, body_y;
+    std::int64_t side_push, repulsion_x, repulsion_y, body_x, body_y;
     std::int32_t cap;  // the bits of the smallest headway cap (those of +inf: none)
   };
   struct Record {
@@ -101,8 +106,13 @@ struct CrowdSimulation::PairState {
     BodyContact contact;
   };
   struct Thread {
-    std::vector<Sums> sums;  // by sorted position
-    std::vector<Record> contacts;
+    std::vector<Social> social;  // by sorted position
+    std::vector<Sums> sums;      // by sorted position
+    std::vector<Record> records;
+    // The records by agent (each thread sorts its own, in parallel): the contacts of the agent at
+    // sorted position k are contacts[contact_start[k] .. [k + 1]).
+    std::vector<std::uint32_t> contact_start;
+    std::vector<BodyContact> contacts;
   };
   std::vector<Thread> threads;
   // By sorted position: prepare_agent's results, the kernel's inputs of each agent (walking
@@ -110,9 +120,6 @@ struct CrowdSimulation::PairState {
   std::vector<AgentPrep> prep;
   std::vector<float> heading;  // 4 per agent: ex, ey, along, band (fill_pair_sides)
   std::vector<double> margin;
-  // The contacts of the agent at sorted position k: contacts[contact_start[k] .. [k + 1]).
-  std::vector<std::uint32_t> contact_start;
-  std::vector<BodyContact> contacts;
 };
 
 namespace {
@@ -1686,8 +1693,9 @@ void CrowdSimulation::step_pairs() {
   PairState& ps = *pairs_;
   ps.threads.resize(pool_->threads());
   for (PairState::Thread& t : ps.threads) {
+    t.social.resize(n);
     t.sums.resize(n);
-    t.contacts.clear();
+    t.records.clear();
   }
   ps.prep.resize(n);
   ps.heading.resize(4 * n);
@@ -1697,7 +1705,10 @@ void CrowdSimulation::step_pairs() {
   pool_->parallel_for(n, 256, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       const AgentInputs& in = c.inputs[k];
-      for (PairState::Thread& t : ps.threads) t.sums[k] = {0, 0, 0, 0, 0, 0, 0, no_cap};
+      for (PairState::Thread& t : ps.threads) {
+        t.social[k] = {0, 0};
+        t.sums[k] = {0, 0, 0, 0, 0, no_cap};
+      }
       ps.margin[k] = contact_margin(in);
       float* heading = ps.heading.data() + 4 * k;
       if (in.driven != kNotDriven) {  // its own sums are not used
@@ -1761,7 +1772,7 @@ void CrowdSimulation::step_pairs() {
     const auto contact = [&](std::uint32_t to, std::uint32_t self, std::uint32_t other, double dx, double dy,
                              double d2, double reach, std::size_t from) {
       const Separation sep = separation(dx, dy, d2, self, other);
-      t.contacts.push_back({to, {other, sep.x, sep.y, sep.d - reach, c.vx[from], c.vy[from]}});
+      t.records.push_back({to, {other, sep.x, sep.y, sep.d - reach, c.vx[from], c.vy[from]}});
     };
     const auto flush = [&] {
       // Pairs that may touch: contacts, group repulsion and the body force, on both sides (as
@@ -1822,14 +1833,14 @@ void CrowdSimulation::step_pairs() {
           sx += l.fx[m];
           sy += l.fy[m];
         }
-        PairState::Sums& si = t.sums[b.run_owner[r]];
-        si.social_x += sx;
-        si.social_y += sy;
+        PairState::Social& si = t.social[b.run_owner[r]];
+        si.x += sx;
+        si.y += sy;
       }
       for (int m = 0; m < b.count; ++m) {
-        PairState::Sums& sj = t.sums[b.slot[m]];
-        sj.social_x -= l.fx[m];
-        sj.social_y -= l.fy[m];
+        PairState::Social& sj = t.social[b.slot[m]];
+        sj.x -= l.fx[m];
+        sj.y -= l.fy[m];
       }
       // The headway caps and side pushes: only the lanes that have one.
       for (std::uint64_t bits = l.ahead_i; bits != 0; bits &= bits - 1) {
@@ -1890,19 +1901,20 @@ void CrowdSimulation::step_pairs() {
     if (b.count > 0) flush();
   });
 
-  // Each agent's contacts in one run (records of both threads, any order: sorted below).
-  ps.contact_start.assign(n + 1, 0);
-  for (const PairState::Thread& t : ps.threads)
-    for (const PairState::Record& r : t.contacts) ++ps.contact_start[r.to + 1];
-  for (std::size_t k = 0; k < n; ++k) ps.contact_start[k + 1] += ps.contact_start[k];
-  ps.contacts.resize(ps.contact_start[n]);
-  {
-    std::vector<std::uint32_t>& fill = ps.contact_start;  // advanced to each run's end, then restored
-    for (const PairState::Thread& t : ps.threads)
-      for (const PairState::Record& r : t.contacts) ps.contacts[fill[r.to]++] = r.contact;
-    for (std::size_t k = n; k > 0; --k) fill[k] = fill[k - 1];
-    fill[0] = 0;
-  }
+  // Each thread's contact records by agent, the threads in parallel.
+  pool_->parallel_for(ps.threads.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t th = begin; th < end; ++th) {
+      PairState::Thread& t = ps.threads[th];
+      std::vector<std::uint32_t>& start = t.contact_start;
+      start.assign(n + 1, 0);
+      for (const PairState::Record& r : t.records) ++start[r.to + 1];
+      for (std::size_t k = 0; k < n; ++k) start[k + 1] += start[k];
+      t.contacts.resize(start[n]);
+      for (const PairState::Record& r : t.records) t.contacts[start[r.to]++] = r.contact;  // to the run's end
+      for (std::size_t k = n; k > 0; --k) start[k] = start[k - 1];  // back to its start
+      start[0] = 0;
+    }
+  });
 
   pool_->parallel_for(n, 128, [&](std::size_t begin, std::size_t end) {
     thread_local std::vector<BodyContact> contacts;
@@ -1913,11 +1925,12 @@ void CrowdSimulation::step_pairs() {
         hold_driven(i, in, nullptr);
         continue;
       }
+      PairState::Social force = ps.threads[0].social[k];
       PairState::Sums s = ps.threads[0].sums[k];
       for (std::size_t th = 1; th < ps.threads.size(); ++th) {
         const PairState::Sums& o = ps.threads[th].sums[k];
-        s.social_x += o.social_x;
-        s.social_y += o.social_y;
+        force.x += ps.threads[th].social[k].x;
+        force.y += ps.threads[th].social[k].y;
         s.side_push += o.side_push;
         s.repulsion_x += o.repulsion_x;
         s.repulsion_y += o.repulsion_y;
@@ -1927,15 +1940,21 @@ void CrowdSimulation::step_pairs() {
       }
       NeighbourTotals totals;
       totals.speed_cap = static_cast<double>(std::bit_cast<float>(s.cap));
-      totals.social =
-          social_total(s.social_x, s.social_y, s.side_push, ps.heading[4 * k], ps.heading[4 * k + 1]);
+      totals.social = social_total(force.x, force.y, s.side_push, ps.heading[4 * k], ps.heading[4 * k + 1]);
       totals.repulsion = {FixedSum::to_double(s.repulsion_x), FixedSum::to_double(s.repulsion_y)};
       totals.body = {FixedSum::to_double(s.body_x), FixedSum::to_double(s.body_y)};
       // As NeighbourSums keeps them: by agent id, the lowest kMaxContacts.
-      contacts.assign(ps.contacts.begin() + ps.contact_start[k],
-                      ps.contacts.begin() + ps.contact_start[k + 1]);
-      std::sort(contacts.begin(), contacts.end(),
-                [](const BodyContact& a, const BodyContact& o) { return a.who < o.who; });
+      contacts.clear();
+      for (const PairState::Thread& t : ps.threads)
+        contacts.insert(contacts.end(), t.contacts.begin() + t.contact_start[k],
+                        t.contacts.begin() + t.contact_start[k + 1]);
+      // By id (each neighbour once): an insertion sort, as the lists are short (std::sort's order).
+      for (std::size_t a = 1; a < contacts.size(); ++a) {
+        const BodyContact next = contacts[a];
+        std::size_t b = a;
+        for (; b > 0 && next.who < contacts[b - 1].who; --b) contacts[b] = contacts[b - 1];
+        contacts[b] = next;
+      }
       if (contacts.size() > NeighbourSums::kMaxContacts) contacts.resize(NeighbourSums::kMaxContacts);
       finish_agent(i, in, ps.prep[k], totals, contacts, nullptr);
     }
