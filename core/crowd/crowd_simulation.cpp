@@ -1101,7 +1101,7 @@ void CrowdSimulation::build_cells() {
   c.r.resize(entries);
   c.group.resize(entries);
   c.id.resize(entries);
-  pool_->parallel_for(entries, 4096, [&](std::size_t begin, std::size_t end) {
+  pool_->parallel_for(entries, 1024, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t e = c.order[k];
       const std::uint32_t i = c.entry_agent[e];
@@ -1119,7 +1119,7 @@ void CrowdSimulation::build_cells() {
     }
   });
   c.inputs.resize(c.agents.size());
-  pool_->parallel_for(c.agents.size(), 4096, [&](std::size_t begin, std::size_t end) {
+  pool_->parallel_for(c.agents.size(), 1024, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) c.inputs[k] = inputs_of(c.agents[k]);
   });
 }
