@@ -1101,6 +1101,9 @@ void CrowdSimulation::build_cells() {
   c.r.resize(entries);
   c.group.resize(entries);
   c.id.resize(entries);
+  c.inputs.resize(c.agents.size());
+  // Without periodic images entry k is agents[k]: one pass fills both (each agent read once).
+  const bool images = entries != c.agents.size();
   pool_->parallel_for(entries, 1024, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t e = c.order[k];
@@ -1116,12 +1119,14 @@ void CrowdSimulation::build_cells() {
       c.r[k] = radius_[i];
       c.group[k] = group_[i];
       c.id[k] = i;
+      if (!images) c.inputs[k] = inputs_of(i);
     }
   });
-  c.inputs.resize(c.agents.size());
-  pool_->parallel_for(c.agents.size(), 1024, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) c.inputs[k] = inputs_of(c.agents[k]);
-  });
+  if (images) {
+    pool_->parallel_for(c.agents.size(), 1024, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) c.inputs[k] = inputs_of(c.agents[k]);
+    });
+  }
 }
 
 CrowdSimulation::AgentInputs CrowdSimulation::inputs_of(std::uint32_t i) const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <thread>
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -20,21 +21,33 @@ void relax() {
 // A step calls parallel_for several times in a row (neighbour forces, separation passes, the
 // update) with serial work between them: up to a few hundred microseconds for 10,000 agents
 // (rebuilding the cell index). Waking a sleeping thread costs tens of microseconds, more on a
-// virtual machine, so both sides first spin (with pause) on the state they wait for, for up to
-// kSpinTime, and only then sleep on the condition variable. Timed rather than counted: a pause
-// takes 3 ns on some processors and 30–40 ns on others. 62 µs of spinning (2,048 pauses of 30 ns)
-// let the worker fall asleep before most steps' first parallel loop; at 1 ms, 10,000 agents on two
-// threads stepped ~10 % faster (median of 12 alternated runs, docs/PERFORMANCE.md).
+// virtual machine, so both sides first wait actively for the state they wait for, up to
+// kSpinTime, and only then sleep on the condition variable: for kPauseTime spinning with pause,
+// then yielding the processor between looks, so threads of other simulations (or anything else)
+// that have work run first. Timed rather than counted: a pause takes 3 ns on some processors and
+// 30–40 ns on others. 62 µs of spinning (2,048 pauses of 30 ns) let the worker fall asleep before
+// most steps' first parallel loop; waiting up to 1 ms, 10,000 agents on two threads stepped ~10 %
+// faster (median of 12 alternated runs, docs/PERFORMANCE.md).
+constexpr auto kPauseTime = std::chrono::microseconds(300);
 constexpr auto kSpinTime = std::chrono::microseconds(1000);
 
-// Spins until ready() or kSpinTime has passed; whether ready() held.
+// Waits actively until ready() or kSpinTime has passed; whether ready() held.
 template <class Ready>
 bool spin_until(Ready ready) {
   const auto start = std::chrono::steady_clock::now();
+  bool yielding = false;
   for (unsigned k = 1;; ++k) {
     if (ready()) return true;
-    relax();
-    if (k % 64 == 0 && std::chrono::steady_clock::now() - start > kSpinTime) return false;
+    if (yielding) {
+      std::this_thread::yield();
+    } else {
+      relax();
+    }
+    if (yielding || k % 64 == 0) {
+      const auto waited = std::chrono::steady_clock::now() - start;
+      if (waited > kSpinTime) return false;
+      yielding = waited > kPauseTime;
+    }
   }
 }
 
