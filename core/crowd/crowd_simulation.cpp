@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <span>
 #include <vector>
@@ -1548,15 +1549,26 @@ void CrowdSimulation::separate_bodies() {
   // A pass after the first skips an agent when neither it nor any of its contacts moved in the
   // pass before: everything it would read is unchanged, so it would not move now either (same
   // result, without the work; in a large crowd most agents are not pressed against anyone).
+  // Only an agent with contacts can move at all: the first pass visits every agent and lists
+  // those (pressed_); the later ones visit only them. The others keep the same position in both
+  // buffers (the first pass copies every agent) and moved_ 0 in both (cleared once below).
+  std::mutex pressed_mutex;
+  pressed_.clear();
   for (int pass = 0; pass < kSeparationPasses; ++pass) {
     std::atomic<bool> moved{false};
-    pool_->parallel_for(size(), 256, [&](std::size_t begin, std::size_t end) {
+    const std::size_t count = pass == 0 ? size() : pressed_.size();
+    if (pass == 1) std::fill(moved_next_.begin(), moved_next_.end(), 0);
+    pool_->parallel_for(count, 256, [&](std::size_t begin, std::size_t end) {
       bool any = false;
-      for (std::size_t i = begin; i < end; ++i) {
+      thread_local std::vector<std::uint32_t> pressed;
+      pressed.clear();
+      for (std::size_t at = begin; at < end; ++at) {
+        const std::size_t i = pass == 0 ? at : pressed_[at];
         spx_[i] = npx_[i];
         spy_[i] = npy_[i];
         moved_next_[i] = 0;
-        if (!active_[i] || driven_[i] != kNotDriven) continue;
+        if (!active_[i] || driven_[i] != kNotDriven || contact_count_[i] == 0) continue;
+        if (pass == 0) pressed.push_back(static_cast<std::uint32_t>(i));
         if (pass > 0 && moved_[i] == 0) {
           bool stirred = false;
           for (std::size_t k = 0; k < contact_count_[i] && !stirred; ++k)
@@ -1601,6 +1613,10 @@ void CrowdSimulation::separate_bodies() {
         spy_[i] = next.y;
       }
       if (any) moved.store(true, std::memory_order_relaxed);
+      if (!pressed.empty()) {
+        const std::lock_guard lock(pressed_mutex);
+        pressed_.insert(pressed_.end(), pressed.begin(), pressed.end());
+      }
     });
     npx_.swap(spx_);
     npy_.swap(spy_);

@@ -230,6 +230,7 @@ class CrowdSimulation {
   // Per agent, whether the last separation pass moved it (the next pass re-examines only agents
   // that moved or have a contact that did: for the others nothing it reads has changed).
   std::vector<std::uint8_t> moved_, moved_next_;
+  std::vector<std::uint32_t> pressed_;  // agents with contacts (separate_bodies)
   // Per-agent parameters.
   std::vector<double> radius_, v0_, vmax_;
   double max_radius_ = 0.0;  // largest radius of an active agent (set by prepare_step)
