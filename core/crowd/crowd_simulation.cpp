@@ -42,7 +42,6 @@ struct CrowdSimulation::CellIndex {
   std::vector<float> fx, fy, fvx, fvy;
   std::vector<std::int32_t> group;
   std::vector<std::uint32_t> id;
-  std::vector<AgentInputs> inputs;  // of agents[k], in that order
 };
 
 struct CrowdSimulation::Images {
@@ -1102,9 +1101,6 @@ void CrowdSimulation::build_cells() {
   c.r.resize(entries);
   c.group.resize(entries);
   c.id.resize(entries);
-  c.inputs.resize(c.agents.size());
-  // Without periodic images entry k is agents[k]: one pass fills both (each agent read once).
-  const bool images = entries != c.agents.size();
   pool_->parallel_for(entries, 1024, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t e = c.order[k];
@@ -1120,14 +1116,8 @@ void CrowdSimulation::build_cells() {
       c.r[k] = radius_[i];
       c.group[k] = group_[i];
       c.id[k] = i;
-      if (!images) c.inputs[k] = inputs_of(i);
     }
   });
-  if (images) {
-    pool_->parallel_for(c.agents.size(), 1024, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) c.inputs[k] = inputs_of(c.agents[k]);
-    });
-  }
 }
 
 CrowdSimulation::AgentInputs CrowdSimulation::inputs_of(std::uint32_t i) const {
@@ -1689,7 +1679,8 @@ void CrowdSimulation::step() {
     step_pairs();
   } else {
     pool_->parallel_for(c.agents.size(), 128, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) advance_agent(c.agents[k], c.inputs[k], scan, nullptr);
+      for (std::size_t k = begin; k < end; ++k)
+        advance_agent(c.agents[k], inputs_of(c.agents[k]), scan, nullptr);
     });
   }
   separate_bodies();
@@ -1725,7 +1716,7 @@ void CrowdSimulation::step_pairs() {
 
   pool_->parallel_for(n, 256, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      const AgentInputs& in = c.inputs[k];
+      const AgentInputs in = inputs_of(c.agents[k]);
       for (PairState::Thread& t : ps.threads) {
         t.social[k] = {0, 0};
         t.sums[k] = {0, 0, 0, 0, 0, no_cap};
@@ -1747,7 +1738,7 @@ void CrowdSimulation::step_pairs() {
     }
   });
 
-  const ForceParameters& fp = roles_.at(c.inputs[0].role).forces;  // every agent's pair terms
+  const ForceParameters& fp = roles_.at(role_[c.agents[0]]).forces;  // every agent's pair terms
   const SocialParams social{static_cast<float>(fp.lambda),      static_cast<float>(fp.gamma),
                             static_cast<float>(1.0 / fp.gamma), static_cast<float>(fp.n),
                             static_cast<float>(fp.n_prime),     static_cast<float>(fp.social_factor)};
@@ -1941,7 +1932,7 @@ void CrowdSimulation::step_pairs() {
     thread_local std::vector<BodyContact> contacts;
     for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t i = c.agents[k];
-      const AgentInputs& in = c.inputs[k];
+      const AgentInputs in = inputs_of(i);
       if (in.driven != kNotDriven) {
         hold_driven(i, in, nullptr);
         continue;
