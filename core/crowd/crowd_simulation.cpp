@@ -92,14 +92,14 @@ struct CrowdSimulation::NeighbourTotals {
 // The pair step's scratch (step_pairs), kept between steps.
 struct CrowdSimulation::PairState {
   // One agent's sums from the pairs a thread computed (integers: exact, in any order): the social
-  // force, added for every pair, apart from the rest, added only for some (16 bytes a pair touches
-  // rather than 64).
+  // force, side pushes and headway caps, which every pair adds to (32 bytes, no branch), apart
+  // from the touching-pair terms, which only pairs in contact add to.
   struct Social {
-    std::int64_t x, y;
+    std::int64_t x, y, side_push;
+    std::int32_t cap;  // the bits of the smallest headway cap (those of +inf: none)
   };
   struct Sums {
-    std::int64_t side_push, repulsion_x, repulsion_y, body_x, body_y;
-    std::int32_t cap;  // the bits of the smallest headway cap (those of +inf: none)
+    std::int64_t repulsion_x, repulsion_y, body_x, body_y;
   };
   struct Record {
     std::uint32_t to;  // the sorted position of the agent the contact belongs to
@@ -1718,8 +1718,8 @@ void CrowdSimulation::step_pairs() {
     for (std::size_t k = begin; k < end; ++k) {
       const AgentInputs in = inputs_of(c.agents[k]);
       for (PairState::Thread& t : ps.threads) {
-        t.social[k] = {0, 0};
-        t.sums[k] = {0, 0, 0, 0, 0, no_cap};
+        t.social[k] = {0, 0, 0, no_cap};
+        t.sums[k] = {0, 0, 0, 0};
       }
       ps.margin[k] = contact_margin(in);
       float* heading = ps.heading.data() + 4 * k;
@@ -1836,34 +1836,31 @@ void CrowdSimulation::step_pairs() {
         std::fill(std::begin(l.tie_y), std::end(l.tie_y), 0.0f);
         b.tied = false;
       }
-      // The forces: summed per owner over its run of lanes, minus each to the other agent.
+      // The forces, headway caps and side pushes (INT32_MAX and 0 in the lanes without one: no
+      // branch to mispredict), summed per owner over its run of lanes, and to each other agent
+      // (the force minus).
       for (int r = 0; r < b.runs; ++r) {
         const int stop = r + 1 < b.runs ? b.run_begin[r + 1] : b.count;
         std::int64_t sx = 0;
         std::int64_t sy = 0;
+        std::int64_t push = 0;
+        std::int32_t cap = INT32_MAX;
         for (int m = b.run_begin[r]; m < stop; ++m) {
           sx += l.fx[m];
           sy += l.fy[m];
+          push += l.push_i[m];
+          cap = std::min(cap, l.cap_i[m]);
         }
         PairState::Social& si = t.social[b.run_owner[r]];
         si.x += sx;
         si.y += sy;
+        si.side_push += push;
+        si.cap = std::min(si.cap, cap);
       }
       for (int m = 0; m < b.count; ++m) {
         PairState::Social& sj = t.social[b.slot[m]];
         sj.x -= l.fx[m];
         sj.y -= l.fy[m];
-      }
-      // The headway caps and side pushes: only the lanes that have one.
-      for (std::uint64_t bits = l.ahead_i; bits != 0; bits &= bits - 1) {
-        const int m = std::countr_zero(bits);
-        PairState::Sums& si = t.sums[b.owner[m]];
-        si.side_push += l.push_i[m];
-        si.cap = std::min(si.cap, l.cap_i[m]);
-      }
-      for (std::uint64_t bits = l.ahead_j; bits != 0; bits &= bits - 1) {
-        const int m = std::countr_zero(bits);
-        PairState::Sums& sj = t.sums[b.slot[m]];
         sj.side_push += l.push_j[m];
         sj.cap = std::min(sj.cap, l.cap_j[m]);
       }
@@ -1941,18 +1938,20 @@ void CrowdSimulation::step_pairs() {
       PairState::Sums s = ps.threads[0].sums[k];
       for (std::size_t th = 1; th < ps.threads.size(); ++th) {
         const PairState::Sums& o = ps.threads[th].sums[k];
-        force.x += ps.threads[th].social[k].x;
-        force.y += ps.threads[th].social[k].y;
-        s.side_push += o.side_push;
+        const PairState::Social& f = ps.threads[th].social[k];
+        force.x += f.x;
+        force.y += f.y;
+        force.side_push += f.side_push;
+        force.cap = std::min(force.cap, f.cap);
         s.repulsion_x += o.repulsion_x;
         s.repulsion_y += o.repulsion_y;
         s.body_x += o.body_x;
         s.body_y += o.body_y;
-        s.cap = std::min(s.cap, o.cap);
       }
       NeighbourTotals totals;
-      totals.speed_cap = static_cast<double>(std::bit_cast<float>(s.cap));
-      totals.social = social_total(force.x, force.y, s.side_push, ps.heading[4 * k], ps.heading[4 * k + 1]);
+      totals.speed_cap = static_cast<double>(std::bit_cast<float>(force.cap));
+      totals.social =
+          social_total(force.x, force.y, force.side_push, ps.heading[4 * k], ps.heading[4 * k + 1]);
       totals.repulsion = {FixedSum::to_double(s.repulsion_x), FixedSum::to_double(s.repulsion_y)};
       totals.body = {FixedSum::to_double(s.body_x), FixedSum::to_double(s.body_y)};
       // As NeighbourSums keeps them: by agent id, the lowest kMaxContacts.
