@@ -1756,6 +1756,8 @@ void CrowdSimulation::step_pairs() {
   const double stiffness = config_.body_stiffness;
   const auto readable = static_cast<std::uint32_t>(c.fx.size());
   const int granule = pair_kernel_lanes();
+  const RowHalves halves = row_halves({c.start.data(), c.origin_x, c.origin_y, c.cell, c.inv_cell,
+                                       config_.neighbor_cutoff + 1e-9, c.nx, c.ny, 0.0, 0.0, true});
 
   // Chunks of 64 agents: about 60 µs each, so the threads finish close together.
   pool_->parallel_for(n, 64, [&](std::size_t begin, std::size_t end) {
@@ -1881,7 +1883,7 @@ void CrowdSimulation::step_pairs() {
       const GridQuery g{
           c.start.data(), c.origin_x, c.origin_y, c.cell, c.inv_cell, config_.neighbor_cutoff + 1e-9,
           c.nx,           c.ny,       px,         py,     true};
-      const int rows = grid_ranges(g, ranges);
+      const int rows = grid_ranges_upper(g, halves, ranges);
       int count = 0;
       for (int r = 0; r < rows; ++r) {  // the own row from the agent on: later entries only
         const std::uint32_t from = std::max(ranges[r].begin, self + 1);

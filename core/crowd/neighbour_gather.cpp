@@ -94,6 +94,31 @@ int grid_ranges_scalar(const GridQuery& q, GatherRange* ranges) {
   return count;
 }
 
+RowHalves row_halves(const GridQuery& q) {
+  // Row offset d >= 1 is at least (d − 1)·cell above the point (less 1e-6 m for rounding: the
+  // point's row is found by a rounded division); row 0 holds it. The half-chord there, + 1e-6 m.
+  RowHalves h{};
+  const double c = q.reach;
+  for (int d = 0; d < kMaxGridRows + 3; ++d) {
+    const double gap = d == 0 ? 0.0 : static_cast<double>(d - 1) * q.cell - 1e-6;
+    h.half[d] = gap > 0.0 ? std::sqrt(std::max(0.0, c * c - gap * gap)) + 1e-6 : c + 1e-6;
+  }
+  return h;
+}
+
+int grid_ranges_upper_scalar(const GridQuery& q, const RowHalves& halves, GatherRange* ranges) {
+  const auto [y_lo, y_hi] = grid_rows(q);
+  int count = 0;
+  for (std::int64_t row = y_lo; row <= y_hi && count < kMaxGridRows; ++row) {
+    const double half = halves.half[count];
+    const std::int64_t x_lo = floor_clamp((q.x - half - q.origin_x) * q.inv_cell, q.nx - 1);
+    const std::int64_t x_hi = floor_clamp((q.x + half - q.origin_x) * q.inv_cell, q.nx - 1);
+    ranges[count++] = {q.start[static_cast<std::size_t>(row * q.nx + x_lo)],
+                       q.start[static_cast<std::size_t>(row * q.nx + x_hi + 1)]};
+  }
+  return count;
+}
+
 #ifdef SOCSIM_GATHER_AVX2
 namespace {
 
@@ -139,6 +164,36 @@ __attribute__((target("avx2"))) int grid_ranges_avx2(const GridQuery& q, GatherR
     const __m256i x_lo = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_sub_pd(x, half), ox), inv), x_max);
     const __m256i x_hi = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_add_pd(x, half), ox), inv), x_max);
     // row · nx: both below 2^31, so the product of their low 32 bits is the product.
+    const __m256i base = _mm256_mul_epu32(row, nx);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lo_cell), _mm256_add_epi64(base, x_lo));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(hi_cell),
+                       _mm256_add_epi64(_mm256_add_epi64(base, x_hi), one));
+    const int n = std::min(4, rows - r);
+    for (int k = 0; k < n; ++k)
+      ranges[r + k] = {q.start[static_cast<std::size_t>(lo_cell[k])],
+                       q.start[static_cast<std::size_t>(hi_cell[k])]};
+  }
+  return rows;
+}
+
+// grid_ranges_upper_scalar four rows at a time (the same integers, as grid_ranges_avx2's).
+__attribute__((target("avx2"))) int grid_ranges_upper_avx2(const GridQuery& q, const RowHalves& halves,
+                                                           GatherRange* ranges) {
+  const auto [y_lo, y_hi] = grid_rows(q);
+  const auto rows = static_cast<int>(std::min<std::int64_t>(y_hi - y_lo + 1, kMaxGridRows));
+  const __m256d x = _mm256_set1_pd(q.x);
+  const __m256d ox = _mm256_set1_pd(q.origin_x);
+  const __m256d inv = _mm256_set1_pd(q.inv_cell);
+  const __m256d x_max = _mm256_set1_pd(static_cast<double>(q.nx - 1));
+  const __m256i nx = _mm256_set1_epi64x(q.nx);
+  const __m256i one = _mm256_set1_epi64x(1);
+  alignas(32) std::int64_t lo_cell[4];
+  alignas(32) std::int64_t hi_cell[4];
+  for (int r = 0; r < rows; r += 4) {
+    const __m256i row = _mm256_add_epi64(_mm256_set1_epi64x(y_lo + r), _mm256_setr_epi64x(0, 1, 2, 3));
+    const __m256d half = _mm256_loadu_pd(halves.half + r);
+    const __m256i x_lo = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_sub_pd(x, half), ox), inv), x_max);
+    const __m256i x_hi = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_add_pd(x, half), ox), inv), x_max);
     const __m256i base = _mm256_mul_epu32(row, nx);
     _mm256_store_si256(reinterpret_cast<__m256i*>(lo_cell), _mm256_add_epi64(base, x_lo));
     _mm256_store_si256(reinterpret_cast<__m256i*>(hi_cell),
@@ -282,6 +337,12 @@ GridFn pick_grid() {
   return __builtin_cpu_supports("avx2") ? grid_ranges_avx2 : grid_ranges_scalar;
 }
 
+using UpperFn = int (*)(const GridQuery&, const RowHalves&, GatherRange*);
+UpperFn pick_upper() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") ? grid_ranges_upper_avx2 : grid_ranges_upper_scalar;
+}
+
 using GatherFn = int (*)(const GatherQuery&, GatherRange*, int, GatherBatch&);
 GatherFn pick_gather() {
   __builtin_cpu_init();
@@ -298,6 +359,15 @@ int grid_ranges(const GridQuery& q, GatherRange* ranges) {
   return fn(q, ranges);
 #else
   return grid_ranges_scalar(q, ranges);
+#endif
+}
+
+int grid_ranges_upper(const GridQuery& q, const RowHalves& halves, GatherRange* ranges) {
+#ifdef SOCSIM_GATHER_AVX2
+  static const UpperFn fn = pick_upper();
+  return fn(q, halves, ranges);
+#else
+  return grid_ranges_upper_scalar(q, halves, ranges);
 #endif
 }
 
