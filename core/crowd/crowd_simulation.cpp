@@ -1038,12 +1038,27 @@ void CrowdSimulation::build_cells() {
     }
   }
   const std::size_t entries = c.entry_agent.size();
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-  for (std::size_t e = 0; e < entries; ++e) {
-    x0 = std::min(x0, c.entry_x[e]);
-    y0 = std::min(y0, py_[c.entry_agent[e]]);
-    x1 = std::max(x1, c.entry_x[e]);
-    y1 = std::max(y1, py_[c.entry_agent[e]]);
+  // The bounding box, chunk by chunk in parallel (minima and maxima: exact in any order).
+  constexpr std::size_t kBoxChunk = 2048;
+  std::array<double, 4> box_init{1e300, 1e300, -1e300, -1e300};
+  std::vector<std::array<double, 4>> boxes((entries + kBoxChunk - 1) / kBoxChunk, box_init);
+  pool_->parallel_for(entries, kBoxChunk, [&](std::size_t begin, std::size_t end) {
+    std::array<double, 4>& b = boxes[begin / kBoxChunk];
+    for (std::size_t e = begin; e < end; ++e) {
+      const double ex = c.entry_x[e];
+      const double ey = py_[c.entry_agent[e]];
+      b[0] = std::min(b[0], ex);
+      b[1] = std::min(b[1], ey);
+      b[2] = std::max(b[2], ex);
+      b[3] = std::max(b[3], ey);
+    }
+  });
+  double x0 = box_init[0], y0 = box_init[1], x1 = box_init[2], y1 = box_init[3];
+  for (const std::array<double, 4>& b : boxes) {
+    x0 = std::min(x0, b[0]);
+    y0 = std::min(y0, b[1]);
+    x1 = std::max(x1, b[2]);
+    y1 = std::max(y1, b[3]);
   }
   c.order.clear();
   c.agents.clear();
@@ -1069,13 +1084,15 @@ void CrowdSimulation::build_cells() {
   const auto cells = static_cast<std::size_t>(c.nx * c.ny);
   c.start.assign(cells + 1, 0);
   c.entry_cell.resize(entries);
-  for (std::size_t e = 0; e < entries; ++e) {
-    const auto cx = std::min(static_cast<std::int64_t>((c.entry_x[e] - x0) * c.inv_cell), c.nx - 1);
-    const auto cy = std::min(static_cast<std::int64_t>((py_[c.entry_agent[e]] - y0) * c.inv_cell), c.ny - 1);
-    const auto cell_index = static_cast<std::uint32_t>(cy * c.nx + cx);
-    c.entry_cell[e] = cell_index;
-    ++c.start[cell_index + 1];
-  }
+  pool_->parallel_for(entries, kBoxChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const auto cx = std::min(static_cast<std::int64_t>((c.entry_x[e] - x0) * c.inv_cell), c.nx - 1);
+      const auto cy =
+          std::min(static_cast<std::int64_t>((py_[c.entry_agent[e]] - y0) * c.inv_cell), c.ny - 1);
+      c.entry_cell[e] = static_cast<std::uint32_t>(cy * c.nx + cx);
+    }
+  });
+  for (std::size_t e = 0; e < entries; ++e) ++c.start[c.entry_cell[e] + 1];
   for (std::size_t k = 0; k < cells; ++k) c.start[k + 1] += c.start[k];
   c.order.resize(entries);
   std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
@@ -1120,7 +1137,7 @@ void CrowdSimulation::build_cells() {
   });
 }
 
-CrowdSimulation::AgentInputs CrowdSimulation::inputs_of(std::uint32_t i) const {
+inline CrowdSimulation::AgentInputs CrowdSimulation::inputs_of(std::uint32_t i) const {
   return {px_[i], py_[i], vx_[i], vy_[i],    radius_[i], v0_[i],     vmax_[i],
           gx_[i], gy_[i], gr_[i], group_[i], role_[i],   driven_[i], has_goal_[i]};
 }
