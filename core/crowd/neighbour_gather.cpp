@@ -75,6 +75,14 @@ std::pair<std::int64_t, std::int64_t> grid_rows(const GridQuery& q) {
           floor_clamp((q.y + q.reach - q.origin_y) * q.inv_cell, q.ny - 1)};
 }
 
+// The row's range scanned x ± half.
+GatherRange range_of_row(const GridQuery& q, std::int64_t row, double half) {
+  const std::int64_t x_lo = floor_clamp((q.x - half - q.origin_x) * q.inv_cell, q.nx - 1);
+  const std::int64_t x_hi = floor_clamp((q.x + half - q.origin_x) * q.inv_cell, q.nx - 1);
+  return {q.start[static_cast<std::size_t>(row * q.nx + x_lo)],
+          q.start[static_cast<std::size_t>(row * q.nx + x_hi + 1)]};
+}
+
 }  // namespace
 
 int grid_ranges_scalar(const GridQuery& q, GatherRange* ranges) {
@@ -85,11 +93,8 @@ int grid_ranges_scalar(const GridQuery& q, GatherRange* ranges) {
     const double band_lo = q.origin_y + static_cast<double>(row) * q.cell;
     // The distance from y to the row's band (0 inside it), less 1e-9.
     const double gap = std::max(std::max(0.0, band_lo - q.y), q.y - (band_lo + q.cell)) - 1e-9;
-    const double half = gap > 0.0 ? std::sqrt(std::max(0.0, c * c - gap * gap)) + 1e-9 : c;
-    const std::int64_t x_lo = floor_clamp((q.x - half - q.origin_x) * q.inv_cell, q.nx - 1);
-    const std::int64_t x_hi = floor_clamp((q.x + half - q.origin_x) * q.inv_cell, q.nx - 1);
-    ranges[count++] = {q.start[static_cast<std::size_t>(row * q.nx + x_lo)],
-                       q.start[static_cast<std::size_t>(row * q.nx + x_hi + 1)]};
+    ranges[count++] =
+        range_of_row(q, row, gap > 0.0 ? std::sqrt(std::max(0.0, c * c - gap * gap)) + 1e-9 : c);
   }
   return count;
 }
@@ -110,11 +115,8 @@ int grid_ranges_upper_scalar(const GridQuery& q, const RowHalves& halves, Gather
   const auto [y_lo, y_hi] = grid_rows(q);
   int count = 0;
   for (std::int64_t row = y_lo; row <= y_hi && count < kMaxGridRows; ++row) {
-    const double half = halves.half[count];
-    const std::int64_t x_lo = floor_clamp((q.x - half - q.origin_x) * q.inv_cell, q.nx - 1);
-    const std::int64_t x_hi = floor_clamp((q.x + half - q.origin_x) * q.inv_cell, q.nx - 1);
-    ranges[count++] = {q.start[static_cast<std::size_t>(row * q.nx + x_lo)],
-                       q.start[static_cast<std::size_t>(row * q.nx + x_hi + 1)]};
+    ranges[count] = range_of_row(q, row, halves.half[count]);
+    ++count;
   }
   return count;
 }
@@ -131,6 +133,30 @@ __attribute__((target("avx2"), always_inline)) inline __m256i clamp_to_cells(__m
       _mm256_cvttpd_epi32(_mm256_min_pd(_mm256_max_pd(v, _mm256_setzero_pd()), x_max)));
 }
 
+// Rows y_lo + r .. + 3 (those below `rows`) scanned x ± half (per lane): their ranges.
+__attribute__((target("avx2"), always_inline)) inline void ranges_of_rows(const GridQuery& q,
+                                                                          std::int64_t y_lo, int r, int rows,
+                                                                          __m256d half, GatherRange* ranges) {
+  const __m256d x = _mm256_set1_pd(q.x);
+  const __m256d ox = _mm256_set1_pd(q.origin_x);
+  const __m256d inv = _mm256_set1_pd(q.inv_cell);
+  const __m256d x_max = _mm256_set1_pd(static_cast<double>(q.nx - 1));
+  const __m256i row = _mm256_add_epi64(_mm256_set1_epi64x(y_lo + r), _mm256_setr_epi64x(0, 1, 2, 3));
+  const __m256i x_lo = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_sub_pd(x, half), ox), inv), x_max);
+  const __m256i x_hi = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_add_pd(x, half), ox), inv), x_max);
+  // row · nx: both below 2^31, so the product of their low 32 bits is the product.
+  const __m256i base = _mm256_mul_epu32(row, _mm256_set1_epi64x(q.nx));
+  alignas(32) std::int64_t lo_cell[4];
+  alignas(32) std::int64_t hi_cell[4];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(lo_cell), _mm256_add_epi64(base, x_lo));
+  _mm256_store_si256(reinterpret_cast<__m256i*>(hi_cell),
+                     _mm256_add_epi64(_mm256_add_epi64(base, x_hi), _mm256_set1_epi64x(1)));
+  const int n = std::min(4, rows - r);
+  for (int k = 0; k < n; ++k)
+    ranges[r + k] = {q.start[static_cast<std::size_t>(lo_cell[k])],
+                     q.start[static_cast<std::size_t>(hi_cell[k])]};
+}
+
 __attribute__((target("avx2"))) int grid_ranges_avx2(const GridQuery& q, GatherRange* ranges) {
   const auto [y_lo, y_hi] = grid_rows(q);
   const auto rows = static_cast<int>(std::min<std::int64_t>(y_hi - y_lo + 1, kMaxGridRows));
@@ -138,19 +164,10 @@ __attribute__((target("avx2"))) int grid_ranges_avx2(const GridQuery& q, GatherR
   const __m256d zero = _mm256_setzero_pd();
   const __m256d cell = _mm256_set1_pd(q.cell);
   const __m256d y = _mm256_set1_pd(q.y);
-  const __m256d x = _mm256_set1_pd(q.x);
-  const __m256d ox = _mm256_set1_pd(q.origin_x);
-  const __m256d inv = _mm256_set1_pd(q.inv_cell);
   const __m256d reach = _mm256_set1_pd(c);
   const __m256d reach2 = _mm256_set1_pd(c * c);
   const __m256d eps = _mm256_set1_pd(1e-9);
-  const __m256d x_max = _mm256_set1_pd(static_cast<double>(q.nx - 1));
-  const __m256i nx = _mm256_set1_epi64x(q.nx);
-  const __m256i one = _mm256_set1_epi64x(1);
-  alignas(32) std::int64_t lo_cell[4];
-  alignas(32) std::int64_t hi_cell[4];
   for (int r = 0; r < rows; r += 4) {
-    const __m256i row = _mm256_add_epi64(_mm256_set1_epi64x(y_lo + r), _mm256_setr_epi64x(0, 1, 2, 3));
     // static_cast<double>(row): rows are small non-negative integers, exact either way.
     const __m256d row_d =
         _mm256_add_pd(_mm256_set1_pd(static_cast<double>(y_lo + r)), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0));
@@ -160,18 +177,8 @@ __attribute__((target("avx2"))) int grid_ranges_avx2(const GridQuery& q, GatherR
                                       eps);
     const __m256d chord = _mm256_add_pd(
         _mm256_sqrt_pd(_mm256_max_pd(zero, _mm256_sub_pd(reach2, _mm256_mul_pd(gap, gap)))), eps);
-    const __m256d half = _mm256_blendv_pd(reach, chord, _mm256_cmp_pd(gap, zero, _CMP_GT_OQ));
-    const __m256i x_lo = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_sub_pd(x, half), ox), inv), x_max);
-    const __m256i x_hi = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_add_pd(x, half), ox), inv), x_max);
-    // row · nx: both below 2^31, so the product of their low 32 bits is the product.
-    const __m256i base = _mm256_mul_epu32(row, nx);
-    _mm256_store_si256(reinterpret_cast<__m256i*>(lo_cell), _mm256_add_epi64(base, x_lo));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(hi_cell),
-                       _mm256_add_epi64(_mm256_add_epi64(base, x_hi), one));
-    const int n = std::min(4, rows - r);
-    for (int k = 0; k < n; ++k)
-      ranges[r + k] = {q.start[static_cast<std::size_t>(lo_cell[k])],
-                       q.start[static_cast<std::size_t>(hi_cell[k])]};
+    ranges_of_rows(q, y_lo, r, rows, _mm256_blendv_pd(reach, chord, _mm256_cmp_pd(gap, zero, _CMP_GT_OQ)),
+                   ranges);
   }
   return rows;
 }
@@ -181,28 +188,8 @@ __attribute__((target("avx2"))) int grid_ranges_upper_avx2(const GridQuery& q, c
                                                            GatherRange* ranges) {
   const auto [y_lo, y_hi] = grid_rows(q);
   const auto rows = static_cast<int>(std::min<std::int64_t>(y_hi - y_lo + 1, kMaxGridRows));
-  const __m256d x = _mm256_set1_pd(q.x);
-  const __m256d ox = _mm256_set1_pd(q.origin_x);
-  const __m256d inv = _mm256_set1_pd(q.inv_cell);
-  const __m256d x_max = _mm256_set1_pd(static_cast<double>(q.nx - 1));
-  const __m256i nx = _mm256_set1_epi64x(q.nx);
-  const __m256i one = _mm256_set1_epi64x(1);
-  alignas(32) std::int64_t lo_cell[4];
-  alignas(32) std::int64_t hi_cell[4];
-  for (int r = 0; r < rows; r += 4) {
-    const __m256i row = _mm256_add_epi64(_mm256_set1_epi64x(y_lo + r), _mm256_setr_epi64x(0, 1, 2, 3));
-    const __m256d half = _mm256_loadu_pd(halves.half + r);
-    const __m256i x_lo = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_sub_pd(x, half), ox), inv), x_max);
-    const __m256i x_hi = clamp_to_cells(_mm256_mul_pd(_mm256_sub_pd(_mm256_add_pd(x, half), ox), inv), x_max);
-    const __m256i base = _mm256_mul_epu32(row, nx);
-    _mm256_store_si256(reinterpret_cast<__m256i*>(lo_cell), _mm256_add_epi64(base, x_lo));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(hi_cell),
-                       _mm256_add_epi64(_mm256_add_epi64(base, x_hi), one));
-    const int n = std::min(4, rows - r);
-    for (int k = 0; k < n; ++k)
-      ranges[r + k] = {q.start[static_cast<std::size_t>(lo_cell[k])],
-                       q.start[static_cast<std::size_t>(hi_cell[k])]};
-  }
+  for (int r = 0; r < rows; r += 4)
+    ranges_of_rows(q, y_lo, r, rows, _mm256_loadu_pd(halves.half + r), ranges);
   return rows;
 }
 

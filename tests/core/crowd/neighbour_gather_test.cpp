@@ -140,17 +140,34 @@ TEST(NeighbourGather, InactiveCandidatesAreSkipped) {
 // The cell rows of a scan: the dispatched version (AVX2 where the CPU has it) gives the scalar
 // ranges exactly, and every point within the reach lies in a cell of its row's range (start[k] = k
 // here, so a range is a run of cell numbers). Agents anywhere on the grid, near its edges too.
+// A random grid of cells at least a third of the cut-off wide, cell k starting at entry k.
+struct RandomGrid {
+  struct {
+    double cutoff, cell;
+    std::int64_t nx, ny;
+    double ox, oy;
+  } shape;
+  std::vector<std::uint32_t> start;
+};
+RandomGrid random_grid(Rng& rng) {
+  RandomGrid g;
+  g.shape.cutoff = rng.uniform(0.5, 4.0);
+  g.shape.cell = g.shape.cutoff / 3.0 * rng.uniform(1.0, 2.5);
+  g.shape.nx = static_cast<std::int64_t>(rng.uniform(1.0, 40.0));
+  g.shape.ny = static_cast<std::int64_t>(rng.uniform(1.0, 40.0));
+  g.start.resize(static_cast<std::size_t>(g.shape.nx * g.shape.ny + 1));
+  for (std::size_t k = 0; k < g.start.size(); ++k) g.start[k] = static_cast<std::uint32_t>(k);
+  g.shape.ox = rng.uniform(-50.0, 50.0);
+  g.shape.oy = rng.uniform(-50.0, 50.0);
+  return g;
+}
+
 TEST(NeighbourGather, GridRowsMatchScalarAndCoverTheDisc) {
   Rng rng(11);
   for (int trial = 0; trial < 2000; ++trial) {
-    const double cutoff = rng.uniform(0.5, 4.0);
-    const double cell = cutoff / 3.0 * rng.uniform(1.0, 2.5);
-    const auto nx = static_cast<std::int64_t>(rng.uniform(1.0, 40.0));
-    const auto ny = static_cast<std::int64_t>(rng.uniform(1.0, 40.0));
-    std::vector<std::uint32_t> start(static_cast<std::size_t>(nx * ny + 1));
-    for (std::size_t k = 0; k < start.size(); ++k) start[k] = static_cast<std::uint32_t>(k);
-    const double ox = rng.uniform(-50.0, 50.0);
-    const double oy = rng.uniform(-50.0, 50.0);
+    const RandomGrid grid = random_grid(rng);
+    const auto [cutoff, cell, nx, ny, ox, oy] = grid.shape;
+    const std::vector<std::uint32_t>& start = grid.start;
     const double x = ox + rng.uniform(0.0, static_cast<double>(nx) * cell);
     const double y = oy + rng.uniform(0.0, static_cast<double>(ny) * cell);
     const GridQuery q{start.data(), ox, oy, cell, 1.0 / cell, cutoff + 1e-9, nx, ny, x, y};
@@ -185,14 +202,9 @@ TEST(NeighbourGather, GridRowsMatchScalarAndCoverTheDisc) {
 TEST(NeighbourGather, UpperRowsWithoutRootsCoverTheExactOnes) {
   Rng rng(12);
   for (int trial = 0; trial < 4000; ++trial) {
-    const double cutoff = rng.uniform(0.5, 4.0);
-    const double cell = cutoff / 3.0 * rng.uniform(1.0, 2.5);
-    const auto nx = static_cast<std::int64_t>(rng.uniform(1.0, 40.0));
-    const auto ny = static_cast<std::int64_t>(rng.uniform(1.0, 40.0));
-    std::vector<std::uint32_t> start(static_cast<std::size_t>(nx * ny + 1));
-    for (std::size_t k = 0; k < start.size(); ++k) start[k] = static_cast<std::uint32_t>(k);
-    const double ox = rng.uniform(-50.0, 50.0);
-    const double oy = rng.uniform(-50.0, 50.0);
+    const RandomGrid grid = random_grid(rng);
+    const auto [cutoff, cell, nx, ny, ox, oy] = grid.shape;
+    const std::vector<std::uint32_t>& start = grid.start;
     // Now and then exactly on a cell's edge.
     const double fx = trial % 7 == 0 ? std::floor(rng.uniform(0.0, static_cast<double>(nx)))
                                      : rng.uniform(0.0, static_cast<double>(nx));
