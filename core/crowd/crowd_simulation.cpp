@@ -1773,8 +1773,7 @@ void CrowdSimulation::step_pairs() {
   const double stiffness = config_.body_stiffness;
   const auto readable = static_cast<std::uint32_t>(c.fx.size());
   const int granule = pair_kernel_lanes();
-  const RowHalves halves = row_halves({c.start.data(), c.origin_x, c.origin_y, c.cell, c.inv_cell,
-                                       config_.neighbor_cutoff + 1e-9, c.nx, c.ny, 0.0, 0.0, true});
+  const RowHalves halves = row_halves(config_.neighbor_cutoff + 1e-9, c.cell);
 
   // Chunks of 64 agents: about 60 µs each, so the threads finish close together.
   pool_->parallel_for(n, 64, [&](std::size_t begin, std::size_t end) {

@@ -99,14 +99,13 @@ int grid_ranges_scalar(const GridQuery& q, GatherRange* ranges) {
   return count;
 }
 
-RowHalves row_halves(const GridQuery& q) {
+RowHalves row_halves(double reach, double cell) {
   // Row offset d >= 1 is at least (d − 1)·cell above the point (less 1e-6 m for rounding: the
   // point's row is found by a rounded division); row 0 holds it. The half-chord there, + 1e-6 m.
   RowHalves h{};
-  const double c = q.reach;
   for (int d = 0; d < kMaxGridRows + 3; ++d) {
-    const double gap = d == 0 ? 0.0 : static_cast<double>(d - 1) * q.cell - 1e-6;
-    h.half[d] = gap > 0.0 ? std::sqrt(std::max(0.0, c * c - gap * gap)) + 1e-6 : c + 1e-6;
+    const double gap = d == 0 ? 0.0 : static_cast<double>(d - 1) * cell - 1e-6;
+    h.half[d] = gap > 0.0 ? std::sqrt(std::max(0.0, reach * reach - gap * gap)) + 1e-6 : reach + 1e-6;
   }
   return h;
 }

@@ -69,8 +69,8 @@ struct RowHalves {
   double half[kMaxGridRows +
               3];  // by row offset from the point's own row: x-reach to scan (+3: read 4 at a time)
 };
-// For cells of q.cell, a reach of q.reach.
-RowHalves row_halves(const GridQuery& q);
+// For cells `cell` wide and a reach (the cut-off) `reach`: GridQuery's cell and reach.
+RowHalves row_halves(double reach, double cell);
 // Dispatched as grid_ranges (AVX2: four rows at a time, the same ranges).
 int grid_ranges_upper(const GridQuery& q, const RowHalves& halves, GatherRange* ranges);
 int grid_ranges_upper_scalar(const GridQuery& q, const RowHalves& halves, GatherRange* ranges);

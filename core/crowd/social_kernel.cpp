@@ -69,7 +69,6 @@ struct SocialLane {
 // `band`; (dvx, dvy) = v_agent − v_neighbour.
 struct AheadLane {
   std::int32_t cap, push;
-  bool counts;  // the neighbour is ahead in the band or meets the agent
 };
 [[gnu::always_inline]] inline AheadLane ahead_lane(const PairAheadParams& a, float ex, float ey,
                                                    float speed_along, float band, float ox, float oy,
@@ -89,7 +88,7 @@ struct AheadLane {
       a.side_factor * kForceQuantum * fast_expf(-std::max(ahead, 0.0f) * a.side_inv_range);
   const float signed_push = side < a.side_bias ? magnitude : -magnitude;
   return {(std::bit_cast<std::int32_t>(cap) & follows) | (INT32_MAX & ~follows),
-          static_cast<std::int32_t>(signed_push) & meets, (follows | meets) != 0};
+          static_cast<std::int32_t>(signed_push) & meets};
 }
 
 }  // namespace
@@ -112,7 +111,6 @@ void social_kernel_portable(const SocialParams& p, int count, const float* __res
 
 SOCSIM_CLONES
 void pair_kernel_portable(const SocialParams& p, const PairAheadParams& a, int count, PairLanes& b) {
-  b.ahead_i = b.ahead_j = 0;
   for (int m = 0; m < count; ++m) {
     const float rx = b.dx[m];
     const float ry = b.dy[m];
@@ -127,8 +125,6 @@ void pair_kernel_portable(const SocialParams& p, const PairAheadParams& a, int c
     b.push_i[m] = i.push;
     b.cap_j[m] = j.cap;
     b.push_j[m] = j.push;
-    b.ahead_i |= static_cast<std::uint64_t>(i.counts) << m;
-    b.ahead_j |= static_cast<std::uint64_t>(j.counts) << m;
   }
 }
 
@@ -188,7 +184,6 @@ struct Simd {
   SOCSIM_SIMD("avx512f") mask both(mask a, mask b) { return static_cast<mask>(a & b); }
   SOCSIM_SIMD("avx512f") mask greater_equal(vec a, vec b) { return _mm512_cmp_ps_mask(a, b, _CMP_GE_OQ); }
   SOCSIM_SIMD("avx512f") bool any(mask m) { return m != 0; }
-  SOCSIM_SIMD("avx512f") std::uint64_t bitmask(mask m) { return m; }  // bit l: lane l
   SOCSIM_SIMD("avx512f") ivec iset1(std::int32_t x) { return _mm512_set1_epi32(x); }
   SOCSIM_SIMD("avx512f") ivec bits(vec a) { return _mm512_castps_si512(a); }
   SOCSIM_SIMD("avx512f") ivec truncate(vec a) {
@@ -260,7 +255,6 @@ struct Simd {
   SOCSIM_SIMD("avx2") mask both(mask a, mask b) { return _mm256_and_ps(a, b); }
   SOCSIM_SIMD("avx2") mask greater_equal(vec a, vec b) { return _mm256_cmp_ps(a, b, _CMP_GE_OQ); }
   SOCSIM_SIMD("avx2") bool any(mask m) { return _mm256_movemask_ps(m) != 0; }
-  SOCSIM_SIMD("avx2") std::uint64_t bitmask(mask m) { return static_cast<unsigned>(_mm256_movemask_ps(m)); }
   SOCSIM_SIMD("avx2") ivec iset1(std::int32_t x) { return _mm256_set1_epi32(x); }
   SOCSIM_SIMD("avx2") ivec bits(vec a) { return _mm256_castps_si256(a); }
   SOCSIM_SIMD("avx2") ivec truncate(vec a) { return _mm256_cvttps_epi32(a); }

@@ -147,9 +147,6 @@ struct PairLanes {
   alignas(32) std::int32_t cap_j[kBatch];
   alignas(32) std::int32_t push_i[kBatch];
   alignas(32) std::int32_t push_j[kBatch];
-  // Bit m set: in lane m the other is ahead of i in its band or meets it (ahead_i; ahead_j for j):
-  // the few lanes with a headway cap or a side push (the others hold INT32_MAX and 0).
-  std::uint64_t ahead_i, ahead_j;
 };
 // The ahead terms' parameters shared by both sides (AheadParams without the per-agent ones).
 struct PairAheadParams {

@@ -317,14 +317,13 @@ SOCSIM_LANES void kernel_from(const SocialParams& p, const AheadParams* ahead, A
 }
 
 // One side's ahead terms for N vectors of pairs, each lane with its own walking direction (ex,
-// ey), speed along it and headway band, stored per lane at cap + m and push + m (not reduced);
-// bits gets the lanes that follow or meet.
+// ey), speed along it and headway band, stored per lane at cap + m and push + m (not reduced;
+// INT32_MAX and 0 in the lanes that neither follow nor meet, so the step sums every lane).
 template <int N>
 SOCSIM_LANES void pair_ahead_lanes(const PairAheadParams& a, const Pk<N>& ex, const Pk<N>& ey,
                                    const Pk<N>& speed_along, const Pk<N>& band, const Pk<N>& ox,
                                    const Pk<N>& oy, const Pk<N>& dvx, const Pk<N>& dvy, const Pk<N>& d,
-                                   std::int32_t* cap_out, std::int32_t* push_out, std::uint64_t& bits,
-                                   int m) {
+                                   std::int32_t* cap_out, std::int32_t* push_out, int m) {
   const AheadLaneTerms<N> t = ahead_lane_terms<N>(a, ex, ey, speed_along, band * band, ox, oy, dvx, dvy, d);
   SOCSIM_EACH {
     const int o = m + Simd::kLanes * k;
@@ -332,7 +331,6 @@ SOCSIM_LANES void pair_ahead_lanes(const PairAheadParams& a, const Pk<N>& ex, co
     Simd::istore(push_out + o, t.any_meets
                                    ? Simd::iselect(t.meets[k], Simd::truncate(t.push.v[k]), Simd::iset1(0))
                                    : Simd::iset1(0));
-    bits |= (Simd::bitmask(t.follows[k]) | Simd::bitmask(t.meets[k])) << o;
   }
 }
 
@@ -355,11 +353,11 @@ SOCSIM_LANES void pair_lanes(const SocialParams& p, const PairAheadParams& a, in
   const Pk<N> d = root(rx * rx + ry * ry);
   pair_ahead_lanes<N>(a, load_lanes<N>(all, b.ex_i + m), load_lanes<N>(all, b.ey_i + m),
                       load_lanes<N>(all, b.along_i + m), load_lanes<N>(all, b.band_i + m), rx, ry, vx, vy, d,
-                      b.cap_i, b.push_i, b.ahead_i, m);
+                      b.cap_i, b.push_i, m);
   // j's view: the offset and the relative velocity reversed (exactly: a sign flip), the same d.
   pair_ahead_lanes<N>(a, load_lanes<N>(all, b.ex_j + m), load_lanes<N>(all, b.ey_j + m),
                       load_lanes<N>(all, b.along_j + m), load_lanes<N>(all, b.band_j + m), -rx, -ry, -vx, -vy,
-                      d, b.cap_j, b.push_j, b.ahead_j, m);
+                      d, b.cap_j, b.push_j, m);
   const Forces<N> g =
       social_lanes<N>(p, rx, ry, load_lanes<N>(all, b.tie_x + m), load_lanes<N>(all, b.tie_y + m), vx, vy, d);
   SOCSIM_EACH {
@@ -378,7 +376,6 @@ SOCSIM_LANES void pair_from(const SocialParams& p, const PairAheadParams& a, int
 __attribute__((target(SOCSIM_LANES_TARGET))) void pair_kernel_lanes(const SocialParams& p,
                                                                     const PairAheadParams& a, int count,
                                                                     PairLanes& b) {
-  b.ahead_i = b.ahead_j = 0;
   pair_from<Simd::kPairInterleave>(p, a, 0, count, b);
 }
 

@@ -25,19 +25,19 @@ void relax() {
 // kSpinTime, and only then sleep on the condition variable: for kPauseTime spinning with pause,
 // then yielding the processor between looks, so threads of other simulations (or anything else)
 // that have work run first. Timed rather than counted: a pause takes 3 ns on some processors and
-// 30–40 ns on others. 62 µs of spinning (2,048 pauses of 30 ns) let the worker fall asleep before
-// most steps' first parallel loop; waiting up to 1 ms, 10,000 agents on two threads stepped ~10 %
-// faster (median of 12 alternated runs, docs/PERFORMANCE.md).
+// 30–40 ns on others; 2,048 pauses (62 µs here) let the worker fall asleep before most steps'
+// first parallel loop. (No speed-up of the whole step survived alternated runs on the noisy test
+// machine: docs/PERFORMANCE.md, "Session 18".)
 constexpr auto kPauseTime = std::chrono::microseconds(300);
 constexpr auto kSpinTime = std::chrono::microseconds(1000);
 
-// Waits actively until ready() or kSpinTime has passed; whether ready() held.
+// Waits actively until ready() or kSpinTime has passed (the caller then checks again, and sleeps).
 template <class Ready>
-bool spin_until(Ready ready) {
+void spin_until(Ready ready) {
   const auto start = std::chrono::steady_clock::now();
   bool yielding = false;
   for (unsigned k = 1;; ++k) {
-    if (ready()) return true;
+    if (ready()) return;
     if (yielding) {
       std::this_thread::yield();
     } else {
@@ -45,7 +45,7 @@ bool spin_until(Ready ready) {
     }
     if (yielding || k % 64 == 0) {
       const auto waited = std::chrono::steady_clock::now() - start;
-      if (waited > kSpinTime) return false;
+      if (waited > kSpinTime) return;
       yielding = waited > kPauseTime;
     }
   }

@@ -307,7 +307,7 @@ int crowd_kernel_bench(const socsim::bench::Args& a) {
       for (std::size_t k = 0; k < lanes.size(); ++k) {
         const int n = (lane_counts[k] + granule - 1) / granule * granule;
         pair_kernel(params, pair_ahead, n, lanes[k]);
-        pair_sink += lanes[k].fx[0] + static_cast<std::int64_t>(lanes[k].ahead_j);
+        pair_sink += lanes[k].fx[0] + lanes[k].cap_j[0];
       }
     }
     pair_ns = std::min(pair_ns,
