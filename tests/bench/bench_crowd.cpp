@@ -9,6 +9,10 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "core/common/rng.hpp"
 #include "core/crowd/crowd_simulation.hpp"
@@ -23,6 +27,42 @@ namespace {
 using socsim::crowd::CrowdSimulation;
 using socsim::crowd::Vec2;
 
+// Taking turns with another process (--turns IN,OUT: two named pipes; tests/bench/paired-crowd.sh):
+// before each timed step wait for a byte on IN, after it send one on OUT. Two builds stepping in
+// turns see the same machine at the same moments, so the ratio of their step times is steady to
+// about 1 % where the machine's own speed wanders by 2x within minutes.
+class Turns {
+ public:
+  explicit Turns(const std::string& spec) {
+    if (spec.empty()) return;
+    const auto comma = spec.find(',');
+    if (comma == std::string::npos) throw std::invalid_argument("--turns IN,OUT: two named pipes");
+    // Read-write opens do not block waiting for the other end (Linux).
+    in_ = ::open(spec.substr(0, comma).c_str(), O_RDWR);
+    out_ = ::open(spec.substr(comma + 1).c_str(), O_RDWR);
+    if (in_ < 0 || out_ < 0) throw std::invalid_argument("--turns: cannot open " + spec);
+  }
+  ~Turns() {
+    if (in_ >= 0) ::close(in_);
+    if (out_ >= 0) ::close(out_);
+  }
+  Turns(const Turns&) = delete;
+  Turns& operator=(const Turns&) = delete;
+  [[nodiscard]] bool on() const { return in_ >= 0; }
+  void wait() const {
+    char byte = 0;
+    if (in_ >= 0 && ::read(in_, &byte, 1) != 1) throw std::runtime_error("--turns: the other side went away");
+  }
+  void pass() const {
+    const char byte = 1;
+    if (out_ >= 0 && ::write(out_, &byte, 1) != 1) throw std::runtime_error("--turns: cannot pass the turn");
+  }
+
+ private:
+  int in_ = -1;
+  int out_ = -1;
+};
+
 // The scene (tests/bench/crowd_bench_scene.hpp): N agents on a jittered 1 m lattice, walking
 // back and forth between two random goals; --walls, --groups as described there.
 CrowdSimulation make_crowd(std::size_t n, unsigned threads, bool walls, bool groups, std::uint64_t seed,
@@ -33,7 +73,8 @@ CrowdSimulation make_crowd(std::size_t n, unsigned threads, bool walls, bool gro
 
 SOCSIM_BENCH(
     "crowd",
-    "--agents N --steps S --threads T [--walls] [--groups] [--reference-agents M] [--agent-by-agent]",
+    "--agents N --steps S --threads T [--walls] [--groups] [--reference-agents M] [--agent-by-agent] "
+    "[--turns IN,OUT]",
     [](const socsim::bench::Args& a) {
       const auto n = static_cast<std::size_t>(a.integer("agents", 10000));
       const auto steps = a.integer("steps", 200);
@@ -44,10 +85,24 @@ SOCSIM_BENCH(
       const bool pairs_once = !a.has("agent-by-agent");
       CrowdSimulation sim = make_crowd(n, threads, walls, groups, 42, pairs_once);
       for (int k = 0; k < 10; ++k) sim.step();  // leave the lattice start behind
+      const Turns turns(a.str("turns", ""));
+      std::vector<double> step_ms;  // with --turns: each step's time, for pairing
+      double seconds = 0.0;
       const std::clock_t cpu0 = std::clock();
-      const auto t0 = std::chrono::steady_clock::now();
-      for (std::int64_t k = 0; k < steps; ++k) sim.step();
-      const double seconds = socsim::bench::seconds_since(t0);
+      if (turns.on()) {
+        for (std::int64_t k = 0; k < steps; ++k) {
+          turns.wait();
+          const auto t1 = std::chrono::steady_clock::now();
+          sim.step();
+          step_ms.push_back(socsim::bench::ms_since(t1));
+          turns.pass();
+          seconds += step_ms.back() / 1000.0;
+        }
+      } else {
+        const auto t0 = std::chrono::steady_clock::now();
+        for (std::int64_t k = 0; k < steps; ++k) sim.step();
+        seconds = socsim::bench::seconds_since(t0);
+      }
       // CPU time of all threads: on a shared machine the wall clock also counts waiting.
       const double cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
       // FNV-1a over the bits of every position and velocity: equal between two builds
@@ -73,7 +128,8 @@ SOCSIM_BENCH(
            {"ms_per_step", 1000.0 * seconds / static_cast<double>(steps)},
            {"cpu_us_per_agent_step",
             1e6 * cpu_seconds / (static_cast<double>(n) * static_cast<double>(steps))},
-           {"state_fnv1a", fnv}});
+           {"state_fnv1a", fnv},
+           {"step_ms", step_ms}});
 
       const auto m = static_cast<std::size_t>(a.integer("reference-agents", 2000));
       if (m == 0) return 0;
