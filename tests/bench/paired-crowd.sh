@@ -24,6 +24,12 @@ pid_a=$!
 taskset -c "$cpus" "$b" "${common[@]}" --turns "$dir/b,$dir/a" >"$dir/b.json" &
 pid_b=$!
 printf 'x' >"$dir/a"  # A's first turn (a reader-writer open of the pipe does not block)
+# A side that fails would leave the other waiting for its turn forever: stop both.
+if ! wait -n "$pid_a" "$pid_b"; then
+  kill "$pid_a" "$pid_b" 2>/dev/null || true
+  echo "paired-crowd.sh: a run failed" >&2
+  exit 1
+fi
 wait "$pid_a" "$pid_b"
 python3 - "$dir/a.json" "$dir/b.json" <<'PY'
 import json, statistics, sys
