@@ -172,8 +172,8 @@ class CrowdSimulation {
   [[nodiscard]] bool near_low_end(double x) const;
   [[nodiscard]] bool near_high_end(double x) const;
   [[nodiscard]] double wrap_x(double x) const;
-  // What advance_agent reads of agent i itself, in one place: the step copies it in the order it
-  // visits agents (cell order), so those reads are sequential instead of a dozen scattered ones.
+  // What advance_agent reads of agent i itself, in one place (inputs_of: read where it is used;
+  // a per-step copy in the cells' order cost more than it saved).
   struct AgentInputs {
     double x, y, vx, vy, r, v0, vmax, gx, gy, gr;
     std::int32_t group;

@@ -66,8 +66,8 @@ int grid_ranges_scalar(const GridQuery& q, GatherRange* ranges);
 // is anywhere within it for a point anywhere in its own row of cells (row_halves, below), so a
 // few more cells than grid_ranges (about a tenth more candidates), never fewer.
 struct RowHalves {
-  double half[kMaxGridRows +
-              3];  // by row offset from the point's own row: x-reach to scan (+3: read 4 at a time)
+  // By row offset from the point's own row: the x-reach to scan (3 to spare: read 4 at a time).
+  double half[kMaxGridRows + 3];
 };
 // For cells `cell` wide and a reach (the cut-off) `reach`: GridQuery's cell and reach.
 RowHalves row_halves(double reach, double cell);
