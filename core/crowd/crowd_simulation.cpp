@@ -32,8 +32,16 @@ struct CrowdSimulation::CellIndex {
   std::vector<std::uint32_t> entry_agent;
   std::vector<double> entry_x;
   std::vector<std::uint32_t> entry_cell;
-  std::vector<std::uint32_t> order;   // sorted position -> entry
-  std::vector<std::uint32_t> agents;  // the active agents in sorted order (no images)
+  // build_cells' lists of entries (the agents part by part, then their images part by part).
+  struct Part {
+    std::array<double, 4> box{1e300, 1e300, -1e300, -1e300};
+    std::size_t count = 0;  // entries of this list
+    std::size_t first = 0;  // its first entry
+  };
+  std::vector<Part> parts;
+  std::vector<std::uint32_t> list_cell;  // per list and cell: a count, then a sorted position
+  std::vector<std::uint32_t> order;      // sorted position -> entry
+  std::vector<std::uint32_t> agents;     // the active agents in sorted order (no images)
   // Agent index -> sorted position of its own entry (kNoCell when inactive).
   std::vector<std::uint32_t> cell_of;
   std::vector<double> x, y, vx, vy, r;
@@ -708,11 +716,13 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
   radius_.push_back(spec.radius ? *spec.radius : role.radius);
   v0_.push_back(v0);
   vmax_.push_back(vmax);
+  maxima_dirty_ = true;
   // Whether every agent's role shares the pair terms with the first one's (pairs_once()).
   if (!role_.empty() && !same_pair_terms(roles_.at(role_.front()).forces, roles_.at(*role_index).forces))
     mixed_pair_terms_ = true;
   role_.push_back(static_cast<std::uint16_t>(*role_index));
   group_.push_back(group);
+  groups_dirty_ = groups_dirty_ || group >= 0;
   active_.push_back(spec.activity == Activity::kExited ? 0 : 1);
   driven_.push_back(kNotDriven);
   has_goal_.push_back(0);
@@ -785,6 +795,7 @@ Status CrowdSimulation::set_desired_speed(AgentId id, double speed) {
                 {FieldError("/desired_speed", "must be in [0, 8] m/s")});
   v0_[id.value()] = speed;
   vmax_[id.value()] = speed * factor;
+  maxima_dirty_ = true;
   return {};
 }
 
@@ -792,6 +803,7 @@ Status CrowdSimulation::set_activity(AgentId id, Activity activity) {
   if (auto ok = check_id(id, "set_activity"); !ok) return ok;
   meta_[id.value()].activity = activity;
   if (activity == Activity::kExited) active_[id.value()] = 0;
+  maxima_dirty_ = true;
   return {};
 }
 
@@ -810,6 +822,7 @@ Status CrowdSimulation::set_bt_node(AgentId id, std::string node) {
 Status CrowdSimulation::set_active(AgentId id, bool active) {
   if (auto ok = check_id(id, "set_active"); !ok) return ok;
   active_[id.value()] = active ? 1 : 0;
+  maxima_dirty_ = true;
   if (!active) {
     vx_[id.value()] = 0.0;
     vy_[id.value()] = 0.0;
@@ -849,6 +862,7 @@ Status CrowdSimulation::set_driven_state(AgentId id, Pose2 pose, Twist2 twist) {
   omega_[i] = twist.omega;
   // The contact margin of the others assumes no one is faster than the fastest speed limit.
   vmax_[i] = std::max(vmax_[i], speed);
+  maxima_dirty_ = true;
   return {};
 }
 
@@ -871,6 +885,7 @@ Status CrowdSimulation::set_group(AgentId id, std::int64_t group_id) {
                 {FieldError("/group_id", "must be -1 (no group) or a non-negative id")});
   group_[id.value()] = group_slot(group_id);
   meta_[id.value()].group_id = group_id;
+  groups_dirty_ = true;
   return {};
 }
 
@@ -913,9 +928,6 @@ void CrowdSimulation::prepare_step() {
     }
     walls_dirty_ = false;
   }
-  std::fill(group_cx_.begin(), group_cx_.end(), 0.0);
-  std::fill(group_cy_.begin(), group_cy_.end(), 0.0);
-  std::fill(group_size_.begin(), group_size_.end(), 0u);
   if (config_.hard_contact) {
     contact_ids_.resize(size() * kStoredContacts);
     contact_count_.assign(size(), 0);
@@ -924,22 +936,59 @@ void CrowdSimulation::prepare_step() {
     moved_.resize(size());
     moved_next_.resize(size());
   }
-  max_radius_ = 0.0;
-  max_vmax_ = 0.0;
-  for (std::size_t i = 0; i < size(); ++i) {
-    if (active_[i]) max_radius_ = std::max(max_radius_, radius_[i]);
-    if (active_[i]) max_vmax_ = std::max(max_vmax_, vmax_[i]);
-    const std::int32_t g = group_[i];
-    if (g < 0 || !active_[i]) continue;
-    group_cx_[static_cast<std::size_t>(g)] += px_[i];
-    group_cy_[static_cast<std::size_t>(g)] += py_[i];
-    ++group_size_[static_cast<std::size_t>(g)];
+  // Every agent's inputs to its step in one record (the passes over the agents in the cells'
+  // order read one or two cache lines of an agent instead of one of each of 14 arrays).
+  inputs_.resize(size());
+  pool_->parallel_for(size(), 2048, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      inputs_[i] = {px_[i], py_[i], vx_[i], vy_[i],    radius_[i], v0_[i],     vmax_[i],
+                    gx_[i], gy_[i], gr_[i], group_[i], role_[i],   driven_[i], has_goal_[i]};
+  });
+  // Each group's members in agent order (counting sort by group), rebuilt when one changed.
+  const std::size_t groups = group_size_.size();
+  if (groups_dirty_) {
+    group_member_start_.assign(groups + 1, 0);
+    for (const std::int32_t g : group_)
+      if (g >= 0) ++group_member_start_[static_cast<std::size_t>(g) + 1];
+    for (std::size_t g = 0; g < groups; ++g) group_member_start_[g + 1] += group_member_start_[g];
+    group_members_.resize(group_member_start_[groups]);
+    std::vector<std::uint32_t> next(group_member_start_.begin(), group_member_start_.end() - 1);
+    for (std::size_t i = 0; i < size(); ++i)
+      if (group_[i] >= 0)
+        group_members_[next[static_cast<std::size_t>(group_[i])]++] = static_cast<std::uint32_t>(i);
+    groups_dirty_ = false;
   }
-  for (std::size_t g = 0; g < group_size_.size(); ++g) {
-    if (group_size_[g] == 0) continue;
-    group_cx_[g] /= static_cast<double>(group_size_[g]);
-    group_cy_[g] /= static_cast<double>(group_size_[g]);
+  // The largest radius and speed limit of the active agents (exact in any order), recomputed
+  // only after one of them may have changed.
+  if (maxima_dirty_) {
+    max_radius_ = 0.0;
+    max_vmax_ = 0.0;
+    for (std::size_t i = 0; i < size(); ++i) {
+      if (!active_[i]) continue;
+      max_radius_ = std::max(max_radius_, radius_[i]);
+      max_vmax_ = std::max(max_vmax_, vmax_[i]);
+    }
+    maxima_dirty_ = false;
   }
+  // Each group's centre: its active members' positions summed in agent order (the same bits as
+  // one pass over all agents), groups in parallel.
+  pool_->parallel_for(groups, 256, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t g = begin; g < end; ++g) {
+      double sx = 0.0;
+      double sy = 0.0;
+      std::uint32_t count = 0;
+      for (std::uint32_t m = group_member_start_[g]; m < group_member_start_[g + 1]; ++m) {
+        const std::uint32_t i = group_members_[m];
+        if (!active_[i]) continue;
+        sx += px_[i];
+        sy += py_[i];
+        ++count;
+      }
+      group_size_[g] = count;
+      group_cx_[g] = count == 0 ? sx : sx / static_cast<double>(count);
+      group_cy_[g] = count == 0 ? sy : sy / static_cast<double>(count);
+    }
+  });
 }
 
 double CrowdSimulation::wrap_x(double x) const {
@@ -1017,51 +1066,72 @@ void CrowdSimulation::build_images(Images& m) const {
 void CrowdSimulation::build_cells() {
   CellIndex& c = *cells_;
   const std::size_t n = size();
-  c.cell_of.assign(n, kNoCell);
-  c.entry_agent.clear();
-  c.entry_x.clear();
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!seen(i)) continue;
-    c.entry_agent.push_back(i);
-    c.entry_x.push_back(px_[i]);
-  }
-  const std::size_t active = c.entry_agent.size();
   const double length = config_.periodic_length;
-  for (std::size_t e = 0; e < active; ++e) {  // periodic images, in agent order
-    const std::uint32_t i = c.entry_agent[e];
-    if (near_low_end(px_[i])) {
-      c.entry_agent.push_back(i);
-      c.entry_x.push_back(px_[i] + length);
-    } else if (near_high_end(px_[i])) {
-      c.entry_agent.push_back(i);
-      c.entry_x.push_back(px_[i] - length);
-    }
-  }
-  const std::size_t entries = c.entry_agent.size();
-  // The bounding box, chunk by chunk in parallel (minima and maxima: exact in any order).
-  constexpr std::size_t kBoxChunk = 2048;
-  std::array<double, 4> box_init{1e300, 1e300, -1e300, -1e300};
-  std::vector<std::array<double, 4>> boxes((entries + kBoxChunk - 1) / kBoxChunk, box_init);
-  pool_->parallel_for(entries, kBoxChunk, [&](std::size_t begin, std::size_t end) {
-    std::array<double, 4>& b = boxes[begin / kBoxChunk];
-    for (std::size_t e = begin; e < end; ++e) {
-      const double ex = c.entry_x[e];
-      const double ey = py_[c.entry_agent[e]];
-      b[0] = std::min(b[0], ex);
-      b[1] = std::min(b[1], ey);
-      b[2] = std::max(b[2], ex);
-      b[3] = std::max(b[3], ey);
+  // The agents in `parts` fixed ranges, one per thread: each part's seen agents become entries in
+  // agent order, and (periodic boundary) its agents' images a part of their own after all agents.
+  // Every pass below runs part by part in parallel; the results do not depend on which thread
+  // runs which part, and the counting sort keeps the entries' order within a cell (stable), as
+  // one serial pass over the entries would.
+  const std::size_t parts = std::max<std::size_t>(1, std::min<std::size_t>(pool_->threads(), n / 256));
+  const std::size_t per_part = (n + parts - 1) / std::max<std::size_t>(parts, 1);
+  const auto part_begin = [&](std::size_t p) { return std::min(n, p * per_part); };
+  const bool periodic = length > 0.0;
+  const std::size_t lists = periodic ? 2 * parts : parts;  // agents' parts, then images' parts
+  c.cell_of.resize(n);
+  c.parts.assign(lists, CellIndex::Part{});
+  auto& list = c.parts;
+  // Pass 1: each part's entries and bounding box (kept in registers: the parts' slots share
+  // cache lines).
+  pool_->parallel_for(parts, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t p = begin; p < end; ++p) {
+      double bx0 = 1e300, by0 = 1e300, bx1 = -1e300, by1 = -1e300;
+      std::size_t count = 0;
+      std::size_t images = 0;
+      for (std::size_t i = part_begin(p); i < part_begin(p + 1); ++i) {
+        c.cell_of[i] = kNoCell;
+        if (!seen(i)) continue;
+        ++count;
+        const double x = px_[i];
+        const double y = py_[i];
+        by0 = std::min(by0, y);
+        by1 = std::max(by1, y);
+        bx0 = std::min(bx0, x);
+        bx1 = std::max(bx1, x);
+        if (!periodic) continue;
+        double image = x;
+        if (near_low_end(x)) {
+          image = x + length;
+        } else if (near_high_end(x)) {
+          image = x - length;
+        } else {
+          continue;
+        }
+        ++images;
+        bx0 = std::min(bx0, image);
+        bx1 = std::max(bx1, image);
+      }
+      list[p].count = count;
+      list[p].box = {bx0, by0, bx1, by1};
+      if (periodic) {
+        list[parts + p].count = images;
+        list[parts + p].box = {bx0, by0, bx1, by1};
+      }
     }
   });
-  double x0 = box_init[0], y0 = box_init[1], x1 = box_init[2], y1 = box_init[3];
-  for (const std::array<double, 4>& b : boxes) {
-    x0 = std::min(x0, b[0]);
-    y0 = std::min(y0, b[1]);
-    x1 = std::max(x1, b[2]);
-    y1 = std::max(y1, b[3]);
+  std::array<double, 4> box{1e300, 1e300, -1e300, -1e300};
+  std::size_t entries = 0;
+  for (CellIndex::Part& l : list) {
+    l.first = entries;
+    entries += l.count;
+    box[0] = std::min(box[0], l.box[0]);
+    box[1] = std::min(box[1], l.box[1]);
+    box[2] = std::max(box[2], l.box[2]);
+    box[3] = std::max(box[3], l.box[3]);
   }
-  c.order.clear();
-  c.agents.clear();
+  const std::size_t active = periodic ? list[parts].first : entries;
+  const double x0 = box[0], y0 = box[1], x1 = box[2], y1 = box[3];
+  c.order.resize(entries);
+  c.agents.resize(active);
   if (active == 0) {
     c.nx = c.ny = 0;
     c.start.assign(1, 0);
@@ -1082,28 +1152,56 @@ void CrowdSimulation::build_cells() {
   c.nx = static_cast<std::int64_t>((x1 - x0) * c.inv_cell) + 1;
   c.ny = static_cast<std::int64_t>((y1 - y0) * c.inv_cell) + 1;
   const auto cells = static_cast<std::size_t>(c.nx * c.ny);
-  c.start.assign(cells + 1, 0);
+  c.entry_agent.resize(entries);
+  c.entry_x.resize(entries);
   c.entry_cell.resize(entries);
-  pool_->parallel_for(entries, kBoxChunk, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e) {
-      const auto cx = std::min(static_cast<std::int64_t>((c.entry_x[e] - x0) * c.inv_cell), c.nx - 1);
-      const auto cy =
-          std::min(static_cast<std::int64_t>((py_[c.entry_agent[e]] - y0) * c.inv_cell), c.ny - 1);
-      c.entry_cell[e] = static_cast<std::uint32_t>(cy * c.nx + cx);
+  // Per list and cell, its entries' count, then the sorted position of its first entry there.
+  c.list_cell.resize(lists * cells);
+  // Pass 2: the entries, their cells and the counts.
+  pool_->parallel_for(parts, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t p = begin; p < end; ++p) {
+      std::uint32_t* counts = c.list_cell.data() + p * cells;
+      std::uint32_t* image_counts = periodic ? c.list_cell.data() + (parts + p) * cells : nullptr;
+      std::fill(counts, counts + cells, 0u);
+      if (periodic) std::fill(image_counts, image_counts + cells, 0u);
+      std::size_t e = list[p].first;
+      std::size_t image = periodic ? list[parts + p].first : 0;
+      const auto place = [&](std::size_t at, std::uint32_t i, double x, std::uint32_t* count) {
+        const auto cx = std::min(static_cast<std::int64_t>((x - x0) * c.inv_cell), c.nx - 1);
+        const auto cy = std::min(static_cast<std::int64_t>((py_[i] - y0) * c.inv_cell), c.ny - 1);
+        const auto k = static_cast<std::uint32_t>(cy * c.nx + cx);
+        c.entry_agent[at] = i;
+        c.entry_x[at] = x;
+        c.entry_cell[at] = k;
+        ++count[k];
+      };
+      for (std::size_t i = part_begin(p); i < part_begin(p + 1); ++i) {
+        if (!seen(i)) continue;
+        const auto agent = static_cast<std::uint32_t>(i);
+        place(e++, agent, px_[i], counts);
+        if (!periodic) continue;
+        if (near_low_end(px_[i])) {
+          place(image++, agent, px_[i] + length, image_counts);
+        } else if (near_high_end(px_[i])) {
+          place(image++, agent, px_[i] - length, image_counts);
+        }
+      }
     }
   });
-  for (std::size_t e = 0; e < entries; ++e) ++c.start[c.entry_cell[e] + 1];
-  for (std::size_t k = 0; k < cells; ++k) c.start[k + 1] += c.start[k];
-  c.order.resize(entries);
-  std::vector<std::uint32_t> fill(c.start.begin(), c.start.end() - 1);
-  for (std::size_t e = 0; e < entries; ++e) {
-    const std::uint32_t k = fill[c.entry_cell[e]]++;
-    c.order[k] = static_cast<std::uint32_t>(e);
-    if (e < active) c.cell_of[c.entry_agent[e]] = k;  // the agent's position in the sorted arrays
+  // Cell by cell, the lists in order: each entry's sorted position is its cell's start plus the
+  // entries of earlier lists there plus those before it in its own list.
+  c.start.resize(cells + 1);
+  std::uint32_t running = 0;
+  for (std::size_t k = 0; k < cells; ++k) {
+    c.start[k] = running;
+    for (std::size_t l = 0; l < lists; ++l) {
+      std::uint32_t& slot = c.list_cell[l * cells + k];
+      const std::uint32_t count = slot;
+      slot = running;
+      running += count;
+    }
   }
-  c.agents.reserve(active);
-  for (std::size_t k = 0; k < entries; ++k)
-    if (c.order[k] < active) c.agents.push_back(c.entry_agent[c.order[k]]);
+  c.start[cells] = running;
   // Three inert entries past the end (far away, never within the cut-off) so the vector gather
   // may read whole groups of four.
   c.x.resize(entries);
@@ -1118,28 +1216,40 @@ void CrowdSimulation::build_cells() {
   c.r.resize(entries);
   c.group.resize(entries);
   c.id.resize(entries);
-  pool_->parallel_for(entries, 1024, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const std::uint32_t e = c.order[k];
-      const std::uint32_t i = c.entry_agent[e];
-      c.x[k] = c.entry_x[e];
-      c.y[k] = py_[i];
-      c.vx[k] = vx_[i];
-      c.vy[k] = vy_[i];
-      c.fx[k] = static_cast<float>(c.x[k]);
-      c.fy[k] = static_cast<float>(c.y[k]);
-      c.fvx[k] = static_cast<float>(c.vx[k]);
-      c.fvy[k] = static_cast<float>(c.vy[k]);
-      c.r[k] = radius_[i];
-      c.group[k] = group_[i];
-      c.id[k] = i;
+  // Pass 3: each entry to its sorted position, with its copies.
+  pool_->parallel_for(lists, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t l = begin; l < end; ++l) {
+      std::uint32_t* next = c.list_cell.data() + l * cells;
+      for (std::size_t e = list[l].first; e < list[l].first + list[l].count; ++e) {
+        const std::uint32_t k = next[c.entry_cell[e]]++;
+        const std::uint32_t i = c.entry_agent[e];
+        c.order[k] = static_cast<std::uint32_t>(e);
+        if (e < active) c.cell_of[i] = k;  // the agent's position in the sorted arrays
+        if (!periodic) c.agents[k] = i;
+        const AgentInputs& in = inputs_[i];  // prepare_step's copy
+        c.x[k] = c.entry_x[e];
+        c.y[k] = in.y;
+        c.vx[k] = in.vx;
+        c.vy[k] = in.vy;
+        c.fx[k] = static_cast<float>(c.x[k]);
+        c.fy[k] = static_cast<float>(c.y[k]);
+        c.fvx[k] = static_cast<float>(c.vx[k]);
+        c.fvy[k] = static_cast<float>(c.vy[k]);
+        c.r[k] = in.r;
+        c.group[k] = in.group;
+        c.id[k] = i;
+      }
     }
   });
+  if (periodic) {  // the agents in sorted order, without the images
+    std::size_t a = 0;
+    for (std::size_t k = 0; k < entries; ++k)
+      if (c.order[k] < active) c.agents[a++] = c.entry_agent[c.order[k]];
+  }
 }
 
 inline CrowdSimulation::AgentInputs CrowdSimulation::inputs_of(std::uint32_t i) const {
-  return {px_[i], py_[i], vx_[i], vy_[i],    radius_[i], v0_[i],     vmax_[i],
-          gx_[i], gy_[i], gr_[i], group_[i], role_[i],   driven_[i], has_goal_[i]};
+  return inputs_[i];
 }
 
 namespace {

@@ -181,6 +181,7 @@ class CrowdSimulation {
     std::uint8_t driven, has_goal;
   };
   [[nodiscard]] AgentInputs inputs_of(std::uint32_t i) const;
+  std::vector<AgentInputs> inputs_;  // every agent's, copied by prepare_step
   // One agent's step: prepare_agent (walking direction, walls), the neighbour sums, finish_agent
   // (the other forces, the integration, the hard contact, the wall guard).
   template <class Neighbours>
@@ -233,8 +234,9 @@ class CrowdSimulation {
   std::vector<std::uint32_t> pressed_;  // agents with contacts (separate_bodies)
   // Per-agent parameters.
   std::vector<double> radius_, v0_, vmax_;
-  double max_radius_ = 0.0;  // largest radius of an active agent (set by prepare_step)
-  double max_vmax_ = 0.0;    // largest speed limit of an active agent (set by prepare_step)
+  double max_radius_ = 0.0;   // largest radius of an active agent (set by prepare_step)
+  double max_vmax_ = 0.0;     // largest speed limit of an active agent (set by prepare_step)
+  bool maxima_dirty_ = true;  // an agent's radius, speed limit or activity changed since
   std::vector<std::uint16_t> role_;
   std::vector<std::int32_t> group_;  // dense group index, -1 = alone
   std::vector<std::uint8_t> active_;
@@ -252,6 +254,11 @@ class CrowdSimulation {
   std::vector<std::int64_t> group_ids_;
   std::vector<double> group_cx_, group_cy_;
   std::vector<std::uint32_t> group_size_;
+  // Each group's members in agent order: group_members_[group_member_start_[g] .. [g + 1]),
+  // rebuilt by prepare_step when groups_dirty_.
+  std::vector<std::uint32_t> group_member_start_;
+  std::vector<std::uint32_t> group_members_;
+  bool groups_dirty_ = true;
 
   std::unique_ptr<CellIndex> cells_;
 };
