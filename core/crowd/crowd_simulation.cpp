@@ -117,11 +117,13 @@ struct CrowdSimulation::PairState {
     std::vector<Social> social;  // by sorted position
     std::vector<Sums> sums;      // by sorted position
     std::vector<Record> records;
-    // The records by agent (each thread sorts its own, in parallel): the contacts of the agent at
-    // sorted position k are contacts[contact_start[k] .. [k + 1]).
-    std::vector<std::uint32_t> contact_start;
-    std::vector<BodyContact> contacts;
+    // The records by block of kContactBlock sorted positions (each thread sorts its own, in
+    // parallel; stable): those of block b are sorted[block_start[b] .. [b + 1]).
+    std::vector<std::uint32_t> block_start;
+    std::vector<Record> sorted;
   };
+  static constexpr unsigned kContactShift = 7;  // blocks of 128 agents
+  static constexpr std::size_t kContactBlock = std::size_t{1} << kContactShift;
   std::vector<Thread> threads;
   // By sorted position: prepare_agent's results, the kernel's inputs of each agent (walking
   // direction, v·e, headway band; 0 for a driven one), the contact margin.
@@ -2038,23 +2040,42 @@ void CrowdSimulation::step_pairs() {
     if (b.count > 0) flush();
   });
 
-  // Each thread's contact records by agent, the threads in parallel.
+  // Each thread's contact records by block of agents (few: most agents touch no one), the
+  // threads in parallel.
+  const std::size_t blocks = (n >> PairState::kContactShift) + 1;
   pool_->parallel_for(ps.threads.size(), 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t th = begin; th < end; ++th) {
       PairState::Thread& t = ps.threads[th];
-      std::vector<std::uint32_t>& start = t.contact_start;
-      start.assign(n + 1, 0);
-      for (const PairState::Record& r : t.records) ++start[r.to + 1];
-      for (std::size_t k = 0; k < n; ++k) start[k + 1] += start[k];
-      t.contacts.resize(start[n]);
-      for (const PairState::Record& r : t.records) t.contacts[start[r.to]++] = r.contact;  // to the run's end
-      for (std::size_t k = n; k > 0; --k) start[k] = start[k - 1];  // back to its start
+      std::vector<std::uint32_t>& start = t.block_start;
+      start.assign(blocks + 1, 0);
+      for (const PairState::Record& r : t.records) ++start[(r.to >> PairState::kContactShift) + 1];
+      for (std::size_t b = 0; b < blocks; ++b) start[b + 1] += start[b];
+      t.sorted.resize(start[blocks]);
+      for (const PairState::Record& r : t.records) t.sorted[start[r.to >> PairState::kContactShift]++] = r;
+      for (std::size_t b = blocks; b > 0; --b) start[b] = start[b - 1];  // back to each block's start
       start[0] = 0;
     }
   });
 
-  pool_->parallel_for(n, 128, [&](std::size_t begin, std::size_t end) {
+  pool_->parallel_for(n, PairState::kContactBlock, [&](std::size_t begin, std::size_t end) {
     thread_local std::vector<BodyContact> contacts;
+    // This range's contacts by agent (threads in order, each thread's records in order): those of
+    // the agent at k are range[at[k − begin] .. [k − begin + 1]).
+    thread_local std::vector<BodyContact> range;
+    thread_local std::vector<std::uint32_t> at;
+    at.assign(end - begin + 1, 0);
+    const auto each_record = [&](const auto& visit) {
+      for (const PairState::Thread& t : ps.threads)
+        for (std::size_t b = begin >> PairState::kContactShift; b <= (end - 1) >> PairState::kContactShift; ++b)
+          for (std::uint32_t q = t.block_start[b]; q < t.block_start[b + 1]; ++q)
+            if (t.sorted[q].to >= begin && t.sorted[q].to < end) visit(t.sorted[q]);
+    };
+    each_record([&](const PairState::Record& r) { ++at[r.to - begin + 1]; });
+    for (std::size_t a = 0; a + 1 < at.size(); ++a) at[a + 1] += at[a];
+    range.resize(at.back());
+    each_record([&](const PairState::Record& r) { range[at[r.to - begin]++] = r.contact; });
+    for (std::size_t a = at.size() - 1; a > 0; --a) at[a] = at[a - 1];  // back to each agent's start
+    at[0] = 0;
     for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t i = c.agents[k];
       const AgentInputs in = inputs_of(i);
@@ -2083,10 +2104,7 @@ void CrowdSimulation::step_pairs() {
       totals.repulsion = {FixedSum::to_double(s.repulsion_x), FixedSum::to_double(s.repulsion_y)};
       totals.body = {FixedSum::to_double(s.body_x), FixedSum::to_double(s.body_y)};
       // As NeighbourSums keeps them: by agent id, the lowest kMaxContacts.
-      contacts.clear();
-      for (const PairState::Thread& t : ps.threads)
-        contacts.insert(contacts.end(), t.contacts.begin() + t.contact_start[k],
-                        t.contacts.begin() + t.contact_start[k + 1]);
+      contacts.assign(range.begin() + at[k - begin], range.begin() + at[k - begin + 1]);
       // By id (each neighbour once): an insertion sort, as the lists are short (std::sort's order).
       for (std::size_t a = 1; a < contacts.size(); ++a) {
         const BodyContact next = contacts[a];
