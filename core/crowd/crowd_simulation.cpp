@@ -933,10 +933,7 @@ void CrowdSimulation::prepare_step() {
   if (config_.hard_contact) {
     contact_ids_.resize(size() * kStoredContacts);
     contact_count_.assign(size(), 0);
-    spx_.resize(size());
-    spy_.resize(size());
-    moved_.resize(size());
-    moved_next_.resize(size());
+    moved_.resize(size(), 0);
   }
   // Every agent's inputs to its step in one record (the passes over the agents in the cells'
   // order read one or two cache lines of an agent instead of one of each of 14 arrays).
@@ -1665,29 +1662,27 @@ void CrowdSimulation::separate_bodies() {
   // others is resolved over several passes (each halves what is left where one side cannot
   // move). Whether a pass moved anyone is an OR over per-agent results that do not depend on
   // the order or the thread count, so the number of passes is deterministic too.
-  // A pass after the first skips an agent when neither it nor any of its contacts moved in the
-  // pass before: everything it would read is unchanged, so it would not move now either (same
-  // result, without the work; in a large crowd most agents are not pressed against anyone).
-  // Only an agent with contacts can move at all: the first pass visits every agent and lists
-  // those (pressed_); the later ones visit only them. The others keep the same position in both
-  // buffers (the first pass copies every agent) and moved_ 0 in both (cleared once below).
-  std::mutex pressed_mutex;
+  // Only an agent with contacts can move at all (pressed_, in agent order); a pass computes their
+  // new positions into shift_ and writes them back after all of them read theirs. A pass after
+  // the first skips an agent when neither it nor any of its contacts moved in the pass before:
+  // everything it would read is unchanged, so it would not move now either (same result, without
+  // the work; in a large crowd most agents are not pressed against anyone). moved_ is 0 for every
+  // agent outside the passes.
   pressed_.clear();
+  for (std::size_t i = 0; i < size(); ++i)
+    if (contact_count_[i] != 0 && active_[i] && driven_[i] == kNotDriven)
+      pressed_.push_back(static_cast<std::uint32_t>(i));
+  const std::size_t count = pressed_.size();
+  if (count == 0) return;
+  shift_.resize(count);
   for (int pass = 0; pass < kSeparationPasses; ++pass) {
     std::atomic<bool> moved{false};
-    const std::size_t count = pass == 0 ? size() : pressed_.size();
-    if (pass == 1) std::fill(moved_next_.begin(), moved_next_.end(), 0);
     pool_->parallel_for(count, 256, [&](std::size_t begin, std::size_t end) {
       bool any = false;
-      thread_local std::vector<std::uint32_t> pressed;
-      pressed.clear();
       for (std::size_t at = begin; at < end; ++at) {
-        const std::size_t i = pass == 0 ? at : pressed_[at];
-        spx_[i] = npx_[i];
-        spy_[i] = npy_[i];
-        moved_next_[i] = 0;
-        if (!active_[i] || driven_[i] != kNotDriven || contact_count_[i] == 0) continue;
-        if (pass == 0) pressed.push_back(static_cast<std::uint32_t>(i));
+        const std::size_t i = pressed_[at];
+        Shift& out = shift_[at];
+        out = {npx_[i], npy_[i], 0};
         if (pass > 0 && moved_[i] == 0) {
           bool stirred = false;
           for (std::size_t k = 0; k < contact_count_[i] && !stirred; ++k)
@@ -1726,22 +1721,20 @@ void CrowdSimulation::separate_bodies() {
             keep_off_walls({npx_[i], npy_[i]}, {npx_[i] + cx, npy_[i] + cy}, radius_[i], near, walls_);
         const Vec2 next = guard_move(from, to, near, walls_);
         const bool shifted = !(next.x == npx_[i] && next.y == npy_[i]);
-        moved_next_[i] = shifted ? 1 : 0;
         any = any || shifted;
-        spx_[i] = next.x;
-        spy_[i] = next.y;
+        out = {next.x, next.y, static_cast<std::uint8_t>(shifted ? 1 : 0)};
       }
       if (any) moved.store(true, std::memory_order_relaxed);
-      if (!pressed.empty()) {
-        const std::lock_guard lock(pressed_mutex);
-        pressed_.insert(pressed_.end(), pressed.begin(), pressed.end());
-      }
     });
-    npx_.swap(spx_);
-    npy_.swap(spy_);
-    moved_.swap(moved_next_);
+    for (std::size_t at = 0; at < count; ++at) {  // every read of this pass done: write back
+      const std::uint32_t i = pressed_[at];
+      npx_[i] = shift_[at].x;
+      npy_[i] = shift_[at].y;
+      moved_[i] = shift_[at].moved;
+    }
     if (!moved.load(std::memory_order_relaxed)) break;
   }
+  for (const std::uint32_t i : pressed_) moved_[i] = 0;
 }
 
 void CrowdSimulation::finish_step() {
@@ -2066,7 +2059,8 @@ void CrowdSimulation::step_pairs() {
     at.assign(end - begin + 1, 0);
     const auto each_record = [&](const auto& visit) {
       for (const PairState::Thread& t : ps.threads)
-        for (std::size_t b = begin >> PairState::kContactShift; b <= (end - 1) >> PairState::kContactShift; ++b)
+        for (std::size_t b = begin >> PairState::kContactShift; b <= (end - 1) >> PairState::kContactShift;
+             ++b)
           for (std::uint32_t q = t.block_start[b]; q < t.block_start[b + 1]; ++q)
             if (t.sorted[q].to >= begin && t.sorted[q].to < end) visit(t.sorted[q]);
     };

@@ -227,11 +227,15 @@ class CrowdSimulation {
   static constexpr int kSeparationPasses = 8;  // at most, per step (see separate_bodies())
   std::vector<std::uint32_t> contact_ids_;
   std::vector<std::uint8_t> contact_count_;
-  std::vector<double> spx_, spy_;  // positions after separate_bodies()
   // Per agent, whether the last separation pass moved it (the next pass re-examines only agents
   // that moved or have a contact that did: for the others nothing it reads has changed).
-  std::vector<std::uint8_t> moved_, moved_next_;
+  std::vector<std::uint8_t> moved_;
   std::vector<std::uint32_t> pressed_;  // agents with contacts (separate_bodies)
+  struct Shift {
+    double x, y;  // the position a separation pass gives pressed_[k]
+    std::uint8_t moved;
+  };
+  std::vector<Shift> shift_;
   // Per-agent parameters.
   std::vector<double> radius_, v0_, vmax_;
   double max_radius_ = 0.0;   // largest radius of an active agent (set by prepare_step)
