@@ -50,6 +50,7 @@ struct CrowdSimulation::CellIndex {
   std::vector<float> fx, fy, fvx, fvy;
   std::vector<std::int32_t> group;
   std::vector<std::uint32_t> id;
+  std::vector<AgentInputs> inputs;  // the entries' agents' inputs (step_pairs: no images)
 };
 
 struct CrowdSimulation::Images {
@@ -1213,6 +1214,7 @@ void CrowdSimulation::build_cells() {
     c.fvx[k] = c.fvy[k] = 0.0f;
   }
   c.r.resize(entries);
+  c.inputs.resize(entries);
   c.group.resize(entries);
   c.id.resize(entries);
   // Pass 3: each entry to its sorted position, with its copies.
@@ -1226,6 +1228,7 @@ void CrowdSimulation::build_cells() {
         if (e < active) c.cell_of[i] = k;  // the agent's position in the sorted arrays
         if (!periodic) c.agents[k] = i;
         const AgentInputs& in = inputs_[i];  // prepare_step's copy
+        c.inputs[k] = in;
         c.x[k] = c.entry_x[e];
         c.y[k] = in.y;
         c.vx[k] = in.vx;
@@ -1838,7 +1841,7 @@ void CrowdSimulation::step_pairs() {
 
   pool_->parallel_for(n, 256, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      const AgentInputs in = inputs_of(c.agents[k]);
+      const AgentInputs& in = c.inputs[k];
       for (PairState::Thread& t : ps.threads) {
         t.social[k] = {0, 0, 0, no_cap};
         t.sums[k] = {0, 0, 0, 0};
@@ -2072,7 +2075,7 @@ void CrowdSimulation::step_pairs() {
     at[0] = 0;
     for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t i = c.agents[k];
-      const AgentInputs in = inputs_of(i);
+      const AgentInputs& in = c.inputs[k];
       if (in.driven != kNotDriven) {
         hold_driven(i, in, nullptr);
         continue;
