@@ -712,10 +712,7 @@ Result<AgentId> CrowdSimulation::add_agent(const AgentSpec& spec) {
   vy_.push_back(vy);
   yaw_.push_back(spec.yaw ? wrap_angle(*spec.yaw) : (vx * vx + vy * vy > kTiny2 ? std::atan2(vy, vx) : 0.0));
   omega_.push_back(0.0);
-  npx_.push_back(0.0);
-  npy_.push_back(0.0);
-  nvx_.push_back(0.0);
-  nvy_.push_back(0.0);
+  next_.push_back({0.0, 0.0, 0.0, 0.0});
   radius_.push_back(spec.radius ? *spec.radius : role.radius);
   v0_.push_back(v0);
   vmax_.push_back(vmax);
@@ -1326,10 +1323,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, cons
 
 void CrowdSimulation::hold_driven(std::uint32_t i, const AgentInputs& in, ForceBreakdown* breakdown) {
   if (breakdown != nullptr) *breakdown = ForceBreakdown{};
-  npx_[i] = in.x;
-  npy_[i] = in.y;
-  nvx_[i] = in.vx;
-  nvy_[i] = in.vy;
+  next_[i] = {in.x, in.y, in.vx, in.vy};
   if (config_.hard_contact) contact_count_[i] = 0;
 }
 
@@ -1633,10 +1627,7 @@ void CrowdSimulation::finish_agent(std::uint32_t i, const AgentInputs& in, const
     nvx = 0.0;
     nvy = 0.0;
   }
-  npx_[i] = next.x;
-  npy_[i] = next.y;
-  nvx_[i] = nvx;
-  nvy_[i] = nvy;
+  next_[i] = {next.x, next.y, nvx, nvy};
   if (config_.hard_contact) {
     // The kStoredContacts nearest (smallest gap, then lowest id), kept in id order: in a pile-up
     // the bodies that can overlap are the near ones, not the lowest ids.
@@ -1660,7 +1651,7 @@ void CrowdSimulation::separate_bodies() {
   constexpr double kTolerance = 0.01;  // m of overlap left alone (the body force handles it)
   constexpr double kMaxShift = 0.05;   // m per pass
   const double length = config_.periodic_length;
-  // Jacobi passes, each from the positions the previous one left (npx_/npy_), until a pass moves
+  // Jacobi passes, each from the positions the previous one left (next_), until a pass moves
   // no one or kSeparationPasses are done. A body pinned against a wall or squeezed between
   // others is resolved over several passes (each halves what is left where one side cannot
   // move). Whether a pass moved anyone is an OR over per-agent results that do not depend on
@@ -1685,7 +1676,9 @@ void CrowdSimulation::separate_bodies() {
       for (std::size_t at = begin; at < end; ++at) {
         const std::size_t i = pressed_[at];
         Shift& out = shift_[at];
-        out = {npx_[i], npy_[i], 0};
+        const double nx = next_[i].x;
+        const double ny = next_[i].y;
+        out = {nx, ny, 0};
         if (pass > 0 && moved_[i] == 0) {
           bool stirred = false;
           for (std::size_t k = 0; k < contact_count_[i] && !stirred; ++k)
@@ -1696,9 +1689,9 @@ void CrowdSimulation::separate_bodies() {
         double cy = 0.0;
         for (std::size_t k = 0; k < contact_count_[i]; ++k) {
           const std::uint32_t j = contact_ids_[i * kStoredContacts + k];
-          double dx = npx_[j] - npx_[i];
+          double dx = next_[j].x - nx;
           if (length > 0.0) dx -= length * std::round(dx / length);  // the nearest image
-          const double dy = npy_[j] - npy_[i];
+          const double dy = next_[j].y - ny;
           const double d2 = dx * dx + dy * dy;
           const double reach = radius_[i] + radius_[j] - kTolerance;
           if (d2 >= reach * reach) continue;
@@ -1720,10 +1713,9 @@ void CrowdSimulation::separate_bodies() {
         // crowd behind it (the partner takes the rest in the next passes).
         const Vec2 from{px_[i], py_[i]};
         const std::span<const std::uint32_t> near = wall_grid_.near(from.x, from.y);
-        const Vec2 to =
-            keep_off_walls({npx_[i], npy_[i]}, {npx_[i] + cx, npy_[i] + cy}, radius_[i], near, walls_);
+        const Vec2 to = keep_off_walls({nx, ny}, {nx + cx, ny + cy}, radius_[i], near, walls_);
         const Vec2 next = guard_move(from, to, near, walls_);
-        const bool shifted = !(next.x == npx_[i] && next.y == npy_[i]);
+        const bool shifted = !(next.x == nx && next.y == ny);
         any = any || shifted;
         out = {next.x, next.y, static_cast<std::uint8_t>(shifted ? 1 : 0)};
       }
@@ -1731,8 +1723,8 @@ void CrowdSimulation::separate_bodies() {
     });
     for (std::size_t at = 0; at < count; ++at) {  // every read of this pass done: write back
       const std::uint32_t i = pressed_[at];
-      npx_[i] = shift_[at].x;
-      npy_[i] = shift_[at].y;
+      next_[i].x = shift_[at].x;
+      next_[i].y = shift_[at].y;
       moved_[i] = shift_[at].moved;
     }
     if (!moved.load(std::memory_order_relaxed)) break;
@@ -1748,14 +1740,22 @@ void CrowdSimulation::finish_step() {
     // not move are not used).
     constexpr std::size_t kBlock = 256;
     double heading[kBlock];
+    double block_vx[kBlock];
+    double block_vy[kBlock];
     for (std::size_t i = begin; i < end; ++i) {
-      if ((i - begin) % kBlock == 0)
-        fast_atan2_batch(nvy_.data() + i, nvx_.data() + i, heading, std::min(kBlock, end - i));
+      if ((i - begin) % kBlock == 0) {
+        const std::size_t count = std::min(kBlock, end - i);
+        for (std::size_t b = 0; b < count; ++b) {
+          block_vx[b] = next_[i + b].vx;
+          block_vy[b] = next_[i + b].vy;
+        }
+        fast_atan2_batch(block_vy, block_vx, heading, count);
+      }
       if (!active_[i] || driven_[i] != kNotDriven) continue;
-      px_[i] = wrap_x(npx_[i]);
-      py_[i] = npy_[i];
-      vx_[i] = nvx_[i];
-      vy_[i] = nvy_[i];
+      px_[i] = wrap_x(next_[i].x);
+      py_[i] = next_[i].y;
+      vx_[i] = next_[i].vx;
+      vy_[i] = next_[i].vy;
       if (vx_[i] * vx_[i] + vy_[i] * vy_[i] > 1e-12) {
         const double yaw = heading[(i - begin) % kBlock];  // fast_atan2(vy_[i], vx_[i])
         omega_[i] = wrap_angle(yaw - yaw_[i]) / dt;

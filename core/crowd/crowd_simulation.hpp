@@ -220,7 +220,11 @@ class CrowdSimulation {
 
   // Frozen state (read during a step) and the next state (written by it).
   std::vector<double> px_, py_, vx_, vy_, yaw_, omega_;
-  std::vector<double> npx_, npy_, nvx_, nvy_;
+  // The next state of each agent in one record (written in the cells' order: one cache line).
+  struct alignas(32) NextState {
+    double x, y, vx, vy;
+  };
+  std::vector<NextState> next_;
   // Per agent, the ids (ascending) of the neighbours it could touch in this step, for
   // separate_bodies(): up to kStoredContacts at index i·kStoredContacts, count in contact_count_.
   static constexpr std::size_t kStoredContacts = 16;
