@@ -1214,6 +1214,7 @@ void CrowdSimulation::build_cells() {
   c.inputs.resize(entries);
   c.group.resize(entries);
   c.id.resize(entries);
+  const bool pairs = pairs_once();
   // Pass 3: each entry to its sorted position, with its copies.
   pool_->parallel_for(lists, 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t l = begin; l < end; ++l) {
@@ -1226,16 +1227,18 @@ void CrowdSimulation::build_cells() {
         if (!periodic) c.agents[k] = i;
         const AgentInputs& in = inputs_[i];  // prepare_step's copy
         c.inputs[k] = in;
-        c.x[k] = c.entry_x[e];
-        c.y[k] = in.y;
-        c.vx[k] = in.vx;
-        c.vy[k] = in.vy;
-        c.fx[k] = static_cast<float>(c.x[k]);
-        c.fy[k] = static_cast<float>(c.y[k]);
-        c.fvx[k] = static_cast<float>(c.vx[k]);
-        c.fvy[k] = static_cast<float>(c.vy[k]);
-        c.r[k] = in.r;
-        c.group[k] = in.group;
+        c.fx[k] = static_cast<float>(c.entry_x[e]);
+        c.fy[k] = static_cast<float>(in.y);
+        c.fvx[k] = static_cast<float>(in.vx);
+        c.fvy[k] = static_cast<float>(in.vy);
+        if (!pairs) {  // the scan agent by agent reads these; step_pairs reads c.inputs
+          c.x[k] = c.entry_x[e];
+          c.y[k] = in.y;
+          c.vx[k] = in.vx;
+          c.vy[k] = in.vy;
+          c.r[k] = in.r;
+          c.group[k] = in.group;
+        }
         c.id[k] = i;
       }
     }
@@ -1910,7 +1913,7 @@ void CrowdSimulation::step_pairs() {
     const auto contact = [&](std::uint32_t to, std::uint32_t self, std::uint32_t other, double dx, double dy,
                              double d2, double reach, std::size_t from) {
       const Separation sep = separation(dx, dy, d2, self, other);
-      t.records.push_back({to, {other, sep.x, sep.y, sep.d - reach, c.vx[from], c.vy[from]}});
+      t.records.push_back({to, {other, sep.x, sep.y, sep.d - reach, c.inputs[from].vx, c.inputs[from].vy}});
     };
     const auto flush = [&] {
       // Pairs that may touch: contacts, group repulsion and the body force, on both sides (as
@@ -1922,7 +1925,9 @@ void CrowdSimulation::step_pairs() {
         const double fdx = l.dx[m];
         const double fdy = l.dy[m];
         const double d2 = fdx * fdx + fdy * fdy;
-        const double reach = c.r[ki] + c.r[kj];
+        const AgentInputs& in_i = c.inputs[ki];
+        const AgentInputs& in_j = c.inputs[kj];
+        const double reach = in_i.r + in_j.r;
         const std::uint32_t id_i = c.id[ki];
         const std::uint32_t id_j = c.id[kj];
         const double mi = ps.margin[ki];
@@ -1938,16 +1943,16 @@ void CrowdSimulation::step_pairs() {
           l.tie_y[m] = static_cast<float>(u.y);
           b.tied = true;
         }
-        const bool same_group = c.group[ki] >= 0 && c.group[kj] == c.group[ki];
+        const bool same_group = in_i.group >= 0 && in_j.group == in_i.group;
         const auto add = [](PairState::Sums& sum, const TouchTerms& terms) {
           sum.repulsion_x += terms.repulsion_x;
           sum.repulsion_y += terms.repulsion_y;
           sum.body_x += terms.body_x;
           sum.body_y += terms.body_y;
         };
-        add(t.sums[ki], touch_terms(c.x[kj] - c.x[ki], c.y[kj] - c.y[ki], d2, reach, same_group, repulsion,
+        add(t.sums[ki], touch_terms(in_j.x - in_i.x, in_j.y - in_i.y, d2, reach, same_group, repulsion,
                                     stiffness, id_i, id_j));
-        add(t.sums[kj], touch_terms(c.x[ki] - c.x[kj], c.y[ki] - c.y[kj], d2, reach, same_group, repulsion,
+        add(t.sums[kj], touch_terms(in_i.x - in_j.x, in_i.y - in_j.y, d2, reach, same_group, repulsion,
                                     stiffness, id_j, id_i));
       }
       const int padded = (b.count + granule - 1) / granule * granule;
@@ -1996,9 +2001,9 @@ void CrowdSimulation::step_pairs() {
     };
     for (std::size_t k = begin; k < end; ++k) {
       const auto self = static_cast<std::uint32_t>(k);
-      const double px = c.x[k];
-      const double py = c.y[k];
-      const double close = c.r[k] + max_radius_ + widest_margin;
+      const double px = c.inputs[k].x;
+      const double py = c.inputs[k].y;
+      const double close = c.inputs[k].r + max_radius_ + widest_margin;
       const GatherQuery q{
           c.fx.data(), c.fy.data(), c.fvx.data(), c.fvy.data(), c.fx[k], c.fy[k], c.fvx[k], c.fvy[k], cutoff2,
           // As NeighbourSums' (widened: the other side's margin may be the larger).
