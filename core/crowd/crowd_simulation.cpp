@@ -40,9 +40,10 @@ struct CrowdSimulation::CellIndex {
   };
   std::vector<Part> parts;
   std::vector<std::uint32_t> list_cell;  // per list and cell: a count, then a sorted position
-  std::vector<std::uint32_t> order;      // sorted position -> entry
+  std::vector<std::uint32_t> order;      // sorted position -> entry (periodic boundary only)
   std::vector<std::uint32_t> agents;     // the active agents in sorted order (no images)
-  // Agent index -> sorted position of its own entry (kNoCell when inactive).
+  // For the scan agent by agent only (step_pairs reads `inputs`): agent index -> sorted position
+  // of its own entry (kNoCell when inactive), and the entries' state in double precision.
   std::vector<std::uint32_t> cell_of;
   std::vector<double> x, y, vx, vy, r;
   // The same positions and velocities in single precision, for the gather (kGatherSlack inert
@@ -1073,6 +1074,7 @@ void CrowdSimulation::build_cells() {
   const std::size_t per_part = (n + parts - 1) / std::max<std::size_t>(parts, 1);
   const auto part_begin = [&](std::size_t p) { return std::min(n, p * per_part); };
   const bool periodic = length > 0.0;
+  const bool pairs = pairs_once();  // step_pairs reads neither cell_of nor the double copies
   const std::size_t lists = periodic ? 2 * parts : parts;  // agents' parts, then images' parts
   c.cell_of.resize(n);
   c.parts.assign(lists, CellIndex::Part{});
@@ -1085,7 +1087,7 @@ void CrowdSimulation::build_cells() {
       std::size_t count = 0;
       std::size_t images = 0;
       for (std::size_t i = part_begin(p); i < part_begin(p + 1); ++i) {
-        c.cell_of[i] = kNoCell;
+        if (!pairs) c.cell_of[i] = kNoCell;
         if (!seen(i)) continue;
         ++count;
         const double x = px_[i];
@@ -1214,7 +1216,6 @@ void CrowdSimulation::build_cells() {
   c.inputs.resize(entries);
   c.group.resize(entries);
   c.id.resize(entries);
-  const bool pairs = pairs_once();
   // Pass 3: each entry to its sorted position, with its copies.
   pool_->parallel_for(lists, 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t l = begin; l < end; ++l) {
@@ -1222,8 +1223,8 @@ void CrowdSimulation::build_cells() {
       for (std::size_t e = list[l].first; e < list[l].first + list[l].count; ++e) {
         const std::uint32_t k = next[c.entry_cell[e]]++;
         const std::uint32_t i = c.entry_agent[e];
-        c.order[k] = static_cast<std::uint32_t>(e);
-        if (e < active) c.cell_of[i] = k;  // the agent's position in the sorted arrays
+        if (periodic) c.order[k] = static_cast<std::uint32_t>(e);
+        if (!pairs && e < active) c.cell_of[i] = k;  // the agent's position in the sorted arrays
         if (!periodic) c.agents[k] = i;
         const AgentInputs& in = inputs_[i];  // prepare_step's copy
         c.inputs[k] = in;
