@@ -49,7 +49,7 @@ struct CrowdSimulation::CellIndex {
   // The same positions and velocities in single precision, for the gather (kGatherSlack inert
   // entries past the end: far away, never within the cut-off).
   std::vector<float> fx, fy, fvx, fvy;
-  std::vector<std::int32_t> group;
+  std::vector<std::int32_t> group;  // (the scan agent by agent only)
   std::vector<std::uint32_t> id;
   std::vector<AgentInputs> inputs;  // the entries' agents' inputs (step_pairs: no images)
 };
