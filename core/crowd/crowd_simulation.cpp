@@ -1725,12 +1725,14 @@ void CrowdSimulation::separate_bodies() {
       }
       if (any) moved.store(true, std::memory_order_relaxed);
     });
-    for (std::size_t at = 0; at < count; ++at) {  // every read of this pass done: write back
-      const std::uint32_t i = pressed_[at];
-      next_[i].x = shift_[at].x;
-      next_[i].y = shift_[at].y;
-      moved_[i] = shift_[at].moved;
-    }
+    pool_->parallel_for(count, 2048, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t at = begin; at < end; ++at) {  // every read of this pass done: write back
+        const std::uint32_t i = pressed_[at];
+        next_[i].x = shift_[at].x;
+        next_[i].y = shift_[at].y;
+        moved_[i] = shift_[at].moved;
+      }
+    });
     if (!moved.load(std::memory_order_relaxed)) break;
   }
   for (const std::uint32_t i : pressed_) moved_[i] = 0;
