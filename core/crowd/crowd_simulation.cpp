@@ -936,12 +936,6 @@ void CrowdSimulation::prepare_step() {
   }
   // Every agent's inputs to its step in one record (the passes over the agents in the cells'
   // order read one or two cache lines of an agent instead of one of each of 14 arrays).
-  inputs_.resize(size());
-  pool_->parallel_for(size(), 2048, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      inputs_[i] = {px_[i], py_[i], vx_[i], vy_[i],    radius_[i], v0_[i],     vmax_[i],
-                    gx_[i], gy_[i], gr_[i], group_[i], role_[i],   driven_[i], has_goal_[i]};
-  });
   // Each group's members in agent order (counting sort by group), rebuilt when one changed.
   const std::size_t groups = group_size_.size();
   if (groups_dirty_) {
@@ -1226,7 +1220,7 @@ void CrowdSimulation::build_cells() {
         if (periodic) c.order[k] = static_cast<std::uint32_t>(e);
         if (!pairs && e < active) c.cell_of[i] = k;  // the agent's position in the sorted arrays
         if (!periodic) c.agents[k] = i;
-        const AgentInputs& in = inputs_[i];  // prepare_step's copy
+        const AgentInputs in = inputs_of(i);
         c.inputs[k] = in;
         c.fx[k] = static_cast<float>(c.entry_x[e]);
         c.fy[k] = static_cast<float>(in.y);
@@ -1252,7 +1246,8 @@ void CrowdSimulation::build_cells() {
 }
 
 inline CrowdSimulation::AgentInputs CrowdSimulation::inputs_of(std::uint32_t i) const {
-  return inputs_[i];
+  return {px_[i], py_[i], vx_[i], vy_[i],    radius_[i], v0_[i],     vmax_[i],
+          gx_[i], gy_[i], gr_[i], group_[i], role_[i],   driven_[i], has_goal_[i]};
 }
 
 namespace {

@@ -172,8 +172,9 @@ class CrowdSimulation {
   [[nodiscard]] bool near_low_end(double x) const;
   [[nodiscard]] bool near_high_end(double x) const;
   [[nodiscard]] double wrap_x(double x) const;
-  // What advance_agent reads of agent i itself, in one place (inputs_of: read where it is used;
-  // a per-step copy in the cells' order cost more than it saved).
+  // What advance_agent reads of agent i itself, in one place (inputs_of). step_pairs reads them
+  // from the cell index's copy in the cells' order (CellIndex::inputs, gathered where the index
+  // is built: passes in that order then read them in order, not one random record an agent).
   struct AgentInputs {
     double x, y, vx, vy, r, v0, vmax, gx, gy, gr;
     std::int32_t group;
@@ -181,7 +182,6 @@ class CrowdSimulation {
     std::uint8_t driven, has_goal;
   };
   [[nodiscard]] AgentInputs inputs_of(std::uint32_t i) const;
-  std::vector<AgentInputs> inputs_;  // every agent's, copied by prepare_step
   // One agent's step: prepare_agent (walking direction, walls), the neighbour sums, finish_agent
   // (the other forces, the integration, the hard contact, the wall guard).
   template <class Neighbours>
