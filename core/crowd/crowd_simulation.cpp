@@ -51,7 +51,7 @@ struct CrowdSimulation::CellIndex {
   std::vector<float> fx, fy, fvx, fvy;
   std::vector<std::int32_t> group;  // (the scan agent by agent only)
   std::vector<std::uint32_t> id;
-  std::vector<AgentInputs> inputs;  // the entries' agents' inputs (step_pairs: no images)
+  LargeVector<AgentInputs> inputs;  // the entries' agents' inputs (step_pairs: no images)
 };
 
 struct CrowdSimulation::Images {
@@ -116,21 +116,21 @@ struct CrowdSimulation::PairState {
     BodyContact contact;
   };
   struct Thread {
-    std::vector<Social> social;  // by sorted position
-    std::vector<Sums> sums;      // by sorted position
-    std::vector<Record> records;
+    LargeVector<Social> social;  // by sorted position
+    LargeVector<Sums> sums;      // by sorted position
+    LargeVector<Record> records;
     // The records by block of kContactBlock sorted positions (each thread sorts its own, in
     // parallel; stable): those of block b are sorted[block_start[b] .. [b + 1]).
     std::vector<std::uint32_t> block_start;
-    std::vector<Record> sorted;
+    LargeVector<Record> sorted;
   };
   static constexpr unsigned kContactShift = 7;  // blocks of 128 agents
   static constexpr std::size_t kContactBlock = std::size_t{1} << kContactShift;
   std::vector<Thread> threads;
   // By sorted position: prepare_agent's results, the kernel's inputs of each agent (walking
   // direction, v·e, headway band; 0 for a driven one), the contact margin.
-  std::vector<AgentPrep> prep;
-  std::vector<float> heading;  // 4 per agent: ex, ey, along, band (fill_pair_sides)
+  LargeVector<AgentPrep> prep;
+  LargeVector<float> heading;  // 4 per agent: ex, ey, along, band (fill_pair_sides)
   std::vector<double> margin;
 };
 

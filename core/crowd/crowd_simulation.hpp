@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/common/error.hpp"
+#include "core/crowd/large_pages.hpp"
 #include "core/crowd/pedestrian_state.hpp"
 #include "core/crowd/role_parameters.hpp"
 #include "core/crowd/wall_grid.hpp"
@@ -224,12 +225,12 @@ class CrowdSimulation {
   struct alignas(32) NextState {
     double x, y, vx, vy;
   };
-  std::vector<NextState> next_;
+  LargeVector<NextState> next_;
   // Per agent, the ids (ascending) of the neighbours it could touch in this step, for
   // separate_bodies(): up to kStoredContacts at index i·kStoredContacts, count in contact_count_.
   static constexpr std::size_t kStoredContacts = 16;
   static constexpr int kSeparationPasses = 8;  // at most, per step (see separate_bodies())
-  std::vector<std::uint32_t> contact_ids_;
+  LargeVector<std::uint32_t> contact_ids_;
   std::vector<std::uint8_t> contact_count_;
   // Per agent, whether the last separation pass moved it (the next pass re-examines only agents
   // that moved or have a contact that did: for the others nothing it reads has changed).
