@@ -102,30 +102,56 @@ struct CrowdSimulation::NeighbourTotals {
 // The pair step's scratch (step_pairs), kept between steps.
 struct CrowdSimulation::PairState {
   // One agent's sums from the pairs a thread computed (integers: exact, in any order): the social
-  // force, side pushes and headway caps, which every pair adds to (32 bytes, no branch), apart
-  // from the touching-pair terms, which only pairs in contact add to.
+  // force, side pushes and headway caps, which every pair adds to (32 bytes, no branch).
   struct Social {
     std::int64_t x, y, side_push;
     std::int32_t cap;  // the bits of the smallest headway cap (those of +inf: none)
   };
+  // The touching-pair terms, which only the few pairs in touch add to: kept as records rather
+  // than as an array over all agents that would be emptied and read whole each step.
   struct Sums {
     std::int64_t repulsion_x, repulsion_y, body_x, body_y;
+  };
+  struct Touch {
+    std::uint32_t to;  // the sorted position of the agent the terms belong to
+    Sums terms;
   };
   struct Record {
     std::uint32_t to;  // the sorted position of the agent the contact belongs to
     BodyContact contact;
   };
-  struct Thread {
-    LargeVector<Social> social;  // by sorted position
-    LargeVector<Sums> sums;      // by sorted position
-    LargeVector<Record> records;
-    // The records by block of kContactBlock sorted positions (each thread sorts its own, in
-    // parallel; stable): those of block b are sorted[block_start[b] .. [b + 1]).
-    std::vector<std::uint32_t> block_start;
-    LargeVector<Record> sorted;
-  };
   static constexpr unsigned kContactShift = 7;  // blocks of 128 agents
   static constexpr std::size_t kContactBlock = std::size_t{1} << kContactShift;
+  // One thread's records of one kind, then the same by block of kContactBlock sorted positions
+  // (each thread sorts its own, in parallel; stable): those of block b are
+  // sorted[start[b] .. [b + 1]).
+  template <class R>
+  struct Bucketed {
+    LargeVector<R> records;
+    std::vector<std::uint32_t> start;
+    LargeVector<R> sorted;
+    void sort(std::size_t blocks) {
+      start.assign(blocks + 1, 0);
+      for (const R& r : records) ++start[(r.to >> kContactShift) + 1];
+      for (std::size_t b = 0; b < blocks; ++b) start[b + 1] += start[b];
+      sorted.resize(start[blocks]);
+      for (const R& r : records) sorted[start[r.to >> kContactShift]++] = r;
+      for (std::size_t b = blocks; b > 0; --b) start[b] = start[b - 1];  // back to each block's start
+      start[0] = 0;
+    }
+    // Each record for the positions [begin, end), in order.
+    template <class Visit>
+    void each(std::size_t begin, std::size_t end, const Visit& visit) const {
+      for (std::size_t b = begin >> kContactShift; b <= (end - 1) >> kContactShift; ++b)
+        for (std::uint32_t q = start[b]; q < start[b + 1]; ++q)
+          if (sorted[q].to >= begin && sorted[q].to < end) visit(sorted[q]);
+    }
+  };
+  struct Thread {
+    LargeVector<Social> social;  // by sorted position
+    Bucketed<Record> contacts;
+    Bucketed<Touch> touches;
+  };
   std::vector<Thread> threads;
   // By sorted position: prepare_agent's results, the kernel's inputs of each agent (walking
   // direction, v·e, headway band; 0 for a driven one), the contact margin.
@@ -1832,8 +1858,8 @@ void CrowdSimulation::step_pairs() {
   ps.threads.resize(pool_->threads());
   for (PairState::Thread& t : ps.threads) {
     t.social.resize(n);
-    t.sums.resize(n);
-    t.records.clear();
+    t.contacts.records.clear();
+    t.touches.records.clear();
   }
   ps.prep.resize(n);
   ps.heading.resize(4 * n);
@@ -1845,7 +1871,6 @@ void CrowdSimulation::step_pairs() {
       const AgentInputs& in = c.inputs[k];
       for (PairState::Thread& t : ps.threads) {
         t.social[k] = {0, 0, 0, no_cap};
-        t.sums[k] = {0, 0, 0, 0};
       }
       ps.margin[k] = contact_margin(in);
       float* heading = ps.heading.data() + 4 * k;
@@ -1911,7 +1936,8 @@ void CrowdSimulation::step_pairs() {
     const auto contact = [&](std::uint32_t to, std::uint32_t self, std::uint32_t other, double dx, double dy,
                              double d2, double reach, std::size_t from) {
       const Separation sep = separation(dx, dy, d2, self, other);
-      t.records.push_back({to, {other, sep.x, sep.y, sep.d - reach, c.inputs[from].vx, c.inputs[from].vy}});
+      t.contacts.records.push_back(
+          {to, {other, sep.x, sep.y, sep.d - reach, c.inputs[from].vx, c.inputs[from].vy}});
     };
     const auto flush = [&] {
       // Pairs that may touch: contacts, group repulsion and the body force, on both sides (as
@@ -1942,16 +1968,14 @@ void CrowdSimulation::step_pairs() {
           b.tied = true;
         }
         const bool same_group = in_i.group >= 0 && in_j.group == in_i.group;
-        const auto add = [](PairState::Sums& sum, const TouchTerms& terms) {
-          sum.repulsion_x += terms.repulsion_x;
-          sum.repulsion_y += terms.repulsion_y;
-          sum.body_x += terms.body_x;
-          sum.body_y += terms.body_y;
+        const auto add = [&](std::uint32_t to, const TouchTerms& terms) {
+          t.touches.records.push_back(
+              {to, {terms.repulsion_x, terms.repulsion_y, terms.body_x, terms.body_y}});
         };
-        add(t.sums[ki], touch_terms(in_j.x - in_i.x, in_j.y - in_i.y, d2, reach, same_group, repulsion,
-                                    stiffness, id_i, id_j));
-        add(t.sums[kj], touch_terms(in_i.x - in_j.x, in_i.y - in_j.y, d2, reach, same_group, repulsion,
-                                    stiffness, id_j, id_i));
+        add(ki, touch_terms(in_j.x - in_i.x, in_j.y - in_i.y, d2, reach, same_group, repulsion, stiffness,
+                            id_i, id_j));
+        add(kj, touch_terms(in_i.x - in_j.x, in_i.y - in_j.y, d2, reach, same_group, repulsion, stiffness,
+                            id_j, id_i));
       }
       const int padded = (b.count + granule - 1) / granule * granule;
       for (int m = b.count; m < padded; ++m) {
@@ -2039,20 +2063,13 @@ void CrowdSimulation::step_pairs() {
     if (b.count > 0) flush();
   });
 
-  // Each thread's contact records by block of agents (few: most agents touch no one), the
-  // threads in parallel.
+  // Each thread's contact and touching-pair records by block of agents (few: most agents touch
+  // no one), the threads in parallel.
   const std::size_t blocks = (n >> PairState::kContactShift) + 1;
   pool_->parallel_for(ps.threads.size(), 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t th = begin; th < end; ++th) {
-      PairState::Thread& t = ps.threads[th];
-      std::vector<std::uint32_t>& start = t.block_start;
-      start.assign(blocks + 1, 0);
-      for (const PairState::Record& r : t.records) ++start[(r.to >> PairState::kContactShift) + 1];
-      for (std::size_t b = 0; b < blocks; ++b) start[b + 1] += start[b];
-      t.sorted.resize(start[blocks]);
-      for (const PairState::Record& r : t.records) t.sorted[start[r.to >> PairState::kContactShift]++] = r;
-      for (std::size_t b = blocks; b > 0; --b) start[b] = start[b - 1];  // back to each block's start
-      start[0] = 0;
+      ps.threads[th].contacts.sort(blocks);
+      ps.threads[th].touches.sort(blocks);
     }
   });
 
@@ -2062,14 +2079,22 @@ void CrowdSimulation::step_pairs() {
     // the agent at k are range[at[k − begin] .. [k − begin + 1]).
     thread_local std::vector<BodyContact> range;
     thread_local std::vector<std::uint32_t> at;
+    // and each agent's touching-pair terms, summed (integers: in any order).
+    thread_local std::vector<PairState::Sums> touch;
     at.assign(end - begin + 1, 0);
     const auto each_record = [&](const auto& visit) {
-      for (const PairState::Thread& t : ps.threads)
-        for (std::size_t b = begin >> PairState::kContactShift; b <= (end - 1) >> PairState::kContactShift;
-             ++b)
-          for (std::uint32_t q = t.block_start[b]; q < t.block_start[b + 1]; ++q)
-            if (t.sorted[q].to >= begin && t.sorted[q].to < end) visit(t.sorted[q]);
+      for (const PairState::Thread& t : ps.threads) t.contacts.each(begin, end, visit);
     };
+    touch.assign(end - begin, PairState::Sums{0, 0, 0, 0});
+    for (const PairState::Thread& t : ps.threads) {
+      t.touches.each(begin, end, [&](const PairState::Touch& r) {
+        PairState::Sums& s = touch[r.to - begin];
+        s.repulsion_x += r.terms.repulsion_x;
+        s.repulsion_y += r.terms.repulsion_y;
+        s.body_x += r.terms.body_x;
+        s.body_y += r.terms.body_y;
+      });
+    }
     each_record([&](const PairState::Record& r) { ++at[r.to - begin + 1]; });
     for (std::size_t a = 0; a + 1 < at.size(); ++a) at[a + 1] += at[a];
     range.resize(at.back());
@@ -2084,19 +2109,14 @@ void CrowdSimulation::step_pairs() {
         continue;
       }
       PairState::Social force = ps.threads[0].social[k];
-      PairState::Sums s = ps.threads[0].sums[k];
       for (std::size_t th = 1; th < ps.threads.size(); ++th) {
-        const PairState::Sums& o = ps.threads[th].sums[k];
         const PairState::Social& f = ps.threads[th].social[k];
         force.x += f.x;
         force.y += f.y;
         force.side_push += f.side_push;
         force.cap = std::min(force.cap, f.cap);
-        s.repulsion_x += o.repulsion_x;
-        s.repulsion_y += o.repulsion_y;
-        s.body_x += o.body_x;
-        s.body_y += o.body_y;
       }
+      const PairState::Sums& s = touch[k - begin];
       NeighbourTotals totals;
       totals.speed_cap = static_cast<double>(std::bit_cast<float>(force.cap));
       totals.social =
