@@ -334,6 +334,13 @@ Vec2 keep_off_walls(Vec2 cur, Vec2 to, double r, std::span<const std::uint32_t> 
 // either lies within r of the other.
 bool walk_clears(Vec2 p, Vec2 e, double len, Vec2 a, Vec2 b, double r) {
   const Vec2 q{p.x + e.x * len, p.y + e.y * len};
+  // Boxes farther apart than r (with 1e-9 m to spare for rounding) along x or y: every point of
+  // one segment is farther than r from every point of the other, so the exact test below would
+  // say the same (most walls near an agent are not on its way).
+  const double gap = r + 1e-9;
+  if (std::min(a.x, b.x) - std::max(p.x, q.x) > gap || std::min(p.x, q.x) - std::max(a.x, b.x) > gap ||
+      std::min(a.y, b.y) - std::max(p.y, q.y) > gap || std::min(p.y, q.y) - std::max(a.y, b.y) > gap)
+    return true;
   const double o1 = orient(a, b, p);
   const double o2 = orient(a, b, q);
   const double o3 = orient(p, q, a);
@@ -1329,7 +1336,7 @@ void CrowdSimulation::advance_agent(std::uint32_t i, const AgentInputs& in, cons
   const AgentPrep prep = prepare_agent(in);
   // Social, group-repulsion and body forces from neighbours within the cut-off.
   const ForceParameters& fp = roles_.at(in.role).forces;
-  thread_local std::vector<BodyContact> contacts;
+  thread_local std::vector<BodyContact> contacts;  // (finish_agent may reorder them)
   NeighbourTotals t;
   {
     NeighbourSums sums(i, in.x, in.y, in.vx, in.vy, in.r, in.group, config_.neighbor_cutoff, max_radius_, fp,
@@ -1514,7 +1521,7 @@ CrowdSimulation::AgentPrep CrowdSimulation::prepare_agent(const AgentInputs& in)
 }
 
 void CrowdSimulation::finish_agent(std::uint32_t i, const AgentInputs& in, const AgentPrep& prep,
-                                   const NeighbourTotals& t, std::vector<BodyContact>& contacts,
+                                   const NeighbourTotals& t, std::span<BodyContact> contacts,
                                    ForceBreakdown* breakdown) {
   const ForceParameters& fp = roles_.at(in.role).forces;
   const double x = in.x;
@@ -1662,7 +1669,7 @@ void CrowdSimulation::finish_agent(std::uint32_t i, const AgentInputs& in, const
       };
       const auto cut = contacts.begin() + static_cast<std::ptrdiff_t>(kStoredContacts);
       std::nth_element(contacts.begin(), cut, contacts.end(), nearer);
-      contacts.resize(kStoredContacts);
+      contacts = contacts.first(kStoredContacts);
       std::sort(contacts.begin(), contacts.end(),
                 [](const BodyContact& a, const BodyContact& b) { return a.who < b.who; });
     }
@@ -1977,8 +1984,10 @@ void CrowdSimulation::step_pairs() {
         add(kj, touch_terms(in_i.x - in_j.x, in_i.y - in_j.y, d2, reach, same_group, repulsion, stiffness,
                             id_j, id_i));
       }
+      // The lanes past the last pair (up to the kernel's width) inert: a fixed kLaneSlack of
+      // them, in whole vectors (a loop to `padded` became twelve calls to memset per batch).
       const int padded = (b.count + granule - 1) / granule * granule;
-      for (int m = b.count; m < padded; ++m) {
+      for (int m = b.count; m < b.count + kLaneSlack; ++m) {
         l.dx[m] = l.dy[m] = l.dvx[m] = l.dvy[m] = 0.0f;
         l.ex_i[m] = l.ey_i[m] = l.along_i[m] = l.band_i[m] = 0.0f;
         l.ex_j[m] = l.ey_j[m] = l.along_j[m] = l.band_j[m] = 0.0f;
@@ -2074,7 +2083,6 @@ void CrowdSimulation::step_pairs() {
   });
 
   pool_->parallel_for(n, PairState::kContactBlock, [&](std::size_t begin, std::size_t end) {
-    thread_local std::vector<BodyContact> contacts;
     // This range's contacts by agent (threads in order, each thread's records in order): those of
     // the agent at k are range[at[k − begin] .. [k − begin + 1]).
     thread_local std::vector<BodyContact> range;
@@ -2123,8 +2131,9 @@ void CrowdSimulation::step_pairs() {
           social_total(force.x, force.y, force.side_push, ps.heading[4 * k], ps.heading[4 * k + 1]);
       totals.repulsion = {FixedSum::to_double(s.repulsion_x), FixedSum::to_double(s.repulsion_y)};
       totals.body = {FixedSum::to_double(s.body_x), FixedSum::to_double(s.body_y)};
-      // As NeighbourSums keeps them: by agent id, the lowest kMaxContacts.
-      contacts.assign(range.begin() + at[k - begin], range.begin() + at[k - begin + 1]);
+      // As NeighbourSums keeps them: by agent id, the lowest kMaxContacts (sorted where they are
+      // in `range`, which finish_agent may reorder: each agent's own part only).
+      std::span<BodyContact> contacts(range.data() + at[k - begin], at[k - begin + 1] - at[k - begin]);
       // By id (each neighbour once): an insertion sort, as the lists are short (std::sort's order).
       for (std::size_t a = 1; a < contacts.size(); ++a) {
         const BodyContact next = contacts[a];
@@ -2132,7 +2141,8 @@ void CrowdSimulation::step_pairs() {
         for (; b > 0 && next.who < contacts[b - 1].who; --b) contacts[b] = contacts[b - 1];
         contacts[b] = next;
       }
-      if (contacts.size() > NeighbourSums::kMaxContacts) contacts.resize(NeighbourSums::kMaxContacts);
+      if (contacts.size() > NeighbourSums::kMaxContacts)
+        contacts = contacts.first(NeighbourSums::kMaxContacts);
       finish_agent(i, in, ps.prep[k], totals, contacts, nullptr);
     }
   });

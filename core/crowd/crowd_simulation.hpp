@@ -192,7 +192,7 @@ class CrowdSimulation {
   struct NeighbourTotals;
   [[nodiscard]] AgentPrep prepare_agent(const AgentInputs& in) const;
   void finish_agent(std::uint32_t i, const AgentInputs& in, const AgentPrep& prep, const NeighbourTotals& t,
-                    std::vector<BodyContact>& contacts, ForceBreakdown* breakdown);
+                    std::span<BodyContact> contacts, ForceBreakdown* breakdown);
   void hold_driven(std::uint32_t i, const AgentInputs& in, ForceBreakdown* breakdown);
   [[nodiscard]] double contact_margin(const AgentInputs& in) const;
   // Each pair once (social_kernel.hpp, pair_kernel): step() does so when pairs_once() holds — no

@@ -120,24 +120,26 @@ BatchTotals social_kernel_with_ahead(const SocialParams& p, const AheadParams* a
 // so the step computes each pair (i, j) once, from whichever of the two comes first in the grid's
 // order, and gives j the negated force; the headway cap and side push are not antisymmetric and
 // are computed for both from the same loads. Lanes may belong to different agents i.
+inline constexpr int kLaneSlack = 16;  // the widest kernel's lanes (pair_kernel_lanes())
 struct PairLanes {
   // Inputs: the offset x_j − x_i, the relative velocity v_i − v_j, the tie direction (as PairBatch),
-  // and for each side its walking direction ((0, 0) without a goal), v·e and headway band (8
-  // lanes to spare: core/crowd/neighbour_gather.hpp fills them 8 at a time).
-  alignas(32) float dx[kBatch];
-  alignas(32) float dy[kBatch];
-  alignas(32) float dvx[kBatch];
-  alignas(32) float dvy[kBatch];
+  // and for each side its walking direction ((0, 0) without a goal), v·e and headway band
+  // (kLaneSlack lanes to spare: core/crowd/neighbour_gather.hpp fills them 8 at a time, and the
+  // lanes past the last pair up to the kernel's width are zeroed a whole vector at a time).
+  alignas(32) float dx[kBatch + kLaneSlack];
+  alignas(32) float dy[kBatch + kLaneSlack];
+  alignas(32) float dvx[kBatch + kLaneSlack];
+  alignas(32) float dvy[kBatch + kLaneSlack];
   alignas(32) float tie_x[kBatch];
   alignas(32) float tie_y[kBatch];
-  alignas(32) float ex_i[kBatch + 8];
-  alignas(32) float ey_i[kBatch + 8];
-  alignas(32) float along_i[kBatch + 8];
-  alignas(32) float band_i[kBatch + 8];
-  alignas(32) float ex_j[kBatch + 8];
-  alignas(32) float ey_j[kBatch + 8];
-  alignas(32) float along_j[kBatch + 8];
-  alignas(32) float band_j[kBatch + 8];
+  alignas(32) float ex_i[kBatch + kLaneSlack];
+  alignas(32) float ey_i[kBatch + kLaneSlack];
+  alignas(32) float along_i[kBatch + kLaneSlack];
+  alignas(32) float band_i[kBatch + kLaneSlack];
+  alignas(32) float ex_j[kBatch + kLaneSlack];
+  alignas(32) float ey_j[kBatch + kLaneSlack];
+  alignas(32) float along_j[kBatch + kLaneSlack];
+  alignas(32) float band_j[kBatch + kLaneSlack];
   // Outputs: the social force on i (units of 2^-20 m/s²; j gets minus it), and for each side the
   // headway cap as the bits of a non-negative float (INT32_MAX where j is not ahead of i in the
   // band) and the side push (as oncoming_side_push: along that side's right-hand direction).
