@@ -154,10 +154,10 @@ struct CrowdSimulation::PairState {
   };
   std::vector<Thread> threads;
   // By sorted position: prepare_agent's results, the kernel's inputs of each agent (walking
-  // direction, v·e, headway band; 0 for a driven one), the contact margin.
+  // direction, v·e, headway band; 0 for a driven one). (The contact margin is recomputed from
+  // the inputs the close pairs read anyway: an array of its own cost a load from another line.)
   LargeVector<AgentPrep> prep;
   LargeVector<float> heading;  // 4 per agent: ex, ey, along, band (fill_pair_sides)
-  std::vector<double> margin;
 };
 
 namespace {
@@ -1870,7 +1870,6 @@ void CrowdSimulation::step_pairs() {
   }
   ps.prep.resize(n);
   ps.heading.resize(4 * n);
-  ps.margin.resize(n);
   const std::int32_t no_cap = std::bit_cast<std::int32_t>(std::numeric_limits<float>::infinity());
 
   pool_->parallel_for(n, 256, [&](std::size_t begin, std::size_t end) {
@@ -1879,7 +1878,6 @@ void CrowdSimulation::step_pairs() {
       for (PairState::Thread& t : ps.threads) {
         t.social[k] = {0, 0, 0, no_cap};
       }
-      ps.margin[k] = contact_margin(in);
       float* heading = ps.heading.data() + 4 * k;
       if (in.driven != kNotDriven) {  // its own sums are not used
         std::fill(heading, heading + 4, 0.0f);
@@ -1961,8 +1959,8 @@ void CrowdSimulation::step_pairs() {
         const double reach = in_i.r + in_j.r;
         const std::uint32_t id_i = c.id[ki];
         const std::uint32_t id_j = c.id[kj];
-        const double mi = ps.margin[ki];
-        const double mj = ps.margin[kj];
+        const double mi = contact_margin(in_i);
+        const double mj = contact_margin(in_j);
         if (mi > 0.0 && d2 < (reach + mi) * (reach + mi)) contact(ki, id_i, id_j, fdx, fdy, d2, reach, kj);
         if (mj > 0.0 && d2 < (reach + mj) * (reach + mj)) contact(kj, id_j, id_i, -fdx, -fdy, d2, reach, ki);
         if (d2 >= reach * reach) continue;
