@@ -1911,7 +1911,9 @@ void CrowdSimulation::step_pairs() {
   const double repulsion = fp.group_repulsion_factor;
   const double stiffness = config_.body_stiffness;
   const auto readable = static_cast<std::uint32_t>(c.fx.size());
-  const int granule = pair_kernel_lanes();
+  const int granule = pair_kernel_lanes();  // at most kLaneSlack: the pad lanes stay in the arrays
+  // fill_pair_sides writes kFillSlack lanes past the batch's pairs into PairLanes' side arrays.
+  static_assert(kLaneSlack >= kFillSlack);
   const RowHalves halves = row_halves(config_.neighbor_cutoff + 1e-9, c.cell);
 
   // Chunks of 64 agents: about 60 µs each, so the threads finish close together.
