@@ -116,9 +116,12 @@ struct CrowdSimulation::PairState {
     std::uint32_t to;  // the sorted position of the agent the terms belong to
     Sums terms;
   };
+  // A contact: the sorted positions of the agent it belongs to and of the neighbour. Its
+  // direction, gap and the neighbour's velocity are computed where it is used (step_pairs' last
+  // pass) from the same inputs the close pair read: 8 bytes to write and sort instead of 56.
   struct Record {
-    std::uint32_t to;  // the sorted position of the agent the contact belongs to
-    BodyContact contact;
+    std::uint32_t to;
+    std::uint32_t other;
   };
   static constexpr unsigned kContactShift = 7;  // blocks of 128 agents
   static constexpr std::size_t kContactBlock = std::size_t{1} << kContactShift;
@@ -1940,12 +1943,6 @@ void CrowdSimulation::step_pairs() {
     Batch& b = batch;
     PairLanes& l = b.lanes;
     const SideLanes sides{l.ex_i, l.ey_i, l.along_i, l.band_i, l.ex_j, l.ey_j, l.along_j, l.band_j, b.owner};
-    const auto contact = [&](std::uint32_t to, std::uint32_t self, std::uint32_t other, double dx, double dy,
-                             double d2, double reach, std::size_t from) {
-      const Separation sep = separation(dx, dy, d2, self, other);
-      t.contacts.records.push_back(
-          {to, {other, sep.x, sep.y, sep.d - reach, c.inputs[from].vx, c.inputs[from].vy}});
-    };
     const auto flush = [&] {
       // Pairs that may touch: contacts, group repulsion and the body force, on both sides (as
       // NeighbourSums::flush does for each).
@@ -1959,13 +1956,13 @@ void CrowdSimulation::step_pairs() {
         const AgentInputs& in_i = c.inputs[ki];
         const AgentInputs& in_j = c.inputs[kj];
         const double reach = in_i.r + in_j.r;
-        const std::uint32_t id_i = c.id[ki];
-        const std::uint32_t id_j = c.id[kj];
         const double mi = contact_margin(in_i);
         const double mj = contact_margin(in_j);
-        if (mi > 0.0 && d2 < (reach + mi) * (reach + mi)) contact(ki, id_i, id_j, fdx, fdy, d2, reach, kj);
-        if (mj > 0.0 && d2 < (reach + mj) * (reach + mj)) contact(kj, id_j, id_i, -fdx, -fdy, d2, reach, ki);
+        if (mi > 0.0 && d2 < (reach + mi) * (reach + mi)) t.contacts.records.push_back({ki, kj});
+        if (mj > 0.0 && d2 < (reach + mj) * (reach + mj)) t.contacts.records.push_back({kj, ki});
         if (d2 >= reach * reach) continue;
+        const std::uint32_t id_i = c.id[ki];
+        const std::uint32_t id_j = c.id[kj];
         if (d2 <= kTiny2) {  // coincident: part along the pair's fixed direction
           const Vec2 u = tie_break_direction(id_i, id_j);
           l.dx[m] = 0.0f;
@@ -2106,7 +2103,20 @@ void CrowdSimulation::step_pairs() {
     each_record([&](const PairState::Record& r) { ++at[r.to - begin + 1]; });
     for (std::size_t a = 0; a + 1 < at.size(); ++a) at[a + 1] += at[a];
     range.resize(at.back());
-    each_record([&](const PairState::Record& r) { range[at[r.to - begin]++] = r.contact; });
+    // Each contact as the close pair saw it: the offset from the single-precision positions the
+    // gather compared (x_other − x_self rounds to minus x_self − x_other: either side's record
+    // gives its own direction), the distance in double from it, the bodies' reach, and the
+    // neighbour's frozen velocity.
+    each_record([&](const PairState::Record& r) {
+      const double dx = c.fx[r.other] - c.fx[r.to];
+      const double dy = c.fy[r.other] - c.fy[r.to];
+      const double d2 = dx * dx + dy * dy;
+      const AgentInputs& other = c.inputs[r.other];
+      const double reach = c.inputs[r.to].r + other.r;
+      const std::uint32_t who = c.id[r.other];
+      const Separation sep = separation(dx, dy, d2, c.id[r.to], who);
+      range[at[r.to - begin]++] = {who, sep.x, sep.y, sep.d - reach, other.vx, other.vy};
+    });
     for (std::size_t a = at.size() - 1; a > 0; --a) at[a] = at[a - 1];  // back to each agent's start
     at[0] = 0;
     for (std::size_t k = begin; k < end; ++k) {
