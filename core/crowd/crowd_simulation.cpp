@@ -1425,8 +1425,17 @@ CrowdSimulation::AgentPrep CrowdSimulation::prepare_agent(const AgentInputs& in)
     const double zr2 = fp.zipper_reach * fp.zipper_reach;
     double side_x = 0.0;  // the pushes of walls' insides, summed apart
     double side_y = 0.0;
+    // A wall whose bounding box is farther than √skip2 is beyond the cut-off and beyond both
+    // distances finish_agent compares wall_d2 with — one step's reach, r + dt·kMaxAgentSpeed, and
+    // one step's move, less than wall_cutoff (validated) — so its exact distance (a division)
+    // would change nothing: skipped. The 2 % covers rounding, even at the 10^6 m coordinate bound.
+    const double reach = r + config_.dt * kMaxAgentSpeed;
+    const double skip2 = std::max(wc2, reach * reach) * 1.02 + 1e-9;
     for (std::uint32_t w : near_walls) {
       const WallSegment& s = walls_[w];
+      const double box_x = std::max({std::min(s.a.x, s.b.x) - x, x - std::max(s.a.x, s.b.x), 0.0});
+      const double box_y = std::max({std::min(s.a.y, s.b.y) - y, y - std::max(s.a.y, s.b.y), 0.0});
+      if (box_x * box_x + box_y * box_y > skip2) continue;
       const double ux = s.b.x - s.a.x;
       const double uy = s.b.y - s.a.y;
       const double len2 = ux * ux + uy * uy;
