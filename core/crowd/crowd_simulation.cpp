@@ -967,7 +967,10 @@ void CrowdSimulation::prepare_step() {
   }
   if (config_.hard_contact) {
     contact_ids_.resize(size() * kStoredContacts);
-    contact_count_.assign(size(), 0);
+    // Not emptied: the step writes the count of every agent separate_bodies() reads one of
+    // (active and not driven), and emptying 10,000 counts the other thread had just written cost
+    // 10–20 µs of serial time a step.
+    contact_count_.resize(size(), 0);
     moved_.resize(size(), 0);
   }
   // Every agent's inputs to its step in one record (the passes over the agents in the cells'
@@ -1709,11 +1712,17 @@ void CrowdSimulation::separate_bodies() {
   // everything it would read is unchanged, so it would not move now either (same result, without
   // the work; in a large crowd most agents are not pressed against anyone). moved_ is 0 for every
   // agent outside the passes.
-  pressed_.clear();
-  for (std::size_t i = 0; i < size(); ++i)
-    if (contact_count_[i] != 0 && active_[i] && driven_[i] == kNotDriven)
-      pressed_.push_back(static_cast<std::uint32_t>(i));
-  const std::size_t count = pressed_.size();
+  // Without a branch (written at every agent, kept where pressed): about two thirds of a dense
+  // crowd is pressed, in no pattern, and the branch's mispredictions made this serial loop take
+  // 45–52 µs a step for 10,000 agents.
+  pressed_.resize(size());
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < size(); ++i) {
+    pressed_[count] = static_cast<std::uint32_t>(i);
+    count +=
+        static_cast<std::size_t>((contact_count_[i] != 0) & (active_[i] != 0) & (driven_[i] == kNotDriven));
+  }
+  pressed_.resize(count);
   if (count == 0) return;
   shift_.resize(count);
   for (int pass = 0; pass < kSeparationPasses; ++pass) {
