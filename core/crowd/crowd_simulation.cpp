@@ -1260,8 +1260,8 @@ void CrowdSimulation::build_cells() {
         c.inputs[k] = in;
         c.id[k] = i;
         // step_pairs fills the single-precision copies and c.agents from c.inputs and c.id in its
-        // first pass, in sorted order: here each would be one more scattered write per agent
-        // (with two threads, this pass took 340 µs of a 4.5 ms step with seven of them).
+        // first pass, which reads the inputs in sorted order anyway (≈ 1.5 % less time per step
+        // than writing all seven arrays here).
         if (pairs) continue;  // (no periodic boundary: entries = agents)
         if (periodic) c.order[k] = static_cast<std::uint32_t>(e);
         if (e < active) c.cell_of[i] = k;  // the agent's position in the sorted arrays
@@ -1719,8 +1719,8 @@ void CrowdSimulation::separate_bodies() {
   std::size_t count = 0;
   for (std::size_t i = 0; i < size(); ++i) {
     pressed_[count] = static_cast<std::uint32_t>(i);
-    count +=
-        static_cast<std::size_t>((contact_count_[i] != 0) & (active_[i] != 0) & (driven_[i] == kNotDriven));
+    count += static_cast<unsigned>(contact_count_[i] != 0) & static_cast<unsigned>(active_[i] != 0) &
+             static_cast<unsigned>(driven_[i] == kNotDriven);
   }
   pressed_.resize(count);
   if (count == 0) return;
