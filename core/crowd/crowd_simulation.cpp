@@ -1881,9 +1881,8 @@ bool CrowdSimulation::pairs_once() const {
 // upwards — through pair_kernel, the results added to both agents' sums in the running thread's
 // own arrays; (3) the sums of all threads and finish_agent.
 void CrowdSimulation::step_pairs() {
-  const CellIndex& c = *cells_;
+  CellIndex& c = *cells_;                 // read only, except the sorted copies the first pass fills
   const std::size_t n = c.agents.size();  // no periodic images here: entries = agents
-  CellIndex& cells = *cells_;             // (p1 below fills its sorted copies)
   if (n == 0) return;
   if (!pairs_) pairs_ = std::make_unique<PairState>();
   PairState& ps = *pairs_;
@@ -1901,11 +1900,11 @@ void CrowdSimulation::step_pairs() {
     for (std::size_t k = begin; k < end; ++k) {
       const AgentInputs& in = c.inputs[k];
       // The sorted copies build_cells leaves to this pass (sequential writes here).
-      cells.agents[k] = c.id[k];
-      cells.fx[k] = static_cast<float>(in.x);
-      cells.fy[k] = static_cast<float>(in.y);
-      cells.fvx[k] = static_cast<float>(in.vx);
-      cells.fvy[k] = static_cast<float>(in.vy);
+      c.agents[k] = c.id[k];
+      c.fx[k] = static_cast<float>(in.x);
+      c.fy[k] = static_cast<float>(in.y);
+      c.fvx[k] = static_cast<float>(in.vx);
+      c.fvy[k] = static_cast<float>(in.vy);
       for (PairState::Thread& t : ps.threads) {
         t.social[k] = {0, 0, 0, no_cap};
       }

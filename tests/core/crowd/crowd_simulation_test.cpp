@@ -652,5 +652,35 @@ TEST(CrowdSimulation, GoalsAreVisitedInOrderAndInactiveAgentsFreeze) {
   EXPECT_EQ(sim.position(frozen), (Vec2{10, 10}));
 }
 
+// An agent pressed by others (within touching reach: it has contacts) that leaves the crowd —
+// deactivated, as after an exit — stays exactly where it was, and the others walk through its
+// place: its contact list from the step before is never used again (the step does not empty the
+// counts every step).
+TEST(CrowdSimulation, APressedAgentTakenOutStaysFrozenAndStopsBlocking) {
+  CrowdSimulation sim = make();
+  const AgentId blocker = add(sim, {0, 0}, {}, 0.0);  // desired speed 0: stands
+  std::vector<AgentId> queue;
+  for (int k = 1; k <= 4; ++k) {
+    queue.push_back(add(sim, {-0.5 * k, 0.0}, {1, 0}));
+    ASSERT_TRUE(sim.set_goal(queue.back(), Goal{{6, 0}, 0.3}));
+  }
+  for (int k = 0; k < 6; ++k) sim.step();
+  const auto gap = [&](AgentId a) {
+    return std::hypot(sim.position(a).x - sim.position(blocker).x,
+                      sim.position(a).y - sim.position(blocker).y);
+  };
+  ASSERT_LT(gap(queue[0]), 0.6);  // the first of the queue is touching the blocker (0.46 m)
+  const Vec2 held = sim.position(blocker);
+  ASSERT_TRUE(sim.set_active(blocker, false));
+  double closest = gap(queue[0]);
+  for (int k = 0; k < 200; ++k) {
+    sim.step();
+    closest = std::min(closest, gap(queue[0]));
+  }
+  EXPECT_EQ(sim.position(blocker), held);
+  EXPECT_LT(closest, 0.2);  // walked through its place: nothing kept it apart
+  for (const AgentId a : queue) EXPECT_GT(sim.position(a).x, 3.0) << "agent " << a.value();
+}
+
 }  // namespace
 }  // namespace socsim::crowd
