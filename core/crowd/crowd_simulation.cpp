@@ -151,11 +151,16 @@ struct CrowdSimulation::PairState {
     }
   };
   struct Thread {
-    LargeVector<Social> social;  // by sorted position
+    // By sorted position: emptied by the thread itself when it takes its first range of the
+    // pairs (so the lines it adds to are in its own cache, not the other core's), and read only
+    // when `round` is the step's (a thread that took no range has stale sums).
+    LargeVector<Social> social;
+    std::uint64_t round = 0;
     Bucketed<Record> contacts;
     Bucketed<Touch> touches;
   };
   std::vector<Thread> threads;
+  std::uint64_t round = 0;  // step_pairs' calls
   // By sorted position: prepare_agent's results, the kernel's inputs of each agent (walking
   // direction, v·e, headway band; 0 for a driven one). (The contact margin is recomputed from
   // the inputs the close pairs read anyway: an array of its own cost a load from another line.)
@@ -1892,6 +1897,7 @@ void CrowdSimulation::step_pairs() {
     t.contacts.records.clear();
     t.touches.records.clear();
   }
+  ++ps.round;
   ps.prep.resize(n);
   ps.heading.resize(4 * n);
   const std::int32_t no_cap = std::bit_cast<std::int32_t>(std::numeric_limits<float>::infinity());
@@ -1905,9 +1911,6 @@ void CrowdSimulation::step_pairs() {
       c.fy[k] = static_cast<float>(in.y);
       c.fvx[k] = static_cast<float>(in.vx);
       c.fvy[k] = static_cast<float>(in.vy);
-      for (PairState::Thread& t : ps.threads) {
-        t.social[k] = {0, 0, 0, no_cap};
-      }
       float* heading = ps.heading.data() + 4 * k;
       if (in.driven != kNotDriven) {  // its own sums are not used
         std::fill(heading, heading + 4, 0.0f);
@@ -1949,6 +1952,10 @@ void CrowdSimulation::step_pairs() {
   // Chunks of 64 agents: about 60 µs each, so the threads finish close together.
   pool_->parallel_for(n, 64, [&](std::size_t begin, std::size_t end) {
     PairState::Thread& t = ps.threads[WorkerPool::current_thread()];
+    if (t.round != ps.round) {
+      std::fill(t.social.begin(), t.social.end(), PairState::Social{0, 0, 0, no_cap});
+      t.round = ps.round;
+    }
     struct Batch {
       PairLanes lanes;
       std::uint32_t owner[kBatch + kFillSlack];
@@ -2098,6 +2105,10 @@ void CrowdSimulation::step_pairs() {
 
   // Each thread's contact and touching-pair records by block of agents (few: most agents touch
   // no one), the threads in parallel.
+  // The sums of the threads that took some range of the pairs (at least one did).
+  std::vector<const PairState::Social*> sums;
+  for (const PairState::Thread& t : ps.threads)
+    if (t.round == ps.round) sums.push_back(t.social.data());
   const std::size_t blocks = (n >> PairState::kContactShift) + 1;
   pool_->parallel_for(ps.threads.size(), 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t th = begin; th < end; ++th) {
@@ -2153,9 +2164,9 @@ void CrowdSimulation::step_pairs() {
         hold_driven(i, in, nullptr);
         continue;
       }
-      PairState::Social force = ps.threads[0].social[k];
-      for (std::size_t th = 1; th < ps.threads.size(); ++th) {
-        const PairState::Social& f = ps.threads[th].social[k];
+      PairState::Social force = sums[0][k];
+      for (std::size_t th = 1; th < sums.size(); ++th) {
+        const PairState::Social& f = sums[th][k];
         force.x += f.x;
         force.y += f.y;
         force.side_push += f.side_push;
