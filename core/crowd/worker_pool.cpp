@@ -55,7 +55,7 @@ thread_local unsigned t_thread_index = 0;  // set once by each worker
 
 }  // namespace
 
-WorkerPool::WorkerPool(unsigned threads) {
+WorkerPool::WorkerPool(unsigned threads) : parts_(std::max(threads, 1u)) {
   const unsigned extra = threads > 1 ? threads - 1 : 0;
   workers_.reserve(extra);
   for (unsigned i = 0; i < extra; ++i)
@@ -78,16 +78,20 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : workers_) t.join();
 }
 
-void WorkerPool::drain() {
-  for (;;) {
-    const std::size_t begin = next_.fetch_add(chunk_, std::memory_order_relaxed);
-    if (begin >= count_) return;
-    const std::size_t end = std::min(count_, begin + chunk_);
-    try {
-      (*fn_)(begin, end);
-    } catch (...) {
-      std::lock_guard lock(mutex_);
-      if (!error_) error_ = std::current_exception();
+void WorkerPool::drain(unsigned self) {
+  const auto n = static_cast<unsigned>(parts_.size());
+  for (unsigned k = 0; k < n; ++k) {
+    Part& part = parts_[(self + k) % n];
+    for (;;) {
+      const std::size_t begin = part.next.fetch_add(chunk_, std::memory_order_relaxed);
+      if (begin >= part.end) break;
+      const std::size_t end = std::min(part.end, begin + chunk_);
+      try {
+        (*fn_)(begin, end);
+      } catch (...) {
+        std::lock_guard lock(mutex_);
+        if (!error_) error_ = std::current_exception();
+      }
     }
   }
 }
@@ -104,7 +108,7 @@ void WorkerPool::worker_loop() {
       if (stop_) return;
       seen = generation_;
     }
-    drain();
+    drain(t_thread_index);
     if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
       std::lock_guard lock(mutex_);  // the caller checks busy_ under the mutex before it sleeps
       done_cv_.notify_one();
@@ -124,13 +128,19 @@ void WorkerPool::parallel_for(std::size_t count, std::size_t chunk, const RangeF
     fn_ = &fn;
     count_ = count;
     chunk_ = chunk;
-    next_.store(0, std::memory_order_relaxed);
+    // Parts of whole chunks (the last part takes the rest).
+    const std::size_t chunks = (count + chunk - 1) / chunk;
+    const auto n = parts_.size();
+    for (std::size_t p = 0; p < n; ++p) {
+      parts_[p].next.store(std::min(count, chunks * p / n * chunk), std::memory_order_relaxed);
+      parts_[p].end = std::min(count, chunks * (p + 1) / n * chunk);
+    }
     error_ = nullptr;
     busy_ = static_cast<unsigned>(workers_.size());
     ++generation_;
   }
   start_cv_.notify_all();
-  drain();
+  drain(0);
   spin_until([&] { return busy_.load(std::memory_order_acquire) == 0; });
   std::exception_ptr error;
   {

@@ -26,14 +26,15 @@ class WorkerPool {
   // Inside fn: which of this pool's threads runs it, 0 .. threads() − 1 (0: the caller's).
   [[nodiscard]] static unsigned current_thread();
 
-  // Calls fn on disjoint ranges covering [0, count), each at most `chunk` long. Which thread
-  // runs which range varies; callers must make each index's work independent of the others.
+  // Calls fn on disjoint ranges covering [0, count), each at most `chunk` long (one call for all
+  // of it when the pool has one thread or count <= chunk). Which thread runs which range varies;
+  // callers must make each index's work independent of the others.
   // An exception thrown by fn is rethrown here after all ranges finished.
   void parallel_for(std::size_t count, std::size_t chunk, const RangeFn& fn);
 
  private:
   void worker_loop();
-  void drain();
+  void drain(unsigned self);
 
   std::vector<std::thread> workers_;
   std::mutex mutex_;
@@ -47,7 +48,14 @@ class WorkerPool {
   const RangeFn* fn_ = nullptr;
   std::size_t count_ = 0;
   std::size_t chunk_ = 1;
-  std::atomic<std::size_t> next_{0};
+  // Thread t takes chunks from its own part of [0, count) first (part t of threads(), so the same
+  // thread runs the same indices in consecutive loops over the same agents, and their data stays
+  // in its core's cache), then from the other parts (so no thread waits while chunks are left).
+  struct alignas(64) Part {
+    std::atomic<std::size_t> next{0};
+    std::size_t end = 0;
+  };
+  std::vector<Part> parts_;
   std::exception_ptr error_;
 };
 

@@ -13,10 +13,13 @@ TEST(WorkerPool, CoversEveryIndexOnceForAnyThreadCount) {
   for (unsigned threads : {1u, 2u, 4u}) {
     WorkerPool pool(threads);
     EXPECT_EQ(pool.threads(), threads);
-    for (std::size_t count : {0u, 1u, 7u, 1000u, 12345u}) {
+    // (130 and 200: fewer chunks of 64 than threads have parts, and a last chunk cut short.)
+    for (std::size_t count : {0u, 1u, 7u, 130u, 200u, 1000u, 12345u}) {
       std::vector<std::atomic<int>> hits(count);
       for (int round = 0; round < 3; ++round) {
         pool.parallel_for(count, 64, [&](std::size_t b, std::size_t e) {
+          ASSERT_LT(b, e);
+          ASSERT_TRUE(e - b <= 64u || (b == 0 && e == count && (threads == 1 || count <= 64u)));
           for (std::size_t i = b; i < e; ++i) hits[i].fetch_add(1);
         });
       }
