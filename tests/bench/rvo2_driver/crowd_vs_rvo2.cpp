@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
+#include <thread>
 #include <vector>
 
 #include "tests/bench/bench.hpp"
@@ -108,6 +109,10 @@ int crowd_vs_rvo2(const socsim::bench::Args& a) {
   const auto steps = a.integer("steps", 100);  // per block and engine
   const auto rounds = a.integer("rounds", 3);  // blocks per engine, alternating
   const auto threads = static_cast<unsigned>(a.integer("threads", 2));
+  // Before each block of steps, untimed: the other engine's idle threads stop waiting actively
+  // (socsim's pool after 1 ms, GOMP's default after its spin count), so neither engine's block
+  // starts with the other's threads still spinning on the two cores.
+  const auto settle = std::chrono::milliseconds(a.integer("settle-ms", 20));
   const bool walls = !a.has("no-walls");
   const bool groups = !a.has("no-groups");
   Rvo2Parameters p;
@@ -133,9 +138,11 @@ int crowd_vs_rvo2(const socsim::bench::Args& a) {
   for (std::int64_t r = 0; r < rounds; ++r) {
     const double socsim_before = socsim_time.wall_s;
     const double rvo_before = rvo_total.wall_s + rvo_step.wall_s;
+    std::this_thread::sleep_for(settle);
     socsim_time.add([&] {
       for (std::int64_t k = 0; k < steps; ++k) sim.step();
     });
+    std::this_thread::sleep_for(settle);
     for (std::int64_t k = 0; k < steps; ++k) {
       rvo_total.add([&] { rvo.set_preferred_velocities(); });
       rvo_step.add([&] { rvo.step(); });
@@ -162,6 +169,7 @@ int crowd_vs_rvo2(const socsim::bench::Args& a) {
        {"rounds", rounds},
        {"walls", walls},
        {"groups", groups},
+       {"settle_ms", settle.count()},
        // GOMP busy-waits at RVO2's barriers unless told otherwise; on a loaded
        // machine that inflates RVO2's times (docs/crowd.md, "Side by side").
        {"omp_wait_policy", std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY") : "(default)"},
@@ -188,7 +196,7 @@ int crowd_vs_rvo2(const socsim::bench::Args& a) {
 SOCSIM_BENCH(
     "crowd-vs-rvo2",
     "--agents 10000 --steps 100 --rounds 3 --threads 2 [--no-walls] [--no-groups] [--neighbor-dist 3] "
-    "[--max-neighbors 10] [--time-horizon 2] [--time-horizon-obst 1]",
+    "[--max-neighbors 10] [--time-horizon 2] [--time-horizon-obst 1] [--settle-ms 20]",
     crowd_vs_rvo2);
 
 }  // namespace
