@@ -128,12 +128,11 @@ void WorkerPool::parallel_for(std::size_t count, std::size_t chunk, const RangeF
     fn_ = &fn;
     count_ = count;
     chunk_ = chunk;
-    // Parts of whole chunks (the last part takes the rest).
-    const std::size_t chunks = (count + chunk - 1) / chunk;
+    // Equal parts (the same split for every loop over the same count, whatever its chunk).
     const auto n = parts_.size();
     for (std::size_t p = 0; p < n; ++p) {
-      parts_[p].next.store(std::min(count, chunks * p / n * chunk), std::memory_order_relaxed);
-      parts_[p].end = std::min(count, chunks * (p + 1) / n * chunk);
+      parts_[p].next.store(count * p / n, std::memory_order_relaxed);
+      parts_[p].end = count * (p + 1) / n;
     }
     error_ = nullptr;
     busy_ = static_cast<unsigned>(workers_.size());
