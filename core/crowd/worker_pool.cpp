@@ -126,7 +126,6 @@ void WorkerPool::parallel_for(std::size_t count, std::size_t chunk, const RangeF
   {
     std::lock_guard lock(mutex_);
     fn_ = &fn;
-    count_ = count;
     chunk_ = chunk;
     // Equal parts (the same split for every loop over the same count, whatever its chunk).
     const auto n = parts_.size();

@@ -46,7 +46,6 @@ class WorkerPool {
   std::atomic<bool> stop_{false};
 
   const RangeFn* fn_ = nullptr;
-  std::size_t count_ = 0;
   std::size_t chunk_ = 1;
   // Thread t takes chunks from its own part of [0, count) first (part t of threads(), so the same
   // thread runs the same indices in consecutive loops over the same agents, and their data stays
