@@ -682,5 +682,28 @@ TEST(CrowdSimulation, APressedAgentTakenOutStaysFrozenAndStopsBlocking) {
   for (const AgentId a : queue) EXPECT_GT(sim.position(a).x, 3.0) << "agent " << a.value();
 }
 
+// Each thread keeps its pair sums between steps and empties them when it takes part in a step's
+// pairs; the step reads only the sums of the threads that took part. A crowd that shrinks to one
+// chunk of the pair loop (stepped by the calling thread alone) must not pick up what the other
+// thread summed when the crowd was larger.
+TEST(CrowdSimulation, ACrowdThatShrinksToOneThreadsWorkGetsNoStaleSums) {
+  CrowdSimulation two = busy_room(300, 2, 5);
+  CrowdSimulation one = busy_room(300, 1, 5);
+  for (int k = 0; k < 5; ++k) {
+    two.step();
+    one.step();
+  }
+  ASSERT_TRUE(bit_identical(snapshot(two), snapshot(one)));
+  for (std::uint32_t i = 40; i < 300; ++i) {
+    ASSERT_TRUE(two.set_active(AgentId(i), false));
+    ASSERT_TRUE(one.set_active(AgentId(i), false));
+  }
+  for (int k = 0; k < 20; ++k) {
+    two.step();
+    one.step();
+  }
+  EXPECT_TRUE(bit_identical(snapshot(two), snapshot(one)));
+}
+
 }  // namespace
 }  // namespace socsim::crowd
