@@ -1884,7 +1884,8 @@ bool CrowdSimulation::pairs_once() const {
 // cells' order: (1) each agent's walking direction and walls (prepare_agent); (2) each agent's
 // pairs with the neighbours that come after it in that order — the rows of cells from its own
 // upwards — through pair_kernel, the results added to both agents' sums in the running thread's
-// own arrays; (3) the sums of all threads and finish_agent.
+// own arrays (each thread empties its own when it takes its first range); (3) the sums of the
+// threads that took part and finish_agent.
 void CrowdSimulation::step_pairs() {
   CellIndex& c = *cells_;                 // read only, except the sorted copies the first pass fills
   const std::size_t n = c.agents.size();  // no periodic images here: entries = agents
@@ -2103,12 +2104,14 @@ void CrowdSimulation::step_pairs() {
     if (b.count > 0) flush();
   });
 
-  // Each thread's contact and touching-pair records by block of agents (few: most agents touch
-  // no one), the threads in parallel.
-  // The sums of the threads that took some range of the pairs (at least one did).
+  // The sums of the threads that took some range of the pairs (at least one did; the others'
+  // arrays hold an earlier step's sums).
   std::vector<const PairState::Social*> sums;
   for (const PairState::Thread& t : ps.threads)
     if (t.round == ps.round) sums.push_back(t.social.data());
+
+  // Each thread's contact and touching-pair records by block of agents (few: most agents touch
+  // no one), the threads in parallel.
   const std::size_t blocks = (n >> PairState::kContactShift) + 1;
   pool_->parallel_for(ps.threads.size(), 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t th = begin; th < end; ++th) {
